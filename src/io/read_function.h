@@ -1,0 +1,28 @@
+// Reading OpenSim Function elements into sinew::Function objects.
+#pragma once
+
+#include <string>
+
+#include <pugixml.hpp>
+
+#include "functions/function.h"
+#include "io/xml_document.h"
+
+namespace sinew {
+
+/// Reads one Function element; its tag is the OpenSim class name (<SimmSpline>, <Constant>,
+/// <LinearFunction>, <MultiplierFunction>, ...). NaturalCubicSpline is read as a SimmSpline.
+/// Throws sinew::Error (file, line, `component`) for an unknown type or malformed values.
+FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node& element,
+                         const std::string& component);
+
+/// Reads a function-valued property. `property` is either a wrapper (3.x
+/// `<function><SimmSpline>...</SimmSpline></function>`) or, in 4.x, the Function element
+/// itself (`<SimmSpline name="function">`). Returns nullptr for an empty wrapper.
+FunctionPtr ReadFunctionProperty(const XmlDocument& doc, const pugi::xml_node& property,
+                                 const std::string& component);
+
+/// True when `tag` names a Function class ReadFunction knows.
+bool IsFunctionType(const std::string& tag);
+
+}  // namespace sinew

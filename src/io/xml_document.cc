@@ -1,0 +1,131 @@
+#include "io/xml_document.h"
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <sstream>
+
+namespace sinew {
+namespace {
+
+bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+std::string_view Trim(std::string_view s) {
+  while (!s.empty() && IsSpace(s.front())) s.remove_prefix(1);
+  while (!s.empty() && IsSpace(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+// Parses one number token; accepts a leading '+', which from_chars does not.
+bool ParseNumber(std::string_view token, double* value) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  const char* end = token.data() + token.size();
+  auto [ptr, ec] = std::from_chars(token.data(), end, *value);
+  return ec == std::errc() && ptr == end;
+}
+
+}  // namespace
+
+XmlDocument XmlDocument::Load(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error(SourceLocation{file, 0}, "", "cannot open file");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return Parse(std::move(buffer).str(), file);
+}
+
+XmlDocument XmlDocument::Parse(std::string text, const std::string& file) {
+  XmlDocument result;
+  result.file_ = file;
+  result.text_ = std::move(text);
+  result.IndexLines();
+  result.doc_ = std::make_shared<pugi::xml_document>();
+  const unsigned options = pugi::parse_default | pugi::parse_ws_pcdata_single;
+  pugi::xml_parse_result parsed = result.doc_->load_buffer(
+      result.text_.data(), result.text_.size(), options, pugi::encoding_utf8);
+  if (!parsed) {
+    int line = 1;
+    if (parsed.offset >= 0) {
+      auto it = std::upper_bound(result.line_starts_.begin(), result.line_starts_.end(),
+                                 static_cast<size_t>(parsed.offset));
+      line = static_cast<int>(it - result.line_starts_.begin());
+    }
+    throw Error(SourceLocation{file, line}, "",
+                std::string("not a well-formed XML document: ") + parsed.description());
+  }
+  if (!result.doc_->document_element()) {
+    throw Error(SourceLocation{file, 1}, "", "the document has no root element");
+  }
+  return result;
+}
+
+void XmlDocument::IndexLines() {
+  line_starts_.clear();
+  line_starts_.push_back(0);
+  for (size_t i = 0; i < text_.size(); ++i) {
+    if (text_[i] == '\n') line_starts_.push_back(i + 1);
+  }
+}
+
+int XmlDocument::LineOf(const pugi::xml_node& node) const {
+  const ptrdiff_t offset = node.offset_debug();
+  if (offset < 0) return 0;
+  auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), static_cast<size_t>(offset));
+  return static_cast<int>(it - line_starts_.begin());
+}
+
+void XmlDocument::Fail(const pugi::xml_node& node, const std::string& component,
+                       const std::string& message) const {
+  throw Error(Where(node), component, message);
+}
+
+std::string_view XmlDocument::Text(const pugi::xml_node& node) {
+  return Trim(node.child_value());
+}
+
+double XmlDocument::ReadDouble(const pugi::xml_node& node, const std::string& component) const {
+  std::vector<double> values = ReadNumbers(node, component, 1);
+  return values[0];
+}
+
+std::vector<double> XmlDocument::ReadNumbers(const pugi::xml_node& node,
+                                             const std::string& component, int count) const {
+  std::vector<double> values;
+  std::string_view text = Text(node);
+  size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && IsSpace(text[i])) ++i;
+    size_t start = i;
+    while (i < text.size() && !IsSpace(text[i])) ++i;
+    if (start == i) break;
+    double value = 0;
+    std::string_view token = text.substr(start, i - start);
+    if (!ParseNumber(token, &value)) {
+      Fail(node, component,
+           "<" + std::string(node.name()) + "> expects numbers, found '" + std::string(token) + "'");
+    }
+    values.push_back(value);
+  }
+  if (count >= 0 && static_cast<int>(values.size()) != count) {
+    Fail(node, component,
+         "<" + std::string(node.name()) + "> expects " + std::to_string(count) + " number" +
+             (count == 1 ? "" : "s") + ", found " + std::to_string(values.size()));
+  }
+  return values;
+}
+
+Vec3 XmlDocument::ReadVec3(const pugi::xml_node& node, const std::string& component) const {
+  std::vector<double> v = ReadNumbers(node, component, 3);
+  return {v[0], v[1], v[2]};
+}
+
+bool XmlDocument::ReadBool(const pugi::xml_node& node, const std::string& component) const {
+  std::string_view text = Text(node);
+  if (text == "true" || text == "1") return true;
+  if (text == "false" || text == "0") return false;
+  Fail(node, component,
+       "<" + std::string(node.name()) + "> expects true or false, found '" + std::string(text) +
+           "'");
+}
+
+}  // namespace sinew
