@@ -1,0 +1,71 @@
+// Time stepping. Two schemes share one interface:
+//  - "rk45": Dormand-Prince 5(4) with error control on positions and velocities and, after each
+//    accepted step, projection of positions (Newton) and velocities (least squares) onto the
+//    constraints. Used to match OpenSim's results.
+//  - "euler": fixed-step semi-implicit (symplectic) Euler: the new velocities solve the
+//    velocity-level KKT system M (v+ - v) = h f + J^T lambda, J v+ = c; positions then move
+//    with v+ and are projected. First order, robust, one factorization per step: meant for
+//    stiff and non-smooth (contact) problems.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "engine/kkt.h"
+#include "engine/loads.h"
+#include "engine/state.h"
+#include "engine/system.h"
+
+namespace sinew::engine {
+
+/// Settings of an integrator.
+struct IntegratorSettings {
+  /// Relative local error allowed per step (with unit absolute floor), error-controlled only.
+  double accuracy = 1e-6;
+  /// Fixed step (s) of fixed-step schemes; upper bound of the step for error-controlled ones
+  /// (0: no bound).
+  double step = 0.0;
+  /// Smallest step before giving up (s).
+  double min_step = 1e-12;
+  /// Constraint position tolerance of the projection (0: min(1e-3 accuracy, 1e-10)).
+  double constraint_tolerance = 0.0;
+};
+
+/// Counters of an integrator's work.
+struct IntegratorStats {
+  long steps = 0;        ///< accepted steps
+  long rejected = 0;     ///< rejected steps
+  long evaluations = 0;  ///< acceleration evaluations
+};
+
+/// Advances a State of one System in time.
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  /// Advances `state` to exactly `t_final` (>= state.t). Throws sinew::Error on failure.
+  virtual void StepTo(State& state, double t_final) = 0;
+  /// Loads held constant and added to every evaluation (may be null; not owned).
+  void SetExternalLoads(const Loads* loads) { external_ = loads; }
+  const IntegratorStats& stats() const { return stats_; }
+  const IntegratorSettings& settings() const { return settings_; }
+
+ protected:
+  Integrator(const System& system, const IntegratorSettings& settings);
+  double ConstraintTolerance() const;
+
+  const System& system_;
+  IntegratorSettings settings_;
+  KktSolver kkt_;
+  const Loads* external_ = nullptr;
+  IntegratorStats stats_;
+};
+
+/// Makes the integrator named `name` ("rk45" or "euler"). Throws sinew::Error for another name.
+std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System& system,
+                                           const IntegratorSettings& settings);
+
+/// Moves `state` onto the constraints (positions, then velocities) with tolerance `tolerance`;
+/// use before integrating a state whose coordinates were set by hand. Throws on failure.
+void ProjectState(const System& system, State& state, double tolerance = 1e-12);
+
+}  // namespace sinew::engine

@@ -1,0 +1,21 @@
+// The constraints that impose joints and coordinate locks / prescribed motions.
+#pragma once
+
+#include <memory>
+
+#include "engine/constraint.h"
+#include "engine/system.h"
+
+namespace sinew::engine {
+
+/// The constraint of joint `joint_index` of `system`: the six equations
+/// inverse(X_GF) * X_GM = X_FM(q) (kParameterized, rows expressed in F) or the direct
+/// Cartesian equations (Pin 5, Ball 3, Universal 4, Weld 6; rows in G).
+std::shared_ptr<const Constraint> MakeJointConstraint(const System& system, int joint_index);
+
+/// q_i = f(t) for a locked (f = default value) or prescribed coordinate of a parameterized
+/// joint whose qdot_i = u_i.
+std::shared_ptr<const Constraint> MakeCoordinateMotionConstraint(const System& system,
+                                                                 int coordinate);
+
+}  // namespace sinew::engine

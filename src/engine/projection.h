@@ -1,0 +1,31 @@
+// Projection of a state onto the constraint manifold: positions by Newton iterations, then
+// velocities by a mass-weighted least-squares correction (both through the KKT matrix).
+#pragma once
+
+#include "engine/kkt.h"
+#include "engine/state.h"
+#include "engine/system.h"
+
+namespace sinew::engine {
+
+/// All constraint position errors phi (in KktSolver equation order).
+VecX CalcPositionErrors(const System& system, const State& state);
+/// All constraint velocity errors J v - c.
+VecX CalcVelocityErrors(const System& system, const State& state, KktSolver& kkt);
+
+/// Moves the positions (body poses, integrated coordinates) by the smallest mass-weighted
+/// correction that makes every |phi| <= tolerance. Returns false when Newton does not converge
+/// in `max_iterations`. Refactorizes `kkt`.
+bool ProjectPositions(const System& system, State& state, double tolerance, KktSolver& kkt,
+                      int max_iterations = 10);
+
+/// Replaces the velocities by the nearest (mass-weighted) ones with J v = c. Uses the positions
+/// of `state` (refactorizes `kkt`).
+void ProjectVelocities(const System& system, State& state, KktSolver& kkt);
+
+/// Applies a position displacement dx in KKT velocity order: body rotations (rotation vector in
+/// G) and translations, and for integrated coordinates dq = N(q) du.
+void ApplyPositionDisplacement(const System& system, const KktSolver& kkt, const VecX& dx,
+                               State& state);
+
+}  // namespace sinew::engine

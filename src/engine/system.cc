@@ -1,0 +1,193 @@
+#include "engine/system.h"
+
+#include <cmath>
+
+#include "common/error.h"
+#include "engine/direct_joint.h"
+#include "engine/joint_constraints.h"
+
+namespace sinew::engine {
+
+System::System(const Vec3& gravity) : gravity_(gravity) {
+  Body ground;
+  ground.name = "ground";
+  bodies_.push_back(ground);
+}
+
+void System::RequireNotFinalized() const {
+  if (finalized_) throw Error("engine::System: cannot add to a finalized system");
+}
+
+int System::AddBody(const Body& body) {
+  RequireNotFinalized();
+  if (!(body.mass >= 0.0) || !std::isfinite(body.mass)) {
+    throw Error({}, body.name, "body mass must be finite and >= 0");
+  }
+  if (!body.I_Bcm_B.allFinite() || !body.I_Bcm_B.isApprox(body.I_Bcm_B.transpose(), 1e-9) ||
+      !body.p_BCm.allFinite()) {
+    throw Error({}, body.name, "body inertia must be finite and symmetric");
+  }
+  bodies_.push_back(body);
+  return num_bodies() - 1;
+}
+
+int System::AddJoint(const std::string& name, int parent, const Transform& X_PF, int child,
+                     const Transform& X_BM, JointForm form,
+                     std::shared_ptr<const JointModel> model,
+                     const std::vector<CoordinateDesc>& coordinates) {
+  RequireNotFinalized();
+  if (parent < 0 || parent >= num_bodies() || child <= 0 || child >= num_bodies() ||
+      parent == child) {
+    throw Error({}, name, "joint connects invalid bodies");
+  }
+  const int expected = form == JointForm::kParameterized
+                           ? (model ? model->nq() : -1)
+                           : NumDirectCoordinates(form);
+  if (expected < 0) throw Error({}, name, "a parameterized joint needs a JointModel");
+  if (expected != static_cast<int>(coordinates.size())) {
+    throw Error({}, name,
+                "joint has " + std::to_string(coordinates.size()) + " coordinates, expected " +
+                    std::to_string(expected));
+  }
+  Joint joint;
+  joint.name = name;
+  joint.parent = parent;
+  joint.child = child;
+  joint.X_PF = X_PF;
+  joint.X_BM = X_BM;
+  joint.form = form;
+  joint.model = std::move(model);
+  const int joint_index = static_cast<int>(joints_.size());
+  for (size_t i = 0; i < coordinates.size(); ++i) {
+    const CoordinateDesc& d = coordinates[i];
+    Coordinate c;
+    c.name = d.name;
+    c.joint = joint_index;
+    c.index_in_joint = static_cast<int>(i);
+    c.default_value = d.default_value;
+    c.default_speed = d.default_speed;
+    c.motion = d.motion;
+    c.prescribed = d.prescribed;
+    if (c.motion == CoordinateMotion::kPrescribed && !c.prescribed) {
+      throw Error({}, name + "/" + d.name, "prescribed coordinate without a function");
+    }
+    if (c.motion != CoordinateMotion::kFree && form != JointForm::kParameterized) {
+      throw Error({}, name + "/" + d.name,
+                  "locked or prescribed coordinates need the parameterized joint form");
+    }
+    joint.coordinates.push_back(num_coordinates());
+    coordinates_.push_back(c);
+  }
+  joints_.push_back(std::move(joint));
+  return joint_index;
+}
+
+void System::AddConstraint(std::shared_ptr<const Constraint> constraint) {
+  RequireNotFinalized();
+  extra_constraints_.push_back(std::move(constraint));
+}
+
+void System::AddForceElement(std::shared_ptr<const ForceElement> force) {
+  RequireNotFinalized();
+  forces_.push_back(std::move(force));
+}
+
+void System::Finalize() {
+  RequireNotFinalized();
+  // Tree: each body (but ground) is the child of exactly one joint, and reaches ground.
+  joint_of_body_.assign(bodies_.size(), -1);
+  for (size_t j = 0; j < joints_.size(); ++j) {
+    const int child = joints_[j].child;
+    if (joint_of_body_[child] >= 0) {
+      throw Error({}, joints_[j].name,
+                  "body '" + bodies_[child].name + "' is the child of two joints (use a "
+                  "constraint to close a loop)");
+    }
+    joint_of_body_[child] = static_cast<int>(j);
+  }
+  bool any_mass = false;
+  for (int b = 1; b < num_bodies(); ++b) {
+    if (joint_of_body_[b] < 0) {
+      throw Error({}, bodies_[b].name, "body has no joint to its parent (add a FreeJoint)");
+    }
+    any_mass = any_mass || bodies_[b].mass > 0.0;
+  }
+  if (num_bodies() > 1 && !any_mass) {
+    throw Error("every body has zero mass: forward dynamics is singular (a kinematics-only "
+                "model cannot be simulated)");
+  }
+  // Tree order: a joint after the joint of its parent body.
+  tree_order_.clear();
+  std::vector<int> depth(bodies_.size(), -1);
+  depth[0] = 0;
+  std::vector<bool> placed(joints_.size(), false);
+  for (size_t pass = 0; pass < joints_.size() + 1 && tree_order_.size() < joints_.size();
+       ++pass) {
+    for (size_t j = 0; j < joints_.size(); ++j) {
+      if (!placed[j] && depth[joints_[j].parent] >= 0) {
+        depth[joints_[j].child] = depth[joints_[j].parent] + 1;
+        placed[j] = true;
+        tree_order_.push_back(static_cast<int>(j));
+      }
+    }
+  }
+  if (tree_order_.size() != joints_.size()) {
+    throw Error("the joints do not form a tree rooted at ground (a loop of joints?)");
+  }
+  // Speeds of parameterized joints are integrated unknowns.
+  u_column_.assign(coordinates_.size(), -1);
+  num_integrated_ = 0;
+  for (const Joint& joint : joints_) {
+    if (joint.form != JointForm::kParameterized) continue;
+    for (int c : joint.coordinates) u_column_[c] = num_integrated_++;
+  }
+  // Constraints: joints, coordinate motions, extra.
+  finalized_ = true;
+  constraints_.clear();
+  for (size_t j = 0; j < joints_.size(); ++j) {
+    constraints_.push_back(MakeJointConstraint(*this, static_cast<int>(j)));
+  }
+  for (int c = 0; c < num_coordinates(); ++c) {
+    const Coordinate& coordinate = coordinates_[c];
+    if (coordinate.motion == CoordinateMotion::kFree) continue;
+    // The motion constraint writes qdot_i = u_i: check that the joint has it.
+    const Joint& joint = joints_[coordinate.joint];
+    const int n = joint.model->nq();
+    std::vector<double> q(n, 0.1), u(n, 0.0), qdot(n, 0.0);
+    u[coordinate.index_in_joint] = 1.0;
+    joint.model->CalcQDot(q, u, qdot);
+    for (int i = 0; i < n; ++i) {
+      if (std::abs(qdot[i] - (i == coordinate.index_in_joint ? 1.0 : 0.0)) > 1e-12) {
+        finalized_ = false;
+        throw Error({}, joint.name + "/" + coordinate.name,
+                    "locking or prescribing a coordinate whose speed is not its rate (ball or "
+                    "free rotation) is not supported");
+      }
+    }
+    constraints_.push_back(MakeCoordinateMotionConstraint(*this, c));
+  }
+  for (const auto& c : extra_constraints_) constraints_.push_back(c);
+}
+
+int System::FindBody(std::string_view name) const {
+  for (int i = 0; i < num_bodies(); ++i) {
+    if (bodies_[i].name == name) return i;
+  }
+  return -1;
+}
+
+int System::FindJoint(std::string_view name) const {
+  for (size_t i = 0; i < joints_.size(); ++i) {
+    if (joints_[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+int System::FindCoordinate(std::string_view name) const {
+  for (int i = 0; i < num_coordinates(); ++i) {
+    if (coordinates_[i].name == name) return i;
+  }
+  return -1;
+}
+
+}  // namespace sinew::engine
