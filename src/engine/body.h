@@ -11,9 +11,9 @@ namespace sinew::engine {
 /// Mass properties of one body. Ground is body 0 of every System and never moves.
 struct Body {
   std::string name;
-  double mass = 0.0;                ///< kg (may be 0 for massless helper bodies)
-  Vec3 p_BCm = Vec3::Zero();        ///< mass centre in B, expressed in B (m)
-  Mat3 I_Bcm_B = Mat3::Zero();      ///< inertia about the mass centre, B axes (kg m^2)
+  double mass = 0.0;            ///< kg (may be 0 for massless helper bodies)
+  Vec3 p_BCm = Vec3::Zero();    ///< mass centre in B, expressed in B (m)
+  Mat3 I_Bcm_B = Mat3::Zero();  ///< inertia about the mass centre, B axes (kg m^2)
 };
 
 /// Cartesian state of one body in ground G: pose and twist of its reference frame B.

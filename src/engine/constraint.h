@@ -32,11 +32,9 @@ class Constraint {
   virtual void CalcPositionError(const System& system, const State& state,
                                  Eigen::Ref<VecX> phi) const = 0;
   /// J: NumEquations() rows, 6 * Bodies().size() + Coordinates().size() columns.
-  virtual void CalcJacobian(const System& system, const State& state,
-                            Eigen::Ref<MatX> J) const = 0;
+  virtual void CalcJacobian(const System& system, const State& state, Eigen::Ref<MatX> J) const = 0;
   /// c(t), the velocity right-hand side (zero for scleronomic constraints).
-  virtual void CalcVelocityRhs(const System& system, const State& state,
-                               Eigen::Ref<VecX> c) const {
+  virtual void CalcVelocityRhs(const System& system, const State& state, Eigen::Ref<VecX> c) const {
     (void)system, (void)state;
     c.setZero();
   }

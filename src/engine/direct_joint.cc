@@ -20,11 +20,16 @@ Mat3 Rx(double a) { return Eigen::AngleAxisd(a, Vec3::UnitX()).toRotationMatrix(
 
 int NumDirectCoordinates(JointForm form) {
   switch (form) {
-    case JointForm::kPin: return 1;
-    case JointForm::kBall: return 3;
-    case JointForm::kUniversal: return 2;
-    case JointForm::kWeld: return 0;
-    case JointForm::kParameterized: break;
+    case JointForm::kPin:
+      return 1;
+    case JointForm::kBall:
+      return 3;
+    case JointForm::kUniversal:
+      return 2;
+    case JointForm::kWeld:
+      return 0;
+    case JointForm::kParameterized:
+      break;
   }
   return -1;
 }

@@ -51,8 +51,7 @@ class StateVector {
     for (int b = 1; b <= nb_; ++b) {
       const BodyState& s = state.bodies[b];
       y.segment<3>(7 * (b - 1)) = s.p_GB;
-      y.segment<4>(7 * (b - 1) + 3) << s.quat_GB.w(), s.quat_GB.x(), s.quat_GB.y(),
-          s.quat_GB.z();
+      y.segment<4>(7 * (b - 1) + 3) << s.quat_GB.w(), s.quat_GB.x(), s.quat_GB.y(), s.quat_GB.z();
     }
     for (int c = 0; c < system_.num_coordinates(); ++c) {
       if (system_.IsIntegrated(c)) y[7 * nb_ + system_.SpeedIndex(c)] = state.q[c];
@@ -145,7 +144,8 @@ class RungeKutta45 final : public Integrator {
   VecX Eval(const VecX& y, double t, State& scratch) {
     vector_.Unpack(y, t, scratch);
     ++stats_.evaluations;
-    return vector_.Derivative(y, scratch, CalcAccelerations(system_, scratch, external_, kkt_).vdot);
+    return vector_.Derivative(y, scratch,
+                              CalcAccelerations(system_, scratch, external_, kkt_).vdot);
   }
 
   // One attempt; on success `state` advances and h_ is updated for the next step.
@@ -160,7 +160,7 @@ class RungeKutta45 final : public Integrator {
         {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656, 0},
         {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
     // Error coefficients: fifth-order minus fourth-order weights.
-    static constexpr double e[7] = {71.0 / 57600,      0, -71.0 / 16695, 71.0 / 1920,
+    static constexpr double e[7] = {71.0 / 57600,      0,          -71.0 / 16695, 71.0 / 1920,
                                     -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
     State scratch = state;
     const VecX y0 = vector_.Pack(state);
@@ -184,8 +184,7 @@ class RungeKutta45 final : public Integrator {
     }
     norm /= settings_.accuracy;
     if (!std::isfinite(norm)) norm = 1e10;
-    const double factor =
-        norm == 0.0 ? 5.0 : std::clamp(0.9 * std::pow(norm, -0.2), 0.2, 5.0);
+    const double factor = norm == 0.0 ? 5.0 : std::clamp(0.9 * std::pow(norm, -0.2), 0.2, 5.0);
     if (norm > 1.0) {
       h_ = h * std::min(factor, 0.9);
       return false;
@@ -251,8 +250,8 @@ class SemiImplicitEuler final : public Integrator {
     ScatterVelocities(system_, kkt_, v1, later);
     ApplyPositionDisplacement(system_, kkt_, h * v1, later);
     if (!ProjectPositions(system_, later, ConstraintTolerance(), kkt_)) {
-      throw Error("integrator 'euler': position projection failed at t = " +
-                  std::to_string(t_new) + " s (step too large?)");
+      throw Error("integrator 'euler': position projection failed at t = " + std::to_string(t_new) +
+                  " s (step too large?)");
     }
     ProjectVelocities(system_, later, kkt_);
     UpdateDirectCoordinates(system_, later);

@@ -57,8 +57,7 @@ class ParameterizedJointConstraint final : public Constraint {
     if (n > 0) J.rightCols(n) = -joint_.model->CalcH_FM(Q(state));
   }
 
-  void CalcAccelerationRhs(const System&, const State& state,
-                           Eigen::Ref<VecX> b) const override {
+  void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
     const JointFrames f = CalcJointFrames(joint_, state);
     const BodyState& P = state.bodies[joint_.parent];
     const BodyState& B = state.bodies[joint_.child];
@@ -139,8 +138,7 @@ class DirectJointConstraint final : public Constraint {
     }
   }
 
-  void CalcAccelerationRhs(const System&, const State& state,
-                           Eigen::Ref<VecX> b) const override {
+  void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
     const JointFrames f = CalcJointFrames(joint_, state);
     const BodyState& P = state.bodies[joint_.parent];
     const BodyState& B = state.bodies[joint_.child];
@@ -179,8 +177,7 @@ class CoordinateMotionConstraint final : public Constraint {
   void CalcVelocityRhs(const System&, const State& state, Eigen::Ref<VecX> c) const override {
     c[0] = Value(state.t, 1);
   }
-  void CalcAccelerationRhs(const System&, const State& state,
-                           Eigen::Ref<VecX> b) const override {
+  void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
     b[0] = Value(state.t, 2);
   }
 
@@ -207,8 +204,7 @@ std::shared_ptr<const Constraint> MakeJointConstraint(const System& system, int 
 
 std::shared_ptr<const Constraint> MakeCoordinateMotionConstraint(const System& system,
                                                                  int coordinate) {
-  return std::make_shared<CoordinateMotionConstraint>(coordinate,
-                                                      system.coordinates()[coordinate]);
+  return std::make_shared<CoordinateMotionConstraint>(coordinate, system.coordinates()[coordinate]);
 }
 
 }  // namespace sinew::engine

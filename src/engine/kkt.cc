@@ -77,8 +77,10 @@ void KktSolver::Factorize(const State& state) {
   }
   lu_.factorize(matrix_);
   if (lu_.info() != Eigen::Success) {
-    throw Error("engine: the equations of motion are singular (bodies without mass or inertia in "
-                "a direction no joint constrains?): " + lu_.lastErrorMessage());
+    throw Error(
+        "engine: the equations of motion are singular (bodies without mass or inertia in "
+        "a direction no joint constrains?): " +
+        lu_.lastErrorMessage());
   }
 }
 

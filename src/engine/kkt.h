@@ -50,8 +50,8 @@ class KktSolver {
   const System& system_;
   int nv_ = 0, nc_ = 0;
   std::vector<int> row_;
-  std::vector<std::vector<int>> columns_;     // per constraint: column of each J column (-1 = ground)
-  std::vector<MatX> jacobian_;                // per constraint
+  std::vector<std::vector<int>> columns_;  // per constraint: column of each J column (-1 = ground)
+  std::vector<MatX> jacobian_;             // per constraint
   std::vector<Eigen::Matrix<double, 6, 6>> mass_;  // per body (index 0 unused)
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;

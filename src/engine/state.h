@@ -11,8 +11,8 @@ namespace sinew::engine {
 
 /// Everything that changes during a simulation of a System.
 struct State {
-  double t = 0.0;                  ///< time (s)
-  std::vector<BodyState> bodies;   ///< one per System body; bodies[0] (ground) stays at rest
+  double t = 0.0;                 ///< time (s)
+  std::vector<BodyState> bodies;  ///< one per System body; bodies[0] (ground) stays at rest
   /// Every coordinate q (rad or m) and speed u (rad/s or m/s), in System coordinate order.
   /// Coordinates of parameterized joints are integrated unknowns; those of direct Cartesian
   /// joints are read off the body poses after every step (see UpdateDirectCoordinates).

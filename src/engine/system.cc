@@ -32,17 +32,15 @@ int System::AddBody(const Body& body) {
 }
 
 int System::AddJoint(const std::string& name, int parent, const Transform& X_PF, int child,
-                     const Transform& X_BM, JointForm form,
-                     std::shared_ptr<const JointModel> model,
+                     const Transform& X_BM, JointForm form, std::shared_ptr<const JointModel> model,
                      const std::vector<CoordinateDesc>& coordinates) {
   RequireNotFinalized();
   if (parent < 0 || parent >= num_bodies() || child <= 0 || child >= num_bodies() ||
       parent == child) {
     throw Error({}, name, "joint connects invalid bodies");
   }
-  const int expected = form == JointForm::kParameterized
-                           ? (model ? model->nq() : -1)
-                           : NumDirectCoordinates(form);
+  const int expected =
+      form == JointForm::kParameterized ? (model ? model->nq() : -1) : NumDirectCoordinates(form);
   if (expected < 0) throw Error({}, name, "a parameterized joint needs a JointModel");
   if (expected != static_cast<int>(coordinates.size())) {
     throw Error({}, name,
@@ -100,8 +98,9 @@ void System::Finalize() {
     const int child = joints_[j].child;
     if (joint_of_body_[child] >= 0) {
       throw Error({}, joints_[j].name,
-                  "body '" + bodies_[child].name + "' is the child of two joints (use a "
-                  "constraint to close a loop)");
+                  "body '" + bodies_[child].name +
+                      "' is the child of two joints (use a "
+                      "constraint to close a loop)");
     }
     joint_of_body_[child] = static_cast<int>(j);
   }
@@ -113,16 +112,16 @@ void System::Finalize() {
     any_mass = any_mass || bodies_[b].mass > 0.0;
   }
   if (num_bodies() > 1 && !any_mass) {
-    throw Error("every body has zero mass: forward dynamics is singular (a kinematics-only "
-                "model cannot be simulated)");
+    throw Error(
+        "every body has zero mass: forward dynamics is singular (a kinematics-only "
+        "model cannot be simulated)");
   }
   // Tree order: a joint after the joint of its parent body.
   tree_order_.clear();
   std::vector<int> depth(bodies_.size(), -1);
   depth[0] = 0;
   std::vector<bool> placed(joints_.size(), false);
-  for (size_t pass = 0; pass < joints_.size() + 1 && tree_order_.size() < joints_.size();
-       ++pass) {
+  for (size_t pass = 0; pass < joints_.size() + 1 && tree_order_.size() < joints_.size(); ++pass) {
     for (size_t j = 0; j < joints_.size(); ++j) {
       if (!placed[j] && depth[joints_[j].parent] >= 0) {
         depth[joints_[j].child] = depth[joints_[j].parent] + 1;

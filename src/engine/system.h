@@ -30,12 +30,12 @@ enum class CoordinateMotion { kFree, kLocked, kPrescribed };
 /// A generalized coordinate of a joint.
 struct Coordinate {
   std::string name;
-  int joint = -1;             ///< index into System::joints()
-  int index_in_joint = 0;     ///< position in the joint's q
-  double default_value = 0.0; ///< rad or m
-  double default_speed = 0.0; ///< rad/s or m/s (Ball: w_FM component in F)
+  int joint = -1;              ///< index into System::joints()
+  int index_in_joint = 0;      ///< position in the joint's q
+  double default_value = 0.0;  ///< rad or m
+  double default_speed = 0.0;  ///< rad/s or m/s (Ball: w_FM component in F)
   CoordinateMotion motion = CoordinateMotion::kFree;
-  FunctionPtr prescribed;     ///< q(t) for kPrescribed
+  FunctionPtr prescribed;  ///< q(t) for kPrescribed
 };
 
 /// A joint between frame F on body `parent` and frame M on body `child`:
@@ -92,12 +92,8 @@ class System {
   const std::vector<Coordinate>& coordinates() const { return coordinates_; }
   /// Every constraint: first the joints' (in joint order), then the coordinate locks and
   /// prescribed motions, then the extra ones. Valid after Finalize().
-  const std::vector<std::shared_ptr<const Constraint>>& constraints() const {
-    return constraints_;
-  }
-  const std::vector<std::shared_ptr<const ForceElement>>& force_elements() const {
-    return forces_;
-  }
+  const std::vector<std::shared_ptr<const Constraint>>& constraints() const { return constraints_; }
+  const std::vector<std::shared_ptr<const ForceElement>>& force_elements() const { return forces_; }
   int num_bodies() const { return static_cast<int>(bodies_.size()); }
   int num_coordinates() const { return static_cast<int>(coordinates_.size()); }
 
