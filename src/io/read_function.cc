@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "functions/constant.h"
+#include "functions/gcv_spline.h"
 #include "functions/linear_function.h"
 #include "functions/multiplier_function.h"
 #include "functions/multivariate_polynomial_function.h"
@@ -19,9 +20,19 @@ namespace sinew {
 namespace {
 
 // Every Function class the reader knows, by its OpenSim tag.
-constexpr std::array<std::string_view, 6> kFunctionTypes = {
-    "Constant",           "LinearFunction", "PolynomialFunction",
-    "MultiplierFunction", "SimmSpline",     "NaturalCubicSpline", /* read as SimmSpline */
+constexpr std::array<std::string_view, 12> kFunctionTypes = {
+    "Constant",
+    "LinearFunction",
+    "PolynomialFunction",
+    "MultiplierFunction",
+    "SimmSpline",
+    "NaturalCubicSpline",  // read as SimmSpline
+    "PiecewiseLinearFunction",
+    "PiecewiseConstantFunction",
+    "StepFunction",
+    "Sine",
+    "MultivariatePolynomialFunction",
+    "GCVSpline",
 };
 
 // The single child element named `name`; a missing required one fails at `element`.
@@ -146,6 +157,16 @@ FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node& element,
     const double y1 = ReadScalar(doc, element, "end_value", component, 1.0);
     return Build(doc, element, component,
                  [&]() -> FunctionPtr { return std::make_shared<StepFunction>(x0, x1, y0, y1); });
+  }
+  if (type == "GCVSpline") {
+    // OpenSim refits from x, y and error_variance; stored weights/coefficients are not used.
+    const int half_order = ReadInteger(doc, element, "half_order", component);
+    const double error_variance = ReadScalar(doc, element, "error_variance", component, 0.0);
+    std::vector<double> x = ReadList(doc, element, "x", component);
+    std::vector<double> y = ReadList(doc, element, "y", component);
+    return Build(doc, element, component, [&]() -> FunctionPtr {
+      return std::make_shared<GCVSpline>(half_order, std::move(x), std::move(y), error_variance);
+    });
   }
   if (type == "MultivariatePolynomialFunction") {
     std::vector<double> c = ReadList(doc, element, "coefficients", component);
