@@ -21,7 +21,7 @@ Eigen::Matrix<double, 6, 6> CalcBodyMassMatrix(const Body& body, const Quat& qua
   return M;
 }
 
-KktSolver::KktSolver(const System& system) : system_(system) {
+KktSolver::KktSolver(const System& system, bool allow_tree) : system_(system) {
   if (!system.finalized()) throw Error("engine: the System must be finalized before use");
   nv_ = 6 * (system.num_bodies() - 1) + system.num_integrated();
   const auto& constraints = system.constraints();
@@ -45,6 +45,21 @@ KktSolver::KktSolver(const System& system) : system_(system) {
   }
   mass_.assign(system.num_bodies(), Eigen::Matrix<double, 6, 6>::Zero());
   matrix_.resize(nv_ + nc_, nv_ + nc_);
+  // Without loop constraints the tree elimination applies: constraints are the joints', then
+  // coordinate constraints that touch one coordinate's speed only.
+  bool tree = allow_tree;
+  for (size_t k = system.joints().size(); k < constraints.size(); ++k) {
+    tree = tree && constraints[k]->Bodies().empty() && constraints[k]->Coordinates().size() == 1;
+  }
+  if (tree) {
+    std::vector<int> body_columns(system.num_bodies()), speed_columns(system.num_coordinates(), -1);
+    for (int b = 0; b < system.num_bodies(); ++b) body_columns[b] = BodyColumn(b);
+    for (int c = 0; c < system.num_coordinates(); ++c) {
+      if (system.IsIntegrated(c)) speed_columns[c] = SpeedColumn(c);
+    }
+    tree_ =
+        std::make_unique<TreeKktSolver>(system, nv_, body_columns, speed_columns, row_, columns_);
+  }
 }
 
 void KktSolver::Factorize(const State& state) {
@@ -59,6 +74,12 @@ void KktSolver::Factorize(const State& state) {
   }
   for (size_t k = 0; k < constraints.size(); ++k) {
     constraints[k]->CalcJacobian(system_, state, jacobian_[k]);
+  }
+  if (tree_) {
+    tree_->Factorize(mass_, jacobian_);
+    return;
+  }
+  for (size_t k = 0; k < constraints.size(); ++k) {
     const MatX& J = jacobian_[k];
     const auto& cols = columns_[k];
     for (int i = 0; i < J.rows(); ++i) {
@@ -85,8 +106,11 @@ void KktSolver::Factorize(const State& state) {
 }
 
 VecX KktSolver::Solve(const VecX& rhs) const {
-  VecX x = lu_.solve(rhs);
-  const VecX residual = matrix_ * x - rhs;
+  VecX x = tree_ ? tree_->Solve(rhs) : VecX(lu_.solve(rhs));
+  VecX residual(rhs.size());
+  residual.head(nv_) =
+      MultiplyMass(x.head(nv_)) + MultiplyJacobianTranspose(x.tail(nc_)) - rhs.head(nv_);
+  residual.tail(nc_) = MultiplyJacobian(x.head(nv_)) - rhs.tail(nc_);
   const double scale = 1.0 + rhs.lpNorm<Eigen::Infinity>();
   if (!x.allFinite() || residual.lpNorm<Eigen::Infinity>() > 1e-6 * scale) {
     throw Error("engine: the equations of motion are singular or ill-conditioned (residual " +
@@ -113,6 +137,17 @@ VecX KktSolver::MultiplyJacobian(const VecX& x) const {
     }
   }
   return y;
+}
+
+VecX KktSolver::MultiplyJacobianTranspose(const VecX& y) const {
+  VecX x = VecX::Zero(nv_);
+  for (size_t k = 0; k < jacobian_.size(); ++k) {
+    const MatX& J = jacobian_[k];
+    for (int j = 0; j < J.cols(); ++j) {
+      if (columns_[k][j] >= 0) x[columns_[k][j]] += J.col(j).dot(y.segment(row_[k], J.rows()));
+    }
+  }
+  return x;
 }
 
 VecX GatherVelocities(const System& system, const KktSolver& kkt, const State& state) {

@@ -15,6 +15,7 @@
 
 #include "engine/state.h"
 #include "engine/system.h"
+#include "engine/tree_solver.h"
 
 namespace sinew::engine {
 
@@ -25,7 +26,8 @@ Eigen::Matrix<double, 6, 6> CalcBodyMassMatrix(const Body& body, const Quat& qua
 /// states; not shareable between threads (use one per thread).
 class KktSolver {
  public:
-  explicit KktSolver(const System& system);
+  /// `allow_tree` false forces the general sparse LU (used to cross-check the two).
+  explicit KktSolver(const System& system, bool allow_tree = true);
 
   int num_velocities() const { return nv_; }
   int num_equations() const { return nc_; }
@@ -41,10 +43,16 @@ class KktSolver {
   /// solution is not accurate (singular system).
   VecX Solve(const VecX& rhs) const;
 
+  /// True when the linear-time tree elimination is used (no loop constraints); otherwise a
+  /// sparse LU of the whole matrix.
+  bool uses_tree_solver() const { return tree_ != nullptr; }
+
   /// M * x (x has nv entries) with the M of the last Factorize.
   VecX MultiplyMass(const VecX& x) const;
   /// J * x with the J of the last Factorize.
   VecX MultiplyJacobian(const VecX& x) const;
+  /// J^T * y (y has nc entries) with the J of the last Factorize.
+  VecX MultiplyJacobianTranspose(const VecX& y) const;
 
  private:
   const System& system_;
@@ -57,6 +65,7 @@ class KktSolver {
   Eigen::SparseMatrix<double> matrix_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
   bool analyzed_ = false;
+  std::unique_ptr<TreeKktSolver> tree_;
 };
 
 /// Packs the velocity unknowns of `state` (body twists, integrated speeds) in KKT order.

@@ -1,5 +1,6 @@
 #include "engine/projection.h"
 
+#include <limits>
 #include <vector>
 
 #include "engine/pose.h"
@@ -53,11 +54,16 @@ void ApplyPositionDisplacement(const System& system, const KktSolver& kkt, const
 bool ProjectPositions(const System& system, State& state, double tolerance, KktSolver& kkt,
                       int max_iterations) {
   const int nv = kkt.num_velocities();
+  double previous = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration <= max_iterations; ++iteration) {
     const VecX phi = CalcPositionErrors(system, state);
-    if (phi.size() == 0 || phi.lpNorm<Eigen::Infinity>() <= tolerance) return true;
+    const double error = phi.size() == 0 ? 0.0 : phi.lpNorm<Eigen::Infinity>();
+    if (error <= tolerance) return true;
     if (iteration == max_iterations) break;
-    kkt.Factorize(state);
+    // Modified Newton: keep the matrix while the error falls fast (it does for the small
+    // corrections after an integration step); refactorize otherwise.
+    if (iteration == 0 || error > 0.1 * previous) kkt.Factorize(state);
+    previous = error;
     VecX rhs = VecX::Zero(nv + phi.size());
     rhs.tail(phi.size()) = -phi;
     ApplyPositionDisplacement(system, kkt, kkt.Solve(rhs).head(nv), state);

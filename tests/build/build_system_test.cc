@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine/assemble.h"
+#include "engine/dynamics.h"
 #include "engine/energy.h"
 #include "engine/integrator.h"
 #include "engine/projection.h"
@@ -138,6 +139,35 @@ TEST(BuildSystemTest, NegativeMassNamesTheBody) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("rod1"), std::string::npos) << e.what();
     EXPECT_GT(e.where().line, 0);
+  }
+}
+
+}  // namespace
+}  // namespace sinew
+
+namespace sinew {
+namespace {
+
+// The linear-time tree elimination and the general sparse LU solve the same KKT system.
+TEST(BuildSystemTest, TreeEliminationEqualsSparseLu) {
+  const ModelSpec spec = ReadOsim(kData + "/kinematics/gait2354/subject01_simbody_adjusted.osim");
+  for (bool direct : {true, false}) {
+    BuildOptions options;
+    options.direct_joints = direct;
+    const auto system = BuildSystem(spec, options);
+    engine::State state = engine::MakeDefaultState(*system);
+    for (int c = 0; c < system->num_coordinates(); ++c) {
+      state.q[c] = 0.3 * std::sin(1.0 + c);
+      state.u[c] = std::cos(2.0 * c);
+    }
+    engine::PlaceBodies(*system, state);
+    engine::KktSolver tree(*system), sparse(*system, false);
+    ASSERT_TRUE(tree.uses_tree_solver());
+    ASSERT_FALSE(sparse.uses_tree_solver());
+    const engine::Accelerations a = engine::CalcAccelerations(*system, state, nullptr, tree);
+    const engine::Accelerations b = engine::CalcAccelerations(*system, state, nullptr, sparse);
+    EXPECT_LT((a.vdot - b.vdot).lpNorm<Eigen::Infinity>(), 1e-9 * (1 + b.vdot.norm()));
+    EXPECT_LT((a.lambda - b.lambda).lpNorm<Eigen::Infinity>(), 1e-9 * (1 + b.lambda.norm()));
   }
 }
 
