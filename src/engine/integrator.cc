@@ -191,7 +191,8 @@ class RungeKutta45 final : public Integrator {
     }
     State next = state;
     vector_.Unpack(y, t_new, next);
-    if (!ProjectPositions(system_, next, ConstraintTolerance(), kkt_)) {
+    if (!ProjectPositions(system_, next, ConstraintTolerance(), kkt_, 10,
+                          &stats_.projection_factorizations)) {
       h_ = 0.5 * h;
       return false;
     }
@@ -249,7 +250,8 @@ class SemiImplicitEuler final : public Integrator {
     // Positions move with the new velocities.
     ScatterVelocities(system_, kkt_, v1, later);
     ApplyPositionDisplacement(system_, kkt_, h * v1, later);
-    if (!ProjectPositions(system_, later, ConstraintTolerance(), kkt_)) {
+    if (!ProjectPositions(system_, later, ConstraintTolerance(), kkt_, 10,
+                          &stats_.projection_factorizations)) {
       throw Error("integrator 'euler': position projection failed at t = " + std::to_string(t_new) +
                   " s (step too large?)");
     }

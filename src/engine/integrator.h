@@ -36,6 +36,7 @@ struct IntegratorStats {
   long steps = 0;        ///< accepted steps
   long rejected = 0;     ///< rejected steps
   long evaluations = 0;  ///< acceleration evaluations
+  long projection_factorizations = 0;  ///< KKT factorizations of the position projections
 };
 
 /// Advances a State of one System in time.

@@ -52,7 +52,7 @@ void ApplyPositionDisplacement(const System& system, const KktSolver& kkt, const
 }
 
 bool ProjectPositions(const System& system, State& state, double tolerance, KktSolver& kkt,
-                      int max_iterations) {
+                      int max_iterations, long* factorizations) {
   const int nv = kkt.num_velocities();
   double previous = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration <= max_iterations; ++iteration) {
@@ -62,7 +62,10 @@ bool ProjectPositions(const System& system, State& state, double tolerance, KktS
     if (iteration == max_iterations) break;
     // Modified Newton: keep the matrix while the error falls fast (it does for the small
     // corrections after an integration step); refactorize otherwise.
-    if (iteration == 0 || error > 0.1 * previous) kkt.Factorize(state);
+    if (iteration == 0 || error > 0.1 * previous) {
+      kkt.Factorize(state);
+      if (factorizations) ++*factorizations;
+    }
     previous = error;
     VecX rhs = VecX::Zero(nv + phi.size());
     rhs.tail(phi.size()) = -phi;

@@ -1,0 +1,57 @@
+// One simulated second of the passive gait2354 and Rajagopal2016 skeletons (bodies, joints,
+// coordinates and gravity only), RK45 at accuracy 1e-6. From the default pose the skeleton falls
+// as one rigid body (a parabola RK45 integrates in a few steps), so every coordinate is also
+// given a speed of sin(c + 1) rad/s or m/s: the skeleton tumbles with all joints moving. Reports simulated seconds per wall second (sim_s_per_s) and steps per second.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "build/build_system.h"
+#include "engine/assemble.h"
+#include "engine/integrator.h"
+#include "io/osim_reader.h"
+
+namespace {
+
+const std::string kShared = std::string(SINEW_TEST_DATA_DIR) + "/../../../shared/opensim-data";
+
+void RunSkeleton(benchmark::State& bench, const std::string& file) {
+  if (!std::filesystem::exists(file)) {
+    bench.SkipWithError(("missing " + file).c_str());
+    return;
+  }
+  const sinew::ModelSpec spec = sinew::ReadOsim(file);
+  const auto system = sinew::BuildSystem(spec);
+  double steps = 0.0, simulated = 0.0, evaluations = 0.0;
+  for (auto _ : bench) {
+    sinew::engine::State state = sinew::engine::MakeDefaultState(*system);
+    for (int c = 0; c < system->num_coordinates(); ++c) state.u[c] = std::sin(c + 1.0);
+    sinew::engine::PlaceBodies(*system, state);
+    sinew::engine::IntegratorSettings settings;
+    settings.accuracy = 1e-6;
+    auto integrator = sinew::engine::MakeIntegrator("rk45", *system, settings);
+    integrator->StepTo(state, 1.0);
+    steps += static_cast<double>(integrator->stats().steps);
+    evaluations += static_cast<double>(integrator->stats().evaluations);
+    simulated += 1.0;
+  }
+  bench.counters["sim_s_per_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
+  bench.counters["steps_per_s"] = benchmark::Counter(steps, benchmark::Counter::kIsRate);
+  bench.counters["steps"] = benchmark::Counter(steps, benchmark::Counter::kAvgIterations);
+  bench.counters["evals"] = benchmark::Counter(evaluations, benchmark::Counter::kAvgIterations);
+}
+
+void BM_Gait2354OneSecond(benchmark::State& bench) {
+  RunSkeleton(bench, kShared + "/opensim-org/opensim-models/Models/Gait2354_Simbody/"
+                               "gait2354_simbody.osim");
+}
+BENCHMARK(BM_Gait2354OneSecond)->Unit(benchmark::kMillisecond);
+
+void BM_Rajagopal2016OneSecond(benchmark::State& bench) {
+  RunSkeleton(bench, kShared + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
+}
+BENCHMARK(BM_Rajagopal2016OneSecond)->Unit(benchmark::kMillisecond);
+
+}  // namespace
