@@ -67,9 +67,9 @@ void BM_ChainRk45Step(benchmark::State& bench) {
   auto integrator = MakeIntegrator("rk45", system, settings);
   for (auto _ : bench) integrator->StepTo(state, state.t + 1e-3);
   bench.counters["rejected"] = static_cast<double>(integrator->stats().rejected);
-  bench.counters["proj_factorizations"] = benchmark::Counter(
-      static_cast<double>(integrator->stats().projection_factorizations),
-      benchmark::Counter::kAvgIterations);
+  bench.counters["proj_factorizations"] =
+      benchmark::Counter(static_cast<double>(integrator->stats().projection_factorizations),
+                         benchmark::Counter::kAvgIterations);
   bench.SetComplexityN(bench.range(0));
 }
 BENCHMARK(BM_ChainRk45Step)
@@ -87,9 +87,9 @@ void BM_ChainEulerStep(benchmark::State& bench) {
   settings.step = 1e-3;
   auto integrator = MakeIntegrator("euler", system, settings);
   for (auto _ : bench) integrator->StepTo(state, state.t + 1e-3);
-  bench.counters["proj_factorizations"] = benchmark::Counter(
-      static_cast<double>(integrator->stats().projection_factorizations),
-      benchmark::Counter::kAvgIterations);
+  bench.counters["proj_factorizations"] =
+      benchmark::Counter(static_cast<double>(integrator->stats().projection_factorizations),
+                         benchmark::Counter::kAvgIterations);
   bench.SetComplexityN(bench.range(0));
 }
 BENCHMARK(BM_ChainEulerStep)

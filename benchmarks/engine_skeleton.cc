@@ -1,7 +1,8 @@
 // One simulated second of the passive gait2354 and Rajagopal2016 skeletons (bodies, joints,
 // coordinates and gravity only), RK45 at accuracy 1e-6. From the default pose the skeleton falls
 // as one rigid body (a parabola RK45 integrates in a few steps), so every coordinate is also
-// given a speed of sin(c + 1) rad/s or m/s: the skeleton tumbles with all joints moving. Reports simulated seconds per wall second (sim_s_per_s) and steps per second.
+// given a speed of sin(c + 1) rad/s or m/s: the skeleton tumbles with all joints moving. Reports
+// simulated seconds per wall second (sim_s_per_s) and steps per second.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -24,7 +25,7 @@ void RunSkeleton(benchmark::State& bench, const std::string& file) {
   }
   const sinew::ModelSpec spec = sinew::ReadOsim(file);
   const auto system = sinew::BuildSystem(spec);
-  double steps = 0.0, simulated = 0.0, evaluations = 0.0;
+  double steps = 0.0, simulated = 0.0, evaluations = 0.0, rejected = 0.0, failures = 0.0;
   for (auto _ : bench) {
     sinew::engine::State state = sinew::engine::MakeDefaultState(*system);
     for (int c = 0; c < system->num_coordinates(); ++c) state.u[c] = std::sin(c + 1.0);
@@ -35,17 +36,22 @@ void RunSkeleton(benchmark::State& bench, const std::string& file) {
     integrator->StepTo(state, 1.0);
     steps += static_cast<double>(integrator->stats().steps);
     evaluations += static_cast<double>(integrator->stats().evaluations);
+    rejected += static_cast<double>(integrator->stats().rejected);
+    failures += static_cast<double>(integrator->stats().projection_failures);
     simulated += 1.0;
   }
   bench.counters["sim_s_per_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
   bench.counters["steps_per_s"] = benchmark::Counter(steps, benchmark::Counter::kIsRate);
   bench.counters["steps"] = benchmark::Counter(steps, benchmark::Counter::kAvgIterations);
+  bench.counters["rejected"] = benchmark::Counter(rejected, benchmark::Counter::kAvgIterations);
+  bench.counters["proj_fail"] = benchmark::Counter(failures, benchmark::Counter::kAvgIterations);
   bench.counters["evals"] = benchmark::Counter(evaluations, benchmark::Counter::kAvgIterations);
 }
 
 void BM_Gait2354OneSecond(benchmark::State& bench) {
-  RunSkeleton(bench, kShared + "/opensim-org/opensim-models/Models/Gait2354_Simbody/"
-                               "gait2354_simbody.osim");
+  RunSkeleton(bench, kShared +
+                         "/opensim-org/opensim-models/Models/Gait2354_Simbody/"
+                         "gait2354_simbody.osim");
 }
 BENCHMARK(BM_Gait2354OneSecond)->Unit(benchmark::kMillisecond);
 

@@ -187,26 +187,32 @@ class RungeKutta45 final : public Integrator {
     const double factor = norm == 0.0 ? 5.0 : std::clamp(0.9 * std::pow(norm, -0.2), 0.2, 5.0);
     if (norm > 1.0) {
       h_ = h * std::min(factor, 0.9);
+      just_rejected_ = true;
       return false;
     }
     State next = state;
     vector_.Unpack(y, t_new, next);
     if (!ProjectPositions(system_, next, ConstraintTolerance(), kkt_, 10,
                           &stats_.projection_factorizations)) {
+      ++stats_.projection_failures;
       h_ = 0.5 * h;
       return false;
     }
     ProjectVelocities(system_, next, kkt_);
     UpdateDirectCoordinates(system_, next);
     state = std::move(next);
-    // A step shortened to land on t_final says little about the next one.
-    h_ = h < h_ ? std::max(h_, h * factor) : h * factor;
+    // No growth right after a rejection (Hairer's rule: avoids reject/accept cycles). A step
+    // shortened to land on t_final says little about the next one.
+    const double growth = just_rejected_ ? std::min(factor, 1.0) : factor;
+    just_rejected_ = false;
+    h_ = h < h_ ? std::max(h_, h * growth) : h * growth;
     if (settings_.step > 0.0) h_ = std::min(h_, settings_.step);
     return true;
   }
 
   StateVector vector_;
   double h_ = 0.0;
+  bool just_rejected_ = false;
 };
 
 // Fixed-step semi-implicit Euler on the velocity-level KKT system, with projection.

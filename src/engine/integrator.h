@@ -33,10 +33,11 @@ struct IntegratorSettings {
 
 /// Counters of an integrator's work.
 struct IntegratorStats {
-  long steps = 0;        ///< accepted steps
-  long rejected = 0;     ///< rejected steps
-  long evaluations = 0;  ///< acceleration evaluations
+  long steps = 0;                      ///< accepted steps
+  long rejected = 0;                   ///< rejected steps
+  long evaluations = 0;                ///< acceleration evaluations
   long projection_factorizations = 0;  ///< KKT factorizations of the position projections
+  long projection_failures = 0;        ///< steps rejected because the projection did not converge
 };
 
 /// Advances a State of one System in time.
