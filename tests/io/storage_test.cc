@@ -118,6 +118,7 @@ TEST(StorageTest, BadFilesGiveErrorsWithLines) {
   ExpectParseError("name\ninDegrees=maybe\nendheader\ntime\n", 2, "inDegrees");
   ExpectParseError("name\nnRows=many\nendheader\ntime\n", 2, "nRows");
   ExpectParseError("name\nendheader\n\n", 3, "labels");
+  ExpectParseError("markers\nDataType=Vec3\nendheader\ntime\tm1\n0\t1,2,3\n", 2, "Vec3");
   EXPECT_THROW(ReadStorage(DataFile("no_such_file.sto")), Error);
 }
 
