@@ -1,8 +1,9 @@
 // Reading OpenSim Function elements into sinew::Function objects.
 #pragma once
 
-#include <pugixml.hpp>
 #include <string>
+
+#include <pugixml.hpp>
 
 #include "functions/function.h"
 #include "io/xml_document.h"
