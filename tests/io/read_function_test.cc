@@ -10,6 +10,7 @@
 
 #include "common/error.h"
 #include "functions/constant.h"
+#include "functions/gcv_spline.h"
 #include "functions/linear_function.h"
 #include "functions/multiplier_function.h"
 #include "functions/piecewise_linear_function.h"
@@ -132,6 +133,13 @@ TEST(ReadFunctionTest, OtherTypesWithTheirPropertyNames) {
       "<y> 0.5 0.4 0.3 0.18 0.09 0.04 -0.008</y><weights> 1 1 1 1 1 1 1</weights>"
       "<coefficients> 0 0 0 0 0 0 0</coefficients></GCVSpline>");
   EXPECT_NEAR(gcv->Calc(0.3), 0.18, 1e-14);
+  // A smoothing fit (known error variance) is read too; it no longer interpolates.
+  auto smoothed = std::dynamic_pointer_cast<const GCVSpline>(ReadRoot(
+      "<GCVSpline><half_order>2</half_order><error_variance>0.001</error_variance>"
+      "<x> 0 0.1 0.2 0.3 0.4 0.5 0.6 0.7</x><y> 0.5 0.42 0.3 0.21 0.09 0.04 -0.01 -0.05</y>"
+      "</GCVSpline>"));
+  ASSERT_TRUE(smoothed);
+  EXPECT_GT(smoothed->smoothing_parameter(), 0.0);
   for (const char* type :
        {"Constant", "SimmSpline", "NaturalCubicSpline", "GCVSpline", "Sine", "StepFunction",
         "MultivariatePolynomialFunction", "PiecewiseConstantFunction", "PiecewiseLinearFunction"}) {
@@ -196,10 +204,8 @@ TEST(ReadFunctionTest, ErrorsNameFileLineAndComponent) {
       "<StepFunction>\n<transition_start_time>1</transition_start_time>\n"
       "<transition_end_time>1</transition_end_time></StepFunction>",
       1, "must differ");
-  ExpectError(
-      "<GCVSpline>\n<half_order>3</half_order><error_variance>0.1</error_variance>"
-      "<x>0 1 2 3 4 5</x><y>0 1 2 3 4 5</y></GCVSpline>",
-      1, "smoothing");
+  ExpectError("<GCVSpline>\n<half_order>3</half_order><x>0 1 2 3</x><y>0 1 2 3</y></GCVSpline>", 1,
+              "at least 6 points");
   ExpectError("<GCVSpline>\n<half_order>2.5</half_order></GCVSpline>", 2, "integer");
   ExpectError(
       "<MultivariatePolynomialFunction>\n<coefficients>1 1</coefficients>"
