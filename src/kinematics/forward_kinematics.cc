@@ -37,13 +37,8 @@ void CalcBodyVelocities(const KinematicTree& tree, std::span<const double> q,
     const std::array<double, 6> u_local = Gather(t, u);
     const std::span<const double> qs(q_local.data(), t.nq);
     // V_FM in F from the joint's velocity map.
-    Vec3 w_rel = Vec3::Zero(), v_rel = Vec3::Zero();
-    if (t.nq > 0) {
-      const Mat6X H = t.model->CalcH_FM(qs);
-      const SpatialVec V_FM = H * Eigen::Map<const VecX>(u_local.data(), t.nq);
-      w_rel = V_FM.head<3>();
-      v_rel = V_FM.tail<3>();
-    }
+    const SpatialVec V_FM = t.model->CalcV_FM(qs, std::span<const double>(u_local.data(), t.nq));
+    Vec3 w_rel = V_FM.head<3>(), v_rel = V_FM.tail<3>();
     // Relative motion of the outboard joint frame J2 in the inboard one J1, in J1. Reversed:
     // the motion of F in M: w_MF = -R_MF w_FM, v_MF = w_MF x p_MF - R_MF v_FM.
     if (t.reversed) {

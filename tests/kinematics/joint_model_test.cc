@@ -140,6 +140,7 @@ TEST_P(JointModelTest, VelocityMapMatchesFiniteDifferences) {
     ASSERT_EQ(H.cols(), n) << c.name;
     const Eigen::Map<const VecX> u_vec(u.data(), n);
     const SpatialVec V = H * u_vec;
+    EXPECT_LT((joint->CalcV_FM(q, u) - V).norm(), 1e-14) << c.name;
     // Central differences with h = 1e-5: truncation ~h^2 |X'''| ~ 1e-10, rounding ~1e-11.
     const SpatialVec V_num = NumericVelocity(*joint, q, qdot, 1e-5);
     EXPECT_LT((V - V_num).norm(), 1e-8)
