@@ -28,6 +28,10 @@ struct Options {
 void Run(const Options& options) {
   const ModelSpec spec = ReadOsim(options.model);
   const KinematicTree tree(spec);
+  for (int j : tree.loop_joints()) {
+    std::cerr << "sinew: note: joint '" << spec.joints[j].name
+              << "' closes a kinematic loop; it is not enforced by forward kinematics\n";
+  }
   std::vector<double> q = tree.default_q();
   std::vector<Transform> X_GB(tree.num_bodies());
 
