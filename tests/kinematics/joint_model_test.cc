@@ -288,6 +288,18 @@ TEST(JointTransformTest, CustomJointComposesBodyFixedRotationsAndUnrotatedTransl
   EXPECT_TRUE(X.p.isApprox(p, 1e-14));
 }
 
+TEST(JointTransformTest, LinearFunctionWithoutCoordinatesGivesItsSlopeAsOpenSimDoes) {
+  // SimTK::Function::Linear called with no arguments returns coefficients[0].
+  ModelSpec spec = MakeCustomSpec();
+  spec.joints[0].spatial_transform[4].function = std::make_shared<TestLinearFunction>(0.3, 0.7);
+  const auto joint = MakeJointModel(spec, 0);
+  const ModelSpec reference_spec = MakeCustomSpec();  // translation2 = Constant(0.05)
+  const auto reference = MakeJointModel(reference_spec, 0);
+  const double q[] = {0.3, -0.5, 0.8};
+  const Vec3 dp = joint->CalcX_FM(q).p - reference->CalcX_FM(q).p;
+  EXPECT_TRUE(dp.isApprox(Vec3(0, 0.3 - 0.05, 0), 1e-15)) << dp.transpose();
+}
+
 TEST(JointModelErrorsTest, WrongCoordinateCountNamesTheJoint) {
   ModelSpec spec = MakeSpec(JointType::kPin, "PinJoint", 2);
   spec.joints[0].where = {"model.osim", 42};
