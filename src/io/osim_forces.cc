@@ -29,8 +29,8 @@ int ResolveCoordinate(ReadContext& ctx, const pugi::xml_node& node, const std::s
   }
   if (count > 1) {
     ctx.doc().Fail(node, component,
-                   "<" + tag + "> '" + std::string(text) + "' is ambiguous: " +
-                       std::to_string(count) + " coordinates have that name");
+                   "<" + tag + "> '" + std::string(text) +
+                       "' is ambiguous: " + std::to_string(count) + " coordinates have that name");
   }
   return found;
 }
@@ -50,8 +50,7 @@ const FrameEntry* ResolveAttachment(ReadContext& ctx, const pugi::xml_node& node
     const std::string path = name == "ground" ? "/ground" : "/bodyset/" + std::string(name);
     if (name.empty() || !ctx.HasFrame(path)) {
       ctx.doc().Fail(body, own_path,
-                     "<" + std::string(body_tag) + "> '" + std::string(name) +
-                         "' does not exist");
+                     "<" + std::string(body_tag) + "> '" + std::string(name) + "' does not exist");
     }
     const FrameEntry* frame = nullptr;
     *frame_path = ctx.ResolveFrame("", path, body, own_path, &frame);
@@ -136,7 +135,8 @@ GeometryPathSpec ReadGeometryPath(ReadContext& ctx, const pugi::xml_node& points
     }
     bool exists = false;
     for (const BodySpec& body : ctx.spec().bodies) {
-      for (const WrapObjectSpec& w : body.wrap_objects) exists = exists || w.name == wrap.wrap_object;
+      for (const WrapObjectSpec& w : body.wrap_objects)
+        exists = exists || w.name == wrap.wrap_object;
     }
     if (!exists) {
       doc.Fail(node.child("wrap_object") ? node.child("wrap_object") : node, component,
