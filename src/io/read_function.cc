@@ -196,4 +196,19 @@ FunctionPtr ReadFunctionProperty(const XmlDocument& doc, const pugi::xml_node& p
   return ReadFunction(doc, function, component);
 }
 
+pugi::xml_node FindFunctionProperty(const pugi::xml_node& parent, const std::string& property) {
+  for (pugi::xml_node child : parent.children()) {
+    if (child.type() != pugi::node_element) continue;
+    if (property == child.name()) return child;
+    if (IsFunctionType(child.name()) && property == child.attribute("name").value()) return child;
+  }
+  return {};
+}
+
+FunctionPtr ReadFunctionProperty(const XmlDocument& doc, const pugi::xml_node& parent,
+                                 const std::string& property, const std::string& component) {
+  pugi::xml_node node = FindFunctionProperty(parent, property);
+  return node ? ReadFunctionProperty(doc, node, component) : nullptr;
+}
+
 }  // namespace sinew

@@ -139,6 +139,29 @@ TEST(ReadFunctionTest, OtherTypesWithTheirPropertyNames) {
   EXPECT_FALSE(IsFunctionType("Body"));
 }
 
+TEST(ReadFunctionTest, FindsPropertiesInBothForms) {
+  XmlDocument doc = XmlDocument::Parse(
+      "<TransformAxis name=\"rotation1\">\n"
+      "  <coordinates>knee_angle_r</coordinates>\n"
+      "  <SimmSpline name=\"function\"><x>0 1</x><y>0 2</y></SimmSpline>\n"
+      "</TransformAxis>\n",
+      "a.osim");
+  FunctionPtr inline_form = ReadFunctionProperty(doc, doc.root(), "function", "/a");
+  ASSERT_TRUE(inline_form);
+  EXPECT_DOUBLE_EQ(inline_form->Calc(0.5), 1.0);
+  EXPECT_EQ(ReadFunctionProperty(doc, doc.root(), "x_location", "/a"), nullptr);
+  EXPECT_FALSE(FindFunctionProperty(doc.root(), "coordinates").empty());  // a plain child too
+  XmlDocument wrapped = XmlDocument::Parse(
+      "<MovingPathPoint>\n  <x_location>\n    <NaturalCubicSpline name=\"\">\n"
+      "      <x>0 1 2</x><y>0 1 4</y>\n    </NaturalCubicSpline>\n  </x_location>\n"
+      "  <y_location/>\n</MovingPathPoint>\n",
+      "b.osim");
+  FunctionPtr x = ReadFunctionProperty(wrapped, wrapped.root(), "x_location", "/b");
+  ASSERT_TRUE(x);
+  EXPECT_DOUBLE_EQ(x->Calc(1.5), 2.25);  // three knots: the parabola
+  EXPECT_EQ(ReadFunctionProperty(wrapped, wrapped.root(), "y_location", "/b"), nullptr);
+}
+
 TEST(ReadFunctionTest, EmptyWrapperGivesNull) {
   EXPECT_EQ(ReadRoot("<function>\n  <!-- nothing -->\n</function>"), nullptr);
 }
