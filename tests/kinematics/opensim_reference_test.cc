@@ -77,6 +77,34 @@ TEST(OpenSimReferenceTest, HamnerMarkersMatchOpenSimIK) {
   std::cout << "Hamner: max marker error " << max_error << " m (" << worst << ")\n";
 }
 
+TEST(OpenSimReferenceTest, HamnerPelvisMarkerResidualIsAConstantOffset) {
+  // The residual of a pelvis marker is (nearly) the same vector in the pelvis frame in all 599
+  // frames: it comes from the model (the stored geometry differs slightly from the one IK ran
+  // with), not from the kinematics, which would make it vary with the pose.
+  const ModelSpec spec = ReadOsim(kData + "hamner/subject02_registered.osim");
+  const StoTable motion = ReadStoTable(kData + "hamner/subject02_running_ik.mot");
+  const StoTable reference = ReadStoTable(kData + "hamner/ik_model_marker_locations.sto");
+  for (const char* name : {"L.ASIS", "R.ASIS", "V.Sacral"}) {
+    const auto it = std::find_if(spec.markers.begin(), spec.markers.end(),
+                                 [&](const MarkerSpec& m) { return m.name == name; });
+    ASSERT_NE(it, spec.markers.end()) << name;
+    const int c = reference.Column(std::string(name) + "_tx");
+    ASSERT_GE(c, 0);
+    Vec3 lo = Vec3::Constant(1e9), hi = Vec3::Constant(-1e9);
+    ForEachPose(spec, motion, [&](size_t r, const std::vector<Transform>& X) {
+      const Vec3 ref(reference.rows[r][c], reference.rows[r][c + 1], reference.rows[r][c + 2]);
+      const Vec3 e_B = X[it->body].R.transpose() * (ref - X[it->body] * it->location);
+      lo = lo.cwiseMin(e_B);
+      hi = hi.cwiseMax(e_B);
+    });
+    // Spread ~2e-8 m: the 8-decimal rounding of the reference and of the input angles
+    // (5e-9 deg at up to ~1 m) plus that of the pelvis translations (5e-9 m).
+    EXPECT_LT((hi - lo).maxCoeff(), 5e-8) << name;
+    std::cout << name << ": residual in pelvis frame " << (0.5 * (lo + hi)).transpose()
+              << " m, spread " << (hi - lo).maxCoeff() << " m\n";
+  }
+}
+
 // Difference of two angles in degrees, modulo 360.
 double AngleDifferenceDeg(double a, double b) {
   double d = std::fmod(a - b, 360.0);
