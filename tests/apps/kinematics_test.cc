@@ -56,7 +56,7 @@ TEST(KinematicsCliTest, Gait2354BodiesMatchOpenSimBodyKinematics) {
   const StoTable ref =
       ReadStoTable(kData + "gait2354/subject01_walk1_BodyKinematics_pos_global.sto");
   ASSERT_EQ(ours.rows.size(), ref.rows.size());
-  ASSERT_EQ(ours.labels, ref.labels);                 // same columns in the same order
+  ASSERT_EQ(ours.labels, ref.labels);  // same columns in the same order
   for (size_t row = 0; row < ref.rows.size(); ++row) {
     for (size_t c = 1; c < ref.labels.size(); ++c) {
       const std::string& l = ref.labels[c];
