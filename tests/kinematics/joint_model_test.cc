@@ -321,5 +321,17 @@ TEST(JointModelErrorsTest, CollinearCustomAxesAndMissingParametersAreErrors) {
   EXPECT_THROW(MakeJointModel(MakeSpec(JointType::kUnknown, "PluginJoint", 1), 0), Error);
 }
 
+TEST(JointModelErrorsTest, CustomAxisWithForeignCoordinateOrWrongArityIsAnError) {
+  ModelSpec foreign = MakeCustomSpec();
+  CoordinateSpec other;
+  other.name = "other";
+  foreign.coordinates.push_back(other);
+  foreign.joints[0].spatial_transform[0].coordinates = {3};  // not one of the joint's
+  EXPECT_THROW(MakeJointModel(foreign, 0), Error);
+  ModelSpec arity = MakeCustomSpec();
+  arity.joints[0].spatial_transform[1].coordinates = {0};  // a 2-argument function, 1 coordinate
+  EXPECT_THROW(MakeJointModel(arity, 0), Error);
+}
+
 }  // namespace
 }  // namespace sinew
