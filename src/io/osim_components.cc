@@ -43,6 +43,13 @@ void ReadConstraints(ReadContext& ctx, const pugi::xml_node& model) {
     } else if (pugi::xml_node disabled = node.child("isDisabled")) {
       c.enabled = !doc.ReadBool(disabled, c.path);
     }
+    // CoordinateCouplerConstraint: the coordinates it couples must exist (and be unambiguous).
+    for (const char* tag : {"dependent_coordinate_name", "independent_coordinate_names"}) {
+      pugi::xml_node names = node.child(tag);
+      std::istringstream list(names ? std::string(XmlDocument::Text(names)) : std::string());
+      std::string name;
+      while (list >> name) ResolveCoordinateName(ctx, names, name, c.path);
+    }
     c.element = ToElement(doc, node);
     c.where = doc.Where(node);
     ctx.spec().constraints.push_back(std::move(c));

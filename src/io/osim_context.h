@@ -119,6 +119,11 @@ NumberMap ReadNumericLeaves(const XmlDocument& doc, const pugi::xml_node& node,
                             const std::string& component,
                             std::initializer_list<std::string_view> skip);
 
+/// The coordinate a property names (a 4.x path or a 3.x name); fails at `node` when there is
+/// none; when several have that name, warns and takes the first (as OpenSim 3's lookup does).
+int ResolveCoordinateName(ReadContext& ctx, const pugi::xml_node& node, std::string_view text,
+                          const std::string& component);
+
 // ---- the reader's parts ----
 
 /// Ground and bodies (both layouts), their geometry and wrap objects, and every

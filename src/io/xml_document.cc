@@ -109,7 +109,30 @@ XmlDocument XmlDocument::Parse(std::string text, const std::string& file) {
   if (!result.doc_->document_element()) {
     throw Error(SourceLocation{file, 1}, "", "the document has no root element");
   }
+  result.CheckDepth();
   return result;
+}
+
+void XmlDocument::CheckDepth() const {
+  // Readers walk the tree recursively; a hostile file must not exhaust the stack. Iterative walk.
+  const pugi::xml_node root = doc_->document_element();
+  pugi::xml_node node = root;
+  int depth = 0;
+  while (node) {
+    if (pugi::xml_node child = node.first_child()) {
+      node = child;
+      if (++depth > kMaxDepth) {
+        Fail(node, "", "elements are nested deeper than " + std::to_string(kMaxDepth) + " levels");
+      }
+      continue;
+    }
+    while (node && node != root && !node.next_sibling()) {
+      node = node.parent();
+      --depth;
+    }
+    if (!node || node == root) break;
+    node = node.next_sibling();
+  }
 }
 
 void XmlDocument::IndexLines() {

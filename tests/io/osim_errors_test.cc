@@ -20,7 +20,8 @@ std::string Model40(const std::string& joints, const std::string& extra_bodies =
     <BodySet name="bodyset">
       <objects>
         <Body name="upper">
-          <mass>)" + upper_mass + R"(</mass>
+          <mass>)" +
+         upper_mass + R"(</mass>
           <mass_center>0 -0.5 0</mass_center>
           <inertia>0.1 0.1 0.1 0 0 0</inertia>
         </Body>
@@ -28,11 +29,13 @@ std::string Model40(const std::string& joints, const std::string& extra_bodies =
           <mass>1</mass>
           <mass_center>0 -0.5 0</mass_center>
           <inertia>0.1 0.1 0.1 0 0 0</inertia>
-        </Body>)" + extra_bodies + R"(
+        </Body>)" +
+         extra_bodies + R"(
       </objects>
     </BodySet>
     <JointSet name="jointset">
-      <objects>)" + joints + R"(
+      <objects>)" +
+         joints + R"(
       </objects>
     </JointSet>
   </Model>
@@ -43,10 +46,14 @@ std::string Model40(const std::string& joints, const std::string& extra_bodies =
 std::string Pin(const std::string& name, const std::string& parent, const std::string& child,
                 const std::string& coordinate) {
   return R"(
-        <PinJoint name=")" + name + R"(">
-          <socket_parent_frame>)" + parent + R"(</socket_parent_frame>
-          <socket_child_frame>)" + child + R"(</socket_child_frame>
-          <coordinates><Coordinate name=")" + coordinate + R"("/></coordinates>
+        <PinJoint name=")" +
+         name + R"(">
+          <socket_parent_frame>)" +
+         parent + R"(</socket_parent_frame>
+          <socket_child_frame>)" +
+         child + R"(</socket_child_frame>
+          <coordinates><Coordinate name=")" +
+         coordinate + R"("/></coordinates>
         </PinJoint>)";
 }
 
@@ -130,8 +137,9 @@ TEST(OsimErrors, DuplicateBodyNames) {
               "duplicate body name 'upper'");
 }
 
-TEST(OsimErrors, AmbiguousCoordinateReference) {
-  // Two coordinates named q; a path point conditioned on "q" cannot be resolved.
+TEST(OsimErrors, AmbiguousCoordinateReferenceWarnsAndTakesTheFirst) {
+  // Two coordinates named q: a path point conditioned on "q" gets the first, with a warning (as
+  // OpenSim 3's name lookup does; chrono's newton_cradle.osim needs it).
   std::string text = Model40(Pin("j1", "/ground", "/bodyset/upper", "q") +
                              Pin("j2", "/bodyset/upper", "/bodyset/lower", "q"));
   const std::string forces = R"(<ForceSet><objects><PathSpring name="s"><GeometryPath>
@@ -140,8 +148,20 @@ TEST(OsimErrors, AmbiguousCoordinateReference) {
 <socket_coordinate>q</socket_coordinate><range>0 1</range></ConditionalPathPoint>
 </objects></PathPointSet></GeometryPath></PathSpring></objects></ForceSet>)";
   text.insert(text.find("  </Model>"), forces);
+  const ModelSpec spec = ReadOsimString(text, "ambiguous.osim");
+  EXPECT_EQ(spec.forces[0].geometry_path->points[0].coordinate, 0);
+  bool warned = false;
+  for (const Diagnostic& d : spec.warnings) {
+    warned = warned || (d.component == "/forceset/s/geometrypath/p" &&
+                        d.where.line == LineOf(text, "<socket_coordinate>") &&
+                        d.message.find("'q' is ambiguous") != std::string::npos);
+  }
+  EXPECT_TRUE(warned);
+  // A name that matches nothing is an error.
+  const size_t at = text.find("<socket_coordinate>q<");
+  text.replace(at, 21, "<socket_coordinate>z<");
   ExpectError(text, LineOf(text, "<socket_coordinate>"), "/forceset/s/geometrypath/p",
-              "'q' is ambiguous: 2 coordinates");
+              "<socket_coordinate> 'z' does not exist");
 }
 
 TEST(OsimErrors, CycleOfJoints) {
@@ -214,13 +234,18 @@ TEST(OsimErrors, CustomJointAxisNamesUnknownCoordinate) {
 TEST(OsimErrors, BadVersionAndMissingModel) {
   ExpectError(R"(<OpenSimDocument Version="4x"><Model/></OpenSimDocument>)", 1, "",
               "Version '4x' is not a number");
-  ExpectError(R"(<OpenSimDocument Version="40000"></OpenSimDocument>)", 1, "",
-              "holds no <Model>");
+  ExpectError(R"(<OpenSimDocument Version="40000"></OpenSimDocument>)", 1, "", "holds no <Model>");
 }
 
-TEST(OsimErrors, MissingFile) {
-  EXPECT_THROW(ReadOsim("/nonexistent/model.osim"), Error);
+TEST(OsimErrors, DeeplyNestedInputFailsWithoutExhaustingTheStack) {
+  std::string text = "<OpenSimDocument Version=\"40000\"><Model name=\"m\">";
+  for (int i = 0; i < 100000; ++i) text += "<a>";
+  for (int i = 0; i < 100000; ++i) text += "</a>";
+  text += "</Model></OpenSimDocument>";
+  ExpectError(text, 1, "", "nested deeper than");
 }
+
+TEST(OsimErrors, MissingFile) { EXPECT_THROW(ReadOsim("/nonexistent/model.osim"), Error); }
 
 }  // namespace
 }  // namespace sinew
