@@ -1,9 +1,8 @@
 #include "functions/gcv_spline.h"
 
-#include <cmath>
-
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
+#include <cmath>
 
 #include "common/error.h"
 #include "functions/derivative_order.h"
@@ -106,7 +105,7 @@ double GCVSpline::CalcPiece(int k, double x, int order) const {
 }
 
 double GCVSpline::CalcDerivative(double x, int order) const {
-  CheckDerivativeOrder(order, TypeName());
+  CheckDerivativeOrder(order, "GCVSpline");
   const bool before = x < x_.front();
   if (before || x > x_.back()) {
     // The degree m-1 polynomial with the end derivatives: sum_r D^r (x - x_end)^(r - order) /

@@ -21,7 +21,7 @@ double PiecewiseConstantFunction::Calc(double x) const {
 }
 
 double PiecewiseConstantFunction::CalcDerivative(double x, int order) const {
-  CheckDerivativeOrder(order, TypeName());
+  CheckDerivativeOrder(order, "PiecewiseConstantFunction");
   return order == 0 ? Calc(x) : 0.0;
 }
 

@@ -11,7 +11,8 @@
 namespace sinew {
 
 /// Reads one Function element; its tag is the OpenSim class name (<SimmSpline>, <Constant>,
-/// <LinearFunction>, <MultiplierFunction>, ...). NaturalCubicSpline is read as a SimmSpline.
+/// <LinearFunction>, <MultiplierFunction>, ...). NaturalCubicSpline and natCubicSpline are read
+/// as SimmSpline, as OpenSim renames them.
 /// Throws sinew::Error (file, line, `component`) for an unknown type or malformed values.
 FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node& element,
                          const std::string& component);

@@ -50,6 +50,8 @@ TEST(ReadFunctionTest, NaturalCubicSplineIsReadAsSimmSpline) {
   ASSERT_TRUE(spline);
   // y = x^2 sampled at 4 knots: the FMM end conditions reproduce it exactly.
   EXPECT_NEAR(f->Calc(0.5), 0.25, 1e-14);
+  EXPECT_EQ(ReadRoot("<natCubicSpline><x>0 1</x><y>0 1</y></natCubicSpline>")->TypeName(),
+            "SimmSpline");
 }
 
 TEST(ReadFunctionTest, ConstantLinearPolynomial) {
