@@ -13,5 +13,6 @@ inline constexpr int kExitBadInput = 2;
 
 void AddInspectCommand(CLI::App& app);
 void AddSimulateCommand(CLI::App& app);
+void AddKinematicsCommand(CLI::App& app);
 
 }  // namespace sinew::cli
