@@ -1,6 +1,5 @@
 #include "functions/knots.h"
 
-#include <algorithm>
 #include <cmath>
 
 #include "common/error.h"
@@ -26,13 +25,6 @@ void CheckKnots(std::span<const double> x, std::span<const double> y, int min_po
                   std::to_string(i - 1) + "]");
     }
   }
-}
-
-int FindKnotInterval(std::span<const double> x, double value) {
-  const int n = static_cast<int>(x.size());
-  // First knot strictly greater than value, minus one: x[k] <= value < x[k+1].
-  const int k = static_cast<int>(std::upper_bound(x.begin(), x.end(), value) - x.begin()) - 1;
-  return std::clamp(k, 0, n - 2);
 }
 
 }  // namespace sinew
