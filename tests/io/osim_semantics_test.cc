@@ -352,5 +352,21 @@ TEST(OsimSemantics, Controllers) {
   EXPECT_THROW(ReadOsimString(bad, "ctl.osim"), Error);
 }
 
+// Joint-specific numbers are kept as parameters (chrono's 3.0 ScapulothoracicJoint model).
+TEST(OsimSemantics, ScapulothoracicParameters) {
+  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                  "/osim/projectchrono/chrono/data/opensim/"
+                                  "ScapulothorachicJoint_Shoulder.osim");
+  const JointSpec& j = spec.joints[spec.FindJoint("scapulothoracic")];
+  EXPECT_EQ(j.kind, JointType::kScapulothoracic);
+  EXPECT_EQ(j.parameters.at("thoracic_ellipsoid_radii_x_y_z"),
+            (std::vector<double>{0.07, 0.15, 0.07}));
+  EXPECT_EQ(j.parameters.at("scapula_winging_axis_origin"), (std::vector<double>{0, 0}));
+  EXPECT_EQ(j.parameters.at("scapula_winging_axis_direction"), (std::vector<double>{0}));
+  EXPECT_EQ(j.parameters.count("location_in_parent"), 0u);  // offsets are frames, not parameters
+  EXPECT_NEAR((j.X_PF.p - Vec3(-0.02, -0.0173, 0.07)).norm(), 0, kTol);
+  EXPECT_EQ(j.coordinates.size(), 4u);
+}
+
 }  // namespace
 }  // namespace sinew
