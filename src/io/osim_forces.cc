@@ -187,6 +187,17 @@ void ReadForces(ReadContext& ctx, const pugi::xml_node& model) {
       std::string name = owner == node ? "geometrypath" : NameOf(owner);
       if (name.empty()) name = "geometrypath";
       force.geometry_path = ReadGeometryPath(ctx, owner, force.path + "/" + name);
+    } else {
+      // Other path kinds (4.6 Scholz2015GeometryPath, FunctionBasedPath): kept, not read.
+      for (pugi::xml_node child : node.children()) {
+        const std::string_view tag = child.name();
+        if (child.type() == pugi::node_element && tag.size() >= 4 &&
+            (tag.substr(tag.size() - 4) == "Path")) {
+          ctx.Warn(child, force.path,
+                   "path of type <" + std::string(tag) + "> kept in the element, not read",
+                   "path:" + std::string(tag));
+        }
+      }
     }
     // CoordinateActuator, CoordinateLimitForce, ...: the coordinate must exist.
     if (pugi::xml_node coordinate = node.child("coordinate")) {

@@ -99,6 +99,19 @@ bool IsKnownCoordinateProperty(std::string_view tag) {
   return false;
 }
 
+// Joint properties the reader uses; other non-numeric ones get one warning per tag.
+bool IsKnownJointProperty(std::string_view tag) {
+  static constexpr std::string_view kKnown[] = {
+      "socket_parent_frame", "socket_child_frame", "coordinates", "CoordinateSet", "frames",
+      "SpatialTransform", "parent_body", "reverse", "connectors", "FrameGeometry",
+      "components", "Appearance", "location_in_parent", "orientation_in_parent", "location",
+      "orientation", "location_in_child", "orientation_in_child"};
+  for (std::string_view known : kKnown) {
+    if (tag == known) return true;
+  }
+  return false;
+}
+
 class JointReader {
  public:
   explicit JointReader(ReadContext& ctx) : ctx_(ctx), doc_(ctx.doc()), spec_(ctx.spec()) {}
@@ -191,6 +204,13 @@ class JointReader {
     if (!info) {
       ctx_.Warn(node, joint.path, "unknown joint type <" + joint.type + ">: read with its frames",
                 "jointtype:" + joint.type);
+    }
+    for (pugi::xml_node child : node.children()) {
+      if (child.type() != pugi::node_element || IsKnownJointProperty(child.name())) continue;
+      if (joint.parameters.count(child.name()) || IsNumberList(XmlDocument::Text(child))) continue;
+      ctx_.Warn(child, joint.path,
+                "joint property <" + std::string(child.name()) + "> kept in the element, not used",
+                std::string("joint:") + joint.type + ":" + child.name());
     }
     joint.element = ToElement(doc_, node);
     joint.where = doc_.Where(node);

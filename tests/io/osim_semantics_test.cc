@@ -276,5 +276,97 @@ TEST(OsimSemantics, MovingAndConditionalPathPoints) {
   EXPECT_EQ(spec.constraints[0].type, "CoordinateCouplerConstraint");
 }
 
+// 3.x contact geometry (body_name, location, orientation) and a 1.9 wrap object on ground, with
+// the values copied from the files.
+TEST(OsimSemantics, ContactGeometryAndWrapObjects) {
+  const std::string dir = std::string(SINEW_TEST_DATA_DIR) + "/osim/opensim-org/opensim-core/";
+  const ModelSpec ball = ReadOsim(dir + "OpenSim/Simulation/Test/BouncingBall_HuntCrossley.osim");
+  ASSERT_EQ(ball.contact_geometry.size(), 2u);
+  const ContactGeometrySpec& floor = ball.contact_geometry[0];
+  EXPECT_EQ(floor.type, "ContactHalfSpace");
+  EXPECT_EQ(floor.body, kGroundIndex);
+  // orientation 0 0 -1.57079633: body-fixed XYZ angles, here one rotation about z.
+  EXPECT_NEAR((floor.X_BC.R - RotationAboutAxis(Vec3::UnitZ(), -1.57079633)).norm(), 0, kTol);
+  const ContactGeometrySpec& sphere = ball.contact_geometry[1];
+  EXPECT_EQ(sphere.body, ball.FindBody("ball"));
+  EXPECT_EQ(sphere.dimensions.at("radius")[0], 0.5);
+
+  const ModelSpec arm = ReadOsim(dir + "OpenSim/Simulation/Test/arm26.osim");
+  const auto& wraps = arm.bodies[kGroundIndex].wrap_objects;
+  ASSERT_EQ(wraps.size(), 1u);
+  EXPECT_EQ(wraps[0].name, "TRIlongglen");
+  EXPECT_EQ(wraps[0].type, "WrapCylinder");
+  EXPECT_EQ(wraps[0].quadrant, "x");
+  EXPECT_NEAR((wraps[0].X_BW.p - Vec3(-0.043905, -0.0039, 0.1478)).norm(), 0, kTol);
+  EXPECT_NEAR(
+      (wraps[0].X_BW.R - RotationFromBodyFixedXYZ(Vec3(1.37531945, -0.29461158, 2.43595604)))
+          .norm(),
+      0, kTol);
+  EXPECT_EQ(wraps[0].dimensions.at("radius")[0], 0.003);
+  EXPECT_EQ(wraps[0].dimensions.at("length")[0], 0.03);
+  // 1.9 VisibleObject geometry_files on ground: six meshes.
+  EXPECT_EQ(arm.bodies[kGroundIndex].geometry.size(), 6u);
+  EXPECT_EQ(arm.bodies[kGroundIndex].geometry[0].mesh_file, "ground_ribs.vtp");
+}
+
+// 3.05 DisplayGeometry: transform (rotations then translation) and scale factors.
+TEST(OsimSemantics, DisplayGeometry) {
+  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                  "/osim/opensim-org/opensim-core/OpenSim/Simulation/Test/"
+                                  "double_pendulum.osim");
+  const BodySpec& rod1 = spec.bodies[spec.FindBody("rod1")];
+  ASSERT_EQ(rod1.geometry.size(), 2u);
+  EXPECT_EQ(rod1.geometry[0].mesh_file, "cylinder.vtp");
+  EXPECT_NEAR((rod1.geometry[0].X_BG.p - Vec3(0, 0.25, 0)).norm(), 0, kTol);
+  EXPECT_NEAR((rod1.geometry[0].scale_factors - Vec3(0.02, 0.5, 0.02)).norm(), 0, kTol);
+  EXPECT_EQ(rod1.geometry[1].mesh_file, "sphere.vtp");
+  // 3.05 connectors: pin2 connects rod1 to rod2 with location_in_child 0 0.5 0.
+  const JointSpec& pin2 = spec.joints[spec.FindJoint("pin2")];
+  EXPECT_EQ(spec.bodies[pin2.parent_body].name, "rod1");
+  EXPECT_EQ(spec.bodies[pin2.child_body].name, "rod2");
+  EXPECT_NEAR((pin2.X_BM.p - Vec3(0, 0.5, 0)).norm(), 0, kTol);
+}
+
+// Controllers keep their actuator list and settings.
+TEST(OsimSemantics, Controllers) {
+  const std::string text = Doc(40000, R"(<Ground name="ground"/>
+<BodySet><objects><Body name="b"><mass>1</mass></Body></objects></BodySet>
+<JointSet><objects><SliderJoint name="s"><socket_parent_frame>/ground</socket_parent_frame>
+<socket_child_frame>/bodyset/b</socket_child_frame><coordinates><Coordinate name="x"/></coordinates>
+</SliderJoint></objects></JointSet>
+<ForceSet><objects><CoordinateActuator name="act"><coordinate>x</coordinate></CoordinateActuator>
+</objects></ForceSet>
+<ControllerSet><objects><PrescribedController name="ctl">
+<socket_actuators>/forceset/act</socket_actuators>
+<FunctionSet name="ControlFunctions"><objects><Constant name="f"><value>2</value></Constant>
+</objects></FunctionSet></PrescribedController></objects></ControllerSet>)");
+  const ModelSpec spec = ReadOsimString(text, "ctl.osim");
+  ASSERT_EQ(spec.controllers.size(), 1u);
+  EXPECT_EQ(spec.controllers[0].type, "PrescribedController");
+  ASSERT_EQ(spec.controllers[0].actuators.size(), 1u);
+  EXPECT_EQ(spec.controllers[0].actuators[0], "/forceset/act");
+  EXPECT_NE(spec.controllers[0].element.Child("FunctionSet"), nullptr);
+  // A CoordinateActuator naming a coordinate that does not exist is an error.
+  std::string bad = text;
+  bad.replace(bad.find("<coordinate>x<"), 14, "<coordinate>y<");
+  EXPECT_THROW(ReadOsimString(bad, "ctl.osim"), Error);
+}
+
+// Joint-specific numbers are kept as parameters (chrono's 3.0 ScapulothoracicJoint model).
+TEST(OsimSemantics, ScapulothoracicParameters) {
+  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                  "/osim/projectchrono/chrono/data/opensim/"
+                                  "ScapulothorachicJoint_Shoulder.osim");
+  const JointSpec& j = spec.joints[spec.FindJoint("scapulothoracic")];
+  EXPECT_EQ(j.kind, JointType::kScapulothoracic);
+  EXPECT_EQ(j.parameters.at("thoracic_ellipsoid_radii_x_y_z"),
+            (std::vector<double>{0.07, 0.15, 0.07}));
+  EXPECT_EQ(j.parameters.at("scapula_winging_axis_origin"), (std::vector<double>{0, 0}));
+  EXPECT_EQ(j.parameters.at("scapula_winging_axis_direction"), (std::vector<double>{0}));
+  EXPECT_EQ(j.parameters.count("location_in_parent"), 0u);  // offsets are frames, not parameters
+  EXPECT_NEAR((j.X_PF.p - Vec3(-0.02, -0.0173, 0.07)).norm(), 0, kTol);
+  EXPECT_EQ(j.coordinates.size(), 4u);
+}
+
 }  // namespace
 }  // namespace sinew
