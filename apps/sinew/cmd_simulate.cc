@@ -7,10 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,8 +19,9 @@
 #include "engine/integrator.h"
 #include "engine/pose.h"
 #include "io/osim_reader.h"
+#include "io/storage.h"
+#include "io/storage_labels.h"
 #include "kinematics/body_kinematics.h"
-#include "kinematics/coordinate_motion.h"
 
 namespace sinew::cli {
 namespace {
@@ -39,100 +38,28 @@ struct SimulateOptions {
   bool quiet = false;
 };
 
-// A table of rows, written as an OpenSim storage file (tab separated, header, endheader).
-struct Table {
-  std::vector<std::string> labels;  // time first
-  std::vector<std::vector<double>> rows;
-};
-
-void WriteTable(const std::string& path, const std::string& name, const Table& table,
-                bool in_degrees) {
-  std::ofstream out(path);
-  if (!out) throw Error({path, 0}, "", "cannot write the file");
-  out << name << "\nversion=1\nnRows=" << table.rows.size() << "\nnColumns=" << table.labels.size()
-      << "\ninDegrees=" << (in_degrees ? "yes" : "no") << "\nendheader\n";
-  for (size_t i = 0; i < table.labels.size(); ++i) out << (i ? "\t" : "") << table.labels[i];
-  out << "\n";
-  char buffer[32];
-  for (const auto& row : table.rows) {
-    for (size_t i = 0; i < row.size(); ++i) {
-      std::snprintf(buffer, sizeof buffer, "%.17g", row[i]);
-      out << (i ? "\t" : "") << buffer;
-    }
-    out << "\n";
-  }
-  if (!out) throw Error({path, 0}, "", "error while writing the file");
-}
-
-// Reads a storage file's labels, first data row and inDegrees flag (minimal reader).
-Table ReadFirstRow(const std::string& path, bool* in_degrees) {
-  std::ifstream in(path);
-  if (!in) throw Error({path, 0}, "", "cannot open the initial-states file");
-  std::string line;
-  int line_number = 0;
-  *in_degrees = false;
-  bool header_done = false;
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (line.rfind("inDegrees", 0) == 0) *in_degrees = line.find("yes") != std::string::npos;
-    if (line.rfind("endheader", 0) == 0) {
-      header_done = true;
-      break;
-    }
-  }
-  if (!header_done) throw Error({path, line_number}, "", "no 'endheader' line");
-  Table table;
-  if (!std::getline(in, line)) throw Error({path, line_number}, "", "no column labels");
-  ++line_number;
-  {
-    std::istringstream ls(line);
-    std::string label;
-    while (ls >> label) table.labels.push_back(label);
-  }
-  if (table.labels.empty() || table.labels[0] != "time") {
-    throw Error({path, line_number}, "", "the first column must be 'time'");
-  }
-  while (std::getline(in, line)) {
-    ++line_number;
-    std::istringstream ls(line);
-    std::vector<double> row;
-    double x;
-    while (ls >> x) row.push_back(x);
-    if (row.empty()) continue;
-    if (row.size() != table.labels.size()) {
-      throw Error({path, line_number}, "",
-                  "row has " + std::to_string(row.size()) + " values for " +
-                      std::to_string(table.labels.size()) + " columns");
-    }
-    table.rows.push_back(std::move(row));
-    break;
-  }
-  if (table.rows.empty()) throw Error({path, line_number}, "", "no data rows");
-  return table;
-}
-
-// Sets q and u from the first row of an initial-states file (OpenSim 4 paths or old names).
+// Sets q and u from the first row of an initial-states file (OpenSim 4 paths or old names;
+// rotational columns converted when the file is in degrees). Coordinates it does not name keep
+// their defaults.
 void ApplyInitialStates(const std::string& path, const ModelSpec& spec,
                         const engine::System& system, engine::State& state) {
-  bool in_degrees = false;
-  const Table table = ReadFirstRow(path, &in_degrees);
-  const std::vector<double>& row = table.rows[0];
-  state.t = row[0];
-  std::vector<double> q(state.q.data(), state.q.data() + state.q.size());
-  const MotionColumnMap map = MapMotionColumns(spec, table.labels);
-  ApplyMotionRow(spec, map, row, in_degrees, q);
-  for (size_t c = 0; c < q.size(); ++c) state.q[c] = q[c];
+  Storage storage = ReadStorage(path);
+  for (const Diagnostic& note : storage.notes) {
+    std::cerr << "sinew: note: " << note.Format() << "\n";
+  }
+  if (storage.NumRows() == 0) throw Error({path, 0}, "", "the initial-states file has no rows");
+  std::vector<std::string> rotational;
+  for (const CoordinateSpec& c : spec.coordinates) {
+    if (c.motion_type == MotionType::kRotational) rotational.push_back(c.name);
+  }
+  ConvertDegreesToRadians(storage, rotational);
+  state.t = storage.time[0];
   for (int c = 0; c < system.num_coordinates(); ++c) {
-    const CoordinateSpec& coordinate = spec.coordinates[c];
-    const std::string path4 =
-        "/jointset/" + spec.joints[coordinate.joint].name + "/" + coordinate.name + "/speed";
-    for (size_t i = 1; i < table.labels.size(); ++i) {
-      if (table.labels[i] == coordinate.name + "_u" || table.labels[i] == path4 ||
-          table.labels[i] == coordinate.name + "_speed") {
-        const bool degrees = in_degrees && coordinate.motion_type == MotionType::kRotational;
-        state.u[c] = degrees ? row[i] * M_PI / 180.0 : row[i];
-      }
-    }
+    const std::string& name = spec.coordinates[c].name;
+    const int value = FindCoordinateColumn(storage, name, CoordinateColumnKind::kValue);
+    const int speed = FindCoordinateColumn(storage, name, CoordinateColumnKind::kSpeed);
+    if (value >= 0) state.q[c] = storage.Value(0, value);
+    if (speed >= 0) state.u[c] = storage.Value(0, speed);
   }
   engine::PlaceBodies(system, state);
   engine::ProjectState(system, state);
@@ -161,27 +88,28 @@ void RunSimulate(const SimulateOptions& options) {
   const auto integrator = engine::MakeIntegrator(options.integrator, *system, settings);
   std::filesystem::create_directories(options.out);
 
-  Table states, bodies;
-  states.labels.push_back("time");
+  Storage states, bodies;
+  states.name = "states";
   for (const CoordinateSpec& c : spec.coordinates) {
     const std::string base = "/jointset/" + spec.joints[c.joint].name + "/" + c.name;
     states.labels.push_back(base + "/value");
     states.labels.push_back(base + "/speed");
   }
-  bodies.labels.push_back("time");
-  for (const std::string& label : BodyKinematicsLabels(spec)) bodies.labels.push_back(label);
+  // bodies.sto as `sinew kinematics` writes it (OpenSim BodyKinematics positions; the angles
+  // are degrees, and the header says so).
+  bodies.name = "Positions";
+  bodies.labels = BodyKinematicsLabels(spec);
+  bodies.in_degrees = true;
   std::vector<Transform> X_GB(system->num_bodies());
   auto record = [&]() {
-    std::vector<double> row{state.t};
+    std::vector<double> row;
     for (int c = 0; c < system->num_coordinates(); ++c) {
       row.push_back(state.q[c]);
       row.push_back(state.u[c]);
     }
-    states.rows.push_back(std::move(row));
+    states.AppendRow(state.t, row);
     for (int b = 0; b < system->num_bodies(); ++b) X_GB[b] = engine::PoseOf(state.bodies[b]);
-    std::vector<double> body_row{state.t};
-    for (double x : CalcBodyKinematicsRow(spec, X_GB)) body_row.push_back(x);
-    bodies.rows.push_back(std::move(body_row));
+    bodies.AppendRow(state.t, CalcBodyKinematicsRow(spec, X_GB));
   };
 
   const bool progress = !options.quiet && isatty(fileno(stderr));
@@ -195,9 +123,8 @@ void RunSimulate(const SimulateOptions& options) {
     if (progress) ShowProgress(static_cast<double>(i) / n, state.t);
   }
   if (progress) std::fprintf(stderr, "\n");
-  WriteTable(options.out + "/states.sto", "states", states, false);
-  // BodyKinematics rows give angles in degrees.
-  WriteTable(options.out + "/bodies.sto", "bodies", bodies, true);
+  WriteStorage(states, options.out + "/states.sto");
+  WriteStorage(bodies, options.out + "/bodies.sto");
   if (!options.quiet) {
     const auto& stats = integrator->stats();
     std::cout << "simulated " << options.duration << " s of " << spec.name << ": " << stats.steps
