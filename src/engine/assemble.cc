@@ -6,6 +6,7 @@
 #include "common/error.h"
 #include "engine/direct_joint.h"
 #include "engine/pose.h"
+#include "engine/projection.h"
 
 namespace sinew::engine {
 namespace {
@@ -42,6 +43,8 @@ State MakeDefaultState(const System& system, double t) {
     }
   }
   PlaceBodies(system, state);
+  // Joints that close loops were not used to place bodies: assemble them by projection.
+  if (system.HasLoops()) ProjectState(system, state);
   return state;
 }
 

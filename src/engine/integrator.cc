@@ -24,15 +24,6 @@ double Integrator::ConstraintTolerance() const {
                                               : std::min(1e-3 * settings_.accuracy, 1e-10);
 }
 
-void ProjectState(const System& system, State& state, double tolerance) {
-  KktSolver kkt(system);
-  if (!ProjectPositions(system, state, tolerance, kkt, 50)) {
-    throw Error("engine: cannot satisfy the constraints from this state");
-  }
-  ProjectVelocities(system, state, kkt);
-  UpdateDirectCoordinates(system, state);
-}
-
 namespace {
 
 // The integrated vector y = [positions; velocities]: per moving body p_GB and quat_GB

@@ -13,6 +13,7 @@
 
 #include "engine/kkt.h"
 #include "engine/loads.h"
+#include "engine/projection.h"
 #include "engine/state.h"
 #include "engine/system.h"
 
@@ -65,9 +66,5 @@ class Integrator {
 /// Makes the integrator named `name` ("rk45" or "euler"). Throws sinew::Error for another name.
 std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System& system,
                                            const IntegratorSettings& settings);
-
-/// Moves `state` onto the constraints (positions, then velocities) with tolerance `tolerance`;
-/// use before integrating a state whose coordinates were set by hand. Throws on failure.
-void ProjectState(const System& system, State& state, double tolerance = 1e-12);
 
 }  // namespace sinew::engine

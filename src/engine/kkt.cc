@@ -47,7 +47,7 @@ KktSolver::KktSolver(const System& system, bool allow_tree) : system_(system) {
   matrix_.resize(nv_ + nc_, nv_ + nc_);
   // Without loop constraints the tree elimination applies: constraints are the joints', then
   // coordinate constraints that touch one coordinate's speed only.
-  bool tree = allow_tree;
+  bool tree = allow_tree && !system.HasLoops();
   for (size_t k = system.joints().size(); k < constraints.size(); ++k) {
     tree = tree && constraints[k]->Bodies().empty() && constraints[k]->Coordinates().size() == 1;
   }

@@ -3,6 +3,8 @@
 #include <limits>
 #include <vector>
 
+#include "common/error.h"
+#include "engine/assemble.h"
 #include "engine/pose.h"
 
 namespace sinew::engine {
@@ -86,6 +88,15 @@ void ProjectVelocities(const System& system, State& state, KktSolver& kkt) {
         system, state, rhs.segment(nv + kkt.EquationRow(k), constraints[k]->NumEquations()));
   }
   ScatterVelocities(system, kkt, kkt.Solve(rhs).head(nv), state);
+}
+
+void ProjectState(const System& system, State& state, double tolerance) {
+  KktSolver kkt(system);
+  if (!ProjectPositions(system, state, tolerance, kkt, 50)) {
+    throw Error("engine: cannot satisfy the constraints from this state");
+  }
+  ProjectVelocities(system, state, kkt);
+  UpdateDirectCoordinates(system, state);
 }
 
 }  // namespace sinew::engine

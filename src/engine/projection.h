@@ -29,4 +29,8 @@ void ProjectVelocities(const System& system, State& state, KktSolver& kkt);
 void ApplyPositionDisplacement(const System& system, const KktSolver& kkt, const VecX& dx,
                                State& state);
 
+/// Moves `state` onto the constraints (positions, then velocities) with tolerance `tolerance`;
+/// use before integrating a state whose coordinates were set by hand. Throws on failure.
+void ProjectState(const System& system, State& state, double tolerance = 1e-12);
+
 }  // namespace sinew::engine

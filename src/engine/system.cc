@@ -96,6 +96,7 @@ void System::Finalize() {
   // child is nearer to ground is used reversed (the constraint itself is the same).
   joint_of_body_.assign(bodies_.size(), -1);
   reversed_.assign(joints_.size(), false);
+  loop_.assign(joints_.size(), false);
   tree_order_.clear();
   std::vector<bool> placed_body(bodies_.size(), false);
   placed_body[0] = true;
@@ -106,8 +107,12 @@ void System::Finalize() {
       if (placed[j]) continue;
       const Joint& joint = joints_[j];
       if (placed_body[joint.parent] && placed_body[joint.child]) {
-        throw Error({}, joint.name,
-                    "the joints form a closed loop (use a constraint to close a loop)");
+        // Both bodies are already placed: this joint closes a loop. It stays a constraint
+        // (solved with the others) but places no body.
+        loop_[j] = true;
+        placed[j] = true;
+        progress = true;
+        continue;
       }
       if (!placed_body[joint.parent] && !placed_body[joint.child]) continue;
       reversed_[j] = placed_body[joint.child];

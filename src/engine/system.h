@@ -3,6 +3,7 @@
 // in an engine::State; algorithms are free functions over (System, State).
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -70,8 +71,9 @@ class System {
 
   /// Adds a body; returns its index. Mass must be >= 0 and the inertia symmetric.
   int AddBody(const Body& body);
-  /// Adds a joint (its coordinates in joint order); returns its index. The joints must form a
-  /// tree containing ground (a joint may point towards ground: it is then used reversed).
+  /// Adds a joint (its coordinates in joint order); returns its index. The joints must connect
+  /// every body to ground (a joint may point towards ground: it is then used reversed; a joint
+  /// between two bodies already connected closes a loop).
   int AddJoint(const std::string& name, int parent, const Transform& X_PF, int child,
                const Transform& X_BM, JointForm form, std::shared_ptr<const JointModel> model,
                const std::vector<CoordinateDesc>& coordinates);
@@ -107,6 +109,11 @@ class System {
   const std::vector<int>& tree_order() const { return tree_order_; }
   /// True when joint j places its parent body from its child (child nearer to ground).
   bool IsReversed(int j) const { return reversed_[j]; }
+  /// True when joint j closes a loop of joints: it places no body (not in tree_order()), and
+  /// its constraint is solved with the others; states are assembled by projection.
+  bool IsLoop(int j) const { return loop_[j]; }
+  /// Whether any joint closes a loop.
+  bool HasLoops() const { return std::find(loop_.begin(), loop_.end(), true) != loop_.end(); }
   /// The joint that places body `b` from ground outward, or -1 (ground).
   int JointOfBody(int b) const { return joint_of_body_[b]; }
 
@@ -128,6 +135,7 @@ class System {
   std::vector<int> tree_order_;
   std::vector<int> joint_of_body_;
   std::vector<bool> reversed_;
+  std::vector<bool> loop_;
   int num_integrated_ = 0;
   bool finalized_ = false;
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "common/error.h"
 #include "engine/assemble.h"
@@ -244,6 +245,48 @@ TEST(MotionTest, SingularSystemsGiveClearErrors) {
     FAIL() << "expected a singular-system error";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("singular"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace sinew::engine
+
+namespace sinew::engine {
+namespace {
+
+// A rod on a free joint and, closing a loop, on a pin to ground: the pin is a loop constraint
+// (not a tree joint) and the rod must swing exactly like the rod of a plain pin.
+TEST(MotionTest, LoopJointClosesAFreeJointIntoAPin) {
+  const Body rod = testing::MakeBody("rod", 2.0, Vec3(0, -0.5, 0), 0.02 * Mat3::Identity());
+  System loop(Vec3(0, -9.81, 0));
+  const int b1 = loop.AddBody(rod);
+  std::vector<CoordinateDesc> free_coordinates;
+  for (const char* name : {"rx", "ry", "rz", "tx", "ty", "tz"}) {
+    free_coordinates.push_back(testing::Coord(name));
+  }
+  free_coordinates[2].default_value = 0.8;  // consistent with the pin angle
+  loop.AddJoint("free", 0, Transform::Identity(), b1, Transform::Identity(),
+                JointForm::kParameterized, std::make_shared<testing::FreeModel>(),
+                free_coordinates);
+  loop.AddJoint("pin", 0, Transform::Identity(), b1, Transform::Identity(), JointForm::kPin,
+                nullptr, {testing::Coord("q", 0.8)});
+  loop.Finalize();
+  EXPECT_TRUE(loop.IsLoop(1));
+  System tree(Vec3(0, -9.81, 0));
+  const int b2 = tree.AddBody(rod);
+  tree.AddJoint("pin", 0, Transform::Identity(), b2, Transform::Identity(), JointForm::kPin,
+                nullptr, {testing::Coord("q", 0.8)});
+  tree.Finalize();
+  State s1 = MakeDefaultState(loop), s2 = MakeDefaultState(tree);
+  auto i1 = MakeIntegrator("rk45", loop, Tight());
+  auto i2 = MakeIntegrator("rk45", tree, Tight());
+  for (double t : {0.5, 1.0, 2.0}) {
+    i1->StepTo(s1, t);
+    i2->StepTo(s2, t);
+    EXPECT_NEAR(s1.q[6], s2.q[0], 1e-8);  // the loop pin's angle, read off the poses
+    EXPECT_NEAR(s1.q[2], s2.q[0], 1e-8);  // the free joint's z rotation
+    EXPECT_LT((s1.bodies[b1].p_GB - s2.bodies[b2].p_GB).norm(), 1e-8);
+    EXPECT_LT((s1.bodies[b1].w_GB - s2.bodies[b2].w_GB).norm(), 1e-7);
   }
 }
 

@@ -140,6 +140,35 @@ class BallModel final : public JointModel {
   }
 };
 
+/// OpenSim's FreeJoint: body-fixed X-Y-Z angles and a translation along F's axes; speeds are
+/// w_FM and v_FM, both in F.
+class FreeModel final : public JointModel {
+ public:
+  int nq() const override { return 6; }
+  Transform CalcX_FM(std::span<const double> q) const override {
+    return {ball_.CalcX_FM(q.first(3)).R, Vec3(q[3], q[4], q[5])};
+  }
+  Mat6X CalcH_FM(std::span<const double>) const override {
+    return Mat6X(Eigen::Matrix<double, 6, 6>::Identity());
+  }
+  void CalcQDot(std::span<const double> q, std::span<const double> u,
+                std::span<double> qdot) const override {
+    ball_.CalcQDot(q.first(3), u.first(3), qdot.first(3));
+    for (int i = 3; i < 6; ++i) qdot[i] = u[i];
+  }
+  void CalcU(std::span<const double> q, std::span<const double> qdot,
+             std::span<double> u) const override {
+    ball_.CalcU(q.first(3), qdot.first(3), u.first(3));
+    for (int i = 3; i < 6; ++i) u[i] = qdot[i];
+  }
+  SpatialVec CalcHDotU(std::span<const double>, std::span<const double>) const override {
+    return SpatialVec::Zero();
+  }
+
+ private:
+  BallModel ball_;
+};
+
 /// A free coordinate named `name` with default value q and speed u.
 inline CoordinateDesc Coord(const std::string& name, double q = 0.0, double u = 0.0) {
   CoordinateDesc c;
