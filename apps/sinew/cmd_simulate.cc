@@ -38,11 +38,11 @@ struct SimulateOptions {
   bool quiet = false;
 };
 
-// Sets q and u from the first row of an initial-states file (OpenSim 4 paths or old names;
-// rotational columns converted when the file is in degrees). Coordinates it does not name keep
-// their defaults.
-void ApplyInitialStates(const std::string& path, const ModelSpec& spec,
-                        const engine::System& system, engine::State& state) {
+// Takes the first row of an initial-states file (OpenSim 4 paths or old names; rotational
+// columns converted when the file is in degrees) as the coordinates' default values and speeds,
+// so that locked coordinates are held at the file's value, as OpenSim's Forward tool does.
+// Coordinates the file does not name keep their defaults. Returns the row's time.
+double ApplyInitialStates(const std::string& path, ModelSpec& spec) {
   Storage storage = ReadStorage(path);
   for (const Diagnostic& note : storage.notes) {
     std::cerr << "sinew: note: " << note.Format() << "\n";
@@ -53,16 +53,13 @@ void ApplyInitialStates(const std::string& path, const ModelSpec& spec,
     if (c.motion_type == MotionType::kRotational) rotational.push_back(c.name);
   }
   ConvertDegreesToRadians(storage, rotational);
-  state.t = storage.time[0];
-  for (int c = 0; c < system.num_coordinates(); ++c) {
-    const std::string& name = spec.coordinates[c].name;
-    const int value = FindCoordinateColumn(storage, name, CoordinateColumnKind::kValue);
-    const int speed = FindCoordinateColumn(storage, name, CoordinateColumnKind::kSpeed);
-    if (value >= 0) state.q[c] = storage.Value(0, value);
-    if (speed >= 0) state.u[c] = storage.Value(0, speed);
+  for (CoordinateSpec& c : spec.coordinates) {
+    const int value = FindCoordinateColumn(storage, c.name, CoordinateColumnKind::kValue);
+    const int speed = FindCoordinateColumn(storage, c.name, CoordinateColumnKind::kSpeed);
+    if (value >= 0) c.default_value = storage.Value(0, value);
+    if (speed >= 0) c.default_speed_value = storage.Value(0, speed);
   }
-  engine::PlaceBodies(system, state);
-  engine::ProjectState(system, state);
+  return storage.time[0];
 }
 
 void ShowProgress(double fraction, double t) {
@@ -76,12 +73,11 @@ void ShowProgress(double fraction, double t) {
 void RunSimulate(const SimulateOptions& options) {
   if (!(options.duration >= 0.0)) throw Error("--duration must be >= 0");
   if (!(options.report_interval > 0.0)) throw Error("--report-interval must be > 0");
-  const ModelSpec spec = ReadOsim(options.model);
+  ModelSpec spec = ReadOsim(options.model);
+  double t0 = 0.0;
+  if (!options.initial_states.empty()) t0 = ApplyInitialStates(options.initial_states, spec);
   const std::unique_ptr<engine::System> system = BuildSystem(spec);
-  engine::State state = engine::MakeDefaultState(*system);
-  if (!options.initial_states.empty()) {
-    ApplyInitialStates(options.initial_states, spec, *system, state);
-  }
+  engine::State state = engine::MakeDefaultState(*system, t0);
   engine::IntegratorSettings settings;
   settings.accuracy = options.accuracy;
   settings.step = options.step;
@@ -113,7 +109,7 @@ void RunSimulate(const SimulateOptions& options) {
   };
 
   const bool progress = !options.quiet && isatty(fileno(stderr));
-  const double t0 = state.t, t_end = state.t + options.duration;
+  const double t_end = t0 + options.duration;
   const long n = static_cast<long>(std::ceil(options.duration / options.report_interval - 1e-9));
   record();
   for (long i = 1; i <= n; ++i) {

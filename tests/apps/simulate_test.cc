@@ -72,6 +72,32 @@ TEST(SimulateCommandTest, FixedStepIntegratorRuns) {
   EXPECT_NEAR(ours.at("time").back(), 0.5, 1e-12);
 }
 
+// A locked coordinate is held at the value the initial-states file gives it (r2_x = 1 rad; the
+// model's default_value is 1.0588), as OpenSim's Forward tool does.
+TEST(SimulateCommandTest, LockedCoordinateHoldsItsInitialStateValue) {
+  const std::string out = TempDir("locked");
+  std::ifstream in(kResources + "DoublePendulum3D.osim");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string model = text.str();
+  const std::string unlocked = "<locked> false </locked>";
+  const size_t first = model.find(unlocked);
+  const size_t second = model.find(unlocked, first + 1);
+  ASSERT_NE(second, std::string::npos);
+  model.replace(second, unlocked.size(), "<locked> true </locked>");
+  const std::string file = out + "/locked.osim";
+  std::ofstream(file) << model;
+  ASSERT_EQ(RunCli("simulate " + file + " --duration 1 --accuracy 1e-9 --initial-states " +
+                   kResources + "DoublePendulum3D_InitialStates.sto --quiet --out " + out),
+            0);
+  const auto ours = ReadStoColumns(out + "/states.sto");
+  const auto& r2 = ours.at("/jointset/pin2/r2_x/value");
+  const auto& r1 = ours.at("/jointset/pin1/r1_z/value");
+  ASSERT_EQ(r2.size(), 101u);
+  for (size_t i = 0; i < r2.size(); ++i) EXPECT_NEAR(r2[i], 1.0, 1e-10);
+  EXPECT_LT(r1.back(), 0.9);  // pin 1 swings
+}
+
 TEST(SimulateCommandTest, BadInputExitsWithCode2) {
   const std::string out = TempDir("bad");
   // Every body massless: a kinematics-only model cannot be simulated.
