@@ -1,6 +1,8 @@
 #include "engine/joint_constraints.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "engine/pose.h"
@@ -158,36 +160,66 @@ class DirectJointConstraint final : public Constraint {
   std::vector<std::array<int, 2>> pairs_;
 };
 
-// q_i - f(t) = 0 on an integrated coordinate with qdot_i = u_i.
+// q_i - f(t) = 0 on a coordinate of a parameterized joint. Velocity: (N(q) u)_i = f'(t);
+// acceleration: (N udot)_i = f''(t) - (Ndot u)_i, Ndot u by a central difference of N along
+// qdot (exactly zero when qdot_i = u_i, the usual case; Ball/Free rotations are not).
 class CoordinateMotionConstraint final : public Constraint {
  public:
-  explicit CoordinateMotionConstraint(int coordinate, const Coordinate& c)
-      : coordinate_(coordinate), spec_(c) {}
+  CoordinateMotionConstraint(const Joint& joint, int coordinate, const Coordinate& c)
+      : joint_(joint), coordinate_(coordinate), spec_(c) {}
 
   int NumEquations() const override { return 1; }
   std::vector<int> Bodies() const override { return {}; }
-  std::vector<int> Coordinates() const override { return {coordinate_}; }
+  std::vector<int> Coordinates() const override { return joint_.coordinates; }
 
   void CalcPositionError(const System&, const State& state, Eigen::Ref<VecX> phi) const override {
     phi[0] = state.q[coordinate_] - Value(state.t, 0);
   }
-  void CalcJacobian(const System&, const State&, Eigen::Ref<MatX> J) const override {
-    J(0, 0) = 1.0;
+  void CalcJacobian(const System&, const State& state, Eigen::Ref<MatX> J) const override {
+    const std::vector<double> q = Gather(state.q);
+    std::vector<double> u(q.size(), 0.0), qdot(q.size());
+    for (size_t k = 0; k < q.size(); ++k) {
+      u[k] = 1.0;
+      joint_.model->CalcQDot(q, u, qdot);
+      J(0, static_cast<int>(k)) = qdot[spec_.index_in_joint];
+      u[k] = 0.0;
+    }
   }
   void CalcVelocityRhs(const System&, const State& state, Eigen::Ref<VecX> c) const override {
     c[0] = Value(state.t, 1);
   }
-  void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
-    b[0] = Value(state.t, 2);
+  void CalcAccelerationRhs(const System&, const State& state,
+                           Eigen::Ref<VecX> b) const override {
+    const std::vector<double> q = Gather(state.q), u = Gather(state.u);
+    const size_t n = q.size();
+    std::vector<double> qdot(n), q_plus(n), q_minus(n), a(n), c(n);
+    joint_.model->CalcQDot(q, u, qdot);
+    double speed = 0.0;
+    for (double x : qdot) speed = std::max(speed, std::abs(x));
+    const double delta = 1e-5 / std::max(1.0, speed);
+    for (size_t k = 0; k < n; ++k) {
+      q_plus[k] = q[k] + delta * qdot[k];
+      q_minus[k] = q[k] - delta * qdot[k];
+    }
+    joint_.model->CalcQDot(q_plus, u, a);
+    joint_.model->CalcQDot(q_minus, u, c);
+    const int i = spec_.index_in_joint;
+    b[0] = Value(state.t, 2) - (a[i] - c[i]) / (2 * delta);
   }
 
  private:
+  std::vector<double> Gather(const VecX& x) const {
+    std::vector<double> out;
+    for (int c : joint_.coordinates) out.push_back(x[c]);
+    return out;
+  }
   double Value(double t, int order) const {
     if (spec_.motion == CoordinateMotion::kPrescribed && spec_.prescribed) {
       return order == 0 ? spec_.prescribed->Calc(t) : spec_.prescribed->CalcDerivative(t, order);
     }
     return order == 0 ? spec_.default_value : 0.0;
   }
+  Joint joint_;
   int coordinate_;
   Coordinate spec_;
 };
@@ -204,7 +236,8 @@ std::shared_ptr<const Constraint> MakeJointConstraint(const System& system, int 
 
 std::shared_ptr<const Constraint> MakeCoordinateMotionConstraint(const System& system,
                                                                  int coordinate) {
-  return std::make_shared<CoordinateMotionConstraint>(coordinate, system.coordinates()[coordinate]);
+  const Coordinate& c = system.coordinates()[coordinate];
+  return std::make_shared<CoordinateMotionConstraint>(system.joints()[c.joint], coordinate, c);
 }
 
 }  // namespace sinew::engine

@@ -14,7 +14,7 @@ namespace sinew::engine {
 std::shared_ptr<const Constraint> MakeJointConstraint(const System& system, int joint_index);
 
 /// q_i = f(t) for a locked (f = default value) or prescribed coordinate of a parameterized
-/// joint whose qdot_i = u_i.
+/// joint (any joint: for Ball/Free rotations, whose u is not qdot, the row is (N(q) u)_i).
 std::shared_ptr<const Constraint> MakeCoordinateMotionConstraint(const System& system,
                                                                  int coordinate);
 

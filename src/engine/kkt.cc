@@ -48,8 +48,12 @@ KktSolver::KktSolver(const System& system, bool allow_tree) : system_(system) {
   // Without loop constraints the tree elimination applies: constraints are the joints', then
   // coordinate constraints that touch one coordinate's speed only.
   bool tree = allow_tree && !system.HasLoops();
-  for (size_t k = system.joints().size(); k < constraints.size(); ++k) {
-    tree = tree && constraints[k]->Bodies().empty() && constraints[k]->Coordinates().size() == 1;
+  for (size_t k = system.joints().size(); k < constraints.size() && tree; ++k) {
+    const std::vector<int> coordinates = constraints[k]->Coordinates();
+    tree = constraints[k]->Bodies().empty() && !coordinates.empty();
+    for (int c : coordinates) {
+      tree = tree && system.coordinates()[c].joint == system.coordinates()[coordinates[0]].joint;
+    }
   }
   if (tree) {
     std::vector<int> body_columns(system.num_bodies()), speed_columns(system.num_coordinates(), -1);

@@ -155,20 +155,6 @@ void System::Finalize() {
   for (int c = 0; c < num_coordinates(); ++c) {
     const Coordinate& coordinate = coordinates_[c];
     if (coordinate.motion == CoordinateMotion::kFree) continue;
-    // The motion constraint writes qdot_i = u_i: check that the joint has it.
-    const Joint& joint = joints_[coordinate.joint];
-    const int n = joint.model->nq();
-    std::vector<double> q(n, 0.1), u(n, 0.0), qdot(n, 0.0);
-    u[coordinate.index_in_joint] = 1.0;
-    joint.model->CalcQDot(q, u, qdot);
-    for (int i = 0; i < n; ++i) {
-      if (std::abs(qdot[i] - (i == coordinate.index_in_joint ? 1.0 : 0.0)) > 1e-12) {
-        finalized_ = false;
-        throw Error({}, joint.name + "/" + coordinate.name,
-                    "locking or prescribing a coordinate whose speed is not its rate (ball or "
-                    "free rotation) is not supported");
-      }
-    }
     constraints_.push_back(MakeCoordinateMotionConstraint(*this, c));
   }
   for (const auto& c : extra_constraints_) constraints_.push_back(c);

@@ -36,7 +36,7 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
       joint = static_cast<int>(k);
     } else {
       const std::vector<int> coords = constraints[k]->Coordinates();
-      if (!constraints[k]->Bodies().empty() || coords.size() != 1) {
+      if (!constraints[k]->Bodies().empty() || coords.empty()) {
         throw Error("engine: TreeKktSolver cannot take loop constraints");
       }
       joint = system.coordinates()[coords[0]].joint;

@@ -292,3 +292,38 @@ TEST(MotionTest, LoopJointClosesAFreeJointIntoAPin) {
 
 }  // namespace
 }  // namespace sinew::engine
+
+namespace sinew::engine {
+namespace {
+
+// A Ball joint (speeds = angular velocity, so qdot != u) with its middle angle locked: the
+// angle stays put and, the lock being workless, energy is conserved.
+TEST(MotionTest, LockedBallAngleStaysAndConservesEnergy) {
+  System system(Vec3(0, -9.81, 0));
+  const int b = system.AddBody(testing::MakeBody("bob", 1.5, Vec3(0.1, -0.4, 0.05),
+                                                 Mat3(Vec3(0.02, 0.01, 0.03).asDiagonal())));
+  CoordinateDesc locked = testing::Coord("b2", 0.3);
+  locked.motion = CoordinateMotion::kLocked;
+  system.AddJoint("ball", 0, Transform::Identity(), b, Transform::Identity(),
+                  JointForm::kParameterized, std::make_shared<testing::BallModel>(),
+                  {testing::Coord("b1", 0.4), locked, testing::Coord("b3", -0.2)});
+  system.Finalize();
+  State state = MakeDefaultState(system);
+  // Angle rates 1.0 and 0.7 for b1, b3 with b2 fixed: u = E(q) qdot.
+  const Mat3 Rx = Eigen::AngleAxisd(0.4, Vec3::UnitX()).toRotationMatrix();
+  const Mat3 Ry = Eigen::AngleAxisd(0.3, Vec3::UnitY()).toRotationMatrix();
+  const Vec3 w = 1.0 * Vec3::UnitX() + 0.7 * (Rx * Ry * Vec3::UnitZ());
+  state.u << w.x(), w.y(), w.z();
+  PlaceBodies(system, state);
+  const double e0 = CalcMechanicalEnergy(system, state);
+  auto integrator = MakeIntegrator("rk45", system, Tight());
+  for (double t : {0.5, 1.0, 2.0}) {
+    integrator->StepTo(state, t);
+    EXPECT_NEAR(state.q[1], 0.3, 1e-10);
+    EXPECT_NEAR(CalcMechanicalEnergy(system, state), e0, 1e-8 * std::abs(e0));
+  }
+  EXPECT_GT(std::abs(state.q[0] - 0.4), 0.05);  // it moved
+}
+
+}  // namespace
+}  // namespace sinew::engine
