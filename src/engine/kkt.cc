@@ -6,6 +6,10 @@
 #include "common/error.h"
 
 namespace sinew::engine {
+namespace {
+// Constraint compliance of the sparse path (see Factorize).
+constexpr double kCompliance = 1e-12;
+}  // namespace
 
 Eigen::Matrix<double, 6, 6> CalcBodyMassMatrix(const Body& body, const Quat& quat_GB) {
   const Mat3 R = quat_GB.normalized().toRotationMatrix();
@@ -95,6 +99,9 @@ void KktSolver::Factorize(const State& state) {
       }
     }
   }
+  // A tiny compliance -eps on the constraint diagonal keeps redundant (consistent) loop
+  // constraints solvable, as with planar loops of pins; it changes J x = g by eps * lambda.
+  for (int r = 0; r < nc_; ++r) triplets_.emplace_back(nv_ + r, nv_ + r, -kCompliance);
   matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
   if (!analyzed_) {
     lu_.analyzePattern(matrix_);
@@ -115,6 +122,7 @@ VecX KktSolver::Solve(const VecX& rhs) const {
   residual.head(nv_) =
       MultiplyMass(x.head(nv_)) + MultiplyJacobianTranspose(x.tail(nc_)) - rhs.head(nv_);
   residual.tail(nc_) = MultiplyJacobian(x.head(nv_)) - rhs.tail(nc_);
+  if (!tree_) residual.tail(nc_) -= kCompliance * x.tail(nc_);
   const double scale = 1.0 + rhs.lpNorm<Eigen::Infinity>();
   if (!x.allFinite() || residual.lpNorm<Eigen::Infinity>() > 1e-6 * scale) {
     throw Error("engine: the equations of motion are singular or ill-conditioned (residual " +

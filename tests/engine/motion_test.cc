@@ -327,3 +327,54 @@ TEST(MotionTest, LockedBallAngleStaysAndConservesEnergy) {
 
 }  // namespace
 }  // namespace sinew::engine
+
+namespace sinew::engine {
+namespace {
+
+// A planar parallelogram four-bar of direct pins: the loop-closing pin repeats two of the
+// tree's out-of-plane conditions (redundant constraints). The coupler translates without
+// turning, so theta'' = -g (2 m l_c + m_c L) sin(theta) / (2 I_pivot + m_c L^2).
+TEST(MotionTest, ParallelogramFourBarWithRedundantLoopPin) {
+  const double m = 1.0, I = 0.01, mc = 2.0, L = 1.0, g = 9.81, theta0 = 0.6;
+  System system(Vec3(0, -g, 0));
+  const Body crank = testing::MakeBody("crank", m, Vec3(0, -0.5, 0), I * Mat3::Identity());
+  const int c1 = system.AddBody(crank);
+  const int c2 = system.AddBody(crank);
+  const int coupler =
+      system.AddBody(testing::MakeBody("coupler", mc, Vec3(0.5, 0, 0), 0.02 * Mat3::Identity()));
+  const Transform tip = Transform::Translation(Vec3(0, -L, 0));
+  system.AddJoint("p1", 0, Transform::Identity(), c1, Transform::Identity(), JointForm::kPin,
+                  nullptr, {testing::Coord("q1", theta0)});
+  system.AddJoint("p2", 0, Transform::Translation(Vec3(1, 0, 0)), c2, Transform::Identity(),
+                  JointForm::kPin, nullptr, {testing::Coord("q2", theta0)});
+  system.AddJoint("p3", c1, tip, coupler, Transform::Identity(), JointForm::kPin, nullptr,
+                  {testing::Coord("q3", -theta0)});
+  system.AddJoint("p4", c2, tip, coupler, Transform::Translation(Vec3(1, 0, 0)), JointForm::kPin,
+                  nullptr, {testing::Coord("q4", -theta0)});
+  system.Finalize();
+  ASSERT_TRUE(system.IsLoop(3));
+  State state = MakeDefaultState(system);
+  const double k = g * (2 * m * 0.5 + mc * L) / (2 * (I + m * 0.25) + mc * L * L);
+  double theta = theta0, omega = 0.0;
+  auto f = [k](double th) { return -k * std::sin(th); };
+  const double h = 1e-4;
+  auto integrator = MakeIntegrator("rk45", system, Tight());
+  for (int i = 1; i <= 15000; ++i) {
+    const double k1 = omega, l1 = f(theta);
+    const double k2 = omega + 0.5 * h * l1, l2 = f(theta + 0.5 * h * k1);
+    const double k3 = omega + 0.5 * h * l2, l3 = f(theta + 0.5 * h * k2);
+    const double k4 = omega + h * l3, l4 = f(theta + h * k3);
+    theta += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+    omega += h / 6 * (l1 + 2 * l2 + 2 * l3 + l4);
+    if (i % 3000 == 0) {
+      integrator->StepTo(state, i * h);
+      EXPECT_NEAR(state.q[0], theta, 1e-8);
+      EXPECT_NEAR(state.q[1], theta, 1e-8);
+      EXPECT_NEAR(state.q[2], -theta, 1e-8);
+      EXPECT_NEAR(state.u[0], omega, 1e-7);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sinew::engine
