@@ -35,14 +35,24 @@ void AddDisc(TriangleMesh& m, float y, float up) {
   }
 }
 
+// Adds a triangle unless two of its corners coincide (the poles of the UV sphere).
+void AddTriangle(TriangleMesh& m, uint32_t a, uint32_t b, uint32_t c) {
+  const auto& p = m.positions;
+  if ((p[a] - p[b]).norm() < 1e-6f || (p[b] - p[c]).norm() < 1e-6f ||
+      (p[c] - p[a]).norm() < 1e-6f) {
+    return;
+  }
+  m.triangles.push_back({a, b, c});
+}
+
 // Connects rings of kSegments + 1 vertices (seam duplicated) starting at `first`.
 void StitchRings(TriangleMesh& m, uint32_t first, int rings) {
   const uint32_t stride = kSegments + 1;
   for (int r = 0; r + 1 < rings; ++r) {
     for (int i = 0; i < kSegments; ++i) {
       const uint32_t a = first + r * stride + i, b = a + 1, c = a + stride, d = c + 1;
-      m.triangles.push_back({a, c, b});
-      m.triangles.push_back({b, c, d});
+      AddTriangle(m, a, c, b);
+      AddTriangle(m, b, c, d);
     }
   }
 }
@@ -144,8 +154,6 @@ std::shared_ptr<const TriangleMesh> MakeTorus(double tube_ratio) {
     }
   }
   StitchRings(*m, 0, kSegments + 1);
-  // The stitching above faces inwards for this parametrization; flip every triangle.
-  for (auto& tri : m->triangles) std::swap(tri[1], tri[2]);
   return m;
 }
 

@@ -1,0 +1,183 @@
+// The .glb written for a small hand-made model: container layout, node/mesh structure,
+// accessor bounds and the animation samples, all read back with nlohmann-json.
+#include "viz/gltf_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "math/rotation.h"
+#include "viz/glb_test_util.h"
+
+namespace sinew::viz {
+namespace {
+
+const std::string kDataDir = SINEW_TEST_DATA_DIR;
+
+// Ground, a "link" body hanging from a pin at the origin, and a "tip" body below it.
+ModelSpec TwoLinkSpec() {
+  ModelSpec spec;
+  spec.name = "two_link";
+  spec.file = kDataDir + "/two_link.osim";  // need not exist: only its folder is searched
+  spec.bodies.resize(3);
+  spec.bodies[0].name = "ground";
+  spec.bodies[1].name = "link";
+  spec.bodies[1].path = "/bodyset/link";
+  spec.bodies[2].name = "tip";
+  spec.bodies[2].path = "/bodyset/tip";
+  JointSpec pin;
+  pin.name = "pin";
+  pin.parent_body = 0;
+  pin.child_body = 1;
+  pin.X_BM = Transform::Translation(Vec3(0, 0.5, 0));
+  JointSpec weld;
+  weld.name = "weld";
+  weld.parent_body = 1;
+  weld.child_body = 2;
+  weld.X_PF = Transform::Translation(Vec3(0, -0.5, 0));
+  spec.joints = {pin, weld};
+  GeometrySpec mesh;
+  mesh.name = "patella";
+  mesh.type = "Mesh";
+  mesh.mesh_file = "r_patella.vtp";
+  mesh.scale_factors = Vec3(2, 2, 2);
+  mesh.color = Vec3(1, 0, 0);
+  GeometrySpec sphere;
+  sphere.name = "ball";
+  sphere.type = "Sphere";
+  sphere.dimensions["radius"] = {0.1};
+  sphere.X_BG = Transform::Translation(Vec3(0, 0.2, 0));
+  spec.bodies[1].geometry = {mesh, sphere};
+  GeometrySpec missing = mesh;
+  missing.name = "lost";
+  missing.mesh_file = "not_there.vtp";
+  spec.bodies[2].geometry = {missing};
+  return spec;
+}
+
+VisualOptions MeshOptions() {
+  VisualOptions options;
+  options.mode = VisMode::kMesh;
+  options.geometry_dirs = {kDataDir + "/opensim-models/Geometry"};
+  return options;
+}
+
+TEST(VisualSceneTest, MeshModeReadsMeshesAndFallsBackWithAWarning) {
+  const ModelSpec spec = TwoLinkSpec();
+  VisualScene scene = BuildVisualScene(spec, MeshOptions());
+  ASSERT_EQ(scene.bodies.size(), 3u);
+  EXPECT_TRUE(scene.bodies[0].parts.empty());
+  ASSERT_EQ(scene.bodies[1].parts.size(), 2u);
+  EXPECT_EQ(scene.bodies[1].parts[0].mesh->triangles.size(), 140u);
+  EXPECT_EQ(scene.bodies[1].parts[0].scale, Vec3(2, 2, 2));
+  EXPECT_EQ(scene.bodies[1].parts[1].scale, Vec3::Constant(0.1));  // unit sphere * radius
+  // The missing mesh: one warning naming the file and every folder searched; primitives.
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  const std::string warning = scene.warnings[0].Format();
+  EXPECT_NE(warning.find("not_there.vtp"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("opensim-models/Geometry"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("/bodyset/tip/lost"), std::string::npos) << warning;
+  ASSERT_FALSE(scene.bodies[2].parts.empty());
+  EXPECT_EQ(scene.bodies[2].parts[0].source, "primitive");
+}
+
+TEST(VisualSceneTest, PrimitivesLinkEachBodyFrameToItsJointsColouredByDepth) {
+  const ModelSpec spec = TwoLinkSpec();
+  EXPECT_EQ(BodyDepths(spec), (std::vector<int>{0, 1, 2}));
+  VisualOptions options;
+  options.mode = VisMode::kPrimitives;
+  VisualScene scene = BuildVisualScene(spec, options);
+  EXPECT_TRUE(scene.warnings.empty());
+  // link: sphere + cylinder to the pin (0, 0.5, 0) + cylinder to the weld (0, -0.5, 0).
+  const auto& parts = scene.bodies[1].parts;
+  ASSERT_EQ(parts.size(), 3u);
+  // The cylinder's ends (unit cylinder y = +-1) land on the body origin and the joint.
+  const VisualPart& c = parts[1];
+  const Vec3 top = c.X_BG * Vec3(0, c.scale.y(), 0), bottom = c.X_BG * Vec3(0, -c.scale.y(), 0);
+  EXPECT_LT((top - Vec3(0, 0.5, 0)).norm(), 1e-12);
+  EXPECT_LT(bottom.norm(), 1e-12);
+  // Green at the root, red at the leaf.
+  const Vec3 root = scene.bodies[0].parts[0].color, leaf = scene.bodies[2].parts[0].color;
+  EXPECT_GT(root.y(), root.x());
+  EXPECT_GT(leaf.x(), leaf.y());
+  VisualOptions none;
+  none.mode = VisMode::kNone;
+  for (const auto& b : BuildVisualScene(spec, none).bodies) EXPECT_TRUE(b.parts.empty());
+  EXPECT_THROW(ParseVisMode("wireframe"), Error);
+}
+
+TEST(GltfWriterTest, WritesAValidAnimatedGlb) {
+  const ModelSpec spec = TwoLinkSpec();
+  VisualScene scene = BuildVisualScene(spec, MeshOptions());
+  // Three frames of a swinging pendulum: link rotates about z by angle a.
+  BodyMotion motion;
+  for (int k = 0; k < 3; ++k) {
+    const double t = 1.0 + 0.5 * k, a = 0.4 * k;
+    const Transform X_GL(RotationAboutAxis(Vec3::UnitZ(), a), Vec3::Zero());
+    const Transform X_GB1 = X_GL * Transform::Translation(Vec3(0, -0.5, 0));
+    motion.times.push_back(t);
+    motion.X_GB.push_back({Transform(), X_GB1, X_GB1 * Transform::Translation(Vec3(0, -0.5, 0))});
+  }
+  testing::ParsedGlb glb = testing::ParseGlb(WriteGlb(scene, motion, "two_link"));
+  const auto& doc = glb.doc;
+  EXPECT_EQ(doc["asset"]["version"], "2.0");
+  size_t parts = 0;
+  for (const auto& b : scene.bodies) parts += b.parts.size();
+  EXPECT_EQ(doc["nodes"].size(), 1 + scene.bodies.size() + parts);
+  EXPECT_EQ(doc["meshes"].size(), parts);
+  ASSERT_EQ(doc["buffers"].size(), 1u);
+  EXPECT_EQ(doc["buffers"][0]["byteLength"], glb.bin.size());
+  // The scene root holds one node per body, named after it.
+  const auto& root = doc["nodes"][doc["scenes"][0]["nodes"][0].get<int>()];
+  ASSERT_EQ(root["children"].size(), 3u);
+  EXPECT_EQ(doc["nodes"][root["children"][2].get<int>()]["name"], "tip");
+  // POSITION accessors carry min/max that bound their data.
+  for (const auto& mesh : doc["meshes"]) {
+    const int a = mesh["primitives"][0]["attributes"]["POSITION"];
+    const auto& accessor = doc["accessors"][a];
+    ASSERT_TRUE(accessor.contains("min") && accessor.contains("max"));
+    std::vector<float> v = testing::ReadFloatAccessor(glb, a);
+    for (size_t i = 0; i < v.size(); ++i) {
+      EXPECT_GE(v[i], accessor["min"][i % 3].get<float>());
+      EXPECT_LE(v[i], accessor["max"][i % 3].get<float>());
+    }
+  }
+  // The animation: times from 0, and the tip's translation sampled per frame.
+  ASSERT_EQ(doc["animations"].size(), 1u);
+  const auto& anim = doc["animations"][0];
+  EXPECT_EQ(anim["channels"].size(), 6u);  // 3 bodies x (translation, rotation)
+  EXPECT_DOUBLE_EQ(anim["extras"]["start_time"].get<double>(), 1.0);
+  const int tip_node = root["children"][2];
+  for (const auto& channel : anim["channels"]) {
+    if (channel["target"]["node"] != tip_node) continue;
+    const auto& sampler = anim["samplers"][channel["sampler"].get<int>()];
+    EXPECT_EQ(testing::ReadFloatAccessor(glb, sampler["input"]),
+              (std::vector<float>{0.0f, 0.5f, 1.0f}));
+    std::vector<float> out = testing::ReadFloatAccessor(glb, sampler["output"]);
+    if (channel["target"]["path"] == "translation") {
+      // Tip at distance 1 below the pivot, rotated by 0.8 rad at the last frame.
+      EXPECT_NEAR(out[6], std::sin(0.8), 1e-6);
+      EXPECT_NEAR(out[7], -std::cos(0.8), 1e-6);
+    } else {
+      ASSERT_EQ(out.size(), 12u);  // quaternion xyzw about z: (0, 0, sin(a/2), cos(a/2))
+      EXPECT_NEAR(out[10], std::sin(0.4), 1e-6);
+      EXPECT_NEAR(out[11], std::cos(0.4), 1e-6);
+    }
+  }
+}
+
+TEST(GltfWriterTest, StaticSceneHasNoAnimationAndEmptySceneStaysValid) {
+  const ModelSpec spec = TwoLinkSpec();
+  VisualScene scene = BuildVisualScene(spec, MeshOptions());
+  testing::ParsedGlb glb = testing::ParseGlb(WriteGlb(scene, {}, "static"));
+  EXPECT_FALSE(glb.doc.contains("animations"));
+  VisualOptions none;
+  none.mode = VisMode::kNone;
+  testing::ParsedGlb empty = testing::ParseGlb(WriteGlb(BuildVisualScene(spec, none), {}, "e"));
+  EXPECT_FALSE(empty.doc.contains("meshes"));
+  EXPECT_FALSE(empty.doc.contains("buffers"));
+  EXPECT_EQ(empty.doc["nodes"].size(), 4u);
+}
+
+}  // namespace
+}  // namespace sinew::viz
