@@ -8,62 +8,20 @@
 
 #include "math/rotation.h"
 #include "viz/glb_test_util.h"
+#include "viz/two_link_spec.h"
 
 namespace sinew::viz {
 namespace {
 
-const std::string kDataDir = SINEW_TEST_DATA_DIR;
-
-// Ground, a "link" body hanging from a pin at the origin, and a "tip" body below it.
-ModelSpec TwoLinkSpec() {
-  ModelSpec spec;
-  spec.name = "two_link";
-  spec.file = kDataDir + "/two_link.osim";  // need not exist: only its folder is searched
-  spec.bodies.resize(3);
-  spec.bodies[0].name = "ground";
-  spec.bodies[1].name = "link";
-  spec.bodies[1].path = "/bodyset/link";
-  spec.bodies[2].name = "tip";
-  spec.bodies[2].path = "/bodyset/tip";
-  JointSpec pin;
-  pin.name = "pin";
-  pin.parent_body = 0;
-  pin.child_body = 1;
-  pin.X_BM = Transform::Translation(Vec3(0, 0.5, 0));
-  JointSpec weld;
-  weld.name = "weld";
-  weld.parent_body = 1;
-  weld.child_body = 2;
-  weld.X_PF = Transform::Translation(Vec3(0, -0.5, 0));
-  spec.joints = {pin, weld};
-  GeometrySpec mesh;
-  mesh.name = "patella";
-  mesh.type = "Mesh";
-  mesh.mesh_file = "r_patella.vtp";
-  mesh.scale_factors = Vec3(2, 2, 2);
-  mesh.color = Vec3(1, 0, 0);
-  GeometrySpec sphere;
-  sphere.name = "ball";
-  sphere.type = "Sphere";
-  sphere.dimensions["radius"] = {0.1};
-  sphere.X_BG = Transform::Translation(Vec3(0, 0.2, 0));
-  spec.bodies[1].geometry = {mesh, sphere};
-  GeometrySpec missing = mesh;
-  missing.name = "lost";
-  missing.mesh_file = "not_there.vtp";
-  spec.bodies[2].geometry = {missing};
-  return spec;
-}
-
 VisualOptions MeshOptions() {
   VisualOptions options;
   options.mode = VisMode::kMesh;
-  options.geometry_dirs = {kDataDir + "/opensim-models/Geometry"};
+  options.geometry_dirs = {testing::kDataDir + "/opensim-models/Geometry"};
   return options;
 }
 
 TEST(VisualSceneTest, MeshModeReadsMeshesAndFallsBackWithAWarning) {
-  const ModelSpec spec = TwoLinkSpec();
+  const ModelSpec spec = testing::TwoLinkSpec();
   VisualScene scene = BuildVisualScene(spec, MeshOptions());
   ASSERT_EQ(scene.bodies.size(), 3u);
   EXPECT_TRUE(scene.bodies[0].parts.empty());
@@ -82,7 +40,7 @@ TEST(VisualSceneTest, MeshModeReadsMeshesAndFallsBackWithAWarning) {
 }
 
 TEST(VisualSceneTest, PrimitivesLinkEachBodyFrameToItsJointsColouredByDepth) {
-  const ModelSpec spec = TwoLinkSpec();
+  const ModelSpec spec = testing::TwoLinkSpec();
   EXPECT_EQ(BodyDepths(spec), (std::vector<int>{0, 1, 2}));
   VisualOptions options;
   options.mode = VisMode::kPrimitives;
@@ -107,17 +65,10 @@ TEST(VisualSceneTest, PrimitivesLinkEachBodyFrameToItsJointsColouredByDepth) {
 }
 
 TEST(GltfWriterTest, WritesAValidAnimatedGlb) {
-  const ModelSpec spec = TwoLinkSpec();
+  const ModelSpec spec = testing::TwoLinkSpec();
   VisualScene scene = BuildVisualScene(spec, MeshOptions());
-  // Three frames of a swinging pendulum: link rotates about z by angle a.
-  BodyMotion motion;
-  for (int k = 0; k < 3; ++k) {
-    const double t = 1.0 + 0.5 * k, a = 0.4 * k;
-    const Transform X_GL(RotationAboutAxis(Vec3::UnitZ(), a), Vec3::Zero());
-    const Transform X_GB1 = X_GL * Transform::Translation(Vec3(0, -0.5, 0));
-    motion.times.push_back(t);
-    motion.X_GB.push_back({Transform(), X_GB1, X_GB1 * Transform::Translation(Vec3(0, -0.5, 0))});
-  }
+  // Three frames of a swinging pendulum: link rotates about z by 0, 0.4, 0.8 rad.
+  const BodyMotion motion = testing::SwingMotion(3, 1.0, 0.5, 0.4);
   testing::ParsedGlb glb = testing::ParseGlb(WriteGlb(scene, motion, "two_link"));
   const auto& doc = glb.doc;
   EXPECT_EQ(doc["asset"]["version"], "2.0");
@@ -167,7 +118,7 @@ TEST(GltfWriterTest, WritesAValidAnimatedGlb) {
 }
 
 TEST(GltfWriterTest, StaticSceneHasNoAnimationAndEmptySceneStaysValid) {
-  const ModelSpec spec = TwoLinkSpec();
+  const ModelSpec spec = testing::TwoLinkSpec();
   VisualScene scene = BuildVisualScene(spec, MeshOptions());
   testing::ParsedGlb glb = testing::ParseGlb(WriteGlb(scene, {}, "static"));
   EXPECT_FALSE(glb.doc.contains("animations"));
