@@ -86,8 +86,8 @@ TEST(HtmlViewerTest, ShowsTheModelAndAnimatesInHeadlessChromium) {
   // The page paused at 0 s and at 1.5 s (the time slider's path: AnimationMixer.setTime).
   // Playing is not compared: how much virtual time is left after loading varies with the
   // machine's load, so a screenshot of the playing page is not reproducible.
-  const Image start = Screenshot(chromium, url + "#t=0&pause", dir / "start.png", 5000);
-  const Image later = Screenshot(chromium, url + "#t=1.5&pause", dir / "later.png", 5000);
+  const Image start = Screenshot(chromium, url + "#t=0&pause", dir / "start.png", 2500);
+  const Image later = Screenshot(chromium, url + "#t=1.5&pause", dir / "later.png", 2500);
   ASSERT_EQ(start.width, later.width);
   // The skeleton covers a few percent of the view (spheres and links), not nothing.
   EXPECT_GT(ForegroundFraction(start), 0.01) << "blank scene: see " << dir;
