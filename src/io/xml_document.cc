@@ -24,6 +24,55 @@ bool ParseNumber(std::string_view token, double* value) {
   return ec == std::errc() && ptr == end;
 }
 
+// Makes nested comments (`<!-- a <!-- b --> c -->`) one comment, as a reader that counts
+// `<!--` and `-->` would see them: the inner markers become spaces, so pugixml sees one comment
+// and no stray `c -->` text lands in a value. Only whole, balanced nests are rewritten; when the
+// nest never closes, the comment ends at its first `-->` (what TinyXML, OpenSim's parser, does).
+// Every other byte, newlines included, is kept, so line numbers do not move.
+void MergeNestedComments(std::string& text) {
+  size_t pos = 0;
+  while ((pos = text.find("<!--", pos)) != std::string::npos) {
+    const size_t body = pos + 4;
+    const size_t first_end = text.find("-->", body);
+    if (first_end == std::string::npos) return;  // unterminated: pugixml reports it
+    const size_t inner = text.find("<!--", body);
+    if (inner == std::string::npos || inner > first_end) {
+      pos = first_end + 3;
+      continue;
+    }
+    // Count the nest depth until it returns to zero.
+    int depth = 1;
+    size_t i = body;
+    std::vector<size_t> markers;  // offsets of inner "<!--" and non-final "-->"
+    size_t close = std::string::npos;
+    while (i < text.size()) {
+      if (text.compare(i, 4, "<!--") == 0) {
+        ++depth;
+        markers.push_back(i);
+        i += 4;
+      } else if (text.compare(i, 3, "-->") == 0) {
+        if (--depth == 0) {
+          close = i;
+          break;
+        }
+        markers.push_back(i);
+        i += 3;
+      } else {
+        ++i;
+      }
+    }
+    if (close == std::string::npos) {
+      pos = first_end + 3;
+      continue;
+    }
+    for (size_t m : markers) {
+      const size_t len = text[m] == '<' ? 4 : 3;
+      for (size_t k = 0; k < len; ++k) text[m + k] = ' ';
+    }
+    pos = close + 3;
+  }
+}
+
 }  // namespace
 
 XmlDocument XmlDocument::Load(const std::string& file) {
@@ -38,6 +87,7 @@ XmlDocument XmlDocument::Parse(std::string text, const std::string& file) {
   XmlDocument result;
   result.file_ = file;
   result.text_ = std::move(text);
+  MergeNestedComments(result.text_);
   result.IndexLines();
   result.doc_ = std::make_shared<pugi::xml_document>();
   const unsigned options = pugi::parse_default | pugi::parse_ws_pcdata_single;

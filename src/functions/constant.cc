@@ -1,0 +1,17 @@
+#include "functions/constant.h"
+
+#include "functions/derivative_order.h"
+
+namespace sinew {
+
+double Constant::CalcDerivative(double /*x*/, int order) const {
+  CheckDerivativeOrder(order, TypeName());
+  return order == 0 ? value_ : 0.0;
+}
+
+double Constant::CalcPartialN(std::span<const double> /*x*/, std::span<const int> wrt) const {
+  CheckDerivativeOrder(static_cast<int>(wrt.size()), TypeName());
+  return wrt.empty() ? value_ : 0.0;
+}
+
+}  // namespace sinew

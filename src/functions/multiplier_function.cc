@@ -1,0 +1,12 @@
+#include "functions/multiplier_function.h"
+
+#include "common/error.h"
+
+namespace sinew {
+
+MultiplierFunction::MultiplierFunction(FunctionPtr function, double scale)
+    : function_(std::move(function)), scale_(scale) {
+  if (!function_) throw Error("MultiplierFunction: the inner function is missing");
+}
+
+}  // namespace sinew

@@ -1,0 +1,131 @@
+#include "io/read_function.h"
+
+#include <array>
+#include <string_view>
+
+#include "functions/constant.h"
+#include "functions/linear_function.h"
+#include "functions/multiplier_function.h"
+#include "functions/piecewise_linear_function.h"
+#include "functions/polynomial_function.h"
+#include "functions/simm_spline.h"
+
+namespace sinew {
+namespace {
+
+// Every Function class the reader knows, by its OpenSim tag.
+constexpr std::array<std::string_view, 6> kFunctionTypes = {
+    "Constant",           "LinearFunction", "PolynomialFunction",
+    "MultiplierFunction", "SimmSpline",     "NaturalCubicSpline", /* read as SimmSpline */
+};
+
+// The single child element named `name`; a missing required one fails at `element`.
+pugi::xml_node Child(const XmlDocument& doc, const pugi::xml_node& element, const char* name,
+                     const std::string& component, bool required) {
+  pugi::xml_node child = element.child(name);
+  if (!child && required) {
+    doc.Fail(element, component,
+             "<" + std::string(element.name()) + "> needs a <" + name + "> property");
+  }
+  return child;
+}
+
+std::vector<double> ReadList(const XmlDocument& doc, const pugi::xml_node& element,
+                             const char* name, const std::string& component) {
+  return doc.ReadNumbers(Child(doc, element, name, component, true), component);
+}
+
+// Builds the function, turning a sinew::Error from a constructor (bad knots, ...) into one that
+// names the element's file and line.
+template <typename Make>
+FunctionPtr Build(const XmlDocument& doc, const pugi::xml_node& element,
+                  const std::string& component, Make make) {
+  try {
+    return make();
+  } catch (const Error& error) {
+    if (!error.where().file.empty()) throw;
+    doc.Fail(element, component, error.message());
+  }
+}
+
+FunctionPtr ReadKnotFunction(const XmlDocument& doc, const pugi::xml_node& element,
+                             const std::string& component, std::string_view type) {
+  std::vector<double> x = ReadList(doc, element, "x", component);
+  std::vector<double> y = ReadList(doc, element, "y", component);
+  return Build(doc, element, component, [&]() -> FunctionPtr {
+    if (type == "PiecewiseLinearFunction") {
+      return std::make_shared<PiecewiseLinearFunction>(std::move(x), std::move(y));
+    }
+    return std::make_shared<SimmSpline>(std::move(x), std::move(y));
+  });
+}
+
+}  // namespace
+
+bool IsFunctionType(const std::string& tag) {
+  for (std::string_view type : kFunctionTypes) {
+    if (type == tag) return true;
+  }
+  return tag == "PiecewiseLinearFunction";
+}
+
+FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node& element,
+                         const std::string& component) {
+  const std::string type = element.name();
+  if (type == "Constant") {
+    pugi::xml_node value = Child(doc, element, "value", component, false);
+    return std::make_shared<Constant>(value ? doc.ReadDouble(value, component) : 0.0);
+  }
+  if (type == "LinearFunction") {
+    pugi::xml_node coefficients = Child(doc, element, "coefficients", component, false);
+    if (!coefficients) return std::make_shared<LinearFunction>(1.0, 0.0);
+    std::vector<double> c = doc.ReadNumbers(coefficients, component, 2);
+    return std::make_shared<LinearFunction>(c[0], c[1]);
+  }
+  if (type == "PolynomialFunction") {
+    std::vector<double> c = ReadList(doc, element, "coefficients", component);
+    return std::make_shared<PolynomialFunction>(std::move(c));
+  }
+  if (type == "MultiplierFunction") {
+    pugi::xml_node scale_node = Child(doc, element, "scale", component, false);
+    const double scale = scale_node ? doc.ReadDouble(scale_node, component) : 1.0;
+    // The inner function: wrapped (<function><SimmSpline>...) or, as 4.x may write it, a
+    // Function element of its own named "function".
+    FunctionPtr inner;
+    if (pugi::xml_node wrapper = element.child("function")) {
+      inner = ReadFunctionProperty(doc, wrapper, component);
+    } else {
+      for (pugi::xml_node child : element.children()) {
+        if (child.type() == pugi::node_element && IsFunctionType(child.name())) {
+          inner = ReadFunction(doc, child, component);
+          break;
+        }
+      }
+    }
+    if (!inner) doc.Fail(element, component, "<MultiplierFunction> has no inner <function>");
+    return std::make_shared<MultiplierFunction>(std::move(inner), scale);
+  }
+  if (type == "SimmSpline" || type == "NaturalCubicSpline" || type == "PiecewiseLinearFunction") {
+    return ReadKnotFunction(doc, element, component, type);
+  }
+  doc.Fail(element, component, "unknown or unsupported function type <" + type + ">");
+}
+
+FunctionPtr ReadFunctionProperty(const XmlDocument& doc, const pugi::xml_node& property,
+                                 const std::string& component) {
+  if (IsFunctionType(property.name())) return ReadFunction(doc, property, component);
+  // A wrapper: at most one Function element inside.
+  pugi::xml_node function;
+  for (pugi::xml_node child : property.children()) {
+    if (child.type() != pugi::node_element) continue;
+    if (function) {
+      doc.Fail(child, component,
+               "<" + std::string(property.name()) + "> holds more than one function");
+    }
+    function = child;
+  }
+  if (!function) return nullptr;
+  return ReadFunction(doc, function, component);
+}
+
+}  // namespace sinew
