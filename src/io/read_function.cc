@@ -1,22 +1,38 @@
 #include "io/read_function.h"
 
 #include <array>
+#include <cmath>
 #include <string_view>
 
 #include "functions/constant.h"
+#include "functions/gcv_spline.h"
 #include "functions/linear_function.h"
 #include "functions/multiplier_function.h"
+#include "functions/multivariate_polynomial_function.h"
+#include "functions/piecewise_constant_function.h"
 #include "functions/piecewise_linear_function.h"
 #include "functions/polynomial_function.h"
 #include "functions/simm_spline.h"
+#include "functions/sine.h"
+#include "functions/step_function.h"
 
 namespace sinew {
 namespace {
 
 // Every Function class the reader knows, by its OpenSim tag.
-constexpr std::array<std::string_view, 6> kFunctionTypes = {
-    "Constant",           "LinearFunction", "PolynomialFunction",
-    "MultiplierFunction", "SimmSpline",     "NaturalCubicSpline", /* read as SimmSpline */
+constexpr std::array<std::string_view, 12> kFunctionTypes = {
+    "Constant",
+    "LinearFunction",
+    "PolynomialFunction",
+    "MultiplierFunction",
+    "SimmSpline",
+    "NaturalCubicSpline",  // read as SimmSpline
+    "PiecewiseLinearFunction",
+    "PiecewiseConstantFunction",
+    "StepFunction",
+    "Sine",
+    "MultivariatePolynomialFunction",
+    "GCVSpline",
 };
 
 // The single child element named `name`; a missing required one fails at `element`.
@@ -28,6 +44,24 @@ pugi::xml_node Child(const XmlDocument& doc, const pugi::xml_node& element, cons
              "<" + std::string(element.name()) + "> needs a <" + name + "> property");
   }
   return child;
+}
+
+// An optional scalar property with OpenSim's default.
+double ReadScalar(const XmlDocument& doc, const pugi::xml_node& element, const char* name,
+                  const std::string& component, double default_value) {
+  pugi::xml_node child = element.child(name);
+  return child ? doc.ReadDouble(child, component) : default_value;
+}
+
+// A required integer property.
+int ReadInteger(const XmlDocument& doc, const pugi::xml_node& element, const char* name,
+                const std::string& component) {
+  pugi::xml_node child = Child(doc, element, name, component, true);
+  const double value = doc.ReadDouble(child, component);
+  if (!(std::abs(value) < 1e6) || value != std::round(value)) {
+    doc.Fail(child, component, "<" + std::string(name) + "> expects an integer");
+  }
+  return static_cast<int>(value);
 }
 
 std::vector<double> ReadList(const XmlDocument& doc, const pugi::xml_node& element,
@@ -56,6 +90,9 @@ FunctionPtr ReadKnotFunction(const XmlDocument& doc, const pugi::xml_node& eleme
     if (type == "PiecewiseLinearFunction") {
       return std::make_shared<PiecewiseLinearFunction>(std::move(x), std::move(y));
     }
+    if (type == "PiecewiseConstantFunction") {
+      return std::make_shared<PiecewiseConstantFunction>(std::move(x), std::move(y));
+    }
     return std::make_shared<SimmSpline>(std::move(x), std::move(y));
   });
 }
@@ -66,15 +103,14 @@ bool IsFunctionType(const std::string& tag) {
   for (std::string_view type : kFunctionTypes) {
     if (type == tag) return true;
   }
-  return tag == "PiecewiseLinearFunction";
+  return false;
 }
 
 FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node& element,
                          const std::string& component) {
   const std::string type = element.name();
   if (type == "Constant") {
-    pugi::xml_node value = Child(doc, element, "value", component, false);
-    return std::make_shared<Constant>(value ? doc.ReadDouble(value, component) : 0.0);
+    return std::make_shared<Constant>(ReadScalar(doc, element, "value", component, 0.0));
   }
   if (type == "LinearFunction") {
     pugi::xml_node coefficients = Child(doc, element, "coefficients", component, false);
@@ -87,8 +123,7 @@ FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node& element,
     return std::make_shared<PolynomialFunction>(std::move(c));
   }
   if (type == "MultiplierFunction") {
-    pugi::xml_node scale_node = Child(doc, element, "scale", component, false);
-    const double scale = scale_node ? doc.ReadDouble(scale_node, component) : 1.0;
+    const double scale = ReadScalar(doc, element, "scale", component, 1.0);
     // The inner function: wrapped (<function><SimmSpline>...) or, as 4.x may write it, a
     // Function element of its own named "function".
     FunctionPtr inner;
@@ -105,8 +140,41 @@ FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node& element,
     if (!inner) doc.Fail(element, component, "<MultiplierFunction> has no inner <function>");
     return std::make_shared<MultiplierFunction>(std::move(inner), scale);
   }
-  if (type == "SimmSpline" || type == "NaturalCubicSpline" || type == "PiecewiseLinearFunction") {
+  if (type == "SimmSpline" || type == "NaturalCubicSpline" || type == "PiecewiseLinearFunction" ||
+      type == "PiecewiseConstantFunction") {
     return ReadKnotFunction(doc, element, component, type);
+  }
+  if (type == "Sine") {
+    return std::make_shared<Sine>(ReadScalar(doc, element, "amplitude", component, 1.0),
+                                  ReadScalar(doc, element, "omega", component, 1.0),
+                                  ReadScalar(doc, element, "phase", component, 0.0),
+                                  ReadScalar(doc, element, "offset", component, 0.0));
+  }
+  if (type == "StepFunction") {
+    const double x0 = ReadScalar(doc, element, "transition_start_time", component, 0.99);
+    const double x1 = ReadScalar(doc, element, "transition_end_time", component, 1.01);
+    const double y0 = ReadScalar(doc, element, "start_value", component, 0.0);
+    const double y1 = ReadScalar(doc, element, "end_value", component, 1.0);
+    return Build(doc, element, component,
+                 [&]() -> FunctionPtr { return std::make_shared<StepFunction>(x0, x1, y0, y1); });
+  }
+  if (type == "GCVSpline") {
+    // OpenSim refits from x, y and error_variance; stored weights/coefficients are not used.
+    const int half_order = ReadInteger(doc, element, "half_order", component);
+    const double error_variance = ReadScalar(doc, element, "error_variance", component, 0.0);
+    std::vector<double> x = ReadList(doc, element, "x", component);
+    std::vector<double> y = ReadList(doc, element, "y", component);
+    return Build(doc, element, component, [&]() -> FunctionPtr {
+      return std::make_shared<GCVSpline>(half_order, std::move(x), std::move(y), error_variance);
+    });
+  }
+  if (type == "MultivariatePolynomialFunction") {
+    std::vector<double> c = ReadList(doc, element, "coefficients", component);
+    const int dimension = ReadInteger(doc, element, "dimension", component);
+    const int order = ReadInteger(doc, element, "order", component);
+    return Build(doc, element, component, [&]() -> FunctionPtr {
+      return std::make_shared<MultivariatePolynomialFunction>(std::move(c), dimension, order);
+    });
   }
   doc.Fail(element, component, "unknown or unsupported function type <" + type + ">");
 }
