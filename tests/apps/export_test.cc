@@ -189,6 +189,52 @@ TEST_F(ExportTest, HtmlViewerAndRenderedImage) {
   EXPECT_GT(drawn, 1000) << "the skeleton covers some of the picture";
 }
 
+TEST_F(ExportTest, StatesFileDrivesThePendulumAsHandComputed) {
+  // SinglePin (OpenSim 3 format): rod1 hangs from a z pin at the ground origin with its body
+  // frame 0.5 m below the pin, so at angle q its origin is (0.5 sin q, -0.5 cos q, 0) and its
+  // rotation is q about z. The states file is OpenSim's own 3 s passive simulation.
+  const std::string model =
+      kData + "/opensim-org/opensim-core/Applications/Analyze/tests/resources/SinglePin.osim";
+  const std::string states = kData + "/storage/SinglePin_states.sto";
+  const fs::path glb_file = dir_ / "pin.glb";
+  CliRun run = Sinew(
+      "export " + model + " --states " + states + " --vis primitives --out " + glb_file.string(),
+      dir_);
+  ASSERT_EQ(run.code, 0) << run.err;
+  viz::testing::ParsedGlb glb = viz::testing::ParseGlb(viz::ReadFileBytes(glb_file.string()));
+  const Storage table = ReadStorage(states);
+  const int q_column = table.FindColumn("r1_z");
+  ASSERT_GE(q_column, 0);
+  const auto& doc = glb.doc;
+  int rod = -1;
+  for (size_t i = 0; i < doc["nodes"].size(); ++i) {
+    if (doc["nodes"][i]["name"] == "rod1") rod = static_cast<int>(i);
+  }
+  ASSERT_GE(rod, 0);
+  int checked = 0;
+  const auto& anim = doc["animations"][0];
+  for (const auto& channel : anim["channels"]) {
+    if (channel["target"]["node"] != rod) continue;
+    const auto& sampler = anim["samplers"][channel["sampler"].get<int>()];
+    const std::vector<float> out = viz::testing::ReadFloatAccessor(glb, sampler["output"]);
+    for (int row = 0; row < table.NumRows(); ++row) {
+      const double q = table.Value(row, q_column);
+      if (channel["target"]["path"] == "translation") {
+        ASSERT_NEAR(out[3 * row], 0.5 * std::sin(q), 1e-6) << "row " << row;
+        ASSERT_NEAR(out[3 * row + 1], -0.5 * std::cos(q), 1e-6) << "row " << row;
+        ASSERT_NEAR(out[3 * row + 2], 0.0, 1e-6);
+      } else {
+        // Quaternion of a rotation q about z, up to sign: (0, 0, sin(q/2), cos(q/2)).
+        const double s = std::sin(q / 2), c = std::cos(q / 2);
+        const double dot = out[4 * row + 2] * s + out[4 * row + 3] * c;
+        ASSERT_NEAR(std::abs(dot), 1.0, 1e-6) << "row " << row;
+      }
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 2 * table.NumRows());
+}
+
 TEST_F(ExportTest, BadInputExitsWithCodeTwo) {
   CliRun run = Sinew("export " + kData + "/nothing.osim --out " + (dir_ / "x.glb").string(), dir_);
   EXPECT_EQ(run.code, 2);
