@@ -160,13 +160,14 @@ class VtpReader {
     size_t start = 0;
     for (size_t c = 0; c < n_cells; ++c) {
       const double end_d = offsets[c];
-      if (end_d < static_cast<double>(start) || end_d > static_cast<double>(conn.size())) {
+      // Written as a negation so that NaN fails too.
+      if (!(end_d >= static_cast<double>(start) && end_d <= static_cast<double>(conn.size()))) {
         doc_.Fail(offsets_node, "", "cell offsets are not increasing within the connectivity");
       }
       const size_t end = static_cast<size_t>(end_d);
       auto vertex = [&](size_t k) {
         const double v = conn[start + k];
-        if (v < 0 || v >= static_cast<double>(n_points)) {
+        if (!(v >= 0 && v < static_cast<double>(n_points))) {
           doc_.Fail(conn_node, "",
                     "connectivity refers to point " + std::to_string(v) + " of " +
                         std::to_string(n_points));
@@ -235,7 +236,7 @@ class VtpReader {
     };
     if (!encoding_.zlib) {
       const uint64_t size = header(0);
-      if (hb + size > raw.size()) doc_.Fail(array, "", "binary DataArray is truncated");
+      if (size > raw.size() - hb) doc_.Fail(array, "", "binary DataArray is truncated");
       return {raw.begin() + hb, raw.begin() + hb + static_cast<ptrdiff_t>(size)};
     }
     // Compressed: [n_blocks, block_size, last_block_size, compressed_size[n_blocks]].
@@ -248,8 +249,12 @@ class VtpReader {
     for (uint64_t b = 0; b < n_blocks; ++b) {
       const uint64_t compressed = header(3 + b);
       uLongf size = (b + 1 == n_blocks && last_size != 0) ? last_size : block_size;
-      if (offset + compressed > raw.size() || size > (uint64_t{1} << 32)) {
+      if (offset > raw.size() || compressed > raw.size() - offset) {
         doc_.Fail(array, "", "compressed DataArray is truncated");
+      }
+      // zlib cannot expand data more than ~1032 times: a larger claim is a corrupt header.
+      if (size > 1032 * compressed + 64) {
+        doc_.Fail(array, "", "compressed DataArray header claims an impossible block size");
       }
       const size_t at = out.size();
       out.resize(at + size);

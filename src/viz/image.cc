@@ -100,7 +100,10 @@ Image DecodePng(const std::vector<uint8_t>& bytes, const std::string& name) {
     at += 12 + length;
   }
   const int channels = color == 0 ? 1 : color == 4 ? 2 : color == 2 ? 3 : color == 6 ? 4 : 0;
-  if (channels == 0 || width <= 0 || height <= 0) return fail("unsupported colour type");
+  if (channels == 0) return fail("unsupported colour type");
+  if (width <= 0 || height <= 0 || width > 32768 || height > 32768) {
+    return fail("image size out of range");
+  }
   const size_t stride = static_cast<size_t>(width) * channels;
   std::vector<uint8_t> raw((stride + 1) * height);
   uLongf raw_size = raw.size();

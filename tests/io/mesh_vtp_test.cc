@@ -222,6 +222,23 @@ TEST(VtpTest, BadInputGivesErrorsWithFileAndLine) {
                               "format=\"binary\">" +
                               EncodeBase64(header.data(), header.size()) + "</DataArray>\n" + tail;
   EXPECT_NE(ErrorOf(corrupt).find("does not inflate"), std::string::npos) << ErrorOf(corrupt);
+  // A header that claims a block far larger than zlib can expand its bytes to.
+  std::vector<uint8_t> huge;
+  AppendHeader(huge, 1, v);
+  AppendHeader(huge, 0xFFFFFFF0u, v);
+  AppendHeader(huge, 0xFFFFFFF0u, v);
+  AppendHeader(huge, 4, v);
+  huge.insert(huge.end(), {1, 2, 3, 4});
+  const std::string claim = corrupt.substr(0, corrupt.find("format=\"binary\">") + 16) +
+                            EncodeBase64(huge.data(), huge.size()) + "</DataArray>\n" + tail;
+  EXPECT_NE(ErrorOf(claim).find("impossible block size"), std::string::npos) << ErrorOf(claim);
+  // NaN is not a cell offset.
+  const std::string nan_offsets =
+      head + points +
+      "</Points><Polys>\n<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">0 1 "
+      "2</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">nan"
+      "</DataArray></Polys>\n</Piece></PolyData></VTKFile>";
+  EXPECT_NE(ErrorOf(nan_offsets).find("offsets"), std::string::npos) << ErrorOf(nan_offsets);
   EXPECT_THROW(ReadVtp(kDataDir + "/no_such_mesh.vtp"), Error);
 }
 
