@@ -110,6 +110,8 @@ class SceneBuilder {
     part.source = g.type;
     Vec3 size = Vec3::Ones();
     if (g.type == "Mesh") {
+      // OpenSim writes "Unassigned" (or nothing) for a mesh without a file: nothing to draw.
+      if (g.mesh_file.empty() || g.mesh_file == "Unassigned") return true;
       part.mesh = LoadMesh(g.mesh_file, warn);
       if (!part.mesh) return false;
       part.source = g.mesh_file;

@@ -37,6 +37,12 @@ TEST(VisualSceneTest, MeshModeReadsMeshesAndFallsBackWithAWarning) {
   EXPECT_NE(warning.find("/bodyset/tip/lost"), std::string::npos) << warning;
   ASSERT_FALSE(scene.bodies[2].parts.empty());
   EXPECT_EQ(scene.bodies[2].parts[0].source, "primitive");
+  // OpenSim's placeholder "Unassigned" means no file: nothing drawn, nothing to warn about.
+  ModelSpec placeholder = testing::TwoLinkSpec();
+  placeholder.bodies[2].geometry[0].mesh_file = "Unassigned";
+  scene = BuildVisualScene(placeholder, MeshOptions());
+  EXPECT_TRUE(scene.warnings.empty());
+  EXPECT_TRUE(scene.bodies[2].parts.empty());
 }
 
 TEST(VisualSceneTest, PrimitivesLinkEachBodyFrameToItsJointsColouredByDepth) {
