@@ -21,6 +21,7 @@ struct ExportArgs {
   std::string vis = "mesh";
   std::string out;
   std::vector<std::string> geometry_dirs;
+  double fps = 0;
 };
 
 void PrintWarnings(const Diagnostics& warnings) {
@@ -32,6 +33,7 @@ void RunExport(const ExportArgs& args) {
   viz::ExportOptions options;
   options.visual.mode = viz::ParseVisMode(args.vis);
   options.visual.geometry_dirs = args.geometry_dirs;
+  options.max_fps = args.fps;
   viz::BodyMotion motion;
   const std::string& table_file = args.motion.empty() ? args.states : args.motion;
   if (table_file.empty()) {
@@ -65,6 +67,8 @@ void AddExportCommand(CLI::App& app) {
       ->check(CLI::IsMember({"primitives", "mesh", "none"}));
   cmd->add_option("--geometry-dir", args->geometry_dirs,
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
+  cmd->add_option("--fps", args->fps, "Keep at most this many frames per second (default: all)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--out,-o", args->out, "Output file: .glb or .html")->required();
   cmd->callback([args] { RunExport(*args); });
 }

@@ -8,6 +8,23 @@
 
 namespace sinew::viz {
 
+BodyMotion ThinMotion(const BodyMotion& motion, double max_fps) {
+  if (max_fps <= 0 || motion.times.size() < 3) return motion;
+  const double spacing = 1.0 / max_fps;
+  BodyMotion out;
+  const size_t n = motion.times.size();
+  for (size_t k = 0; k < n; ++k) {
+    // Keep the first frame, every frame at least `spacing` after the last kept one (with a
+    // small tolerance for rounding in the file's times), and the last frame.
+    const bool keep =
+        k == 0 || k + 1 == n || motion.times[k] - out.times.back() >= spacing * (1 - 1e-9);
+    if (!keep) continue;
+    out.times.push_back(motion.times[k]);
+    out.X_GB.push_back(motion.X_GB[k]);
+  }
+  return out;
+}
+
 Diagnostics ExportAnimation(const ModelSpec& spec, const BodyMotion& motion,
                             const std::string& path, const ExportOptions& options) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -34,7 +51,7 @@ Diagnostics ExportAnimation(const ModelSpec& spec, const BodyMotion& motion,
   }
   VisualScene scene = BuildVisualScene(spec, options.visual);
   const std::string title = options.title.empty() ? spec.name : options.title;
-  std::vector<uint8_t> glb = WriteGlb(scene, motion, title);
+  std::vector<uint8_t> glb = WriteGlb(scene, ThinMotion(motion, options.max_fps), title);
   if (html) {
     const std::string page = MakeViewerHtml(glb, title);
     WriteFileBytes(path, std::vector<uint8_t>(page.begin(), page.end()));

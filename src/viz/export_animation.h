@@ -15,7 +15,13 @@ namespace sinew::viz {
 struct ExportOptions {
   VisualOptions visual;  ///< Mode (primitives/mesh/none) and extra mesh folders.
   std::string title;     ///< Page/scene title; the model's name when empty.
+  /// When > 0, frames closer than 1/max_fps s to the previously kept one are dropped (the
+  /// first and last frames are always kept), so long fine-step simulations stay small.
+  double max_fps = 0;
 };
+
+/// The frames of `motion` kept for a frame rate of at most `max_fps` (all when <= 0).
+BodyMotion ThinMotion(const BodyMotion& motion, double max_fps);
 
 /// Writes `spec` moving along `motion` (body poses X_GB per frame; one frame for a still pose)
 /// to `path`: a binary glTF 2.0 file when it ends in .glb, a self-contained HTML viewer when it

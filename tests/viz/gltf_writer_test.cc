@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "math/rotation.h"
+#include "viz/export_animation.h"
 #include "viz/glb_test_util.h"
 #include "viz/two_link_spec.h"
 
@@ -134,6 +135,22 @@ TEST(GltfWriterTest, StaticSceneHasNoAnimationAndEmptySceneStaysValid) {
   EXPECT_FALSE(empty.doc.contains("meshes"));
   EXPECT_FALSE(empty.doc.contains("buffers"));
   EXPECT_EQ(empty.doc["nodes"].size(), 4u);
+}
+
+TEST(ExportAnimationTest, ThinMotionKeepsEndsAndRespectsTheFrameRate) {
+  // 101 frames 0.01 s apart (100 fps) thinned to 30 fps: a frame is kept once 1/30 s has
+  // passed since the last kept one, i.e. every 4th (0.04 s): k = 0, 4, ..., 100, 26 frames,
+  // and the last frame (k = 100) is among them.
+  const BodyMotion motion = testing::SwingMotion(101, 0.0, 0.01, 0.01);
+  const BodyMotion thin = ThinMotion(motion, 30);
+  ASSERT_EQ(thin.times.size(), 26u);
+  EXPECT_DOUBLE_EQ(thin.times.front(), 0.0);
+  EXPECT_DOUBLE_EQ(thin.times.back(), 1.0);
+  for (size_t k = 1; k + 1 < thin.times.size(); ++k) {
+    EXPECT_NEAR(thin.times[k] - thin.times[k - 1], 0.04, 1e-12);
+  }
+  EXPECT_EQ(ThinMotion(motion, 0).times.size(), 101u);
+  EXPECT_EQ(ThinMotion(motion, 1000).times.size(), 101u);
 }
 
 }  // namespace
