@@ -138,14 +138,51 @@ class SceneBuilder {
       const double ring = Dimension(g, "ring_radius", 0, 1);
       part.mesh = MakeTorus(Dimension(g, "tube_radius", 0, 0.1 * ring) / ring);
       size = Vec3::Constant(ring);
+    } else if (g.type == "Line" || g.type == "Arrow") {
+      AddSegment(g, part, body);
+      return true;
     } else {
-      // FrameGeometry, Arrow, Line, ...: decorations without a body shape.
+      // FrameGeometry and other decorations without a body shape.
       warn("geometry type '" + g.type + "' is not drawn");
       return true;
     }
     part.scale = part.scale.cwiseProduct(size);
     body.parts.push_back(std::move(part));
     return true;
+  }
+
+  // A Line (start_point to end_point) or an Arrow (from start_point along direction for
+  // length, with a cone head), as thin cylinders in the geometry's frame.
+  static void AddSegment(const GeometrySpec& g, const VisualPart& base, VisualBody& body) {
+    const Vec3 start(Dimension(g, "start_point", 0, 0), Dimension(g, "start_point", 1, 0),
+                     Dimension(g, "start_point", 2, 0));
+    Vec3 end(Dimension(g, "end_point", 0, 0), Dimension(g, "end_point", 1, 1),
+             Dimension(g, "end_point", 2, 0));
+    const bool arrow = g.type == "Arrow";
+    if (arrow) {
+      const Vec3 dir(Dimension(g, "direction", 0, 0), Dimension(g, "direction", 1, 1),
+                     Dimension(g, "direction", 2, 0));
+      end = start + Dimension(g, "length", 0, 1) * dir.normalized();
+    }
+    const double length = (end - start).norm();
+    if (!(length > 1e-12)) return;
+    const Vec3 axis = (end - start) / length;
+    const double head = arrow ? 0.15 * length : 0.0;
+    VisualPart shaft = base;
+    shaft.mesh = UnitCylinder();
+    const Vec3 shaft_end = end - head * axis;
+    shaft.X_BG = g.X_BG * Transform(RotationYTo(axis), 0.5 * (start + shaft_end));
+    const double r = 0.015 * length;
+    shaft.scale = base.scale.cwiseProduct(Vec3(r, 0.5 * (length - head), r));
+    body.parts.push_back(shaft);
+    if (arrow) {
+      VisualPart cone = base;
+      cone.name = base.name + "_head";
+      cone.mesh = UnitCone();
+      cone.X_BG = g.X_BG * Transform(RotationYTo(axis), shaft_end);
+      cone.scale = base.scale.cwiseProduct(Vec3(3 * r, head, 3 * r));
+      body.parts.push_back(cone);
+    }
   }
 
   template <typename Warn>

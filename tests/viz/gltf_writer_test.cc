@@ -46,6 +46,30 @@ TEST(VisualSceneTest, MeshModeReadsMeshesAndFallsBackWithAWarning) {
   EXPECT_TRUE(scene.bodies[2].parts.empty());
 }
 
+TEST(VisualSceneTest, ArrowsAndLinesBecomeCylindersAndCones) {
+  ModelSpec spec = testing::TwoLinkSpec();
+  GeometrySpec arrow;
+  arrow.name = "arrow";
+  arrow.type = "Arrow";
+  arrow.dimensions = {{"start_point", {0, 0, 0}}, {"direction", {2, 0, 0}}, {"length", {1}}};
+  GeometrySpec line;
+  line.name = "line";
+  line.type = "Line";
+  line.dimensions = {{"start_point", {0, 1, 0}}, {"end_point", {0, 1, 3}}};
+  spec.bodies[0].geometry = {arrow, line};
+  VisualScene scene = BuildVisualScene(spec, MeshOptions());
+  const auto& parts = scene.bodies[0].parts;
+  ASSERT_EQ(parts.size(), 3u);  // shaft + head, line
+  auto end_of = [](const VisualPart& p, double y) { return p.X_BG * Vec3(0, y * p.scale.y(), 0); };
+  // The shaft runs from the start point to the head (85% of the length), the cone's apex
+  // (unit cone y = 1) at the arrow's tip.
+  EXPECT_LT(end_of(parts[0], -1).norm(), 1e-12);
+  EXPECT_LT((end_of(parts[0], 1) - Vec3(0.85, 0, 0)).norm(), 1e-12);
+  EXPECT_LT((end_of(parts[1], 1) - Vec3(1, 0, 0)).norm(), 1e-12);
+  EXPECT_LT((end_of(parts[2], -1) - Vec3(0, 1, 0)).norm(), 1e-12);
+  EXPECT_LT((end_of(parts[2], 1) - Vec3(0, 1, 3)).norm(), 1e-12);
+}
+
 TEST(VisualSceneTest, PrimitivesLinkEachBodyFrameToItsJointsColouredByDepth) {
   const ModelSpec spec = testing::TwoLinkSpec();
   EXPECT_EQ(BodyDepths(spec), (std::vector<int>{0, 1, 2}));
