@@ -27,6 +27,7 @@ struct RenderArgs {
   int height = 800;
   std::string out;
   std::vector<std::string> geometry_dirs;
+  bool no_floor = false;
 };
 
 void RunRender(const RenderArgs& args) {
@@ -49,6 +50,7 @@ void RunRender(const RenderArgs& args) {
   viz::RenderOptions options;
   options.width = args.width;
   options.height = args.height;
+  options.floor = !args.no_floor;
   const viz::Camera camera =
       viz::FrameCamera(viz::SceneBounds(scene, X_GB), viz::ParseViewDirection(args.view),
                        static_cast<double>(args.width) / args.height);
@@ -76,6 +78,7 @@ void AddRenderCommand(CLI::App& app) {
   cmd->add_option("--height", args->height, "Image height (pixels)")->check(CLI::Range(1, 8192));
   cmd->add_option("--geometry-dir", args->geometry_dirs,
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
+  cmd->add_flag("--no-floor", args->no_floor, "Leave out the floor and the model's shadow");
   cmd->add_option("--out,-o", args->out, "Output PNG file")->required();
   cmd->callback([args] { RunRender(*args); });
 }

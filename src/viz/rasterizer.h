@@ -27,6 +27,8 @@ struct RenderOptions {
   /// OpenSim's x points forward, y up, z to the model's right.
   Vec3 view_direction = Vec3(1.0, 0.35, 0.8);
   Vec3 background = Vec3(0.96, 0.96, 0.96);  ///< RGB in [0, 1].
+  /// A floor under the model (at its lowest point) with the model's shadow from the key light.
+  bool floor = false;
 };
 
 /// Parses a view name: "front" (from +x), "back", "right" (from +z), "left", "top" or "iso".

@@ -100,6 +100,31 @@ TEST(RasterizerTest, FramedCameraKeepsTheSceneInsideTheImage) {
   EXPECT_THROW(ParseViewDirection("sideways"), Error);
 }
 
+TEST(RasterizerTest, FloorAndShadowAppearWhenAsked) {
+  // A sphere on a floor at its lowest point: floor samples are background * 0.9 and shadow
+  // samples floor * 0.7, both unlit (RGB 0.864 and 0.605 of full scale).
+  VisualScene scene = OnePart(UnitSphere(), Vec3::Constant(0.3), Vec3(1, 0, 0));
+  RenderOptions options;
+  options.width = options.height = 120;
+  options.floor = true;
+  const auto bounds = SceneBounds(scene, {Transform()});
+  const Camera camera = FrameCamera(bounds, Vec3(1, 0.8, 0.3), 1.0);
+  Image image = RenderScene(scene, {Transform()}, camera, options);
+  int floor = 0, shadow = 0;
+  for (size_t i = 0; i < image.rgb.size(); i += 3) {
+    const uint8_t* p = &image.rgb[i];
+    if (p[0] == p[1] && p[1] == p[2]) {
+      floor += std::abs(p[0] - 220) <= 1;   // 0.96 * 0.9 * 255
+      shadow += std::abs(p[0] - 154) <= 1;  // 0.96 * 0.9 * 0.7 * 255
+    }
+  }
+  EXPECT_GT(floor, 1000);
+  EXPECT_GT(shadow, 100);
+  options.floor = false;
+  image = RenderScene(scene, {Transform()}, camera, options);
+  EXPECT_EQ(image.At(0, image.height - 1)[0], 245);  // no floor in the corner
+}
+
 TEST(PngTest, EncodeDecodeRoundTrip) {
   Image image(7, 5);
   for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = static_cast<uint8_t>(i * 37);
