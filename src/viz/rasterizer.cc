@@ -21,14 +21,17 @@ PosedPart Pose(const VisualPart& part, const Transform& X_GB) {
   PosedPart out;
   const Transform X_GG = X_GB * part.X_BG;  // part frame in ground
   // Normals transform with the inverse transpose of R * diag(scale).
-  const Vec3 inv_scale = part.scale.cwiseInverse();
+  // (A zero scale flattens the part; its normals then follow the unflattened axes.)
+  const Vec3 inv_scale = part.scale.unaryExpr([](double s) { return s == 0 ? 1.0 : 1.0 / s; });
   const TriangleMesh& m = *part.mesh;
   out.positions.reserve(m.positions.size());
   out.normals.reserve(m.positions.size());
   for (size_t i = 0; i < m.positions.size(); ++i) {
     out.positions.push_back(X_GG * part.scale.cwiseProduct(m.positions[i].cast<double>()));
     const Vec3 n = i < m.normals.size() ? Vec3(m.normals[i].cast<double>()) : Vec3::UnitY();
-    out.normals.push_back((X_GG.R * inv_scale.cwiseProduct(n)).normalized());
+    const Vec3 normal = X_GG.R * inv_scale.cwiseProduct(n);
+    out.normals.push_back(normal.allFinite() && normal.norm() > 0 ? Vec3(normal.normalized())
+                                                                  : Vec3::UnitY());
   }
   return out;
 }
