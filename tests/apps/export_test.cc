@@ -189,13 +189,25 @@ TEST_F(ExportTest, HtmlViewerAndRenderedImage) {
   EXPECT_GT(drawn, 1000) << "the skeleton covers some of the picture";
 }
 
-TEST_F(ExportTest, StatesFileDrivesThePendulumAsHandComputed) {
+class StatesExportTest : public ExportTest, public ::testing::WithParamInterface<bool> {};
+
+TEST_P(StatesExportTest, StatesFileDrivesThePendulumAsHandComputed) {
   // SinglePin (OpenSim 3 format): rod1 hangs from a z pin at the ground origin with its body
   // frame 0.5 m below the pin, so at angle q its origin is (0.5 sin q, -0.5 cos q, 0) and its
   // rotation is q about z. The states file is OpenSim's own 3 s passive simulation.
   const std::string model =
       kData + "/opensim-org/opensim-core/Applications/Analyze/tests/resources/SinglePin.osim";
-  const std::string states = kData + "/storage/SinglePin_states.sto";
+  // Also as a simulation writes states: OpenSim 4 labels (/jointset/pin1/r1_z/value).
+  const bool opensim4_labels = GetParam();
+  std::string states = kData + "/storage/SinglePin_states.sto";
+  if (opensim4_labels) {
+    Storage relabelled = ReadStorage(states);
+    for (std::string& label : relabelled.labels) {
+      label = "/jointset/pin1/r1_z/" + std::string(label == "r1_z" ? "value" : "speed");
+    }
+    states = (dir_ / "states.sto").string();
+    WriteStorage(relabelled, states);
+  }
   const fs::path glb_file = dir_ / "pin.glb";
   CliRun run = Sinew(
       "export " + model + " --states " + states + " --vis primitives --out " + glb_file.string(),
@@ -203,7 +215,7 @@ TEST_F(ExportTest, StatesFileDrivesThePendulumAsHandComputed) {
   ASSERT_EQ(run.code, 0) << run.err;
   viz::testing::ParsedGlb glb = viz::testing::ParseGlb(viz::ReadFileBytes(glb_file.string()));
   const Storage table = ReadStorage(states);
-  const int q_column = table.FindColumn("r1_z");
+  const int q_column = table.FindColumn(opensim4_labels ? "/jointset/pin1/r1_z/value" : "r1_z");
   ASSERT_GE(q_column, 0);
   const auto& doc = glb.doc;
   int rod = -1;
@@ -234,6 +246,8 @@ TEST_F(ExportTest, StatesFileDrivesThePendulumAsHandComputed) {
   }
   EXPECT_EQ(checked, 2 * table.NumRows());
 }
+
+INSTANTIATE_TEST_SUITE_P(Labels, StatesExportTest, ::testing::Bool());
 
 TEST_F(ExportTest, BadInputExitsWithCodeTwo) {
   CliRun run = Sinew("export " + kData + "/nothing.osim --out " + (dir_ / "x.glb").string(), dir_);
