@@ -1,0 +1,171 @@
+// `sinew inspect MODEL.osim [--json]`: what a model file says, as text or one JSON object.
+#include <iostream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "apps/sinew/commands.h"
+#include "build/support.h"
+#include "io/osim_reader.h"
+
+namespace sinew::cli {
+namespace {
+
+// The name of a body for display: "ground" for ground.
+const std::string& BodyName(const ModelSpec& spec, int body) { return spec.bodies[body].name; }
+
+const char* MotionName(MotionType type) {
+  switch (type) {
+    case MotionType::kRotational:
+      return "rotational";
+    case MotionType::kTranslational:
+      return "translational";
+    case MotionType::kCoupled:
+      return "coupled";
+  }
+  return "?";
+}
+
+nlohmann::json ToJson(const ModelSpec& spec) {
+  using nlohmann::json;
+  json out;
+  out["name"] = spec.name;
+  out["file"] = spec.file;
+  out["version"] = spec.version;
+  out["gravity"] = {spec.gravity.x(), spec.gravity.y(), spec.gravity.z()};
+  json bodies = json::array();
+  for (size_t i = 1; i < spec.bodies.size(); ++i) {
+    const BodySpec& b = spec.bodies[i];
+    bodies.push_back({{"name", b.name},
+                      {"mass", b.mass},
+                      {"mass_center", {b.mass_center.x(), b.mass_center.y(), b.mass_center.z()}},
+                      {"geometry", b.geometry.size()},
+                      {"wrap_objects", b.wrap_objects.size()}});
+  }
+  out["bodies"] = bodies;
+  json joints = json::array();
+  for (const JointSpec& j : spec.joints) {
+    json coordinates = json::array();
+    for (int c : j.coordinates) coordinates.push_back(spec.coordinates[c].name);
+    joints.push_back({{"name", j.name},
+                      {"type", j.type},
+                      {"parent", BodyName(spec, j.parent_body)},
+                      {"child", BodyName(spec, j.child_body)},
+                      {"parent_frame", j.parent_frame},
+                      {"child_frame", j.child_frame},
+                      {"reverse", j.reverse},
+                      {"coordinates", coordinates}});
+  }
+  out["joints"] = joints;
+  json coordinates = json::array();
+  for (const CoordinateSpec& c : spec.coordinates) {
+    coordinates.push_back({{"name", c.name},
+                           {"joint", c.joint >= 0 ? spec.joints[c.joint].name : ""},
+                           {"motion_type", MotionName(c.motion_type)},
+                           {"default_value", c.default_value},
+                           {"default_speed_value", c.default_speed_value},
+                           {"range", {c.range_min, c.range_max}},
+                           {"clamped", c.clamped},
+                           {"locked", c.locked},
+                           {"prescribed", c.prescribed}});
+  }
+  out["coordinates"] = coordinates;
+  json forces = json::array();
+  for (const ForceSpec& f : spec.forces) {
+    json force = {{"name", f.name}, {"type", f.type}, {"applies_force", f.applies_force}};
+    if (f.geometry_path) force["path_points"] = f.geometry_path->points.size();
+    forces.push_back(force);
+  }
+  out["forces"] = forces;
+  json constraints = json::array();
+  for (const ConstraintSpec& c : spec.constraints) {
+    constraints.push_back({{"name", c.name}, {"type", c.type}, {"enabled", c.enabled}});
+  }
+  out["constraints"] = constraints;
+  json markers = json::array();
+  for (const MarkerSpec& m : spec.markers) {
+    markers.push_back({{"name", m.name}, {"body", BodyName(spec, m.body)}});
+  }
+  out["markers"] = markers;
+  json contacts = json::array();
+  for (const ContactGeometrySpec& c : spec.contact_geometry) {
+    contacts.push_back({{"name", c.name}, {"type", c.type}, {"body", BodyName(spec, c.body)}});
+  }
+  out["contact_geometry"] = contacts;
+  json controllers = json::array();
+  for (const ControllerSpec& c : spec.controllers) {
+    controllers.push_back({{"name", c.name}, {"type", c.type}});
+  }
+  out["controllers"] = controllers;
+  json warnings = json::array();
+  for (const Diagnostic& d : spec.warnings) warnings.push_back(d.Format());
+  out["warnings"] = warnings;
+  out["not_simulated"] = ListNotSimulated(spec);
+  return out;
+}
+
+void PrintText(const ModelSpec& spec, std::ostream& os) {
+  os << "model: " << spec.name << "\nfile: " << spec.file << "\nformat version: " << spec.version
+     << "\ngravity: " << spec.gravity.x() << " " << spec.gravity.y() << " " << spec.gravity.z()
+     << "\ncounts: " << spec.bodies.size() - 1 << " bodies, " << spec.joints.size() << " joints, "
+     << spec.coordinates.size() << " coordinates, " << spec.forces.size() << " forces, "
+     << spec.constraints.size() << " constraints, " << spec.markers.size() << " markers, "
+     << spec.contact_geometry.size() << " contact geometry, " << spec.controllers.size()
+     << " controllers\n";
+  os << "\nbodies:\n";
+  for (size_t i = 1; i < spec.bodies.size(); ++i) {
+    os << "  " << spec.bodies[i].name << "  mass " << spec.bodies[i].mass << " kg\n";
+  }
+  os << "\njoints:\n";
+  for (const JointSpec& j : spec.joints) {
+    os << "  " << j.name << "  " << j.type << "  " << BodyName(spec, j.parent_body) << " -> "
+       << BodyName(spec, j.child_body);
+    if (!j.coordinates.empty()) {
+      os << "  [";
+      for (size_t k = 0; k < j.coordinates.size(); ++k) {
+        os << (k ? ", " : "") << spec.coordinates[j.coordinates[k]].name;
+      }
+      os << "]";
+    }
+    os << "\n";
+  }
+  std::map<std::string, int> by_type;
+  for (const ForceSpec& f : spec.forces) ++by_type[f.type];
+  os << "\nforces by type:\n";
+  for (const auto& [type, count] : by_type) os << "  " << type << ": " << count << "\n";
+  os << "\nconstraints:\n";
+  for (const ConstraintSpec& c : spec.constraints) os << "  " << c.name << "  " << c.type << "\n";
+  os << "\nmarkers:\n";
+  for (const MarkerSpec& m : spec.markers) {
+    os << "  " << m.name << "  on " << BodyName(spec, m.body) << "\n";
+  }
+  os << "\nwarnings (" << spec.warnings.size() << "):\n";
+  for (const Diagnostic& d : spec.warnings) os << "  " << d.Format() << "\n";
+  const std::vector<std::string> not_simulated = ListNotSimulated(spec);
+  os << "\nnot simulated (" << not_simulated.size() << "):\n";
+  for (const std::string& line : not_simulated) os << "  " << line << "\n";
+}
+
+}  // namespace
+
+void AddInspectCommand(CLI::App& app) {
+  struct Options {
+    std::string model;
+    bool json = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("inspect", "Summarize what an .osim model file says");
+  cmd->add_option("model", options->model, "The .osim file")->required();
+  cmd->add_flag("--json", options->json, "Print one JSON object instead of text");
+  cmd->callback([options]() {
+    const ModelSpec spec = ReadOsim(options->model);
+    if (options->json) {
+      std::cout << ToJson(spec).dump(2) << "\n";
+    } else {
+      PrintText(spec, std::cout);
+    }
+  });
+}
+
+}  // namespace sinew::cli
