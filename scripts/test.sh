@@ -9,3 +9,6 @@ for kind in release asan; do
   echo "== $kind tests"
   (cd "$root/build/$kind" && ctest --output-on-failure -j "$(nproc)")
 done
+# The .osim reader's fuzz target, for a bounded time (needs clang with libFuzzer).
+echo "== fuzz (60 s)"
+bash "$root/scripts/fuzz.sh" 60

@@ -16,5 +16,6 @@ void AddInspectCommand(CLI::App& app);
 void AddExportCommand(CLI::App& app);
 /// `sinew render`: a still PNG from the software renderer (cmd_render.cc).
 void AddRenderCommand(CLI::App& app);
+void AddKinematicsCommand(CLI::App& app);
 
 }  // namespace sinew::cli

@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
   sinew::cli::AddInspectCommand(app);
   sinew::cli::AddExportCommand(app);
   sinew::cli::AddRenderCommand(app);
+  sinew::cli::AddKinematicsCommand(app);
   app.require_subcommand(1);
   try {
     app.parse(argc, argv);

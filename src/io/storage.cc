@@ -159,6 +159,9 @@ Storage ParseStorage(std::string_view text, const std::string& file) {
         fail("inDegrees expects yes or no, found '" + value + "'");
       }
     } else {
+      if (key == "DataType" && value != "double") {
+        fail("DataType=" + value + " tables are not supported (only double columns)");
+      }
       storage.metadata.emplace_back(key, value);
     }
   }

@@ -51,7 +51,8 @@ struct Storage {
 /// skipped, as OpenSim does; a label line without tabs is split on spaces); rows are separated
 /// by tabs or spaces. nRows and nColumns are checked against the data and a disagreement is
 /// noted in Storage::notes, not fatal (OpenSim's own files disagree sometimes). A row whose
-/// length differs from the label count, a bad number, or a missing `endheader` throws
+/// length differs from the label count, a bad number, a DataType other than double (OpenSim 4's
+/// Vec3/Quaternion tables are not supported), or a missing `endheader` throws
 /// sinew::Error naming file and line.
 Storage ReadStorage(const std::string& file);
 

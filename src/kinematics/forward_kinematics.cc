@@ -19,6 +19,10 @@ std::array<double, 6> Gather(const TreeJoint& t, std::span<const double> values)
 
 void CalcBodyPoses(const KinematicTree& tree, std::span<const double> q,
                    std::span<Transform> X_GB) {
+  if (static_cast<int>(q.size()) < tree.num_coordinates() ||
+      static_cast<int>(X_GB.size()) < tree.num_bodies()) {
+    throw Error("CalcBodyPoses: q or X_GB is too short for the model");
+  }
   X_GB[kGroundIndex] = Transform();
   for (const TreeJoint& t : tree.joints()) {
     const std::array<double, 6> q_local = Gather(t, q);
@@ -31,6 +35,12 @@ void CalcBodyPoses(const KinematicTree& tree, std::span<const double> q,
 void CalcBodyVelocities(const KinematicTree& tree, std::span<const double> q,
                         std::span<const double> u, std::span<const Transform> X_GB,
                         std::span<SpatialVec> V_GB) {
+  if (static_cast<int>(q.size()) < tree.num_coordinates() ||
+      static_cast<int>(u.size()) < tree.num_coordinates() ||
+      static_cast<int>(X_GB.size()) < tree.num_bodies() ||
+      static_cast<int>(V_GB.size()) < tree.num_bodies()) {
+    throw Error("CalcBodyVelocities: q, u, X_GB or V_GB is too short for the model");
+  }
   V_GB[kGroundIndex].setZero();
   for (const TreeJoint& t : tree.joints()) {
     const std::array<double, 6> q_local = Gather(t, q);

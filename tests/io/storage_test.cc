@@ -9,6 +9,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "io/storage_functions.h"
 #include "io/storage_labels.h"
 
 namespace sinew {
@@ -117,6 +118,7 @@ TEST(StorageTest, BadFilesGiveErrorsWithLines) {
   ExpectParseError("name\ninDegrees=maybe\nendheader\ntime\n", 2, "inDegrees");
   ExpectParseError("name\nnRows=many\nendheader\ntime\n", 2, "nRows");
   ExpectParseError("name\nendheader\n\n", 3, "labels");
+  ExpectParseError("markers\nDataType=Vec3\nendheader\ntime\tm1\n0\t1,2,3\n", 2, "Vec3");
   EXPECT_THROW(ReadStorage(DataFile("no_such_file.sto")), Error);
 }
 
@@ -176,6 +178,32 @@ TEST(StorageTest, ReadsEveryStorageFileInTheCorpus) {
   EXPECT_LE(noted, 3) << "more corpus files than expected disagree with their nRows/nColumns";
 }
 
+TEST(StorageFunctionsTest, SplinesThroughAPendulumRunGiveItsSpeeds) {
+  // SinglePin_states.sto holds q and u = dq/dt of a pendulum sampled every 0.01 s (20 digits).
+  // The quintic spline through q interpolates q, and away from the ends its slope matches the
+  // stored u to ~1e-8 (the quintic's interpolation error for this smooth motion; measured max
+  // 2.7e-8). Near the ends the natural end conditions (3rd and 4th derivatives zero) cost more:
+  // 8e-6 at t = 0, decaying by ~0.4 per sample. The file also repeats its final time
+  // (2.99999999999998 and 3.0, 2e-14 apart), a near-duplicate knot that spoils the last few
+  // samples' slopes. OpenSim's GCVSplineSet fit has both effects too.
+  Storage s = ReadStorage(DataFile("SinglePin_states.sto"));
+  std::vector<FunctionPtr> splines = FitColumnSplines(s);
+  ASSERT_EQ(splines.size(), 2u);
+  double worst_value = 0.0, worst_speed = 0.0;
+  for (int row = 0; row < s.NumRows(); ++row) {
+    worst_value = std::max(worst_value, std::abs(splines[0]->Calc(s.time[row]) - s.Value(row, 0)));
+    if (row >= 10 && row <= 290) {
+      worst_speed = std::max(
+          worst_speed, std::abs(splines[0]->CalcDerivative(s.time[row], 1) - s.Value(row, 1)));
+    }
+  }
+  EXPECT_LT(worst_value, 1e-12);
+  EXPECT_LT(worst_speed, 1e-7);
+  EXPECT_LT(std::abs(splines[0]->CalcDerivative(0.0, 1) - s.Value(0, 1)), 2e-5);
+  Storage one_row = ReadStorage(DataFile("SinglePin_InitialStates.sto"));
+  EXPECT_THROW(FitColumnSplines(one_row), Error);
+}
+
 TEST(StorageLabelsTest, MapsOldAndPathStyleLabelsToCoordinates) {
   auto value = ParseColumnLabel("/jointset/knee_r/knee_angle_r/value");
   ASSERT_TRUE(value);
@@ -202,6 +230,17 @@ TEST(StorageLabelsTest, MapsOldAndPathStyleLabelsToCoordinates) {
   EXPECT_EQ(ParseColumnLabel("tilt_u_u", names)->coordinate, "tilt_u");
   EXPECT_FALSE(ParseColumnLabel("RF", names));
   EXPECT_FALSE(ParseColumnLabel("/jointset/hip/hip_flexion/value", names));
+}
+
+TEST(StorageLabelsTest, FindsCoordinateColumnsInEitherStyle) {
+  Storage path_style = ReadStorage(DataFile("double_pendum1sec.sto"));
+  EXPECT_EQ(FindCoordinateColumn(path_style, "q2"), 2);
+  EXPECT_EQ(FindCoordinateColumn(path_style, "q2", CoordinateColumnKind::kSpeed), 3);
+  EXPECT_EQ(FindCoordinateColumn(path_style, "q3"), -1);
+  Storage old_style = ReadStorage(DataFile("SinglePin_states.sto"));
+  EXPECT_EQ(FindCoordinateColumn(old_style, "r1_z"), 0);
+  EXPECT_EQ(FindCoordinateColumn(old_style, "r1_z", CoordinateColumnKind::kSpeed), 1);
+  EXPECT_EQ(FindCoordinateColumn(old_style, "r1"), -1);
 }
 
 TEST(StorageLabelsTest, ConvertsOnlyRotationalColumns) {
