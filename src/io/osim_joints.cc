@@ -101,11 +101,24 @@ bool IsKnownCoordinateProperty(std::string_view tag) {
 
 // Joint properties the reader uses; other non-numeric ones get one warning per tag.
 bool IsKnownJointProperty(std::string_view tag) {
-  static constexpr std::string_view kKnown[] = {
-      "socket_parent_frame", "socket_child_frame", "coordinates", "CoordinateSet", "frames",
-      "SpatialTransform", "parent_body", "reverse", "connectors", "FrameGeometry",
-      "components", "Appearance", "location_in_parent", "orientation_in_parent", "location",
-      "orientation", "location_in_child", "orientation_in_child"};
+  static constexpr std::string_view kKnown[] = {"socket_parent_frame",
+                                                "socket_child_frame",
+                                                "coordinates",
+                                                "CoordinateSet",
+                                                "frames",
+                                                "SpatialTransform",
+                                                "parent_body",
+                                                "reverse",
+                                                "connectors",
+                                                "FrameGeometry",
+                                                "components",
+                                                "Appearance",
+                                                "location_in_parent",
+                                                "orientation_in_parent",
+                                                "location",
+                                                "orientation",
+                                                "location_in_child",
+                                                "orientation_in_child"};
   for (std::string_view known : kKnown) {
     if (tag == known) return true;
   }
@@ -351,9 +364,9 @@ class JointReader {
     if (pugi::xml_node function = node.child("prescribed_function")) {
       c.prescribed_function = ReadFunctionProperty(doc_, function, component);
     }
-    // Before 4.0 a prescribed function alone prescribed the coordinate.
-    c.prescribed = ReadBoolOr(doc_, node, "prescribed", component,
-                              c.prescribed_function != nullptr && !node.child("prescribed"));
+    // Absent <prescribed> takes the property's default, false (no corpus file has a
+    // prescribed_function without it, so older versions give no other evidence).
+    c.prescribed = ReadBoolOr(doc_, node, "prescribed", component, false);
     if (c.prescribed && !c.prescribed_function) {
       ctx_.Warn(node, component, "prescribed without a prescribed_function: not prescribed");
       c.prescribed = false;

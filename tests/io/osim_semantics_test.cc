@@ -368,5 +368,28 @@ TEST(OsimSemantics, ScapulothoracicParameters) {
   EXPECT_EQ(j.coordinates.size(), 4u);
 }
 
+// A prescribed coordinate keeps its function of time; without <prescribed> it is not prescribed
+// (the property's default), even with a function.
+TEST(OsimSemantics, PrescribedCoordinates) {
+  const std::string joint = R"(<Ground name="ground"/>
+<BodySet><objects><Body name="b"><mass>1</mass></Body></objects></BodySet>
+<JointSet><objects><SliderJoint name="s"><socket_parent_frame>/ground</socket_parent_frame>
+<socket_child_frame>/bodyset/b</socket_child_frame><coordinates><Coordinate name="x">
+<prescribed_function><LinearFunction><coefficients>0.5 0.1</coefficients></LinearFunction>
+</prescribed_function>PRESCRIBED</Coordinate></coordinates></SliderJoint></objects></JointSet>)";
+  auto read = [&](const std::string& prescribed) {
+    std::string body = joint;
+    body.replace(body.find("PRESCRIBED"), 10, prescribed);
+    return ReadOsimString(Doc(40000, body), "prescribed.osim");
+  };
+  const ModelSpec on = read("<prescribed>true</prescribed>");
+  EXPECT_TRUE(on.coordinates[0].prescribed);
+  ASSERT_NE(on.coordinates[0].prescribed_function, nullptr);
+  EXPECT_DOUBLE_EQ(on.coordinates[0].prescribed_function->Calc(2.0), 1.1);
+  EXPECT_FALSE(read("<prescribed>false</prescribed>").coordinates[0].prescribed);
+  EXPECT_FALSE(read("").coordinates[0].prescribed);
+  EXPECT_NE(read("").coordinates[0].prescribed_function, nullptr);
+}
+
 }  // namespace
 }  // namespace sinew
