@@ -12,5 +12,6 @@ inline constexpr int kExitUsage = 1;
 inline constexpr int kExitBadInput = 2;
 
 void AddInspectCommand(CLI::App& app);
+void AddKinematicsCommand(CLI::App& app);
 
 }  // namespace sinew::cli

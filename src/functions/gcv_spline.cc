@@ -92,19 +92,24 @@ class NaturalSplineSystem {
   }
 
   // s(x_i) for coefficients z.
-  double KnotValue(const Eigen::VectorXd& z, int i) const {
+  template <typename Vector>
+  double KnotValue(const Vector& z, int i) const {
     if (i + 1 < n_) return z(i * width_);
     return z.segment((n_ - 2) * width_, width_).sum();
   }
 
-  // Trace of the influence matrix A = d s(x_i) / d y_j, by one solve per data point.
+  // Trace of the influence matrix A = d s(x_i) / d y_j: one solve per data point, done in
+  // blocks of right-hand sides.
   double InfluenceTrace() {
+    constexpr int kBlock = 32;
+    const int unknowns = (n_ - 1) * width_;
     double trace = 0.0;
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero((n_ - 1) * width_);
-    for (int j = 0; j < n_; ++j) {
-      rhs(data_rows_[j]) = 1.0;
-      trace += KnotValue(solver_.solve(rhs), j);
-      rhs(data_rows_[j]) = 0.0;
+    for (int first = 0; first < n_; first += kBlock) {
+      const int count = std::min(kBlock, n_ - first);
+      Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(unknowns, count);
+      for (int j = 0; j < count; ++j) rhs(data_rows_[first + j], j) = 1.0;
+      const Eigen::MatrixXd z = solver_.solve(rhs);
+      for (int j = 0; j < count; ++j) trace += KnotValue(z.col(j), first + j);
     }
     return trace;
   }

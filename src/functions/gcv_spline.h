@@ -51,6 +51,7 @@ class GCVSpline final : public Function {
   int half_order() const { return half_order_; }
   /// Degree of the pieces, 2 * half_order - 1.
   int degree() const { return 2 * half_order_ - 1; }
+  /// The knots and the data values, as given.
   const std::vector<double>& x() const { return x_; }
   const std::vector<double>& y() const { return y_; }
   /// The smoothing parameter p of the fit (0 for interpolation).

@@ -21,6 +21,7 @@ class PiecewiseLinearFunction final : public Function {
   double Calc(double x) const override;
   double CalcDerivative(double x, int order) const override;
 
+  /// The knots and the data values, as given.
   const std::vector<double>& x() const { return x_; }
   const std::vector<double>& y() const { return y_; }
 

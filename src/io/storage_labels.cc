@@ -67,6 +67,17 @@ std::optional<CoordinateColumn> ParseColumnLabel(std::string_view label,
   return CoordinateColumn{std::string(label), CoordinateColumnKind::kValue, ""};
 }
 
+int FindCoordinateColumn(const Storage& storage, std::string_view coordinate,
+                         CoordinateColumnKind kind) {
+  const std::string name(coordinate);
+  const std::span<const std::string> names(&name, 1);
+  for (int column = 0; column < storage.NumColumns(); ++column) {
+    std::optional<CoordinateColumn> parsed = ParseColumnLabel(storage.labels[column], names);
+    if (parsed && parsed->kind == kind) return column;
+  }
+  return -1;
+}
+
 void ConvertDegreesToRadians(Storage& storage,
                              const std::function<bool(std::string_view label)>& is_rotational) {
   if (!storage.in_degrees) return;

@@ -33,6 +33,12 @@ struct CoordinateColumn {
 std::optional<CoordinateColumn> ParseColumnLabel(std::string_view label,
                                                  std::span<const std::string> coordinates = {});
 
+/// Index of the data column holding `coordinate`'s value (or speed), whichever label style the
+/// file uses (`knee_angle_r` / `knee_angle_r_u` or `.../knee_angle_r/value` / `.../speed`);
+/// -1 when absent. Exact names only: `coordinate` is matched as a name, not a heuristic.
+int FindCoordinateColumn(const Storage& storage, std::string_view coordinate,
+                         CoordinateColumnKind kind = CoordinateColumnKind::kValue);
+
 /// Converts, when storage.in_degrees is set, every column whose label `is_rotational` accepts
 /// from degrees to radians (values and speeds alike), then clears in_degrees. OpenSim converts
 /// only rotational coordinates' columns; translations and everything else stay as they are.

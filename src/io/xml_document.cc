@@ -94,8 +94,8 @@ XmlDocument XmlDocument::Parse(std::string text, const std::string& file) {
   result.IndexLines();
   result.doc_ = std::make_shared<pugi::xml_document>();
   const unsigned options = pugi::parse_default | pugi::parse_ws_pcdata_single;
-  pugi::xml_parse_result parsed = result.doc_->load_buffer(result.text_.data(), result.text_.size(),
-                                                           options, pugi::encoding_utf8);
+  pugi::xml_parse_result parsed = result.doc_->load_buffer(
+      result.text_.data(), result.text_.size(), options, pugi::encoding_utf8);
   if (!parsed) {
     int line = 1;
     if (parsed.offset >= 0) {
@@ -160,7 +160,9 @@ void XmlDocument::Fail(const pugi::xml_node& node, const std::string& component,
   throw Error(Where(node), component, message);
 }
 
-std::string_view XmlDocument::Text(const pugi::xml_node& node) { return Trim(node.child_value()); }
+std::string_view XmlDocument::Text(const pugi::xml_node& node) {
+  return Trim(node.child_value());
+}
 
 double XmlDocument::ReadDouble(const pugi::xml_node& node, const std::string& component) const {
   std::vector<double> values = ReadNumbers(node, component, 1);
@@ -180,9 +182,8 @@ std::vector<double> XmlDocument::ReadNumbers(const pugi::xml_node& node,
     double value = 0;
     std::string_view token = text.substr(start, i - start);
     if (!ParseNumber(token, &value)) {
-      Fail(
-          node, component,
-          "<" + std::string(node.name()) + "> expects numbers, found '" + std::string(token) + "'");
+      Fail(node, component,
+           "<" + std::string(node.name()) + "> expects numbers, found '" + std::string(token) + "'");
     }
     values.push_back(value);
   }

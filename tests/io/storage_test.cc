@@ -232,6 +232,17 @@ TEST(StorageLabelsTest, MapsOldAndPathStyleLabelsToCoordinates) {
   EXPECT_FALSE(ParseColumnLabel("/jointset/hip/hip_flexion/value", names));
 }
 
+TEST(StorageLabelsTest, FindsCoordinateColumnsInEitherStyle) {
+  Storage path_style = ReadStorage(DataFile("double_pendum1sec.sto"));
+  EXPECT_EQ(FindCoordinateColumn(path_style, "q2"), 2);
+  EXPECT_EQ(FindCoordinateColumn(path_style, "q2", CoordinateColumnKind::kSpeed), 3);
+  EXPECT_EQ(FindCoordinateColumn(path_style, "q3"), -1);
+  Storage old_style = ReadStorage(DataFile("SinglePin_states.sto"));
+  EXPECT_EQ(FindCoordinateColumn(old_style, "r1_z"), 0);
+  EXPECT_EQ(FindCoordinateColumn(old_style, "r1_z", CoordinateColumnKind::kSpeed), 1);
+  EXPECT_EQ(FindCoordinateColumn(old_style, "r1"), -1);
+}
+
 TEST(StorageLabelsTest, ConvertsOnlyRotationalColumns) {
   Storage s = ParseStorage(
       "motion\ninDegrees=yes\nendheader\n"

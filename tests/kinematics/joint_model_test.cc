@@ -1,0 +1,337 @@
+// Every joint type: X_FM against hand-derived values, and H_FM, N(q) and Hdot*u against
+// central finite differences of X_FM along the motion qdot = N(q) u.
+#include "kinematics/joint_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "kinematics/test_functions.h"
+#include "math/rotation.h"
+
+namespace sinew {
+namespace {
+
+using sinew::testing::TestConstantFunction;
+using sinew::testing::TestLinearFunction;
+using sinew::testing::TestSmoothFunction;
+using sinew::testing::TestTwoArgFunction;
+
+// A model with ground, one body and one joint of `kind` with `n` coordinates.
+ModelSpec MakeSpec(JointType kind, const std::string& type, int n) {
+  ModelSpec spec;
+  spec.bodies.resize(2);
+  spec.bodies[0].name = "ground";
+  spec.bodies[1].name = "body";
+  JointSpec joint;
+  joint.name = "joint";
+  joint.path = "/jointset/joint";
+  joint.type = type;
+  joint.kind = kind;
+  joint.parent_body = 0;
+  joint.child_body = 1;
+  for (int i = 0; i < n; ++i) {
+    CoordinateSpec c;
+    c.name = "q" + std::to_string(i);
+    c.joint = 0;
+    spec.coordinates.push_back(c);
+    joint.coordinates.push_back(i);
+  }
+  spec.joints.push_back(joint);
+  return spec;
+}
+
+TransformAxisSpec Axis(const std::string& name, Vec3 axis, std::vector<int> coords, FunctionPtr f) {
+  TransformAxisSpec a;
+  a.name = name;
+  a.axis = axis;
+  a.coordinates = std::move(coords);
+  a.function = std::move(f);
+  return a;
+}
+
+// A CustomJoint with oblique axes, a one-argument nonlinear function, a two-argument coupling,
+// a constant and linear functions of slope -1.
+ModelSpec MakeCustomSpec() {
+  ModelSpec spec = MakeSpec(JointType::kCustom, "CustomJoint", 3);
+  auto& st = spec.joints[0].spatial_transform;
+  st.push_back(Axis("rotation1", Vec3(1, 0.2, 0), {0},
+                    std::make_shared<TestSmoothFunction>(0.1, 0.9, 0.2, 0.3)));
+  st.push_back(Axis("rotation2", Vec3(0, 1, 0.3), {0, 1}, std::make_shared<TestTwoArgFunction>()));
+  st.push_back(
+      Axis("rotation3", Vec3(0.1, 0, 1), {2}, std::make_shared<TestLinearFunction>(1.0, 0.0)));
+  st.push_back(Axis("translation1", Vec3(1, 0, 0), {1},
+                    std::make_shared<TestSmoothFunction>(0.01, 0.05, -0.02, 0.01)));
+  st.push_back(
+      Axis("translation2", Vec3(0, 2, 0), {}, std::make_shared<TestConstantFunction>(0.05)));
+  st.push_back(
+      Axis("translation3", Vec3(0, 0.3, 1), {2}, std::make_shared<TestLinearFunction>(-1.0, 0.01)));
+  return spec;
+}
+
+struct JointCase {
+  std::string name;
+  ModelSpec spec;
+};
+
+std::vector<JointCase> AllJointCases() {
+  std::vector<JointCase> cases;
+  cases.push_back({"Pin", MakeSpec(JointType::kPin, "PinJoint", 1)});
+  cases.push_back({"Slider", MakeSpec(JointType::kSlider, "SliderJoint", 1)});
+  cases.push_back({"Universal", MakeSpec(JointType::kUniversal, "UniversalJoint", 2)});
+  cases.push_back({"Gimbal", MakeSpec(JointType::kGimbal, "GimbalJoint", 3)});
+  cases.push_back({"Ball", MakeSpec(JointType::kBall, "BallJoint", 3)});
+  cases.push_back({"Free", MakeSpec(JointType::kFree, "FreeJoint", 6)});
+  cases.push_back({"Planar", MakeSpec(JointType::kPlanar, "PlanarJoint", 3)});
+  JointCase ellipsoid{"Ellipsoid", MakeSpec(JointType::kEllipsoid, "EllipsoidJoint", 3)};
+  ellipsoid.spec.joints[0].parameters["radii_x_y_z"] = {0.07, 0.15, 0.09};
+  cases.push_back(ellipsoid);
+  cases.push_back({"Weld", MakeSpec(JointType::kWeld, "WeldJoint", 0)});
+  JointCase scap{"Scapulothoracic",
+                 MakeSpec(JointType::kScapulothoracic, "ScapulothoracicJoint", 4)};
+  scap.spec.joints[0].parameters["thoracic_ellipsoid_radii_x_y_z"] = {0.07, 0.15, 0.09};
+  scap.spec.joints[0].parameters["scapula_winging_axis_origin"] = {0.02, -0.03};
+  scap.spec.joints[0].parameters["scapula_winging_axis_direction"] = {0.4};
+  cases.push_back(scap);
+  cases.push_back({"Custom", MakeCustomSpec()});
+  return cases;
+}
+
+// Spatial velocity of M in F, in F, by central differences of X_FM along qdot.
+SpatialVec NumericVelocity(const JointModel& joint, const std::vector<double>& q,
+                           const std::vector<double>& qdot, double h) {
+  std::vector<double> qp(q), qm(q);
+  for (size_t i = 0; i < q.size(); ++i) {
+    qp[i] += h * qdot[i];
+    qm[i] -= h * qdot[i];
+  }
+  const Transform Xp = joint.CalcX_FM(qp), Xm = joint.CalcX_FM(qm), X = joint.CalcX_FM(q);
+  const Mat3 W = (Xp.R - Xm.R) / (2 * h) * X.R.transpose();  // [w]x
+  SpatialVec V;
+  V << 0.5 * (W(2, 1) - W(1, 2)), 0.5 * (W(0, 2) - W(2, 0)), 0.5 * (W(1, 0) - W(0, 1)),
+      (Xp.p - Xm.p) / (2 * h);
+  return V;
+}
+
+std::vector<double> Sample(int n, double scale, double phase) {
+  std::vector<double> v(n);
+  for (int i = 0; i < n; ++i) v[i] = scale * std::sin(1.3 * i + phase) + 0.1 * scale;
+  return v;
+}
+
+class JointModelTest : public ::testing::TestWithParam<int> {};
+
+TEST_P(JointModelTest, VelocityMapMatchesFiniteDifferences) {
+  const JointCase c = AllJointCases()[GetParam()];
+  const auto joint = MakeJointModel(c.spec, 0);
+  const int n = joint->nq();
+  for (int trial = 0; trial < 4; ++trial) {
+    const std::vector<double> q = Sample(n, 0.7, 0.4 + trial);
+    const std::vector<double> u = Sample(n, 1.1, 2.0 + 0.7 * trial);
+    std::vector<double> qdot(n), u_back(n);
+    joint->CalcQDot(q, u, qdot);
+    joint->CalcU(q, qdot, u_back);
+    for (int i = 0; i < n; ++i) EXPECT_NEAR(u_back[i], u[i], 1e-12) << c.name;
+
+    const Mat6X H = joint->CalcH_FM(q);
+    ASSERT_EQ(H.cols(), n) << c.name;
+    const Eigen::Map<const VecX> u_vec(u.data(), n);
+    const SpatialVec V = H * u_vec;
+    EXPECT_LT((joint->CalcV_FM(q, u) - V).norm(), 1e-14) << c.name;
+    // Central differences with h = 1e-5: truncation ~h^2 |X'''| ~ 1e-10, rounding ~1e-11.
+    const SpatialVec V_num = NumericVelocity(*joint, q, qdot, 1e-5);
+    EXPECT_LT((V - V_num).norm(), 1e-8)
+        << c.name << "\nH u = " << V.transpose() << "\nnumeric = " << V_num.transpose();
+  }
+}
+
+TEST_P(JointModelTest, BiasAccelerationMatchesFiniteDifferences) {
+  const JointCase c = AllJointCases()[GetParam()];
+  const auto joint = MakeJointModel(c.spec, 0);
+  const int n = joint->nq();
+  for (int trial = 0; trial < 4; ++trial) {
+    const std::vector<double> q = Sample(n, 0.6, 1.0 + trial);
+    const std::vector<double> u = Sample(n, 0.9, 0.3 + 0.5 * trial);
+    std::vector<double> qdot(n);
+    joint->CalcQDot(q, u, qdot);
+    // With udot = 0, A = d/dt (H(q(t)) u) = dH/dq[qdot] u: central differences along qdot.
+    const double h = 1e-5;
+    std::vector<double> qp(q), qm(q);
+    for (int i = 0; i < n; ++i) {
+      qp[i] += h * qdot[i];
+      qm[i] -= h * qdot[i];
+    }
+    const Eigen::Map<const VecX> u_vec(u.data(), n);
+    const SpatialVec A_num =
+        n == 0 ? SpatialVec(SpatialVec::Zero())
+               : SpatialVec((joint->CalcH_FM(qp) * u_vec - joint->CalcH_FM(qm) * u_vec) / (2 * h));
+    const SpatialVec A = joint->CalcHDotU(q, u);
+    EXPECT_LT((A - A_num).norm(), 1e-8)
+        << c.name << "\nHdot u = " << A.transpose() << "\nnumeric = " << A_num.transpose();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllJoints, JointModelTest, ::testing::Range(0, 11),
+                         [](const ::testing::TestParamInfo<int>& param_info) {
+                           return AllJointCases()[param_info.param].name;
+                         });
+
+// ---- X_FM against hand-derived values ----
+
+Mat3 Rot(const Vec3& axis, double angle) { return RotationAboutAxis(axis, angle); }
+
+TEST(JointTransformTest, PinRotatesAboutZ) {
+  const auto joint = MakeJointModel(MakeSpec(JointType::kPin, "PinJoint", 1), 0);
+  const double q[] = {0.5};
+  const Transform X = joint->CalcX_FM(q);
+  Mat3 R;
+  R << std::cos(0.5), -std::sin(0.5), 0, std::sin(0.5), std::cos(0.5), 0, 0, 0, 1;
+  EXPECT_TRUE(X.R.isApprox(R, 1e-15));
+  EXPECT_EQ(X.p.norm(), 0.0);
+}
+
+TEST(JointTransformTest, SliderTranslatesAlongX) {
+  const auto joint = MakeJointModel(MakeSpec(JointType::kSlider, "SliderJoint", 1), 0);
+  const double q[] = {-0.25};
+  const Transform X = joint->CalcX_FM(q);
+  EXPECT_TRUE(X.R.isIdentity(0));
+  EXPECT_TRUE(X.p.isApprox(Vec3(-0.25, 0, 0), 1e-15));
+}
+
+TEST(JointTransformTest, UniversalGimbalBallFreeAreBodyFixedXYZ) {
+  const double q[] = {0.3, -0.7, 1.2, 0.1, 0.2, 0.3};
+  const Mat3 R3 = Rot(Vec3::UnitX(), q[0]) * Rot(Vec3::UnitY(), q[1]) * Rot(Vec3::UnitZ(), q[2]);
+  const Mat3 R2 = Rot(Vec3::UnitX(), q[0]) * Rot(Vec3::UnitY(), q[1]);
+  EXPECT_TRUE(MakeJointModel(MakeSpec(JointType::kUniversal, "UniversalJoint", 2), 0)
+                  ->CalcX_FM(q)
+                  .R.isApprox(R2, 1e-14));
+  for (JointType kind : {JointType::kGimbal, JointType::kBall}) {
+    const Transform X = MakeJointModel(MakeSpec(kind, "J", 3), 0)->CalcX_FM(q);
+    EXPECT_TRUE(X.R.isApprox(R3, 1e-14));
+    EXPECT_EQ(X.p.norm(), 0.0);
+  }
+  const Transform X = MakeJointModel(MakeSpec(JointType::kFree, "FreeJoint", 6), 0)->CalcX_FM(q);
+  EXPECT_TRUE(X.R.isApprox(R3, 1e-14));
+  EXPECT_TRUE(X.p.isApprox(Vec3(0.1, 0.2, 0.3), 1e-15));  // in F, not rotated
+}
+
+TEST(JointTransformTest, PlanarRotatesAboutZThenTranslatesInF) {
+  const auto joint = MakeJointModel(MakeSpec(JointType::kPlanar, "PlanarJoint", 3), 0);
+  const double q[] = {0.8, 0.3, -0.4};
+  const Transform X = joint->CalcX_FM(q);
+  EXPECT_TRUE(X.R.isApprox(Rot(Vec3::UnitZ(), 0.8), 1e-15));
+  EXPECT_TRUE(X.p.isApprox(Vec3(0.3, -0.4, 0), 1e-15));
+}
+
+TEST(JointTransformTest, EllipsoidKeepsMOnTheSurfaceWithNormalAlongMz) {
+  ModelSpec spec = MakeSpec(JointType::kEllipsoid, "EllipsoidJoint", 3);
+  const Vec3 r(0.07, 0.15, 0.09);
+  spec.joints[0].parameters["radii_x_y_z"] = {r.x(), r.y(), r.z()};
+  const auto joint = MakeJointModel(spec, 0);
+  const double q0[] = {0, 0, 0};
+  EXPECT_TRUE(joint->CalcX_FM(q0).p.isApprox(Vec3(0, 0, r.z()), 1e-15));
+  const double q[] = {0.4, -0.3, 0.9};
+  const Transform X = joint->CalcX_FM(q);
+  const Vec3 p = X.p;
+  EXPECT_NEAR(std::pow(p.x() / r.x(), 2) + std::pow(p.y() / r.y(), 2) + std::pow(p.z() / r.z(), 2),
+              1.0, 1e-14);
+  EXPECT_TRUE(X.R.isApprox(RotationFromBodyFixedXYZ(Vec3(0.4, -0.3, 0.9)), 1e-14));
+}
+
+TEST(JointTransformTest, ScapulothoracicFollowsItsSimbodyConstruction) {
+  ModelSpec spec = MakeSpec(JointType::kScapulothoracic, "ScapulothoracicJoint", 4);
+  const Vec3 r(0.07, 0.15, 0.09);
+  spec.joints[0].parameters["thoracic_ellipsoid_radii_x_y_z"] = {r.x(), r.y(), r.z()};
+  spec.joints[0].parameters["scapula_winging_axis_origin"] = {0.02, -0.03};
+  spec.joints[0].parameters["scapula_winging_axis_direction"] = {0.4};
+  const auto joint = MakeJointModel(spec, 0);
+  // q = 0: M sits on the ellipsoid's z pole, axes aligned with F.
+  const double q0[] = {0, 0, 0, 0};
+  const Transform X0 = joint->CalcX_FM(q0);
+  EXPECT_TRUE(X0.R.isApprox(Mat3::Identity(), 1e-15));
+  EXPECT_TRUE(X0.p.isApprox(Vec3(0, 0, r.z()), 1e-15));
+  // General q, built step by step as the Simbody chain: F0 = F Rz(90), ellipsoid mobilizer
+  // with radii (ry, rx, rz), M0 = B1 Rz(90), pin about d through o on both sides, weld.
+  const double q[] = {0.3, -0.2, 0.5, 0.25};
+  const Transform X_FF0 = Transform::Rotation(Rot(Vec3::UnitZ(), std::numbers::pi / 2));
+  const Mat3 R_E = RotationFromBodyFixedXYZ(Vec3(q[0], q[1], q[2]));
+  const Transform X_F0M0(R_E, Vec3(r.y() * R_E(0, 2), r.x() * R_E(1, 2), r.z() * R_E(2, 2)));
+  const Transform X_B1M0 = Transform::Rotation(Rot(Vec3::UnitZ(), std::numbers::pi / 2));
+  const Vec3 d(-std::sin(0.4), std::cos(0.4), 0);
+  // Any frame W whose z axis is d (the result does not depend on the other two axes).
+  const Vec3 wx = d.cross(Vec3::UnitZ()).normalized();
+  Mat3 R_W;
+  R_W << wx, d.cross(wx), d;
+  const Transform X_B1W(R_W, Vec3(0.02, -0.03, 0));
+  const Transform X_pin = Transform::Rotation(Rot(Vec3::UnitZ(), q[3]));
+  const Transform X_expected = X_FF0 * X_F0M0 * X_B1M0.Inverse() * X_B1W * X_pin * X_B1W.Inverse();
+  EXPECT_TRUE(joint->CalcX_FM(q).isApprox(X_expected, 1e-14));
+}
+
+TEST(JointTransformTest, CustomJointComposesBodyFixedRotationsAndUnrotatedTranslations) {
+  const ModelSpec spec = MakeCustomSpec();
+  const auto joint = MakeJointModel(spec, 0);
+  const double q[] = {0.3, -0.5, 0.8};
+  const auto& st = spec.joints[0].spatial_transform;
+  const double s1 = st[0].function->Calc(q[0]);
+  const double x01[] = {q[0], q[1]};
+  const double s2 = st[1].function->CalcN(x01);
+  const double s3 = q[2];
+  const Mat3 R = Rot(st[0].axis, s1) * Rot(st[1].axis, s2) * Rot(st[2].axis, s3);
+  const Vec3 p = st[3].function->Calc(q[1]) * Vec3::UnitX() + 0.05 * Vec3::UnitY() +
+                 (-q[2] + 0.01) * st[5].axis.normalized();
+  const Transform X = joint->CalcX_FM(q);
+  EXPECT_TRUE(X.R.isApprox(R, 1e-14));
+  EXPECT_TRUE(X.p.isApprox(p, 1e-14));
+}
+
+TEST(JointTransformTest, LinearFunctionWithoutCoordinatesGivesItsSlopeAsOpenSimDoes) {
+  // SimTK::Function::Linear called with no arguments returns coefficients[0].
+  ModelSpec spec = MakeCustomSpec();
+  spec.joints[0].spatial_transform[4].function = std::make_shared<TestLinearFunction>(0.3, 0.7);
+  const auto joint = MakeJointModel(spec, 0);
+  const ModelSpec reference_spec = MakeCustomSpec();  // translation2 = Constant(0.05)
+  const auto reference = MakeJointModel(reference_spec, 0);
+  const double q[] = {0.3, -0.5, 0.8};
+  const Vec3 dp = joint->CalcX_FM(q).p - reference->CalcX_FM(q).p;
+  EXPECT_TRUE(dp.isApprox(Vec3(0, 0.3 - 0.05, 0), 1e-15)) << dp.transpose();
+}
+
+TEST(JointModelErrorsTest, WrongCoordinateCountNamesTheJoint) {
+  ModelSpec spec = MakeSpec(JointType::kPin, "PinJoint", 2);
+  spec.joints[0].where = {"model.osim", 42};
+  try {
+    MakeJointModel(spec, 0);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where().line, 42);
+    EXPECT_EQ(e.component(), "/jointset/joint");
+    EXPECT_NE(std::string(e.what()).find("PinJoint needs 1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(JointModelErrorsTest, CollinearCustomAxesAndMissingParametersAreErrors) {
+  ModelSpec spec = MakeCustomSpec();
+  spec.joints[0].spatial_transform[1].axis = Vec3(2, 0.4, 0);  // parallel to rotation1
+  EXPECT_THROW(MakeJointModel(spec, 0), Error);
+  EXPECT_THROW(MakeJointModel(MakeSpec(JointType::kEllipsoid, "EllipsoidJoint", 3), 0), Error);
+  EXPECT_THROW(MakeJointModel(MakeSpec(JointType::kUnknown, "PluginJoint", 1), 0), Error);
+}
+
+TEST(JointModelErrorsTest, CustomAxisWithForeignCoordinateOrWrongArityIsAnError) {
+  ModelSpec foreign = MakeCustomSpec();
+  CoordinateSpec other;
+  other.name = "other";
+  foreign.coordinates.push_back(other);
+  foreign.joints[0].spatial_transform[0].coordinates = {3};  // not one of the joint's
+  EXPECT_THROW(MakeJointModel(foreign, 0), Error);
+  ModelSpec arity = MakeCustomSpec();
+  arity.joints[0].spatial_transform[1].coordinates = {0};  // a 2-argument function, 1 coordinate
+  EXPECT_THROW(MakeJointModel(arity, 0), Error);
+}
+
+}  // namespace
+}  // namespace sinew
