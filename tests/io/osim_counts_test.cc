@@ -6,6 +6,8 @@
 //   python3 tests/io/count_osim.py $(find tests/data/osim -name '*.osim' | sort)
 //   python3 tests/io/count_osim.py --joints $(find tests/data/osim -name '*.osim' | sort)
 //       (output saved as tests/data/osim/joint_bodies.txt)
+//   python3 tests/io/count_osim.py --frames $(find tests/data/osim -name '*.osim' | sort)
+//       (output saved as tests/data/osim/joint_frames.txt)
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -125,6 +127,50 @@ TEST(OsimJointBodies, MatchIndependentResolution) {
     }
   }
   EXPECT_EQ(compared, 114);
+}
+
+// Every joint's X_PF and X_BM (frames resolved into the parent and child bodies) in the same
+// files against tests/data/osim/joint_frames.txt, computed by `count_osim.py --frames` with its
+// own rotation and transform code. Joints on station-defined frames are not in that file.
+// Tolerance 1e-12: a few products of rotations of O(1) numbers, done in a different order.
+TEST(OsimJointFrames, MatchIndependentComputation) {
+  std::ifstream in(std::string(SINEW_TEST_DATA_DIR) + "/osim/joint_frames.txt");
+  ASSERT_TRUE(in.good());
+  // (file, joint name, occurrence) -> 24 numbers.
+  std::map<std::string, std::map<std::string, std::vector<std::vector<double>>>> expected;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string file, joint;
+    fields >> file >> joint;
+    std::vector<double> numbers(24);
+    for (double& x : numbers) fields >> x;
+    ASSERT_FALSE(fields.fail()) << line;
+    expected[file][joint].push_back(numbers);
+  }
+  int compared = 0;
+  for (const auto& [file, joints] : expected) {
+    const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) + "/" + file);
+    std::map<std::string, size_t> seen;
+    for (const JointSpec& j : spec.joints) {
+      const std::string key = j.element.name.empty() ? "-" : j.name;
+      const auto it = joints.find(key);
+      if (it == joints.end()) continue;  // on a station-defined frame
+      const size_t k = seen[key]++;
+      ASSERT_LT(k, it->second.size()) << file << " " << key;
+      const std::vector<double>& e = it->second[k];
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(j.X_PF.R(r, c), e[3 * r + c], 1e-12) << file << " " << j.name;
+          EXPECT_NEAR(j.X_BM.R(r, c), e[12 + 3 * r + c], 1e-12) << file << " " << j.name;
+        }
+        EXPECT_NEAR(j.X_PF.p(r), e[9 + r], 1e-12) << file << " " << j.name;
+        EXPECT_NEAR(j.X_BM.p(r), e[21 + r], 1e-12) << file << " " << j.name;
+      }
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 113);
 }
 
 }  // namespace
