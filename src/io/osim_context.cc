@@ -99,6 +99,18 @@ FrameEntry& ReadContext::Resolve(const std::string& path, FrameEntry& entry) {
     doc_.Fail(entry.node, entry.component, "offset frames form a cycle through '" + path + "'");
   }
   entry.state = 1;
+  // Each offset resolves its parent first: bound the chain so a hostile file cannot exhaust
+  // the stack (real models chain two or three).
+  constexpr int kMaxChain = 500;
+  if (resolve_depth_ >= kMaxChain) {
+    doc_.Fail(entry.node, entry.component,
+              "offset frames chained deeper than " + std::to_string(kMaxChain) + " levels");
+  }
+  struct DepthGuard {
+    int& depth;
+    explicit DepthGuard(int& d) : depth(d) { ++depth; }
+    ~DepthGuard() { --depth; }
+  } guard(resolve_depth_);
   if (entry.station_frame) {
     ResolveStationDefined(path, entry);
     return entry;

@@ -84,6 +84,7 @@ class ReadContext {
   std::unordered_map<std::string, pugi::xml_node> stations_;
   std::vector<std::string> offset_order_;  // registration order, for stable frame listing
   std::set<std::string> warned_;
+  int resolve_depth_ = 0;  // offset frames being resolved, to bound the recursion
 };
 
 // ---- helpers shared by the reader's parts (osim_util.cc) ----

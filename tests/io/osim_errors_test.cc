@@ -245,7 +245,31 @@ TEST(OsimErrors, DeeplyNestedInputFailsWithoutExhaustingTheStack) {
   ExpectError(text, 1, "", "nested deeper than");
 }
 
-TEST(OsimErrors, MissingFile) { EXPECT_THROW(ReadOsim("/nonexistent/model.osim"), Error); }
+TEST(OsimErrors, LongChainOfOffsetFramesFailsWithoutExhaustingTheStack) {
+  std::string frames;
+  for (int i = 1; i <= 5000; ++i) {
+    frames += "<PhysicalOffsetFrame name=\"f" + std::to_string(i) + "\"><socket_parent>" +
+              (i == 1 ? std::string("/ground") : "/f" + std::to_string(i - 1)) +
+              "</socket_parent></PhysicalOffsetFrame>\n";
+  }
+  std::string text = Model40(Pin("j1", "/f5000", "/bodyset/upper", "q1") +
+                             Pin("j2", "/bodyset/upper", "/bodyset/lower", "q2"));
+  text.insert(text.find("    <BodySet"), "<components>" + frames + "</components>\n");
+  ExpectError(text, LineOf(text, "name=\"f4500\""), "/f4500", "chained deeper than 500");
+  // A chain of 100 is fine: the joint's parent frame is on ground.
+  std::string short_text = text;
+  short_text.replace(short_text.find("/f5000"), 6, "/f100");
+  const size_t from = short_text.find("<PhysicalOffsetFrame name=\"f101\"");
+  short_text.erase(from, short_text.find("</components>") - from);
+  const ModelSpec spec = ReadOsimString(short_text, "chain.osim");
+  EXPECT_EQ(spec.joints[0].parent_body, kGroundIndex);
+  EXPECT_EQ(spec.frames.size(), 100u);
+}
+
+TEST(OsimErrors, MissingFileOrDirectory) {
+  EXPECT_THROW(ReadOsim("/nonexistent/model.osim"), Error);
+  EXPECT_THROW(ReadOsim(testing::TempDir()), Error);
+}
 
 }  // namespace
 }  // namespace sinew
