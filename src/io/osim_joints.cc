@@ -198,11 +198,11 @@ class JointReader {
     joint.type = node.name();
     joint.path = "/jointset/" + joint.name;
     if (joint.name.empty()) doc_.Fail(node, "/jointset", "a joint has no name");
-    if (int other = spec_.FindJoint(joint.name); other != kNone) {
+    if (int other = ctx_.JointIndex(joint.name); other != kNone) {
       // Paths must stay unique (frames and coordinates hang under them): number the repeat.
       int n = 2;
       while (ctx_.HasFrame(joint.path + "_" + std::to_string(n)) ||
-             PathTaken(joint.path + "_" + std::to_string(n))) {
+             ctx_.JointPathTaken(joint.path + "_" + std::to_string(n))) {
         ++n;
       }
       const std::string unique = joint.path + "_" + std::to_string(n);
@@ -232,15 +232,9 @@ class JointReader {
         ReadNumericLeaves(doc_, node, joint.path,
                           {"location_in_parent", "orientation_in_parent", "location", "orientation",
                            "location_in_child", "orientation_in_child", "reverse"});
+    ctx_.IndexJoint(joint.name, joint.path, static_cast<int>(spec_.joints.size()));
     spec_.joints.push_back(std::move(joint));
     return spec_.joints.back();
-  }
-
-  bool PathTaken(const std::string& path) const {
-    for (const JointSpec& j : spec_.joints) {
-      if (j.path == path) return true;
-    }
-    return false;
   }
 
   // A body named in a 3.x property (a name, or 3.05's "../name").
@@ -249,7 +243,7 @@ class JointReader {
     const size_t slash = text.rfind('/');
     if (slash != std::string_view::npos) text = text.substr(slash + 1);
     if (text.empty()) doc_.Fail(node, component, std::string(what) + " is empty");
-    const int body = spec_.FindBody(text);
+    const int body = ctx_.BodyIndex(std::string(text));
     if (body == kNone) {
       doc_.Fail(node, component, std::string(what) + " '" + std::string(text) + "' does not exist");
     }
@@ -321,6 +315,7 @@ class JointReader {
         c.path = path + "/" + c.name;
         c.joint = index;
         c.where = doc_.Where(node);
+        ctx_.IndexCoordinate(c.name, c.path, static_cast<int>(spec_.coordinates.size()));
         coords.push_back(static_cast<int>(spec_.coordinates.size()));
         spec_.coordinates.push_back(std::move(c));
         explicit_motion_.push_back(false);
@@ -395,6 +390,7 @@ class JointReader {
       }
     }
     c.where = doc_.Where(node);
+    ctx_.IndexCoordinate(c.name, c.path, static_cast<int>(spec_.coordinates.size()));
     spec_.coordinates.push_back(std::move(c));
     explicit_motion_.push_back(explicit_motion);
     return static_cast<int>(spec_.coordinates.size()) - 1;
@@ -532,7 +528,7 @@ void ReadJoints(ReadContext& ctx, const pugi::xml_node& model) {
       if (name == "ground") {
         ctx.doc().Fail(node, "/ground", "ground cannot be the child of a joint");
       }
-      reader.ReadNestedJoint(node, ctx.spec().FindBody(name));
+      reader.ReadNestedJoint(node, ctx.BodyIndex(name));
     }
   }
 }

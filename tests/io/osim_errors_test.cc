@@ -266,6 +266,29 @@ TEST(OsimErrors, LongChainOfOffsetFramesFailsWithoutExhaustingTheStack) {
   EXPECT_EQ(spec.frames.size(), 100u);
 }
 
+// A long chain (10000 bodies, joints, coordinates, markers) reads in linear time: every name
+// lookup is indexed. (No time is asserted; a quadratic reader would take minutes here.)
+TEST(OsimErrors, ManyElementsReadInLinearTime) {
+  const int n = 10000;
+  std::string bodies, joints, markers;
+  for (int i = 0; i < n; ++i) {
+    const std::string b = "b" + std::to_string(i);
+    bodies += "<Body name=\"" + b + "\"><mass>1</mass></Body>\n";
+    joints +=
+        Pin("j" + std::to_string(i), i == 0 ? "/ground" : "/bodyset/b" + std::to_string(i - 1),
+            "/bodyset/" + b, "q" + std::to_string(i));
+    markers += "<Marker name=\"m" + std::to_string(i) + "\"><socket_parent_frame>/bodyset/" + b +
+               "</socket_parent_frame></Marker>\n";
+  }
+  std::string text = Model40(Pin("j_upper", "/ground", "/bodyset/upper", "qu") +
+                                 Pin("j_lower", "/bodyset/upper", "/bodyset/lower", "ql") + joints,
+                             bodies);
+  text.insert(text.find("  </Model>"), "<MarkerSet><objects>" + markers + "</objects></MarkerSet>");
+  const ModelSpec spec = ReadOsimString(text, "long.osim");
+  EXPECT_EQ(spec.bodies.size(), static_cast<size_t>(n + 3));
+  EXPECT_EQ(spec.markers.back().body, n + 2);
+}
+
 TEST(OsimErrors, MissingFileOrDirectory) {
   EXPECT_THROW(ReadOsim("/nonexistent/model.osim"), Error);
   EXPECT_THROW(ReadOsim(testing::TempDir()), Error);
