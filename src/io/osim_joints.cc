@@ -19,6 +19,7 @@
 #include <cmath>
 #include <sstream>
 #include <string_view>
+#include <unordered_map>
 
 #include "functions/constant.h"
 #include "functions/linear_function.h"
@@ -200,12 +201,12 @@ class JointReader {
     if (joint.name.empty()) doc_.Fail(node, "/jointset", "a joint has no name");
     if (int other = ctx_.JointIndex(joint.name); other != kNone) {
       // Paths must stay unique (frames and coordinates hang under them): number the repeat.
-      int n = 2;
+      int& n = next_suffix_.try_emplace(joint.name, 2).first->second;
       while (ctx_.HasFrame(joint.path + "_" + std::to_string(n)) ||
              ctx_.JointPathTaken(joint.path + "_" + std::to_string(n))) {
         ++n;
       }
-      const std::string unique = joint.path + "_" + std::to_string(n);
+      const std::string unique = joint.path + "_" + std::to_string(n++);
       ctx_.Warn(node, joint.path,
                 "duplicate joint name '" + joint.name + "' (also at line " +
                     std::to_string(spec_.joints[other].where.line) + "); its path here is '" +
@@ -220,7 +221,7 @@ class JointReader {
     }
     for (pugi::xml_node child : node.children()) {
       if (child.type() != pugi::node_element || IsKnownJointProperty(child.name())) continue;
-      if (joint.parameters.count(child.name()) || IsNumberList(XmlDocument::Text(child))) continue;
+      if (IsNumberList(XmlDocument::Text(child))) continue;  // a parameter, read below
       ctx_.Warn(child, joint.path,
                 "joint property <" + std::string(child.name()) + "> kept in the element, not used",
                 std::string("joint:") + joint.type + ":" + child.name());
@@ -512,6 +513,7 @@ class JointReader {
   const XmlDocument& doc_;
   ModelSpec& spec_;
   std::vector<bool> explicit_motion_;  // per coordinate: motion_type given in the file
+  std::unordered_map<std::string, int> next_suffix_;  // duplicate joint name -> next number
 };
 
 }  // namespace

@@ -391,5 +391,24 @@ TEST(OsimSemantics, PrescribedCoordinates) {
   EXPECT_NE(read("").coordinates[0].prescribed_function, nullptr);
 }
 
+// chrono's newton_cradle names five joints `sph1` (and their coordinates q1..q3 each): it loads,
+// with warnings, and paths stay unique.
+TEST(OsimSemantics, DuplicateJointNamesLoadWithWarnings) {
+  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                  "/osim/projectchrono/chrono/data/opensim/newton_cradle.osim");
+  ASSERT_EQ(spec.joints.size(), 5u);
+  EXPECT_EQ(spec.joints[0].path, "/jointset/sph1");
+  EXPECT_EQ(spec.joints[4].path, "/jointset/sph1_5");
+  EXPECT_EQ(spec.coordinates[14].path, "/jointset/sph1_5/q3");
+  int duplicate_joints = 0, duplicate_coordinates = 0;
+  for (const Diagnostic& d : spec.warnings) {
+    duplicate_joints += d.message.find("duplicate joint name 'sph1'") != std::string::npos;
+    duplicate_coordinates +=
+        d.message.find("3 coordinate names are used more than once") != std::string::npos;
+  }
+  EXPECT_EQ(duplicate_joints, 4);
+  EXPECT_EQ(duplicate_coordinates, 1);
+}
+
 }  // namespace
 }  // namespace sinew
