@@ -2,6 +2,7 @@
 
 namespace sinew {
 
+bool IsJointSimulated(const JointSpec& joint) { return joint.kind != JointType::kUnknown; }
 bool IsForceSimulated(const ForceSpec& /*force*/) { return false; }
 bool IsConstraintSimulated(const ConstraintSpec& /*constraint*/) { return false; }
 bool IsControllerSimulated(const ControllerSpec& /*controller*/) { return false; }
@@ -10,6 +11,9 @@ bool IsWrapObjectSimulated(const WrapObjectSpec& /*wrap*/) { return false; }
 
 std::vector<std::string> ListNotSimulated(const ModelSpec& spec) {
   std::vector<std::string> lines;
+  for (const JointSpec& j : spec.joints) {
+    if (!IsJointSimulated(j)) lines.push_back(j.path + ": " + j.type);
+  }
   for (const ForceSpec& f : spec.forces) {
     if (!IsForceSimulated(f)) lines.push_back(f.path + ": " + f.type);
   }

@@ -9,6 +9,8 @@
 
 namespace sinew {
 
+/// True if the engine can build this joint (every type Sinew knows; not kUnknown).
+bool IsJointSimulated(const JointSpec& joint);
 /// True if the engine simulates forces of this OpenSim class (none yet).
 bool IsForceSimulated(const ForceSpec& force);
 /// True if the engine enforces constraints of this OpenSim class (none yet).

@@ -53,6 +53,7 @@ void ReadWrapObjects(ReadContext& ctx, const pugi::xml_node& owner, int body,
     spec.dimensions =
         ReadNumericLeaves(doc, wrap, component, {"xyz_body_rotation", "translation", "active"});
     spec.where = doc.Where(wrap);
+    ctx.IndexWrapObject(spec.name);
     ctx.spec().bodies[body].wrap_objects.push_back(std::move(spec));
   }
 }
@@ -134,6 +135,7 @@ void ReadBodies(ReadContext& ctx, const pugi::xml_node& model) {
   pugi::xml_node ground_node = model.child("Ground");
   ground.where = doc.Where(ground_node ? ground_node : model);
   spec.bodies.push_back(std::move(ground));
+  ctx.IndexBody("ground", kGroundIndex);
   ctx.AddBodyFrame("/ground", kGroundIndex, ground_node ? ground_node : model);
 
   // Bodies first (so every frame can be resolved), their geometry after the offset frames.
@@ -155,7 +157,7 @@ void ReadBodies(ReadContext& ctx, const pugi::xml_node& model) {
         ctx.Warn(node, "/ground", "ground's mass is ignored");
       }
     } else {
-      if (int other = spec.FindBody(name); other != kNone) {
+      if (int other = ctx.BodyIndex(name); other != kNone) {
         doc.Fail(node, component,
                  "duplicate body name '" + name + "' (also at line " +
                      std::to_string(spec.bodies[other].where.line) + ")");
@@ -172,6 +174,7 @@ void ReadBodies(ReadContext& ctx, const pugi::xml_node& model) {
       body.where = doc.Where(node);
       index = static_cast<int>(spec.bodies.size());
       spec.bodies.push_back(std::move(body));
+      ctx.IndexBody(name, index);
       ctx.AddBodyFrame(component, index, node);
     }
     for (pugi::xml_node child : node.children()) {

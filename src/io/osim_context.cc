@@ -1,5 +1,7 @@
 #include "io/osim_context.h"
 
+#include <iterator>
+
 namespace sinew::osim {
 
 void ReadContext::Warn(const pugi::xml_node& node, const std::string& component,
@@ -15,12 +17,14 @@ void ReadContext::AddBodyFrame(const std::string& path, int body, const pugi::xm
   entry.body = body;
   entry.state = 2;
   frames_[path] = std::move(entry);
+  frame_names_.emplace(path.substr(path.rfind('/') + 1), path);
 }
 
 bool ReadContext::AddOffsetFrame(const std::string& path, FrameEntry entry) {
   if (frames_.count(path) != 0) return false;
   frames_.emplace(path, std::move(entry));
   offset_order_.push_back(path);
+  frame_names_.emplace(path.substr(path.rfind('/') + 1), path);
   return true;
 }
 
@@ -64,15 +68,9 @@ std::string ReadContext::ResolveFrame(const std::string& owner_path, std::string
   if (it == frames_.end() && path.find('/') == std::string_view::npos) {
     // OpenSim 4.0 also connected a bare name to the one frame of that name anywhere in the model.
     auto match = frames_.end();
-    int count = 0;
-    for (auto f = frames_.begin(); f != frames_.end(); ++f) {
-      const std::string& p = f->first;
-      const size_t slash = p.rfind('/');
-      if (std::string_view(p).substr(slash + 1) == path) {
-        match = f;
-        ++count;
-      }
-    }
+    const auto [first, last] = frame_names_.equal_range(std::string(path));
+    const int count = static_cast<int>(std::distance(first, last));
+    if (count == 1) match = frames_.find(first->second);
     if (count == 1) {
       Warn(socket, component,
            "<" + tag + "> '" + std::string(path) + "' found by name at '" + match->first + "'");
@@ -99,6 +97,18 @@ FrameEntry& ReadContext::Resolve(const std::string& path, FrameEntry& entry) {
     doc_.Fail(entry.node, entry.component, "offset frames form a cycle through '" + path + "'");
   }
   entry.state = 1;
+  // Each offset resolves its parent first: bound the chain so a hostile file cannot exhaust
+  // the stack (real models chain two or three).
+  constexpr int kMaxChain = 500;
+  if (resolve_depth_ >= kMaxChain) {
+    doc_.Fail(entry.node, entry.component,
+              "offset frames chained deeper than " + std::to_string(kMaxChain) + " levels");
+  }
+  struct DepthGuard {
+    int& depth;
+    explicit DepthGuard(int& d) : depth(d) { ++depth; }
+    ~DepthGuard() { --depth; }
+  } guard(resolve_depth_);
   if (entry.station_frame) {
     ResolveStationDefined(path, entry);
     return entry;
@@ -211,17 +221,10 @@ void ReadContext::ResolveAllFrames() {
   for (const std::string& path : offset_order_) Resolve(path, frames_.at(path));
 }
 
-int ReadContext::FindCoordinateByPath(std::string_view path) const {
-  const auto& coords = spec_.coordinates;
-  for (size_t i = 0; i < coords.size(); ++i) {
-    if (coords[i].path == path) return static_cast<int>(i);
-  }
-  const size_t slash = path.rfind('/');
-  std::string_view name = slash == std::string_view::npos ? path : path.substr(slash + 1);
-  for (size_t i = 0; i < coords.size(); ++i) {
-    if (coords[i].name == name) return static_cast<int>(i);
-  }
-  return kNone;
+const std::vector<int>& ReadContext::CoordinatesNamed(const std::string& name) const {
+  static const std::vector<int> kEmpty;
+  auto it = coordinate_names_.find(name);
+  return it == coordinate_names_.end() ? kEmpty : it->second;
 }
 
 }  // namespace sinew::osim

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -67,10 +68,36 @@ class ReadContext {
   /// above the root.
   static std::string JoinPath(const std::string& owner_path, std::string_view path);
 
-  /// Maps a coordinate's absolute or relative path, or plain name, to an index (kNone if none).
-  int FindCoordinateByPath(std::string_view path) const;
+  // Name indices kept in step with the spec, so every lookup is O(1) and a file with very many
+  // elements cannot make reading quadratic (a hang, for practical purposes).
+  /// The body with this name, or kNone.
+  int BodyIndex(const std::string& name) const { return Lookup(body_names_, name); }
+  void IndexBody(const std::string& name, int index) { body_names_.emplace(name, index); }
+  /// The first joint with this name, or kNone.
+  int JointIndex(const std::string& name) const { return Lookup(joint_names_, name); }
+  /// True if a joint already has this path.
+  bool JointPathTaken(const std::string& path) const { return joint_paths_.count(path) != 0; }
+  void IndexJoint(const std::string& name, const std::string& path, int index) {
+    joint_names_.emplace(name, index);
+    joint_paths_.insert(path);
+  }
+  /// The coordinate with this path, or kNone.
+  int CoordinateByPath(const std::string& path) const { return Lookup(coordinate_paths_, path); }
+  /// The coordinates with this name, in file order (empty if none).
+  const std::vector<int>& CoordinatesNamed(const std::string& name) const;
+  void IndexCoordinate(const std::string& name, const std::string& path, int index) {
+    coordinate_names_[name].push_back(index);
+    coordinate_paths_.emplace(path, index);
+  }
+  /// True if a wrap object with this name exists on some body.
+  bool HasWrapObject(const std::string& name) const { return wrap_names_.count(name) != 0; }
+  void IndexWrapObject(const std::string& name) { wrap_names_.insert(name); }
 
  private:
+  static int Lookup(const std::unordered_map<std::string, int>& map, const std::string& key) {
+    auto it = map.find(key);
+    return it == map.end() ? kNone : it->second;
+  }
   FrameEntry& Resolve(const std::string& path, FrameEntry& entry);
   // A StationDefinedFrame's pose from its three stations and origin.
   void ResolveStationDefined(const std::string& path, FrameEntry& entry);
@@ -84,6 +111,11 @@ class ReadContext {
   std::unordered_map<std::string, pugi::xml_node> stations_;
   std::vector<std::string> offset_order_;  // registration order, for stable frame listing
   std::set<std::string> warned_;
+  std::unordered_multimap<std::string, std::string> frame_names_;  // last path segment -> path
+  std::unordered_map<std::string, int> body_names_, joint_names_, coordinate_paths_;
+  std::unordered_map<std::string, std::vector<int>> coordinate_names_;
+  std::unordered_set<std::string> joint_paths_, wrap_names_;
+  int resolve_depth_ = 0;  // offset frames being resolved, to bound the recursion
 };
 
 // ---- helpers shared by the reader's parts (osim_util.cc) ----

@@ -11,16 +11,12 @@ namespace sinew::osim {
 int ResolveCoordinateName(ReadContext& ctx, const pugi::xml_node& node, std::string_view text,
                           const std::string& component) {
   const auto& coords = ctx.spec().coordinates;
+  if (int by_path = ctx.CoordinateByPath(std::string(text)); by_path != kNone) return by_path;
   const size_t slash = text.rfind('/');
   const std::string_view name = slash == std::string_view::npos ? text : text.substr(slash + 1);
-  int found = kNone, count = 0;
-  for (size_t i = 0; i < coords.size(); ++i) {
-    if (coords[i].path == text) return static_cast<int>(i);
-    if (coords[i].name == name) {
-      if (found == kNone) found = static_cast<int>(i);
-      ++count;
-    }
-  }
+  const std::vector<int>& named = ctx.CoordinatesNamed(std::string(name));
+  const int count = static_cast<int>(named.size());
+  const int found = named.empty() ? kNone : named.front();
   const std::string tag = node.name();
   if (count == 0) {
     ctx.doc().Fail(node, component, "<" + tag + "> '" + std::string(text) + "' does not exist");
@@ -139,12 +135,7 @@ GeometryPathSpec ReadGeometryPath(ReadContext& ctx, const pugi::xml_node& points
       std::vector<double> r = doc.ReadNumbers(range, component, 2);
       wrap.range = {static_cast<int>(r[0]), static_cast<int>(r[1])};
     }
-    bool exists = false;
-    for (const BodySpec& body : ctx.spec().bodies) {
-      for (const WrapObjectSpec& w : body.wrap_objects)
-        exists = exists || w.name == wrap.wrap_object;
-    }
-    if (!exists) {
+    if (!ctx.HasWrapObject(wrap.wrap_object)) {
       doc.Fail(node.child("wrap_object") ? node.child("wrap_object") : node, component,
                "wrap object '" + wrap.wrap_object + "' does not exist");
     }

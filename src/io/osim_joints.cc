@@ -19,6 +19,7 @@
 #include <cmath>
 #include <sstream>
 #include <string_view>
+#include <unordered_map>
 
 #include "functions/constant.h"
 #include "functions/linear_function.h"
@@ -101,11 +102,24 @@ bool IsKnownCoordinateProperty(std::string_view tag) {
 
 // Joint properties the reader uses; other non-numeric ones get one warning per tag.
 bool IsKnownJointProperty(std::string_view tag) {
-  static constexpr std::string_view kKnown[] = {
-      "socket_parent_frame", "socket_child_frame", "coordinates", "CoordinateSet", "frames",
-      "SpatialTransform", "parent_body", "reverse", "connectors", "FrameGeometry",
-      "components", "Appearance", "location_in_parent", "orientation_in_parent", "location",
-      "orientation", "location_in_child", "orientation_in_child"};
+  static constexpr std::string_view kKnown[] = {"socket_parent_frame",
+                                                "socket_child_frame",
+                                                "coordinates",
+                                                "CoordinateSet",
+                                                "frames",
+                                                "SpatialTransform",
+                                                "parent_body",
+                                                "reverse",
+                                                "connectors",
+                                                "FrameGeometry",
+                                                "components",
+                                                "Appearance",
+                                                "location_in_parent",
+                                                "orientation_in_parent",
+                                                "location",
+                                                "orientation",
+                                                "location_in_child",
+                                                "orientation_in_child"};
   for (std::string_view known : kKnown) {
     if (tag == known) return true;
   }
@@ -185,14 +199,14 @@ class JointReader {
     joint.type = node.name();
     joint.path = "/jointset/" + joint.name;
     if (joint.name.empty()) doc_.Fail(node, "/jointset", "a joint has no name");
-    if (int other = spec_.FindJoint(joint.name); other != kNone) {
+    if (int other = ctx_.JointIndex(joint.name); other != kNone) {
       // Paths must stay unique (frames and coordinates hang under them): number the repeat.
-      int n = 2;
+      int& n = next_suffix_.try_emplace(joint.name, 2).first->second;
       while (ctx_.HasFrame(joint.path + "_" + std::to_string(n)) ||
-             PathTaken(joint.path + "_" + std::to_string(n))) {
+             ctx_.JointPathTaken(joint.path + "_" + std::to_string(n))) {
         ++n;
       }
-      const std::string unique = joint.path + "_" + std::to_string(n);
+      const std::string unique = joint.path + "_" + std::to_string(n++);
       ctx_.Warn(node, joint.path,
                 "duplicate joint name '" + joint.name + "' (also at line " +
                     std::to_string(spec_.joints[other].where.line) + "); its path here is '" +
@@ -207,7 +221,7 @@ class JointReader {
     }
     for (pugi::xml_node child : node.children()) {
       if (child.type() != pugi::node_element || IsKnownJointProperty(child.name())) continue;
-      if (joint.parameters.count(child.name()) || IsNumberList(XmlDocument::Text(child))) continue;
+      if (IsNumberList(XmlDocument::Text(child))) continue;  // a parameter, read below
       ctx_.Warn(child, joint.path,
                 "joint property <" + std::string(child.name()) + "> kept in the element, not used",
                 std::string("joint:") + joint.type + ":" + child.name());
@@ -219,15 +233,9 @@ class JointReader {
         ReadNumericLeaves(doc_, node, joint.path,
                           {"location_in_parent", "orientation_in_parent", "location", "orientation",
                            "location_in_child", "orientation_in_child", "reverse"});
+    ctx_.IndexJoint(joint.name, joint.path, static_cast<int>(spec_.joints.size()));
     spec_.joints.push_back(std::move(joint));
     return spec_.joints.back();
-  }
-
-  bool PathTaken(const std::string& path) const {
-    for (const JointSpec& j : spec_.joints) {
-      if (j.path == path) return true;
-    }
-    return false;
   }
 
   // A body named in a 3.x property (a name, or 3.05's "../name").
@@ -236,7 +244,7 @@ class JointReader {
     const size_t slash = text.rfind('/');
     if (slash != std::string_view::npos) text = text.substr(slash + 1);
     if (text.empty()) doc_.Fail(node, component, std::string(what) + " is empty");
-    const int body = spec_.FindBody(text);
+    const int body = ctx_.BodyIndex(std::string(text));
     if (body == kNone) {
       doc_.Fail(node, component, std::string(what) + " '" + std::string(text) + "' does not exist");
     }
@@ -308,6 +316,7 @@ class JointReader {
         c.path = path + "/" + c.name;
         c.joint = index;
         c.where = doc_.Where(node);
+        ctx_.IndexCoordinate(c.name, c.path, static_cast<int>(spec_.coordinates.size()));
         coords.push_back(static_cast<int>(spec_.coordinates.size()));
         spec_.coordinates.push_back(std::move(c));
         explicit_motion_.push_back(false);
@@ -351,9 +360,9 @@ class JointReader {
     if (pugi::xml_node function = node.child("prescribed_function")) {
       c.prescribed_function = ReadFunctionProperty(doc_, function, component);
     }
-    // Before 4.0 a prescribed function alone prescribed the coordinate.
-    c.prescribed = ReadBoolOr(doc_, node, "prescribed", component,
-                              c.prescribed_function != nullptr && !node.child("prescribed"));
+    // Absent <prescribed> takes the property's default, false (no corpus file has a
+    // prescribed_function without it, so older versions give no other evidence).
+    c.prescribed = ReadBoolOr(doc_, node, "prescribed", component, false);
     if (c.prescribed && !c.prescribed_function) {
       ctx_.Warn(node, component, "prescribed without a prescribed_function: not prescribed");
       c.prescribed = false;
@@ -382,6 +391,7 @@ class JointReader {
       }
     }
     c.where = doc_.Where(node);
+    ctx_.IndexCoordinate(c.name, c.path, static_cast<int>(spec_.coordinates.size()));
     spec_.coordinates.push_back(std::move(c));
     explicit_motion_.push_back(explicit_motion);
     return static_cast<int>(spec_.coordinates.size()) - 1;
@@ -503,6 +513,7 @@ class JointReader {
   const XmlDocument& doc_;
   ModelSpec& spec_;
   std::vector<bool> explicit_motion_;  // per coordinate: motion_type given in the file
+  std::unordered_map<std::string, int> next_suffix_;  // duplicate joint name -> next number
 };
 
 }  // namespace
@@ -519,7 +530,7 @@ void ReadJoints(ReadContext& ctx, const pugi::xml_node& model) {
       if (name == "ground") {
         ctx.doc().Fail(node, "/ground", "ground cannot be the child of a joint");
       }
-      reader.ReadNestedJoint(node, ctx.spec().FindBody(name));
+      reader.ReadNestedJoint(node, ctx.BodyIndex(name));
     }
   }
 }

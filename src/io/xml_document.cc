@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 namespace sinew {
@@ -76,6 +77,10 @@ void MergeNestedComments(std::string& text) {
 }  // namespace
 
 XmlDocument XmlDocument::Load(const std::string& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) {
+    throw Error(SourceLocation{file, 0}, "", "is a directory, not a file");
+  }
   std::ifstream in(file, std::ios::binary | std::ios::ate);
   if (!in) throw Error(SourceLocation{file, 0}, "", "cannot open file");
   const std::streamoff size = in.tellg();

@@ -4,9 +4,17 @@
 // checked against numbers counted INDEPENDENTLY with tests/io/count_osim.py: Python's
 // xml.etree parser (not pugixml, not Sinew), see its docstring for the counting rules. Rerun:
 //   python3 tests/io/count_osim.py $(find tests/data/osim -name '*.osim' | sort)
+//   python3 tests/io/count_osim.py --joints $(find tests/data/osim -name '*.osim' | sort)
+//       (output saved as tests/data/osim/joint_bodies.txt)
+//   python3 tests/io/count_osim.py --frames $(find tests/data/osim -name '*.osim' | sort)
+//       (output saved as tests/data/osim/joint_frames.txt)
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "io/osim_reader.h"
 
@@ -84,6 +92,86 @@ std::string TestName(const ::testing::TestParamInfo<Expected>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RealFiles, OsimCounts, ::testing::ValuesIn(kExpected), TestName);
+
+// Every joint's parent and child body in the same 15 files, against
+// tests/data/osim/joint_bodies.txt, written by `count_osim.py --joints` (its own resolution of
+// socket paths, offset frames, station-defined frames, 3.05 connectors, 3.x nesting and reverse).
+TEST(OsimJointBodies, MatchIndependentResolution) {
+  std::ifstream in(std::string(SINEW_TEST_DATA_DIR) + "/osim/joint_bodies.txt");
+  ASSERT_TRUE(in.good());
+  struct Row {
+    std::string joint, parent, child;
+  };
+  std::map<std::string, std::vector<Row>> by_file;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string file;
+    Row row;
+    fields >> file >> row.joint >> row.parent >> row.child;
+    by_file[file].push_back(row);
+  }
+  ASSERT_EQ(by_file.size(), std::size(kExpected));
+  int compared = 0;
+  for (const auto& [file, rows] : by_file) {
+    const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) + "/" + file);
+    ASSERT_EQ(spec.joints.size(), rows.size()) << file;
+    for (size_t i = 0; i < rows.size(); ++i) {
+      const JointSpec& j = spec.joints[i];
+      if (rows[i].joint != "-") {  // "-": an unnamed 3.x joint
+        EXPECT_EQ(j.name, rows[i].joint) << file;
+      }
+      EXPECT_EQ(spec.bodies[j.parent_body].name, rows[i].parent) << file << " " << j.name;
+      EXPECT_EQ(spec.bodies[j.child_body].name, rows[i].child) << file << " " << j.name;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 114);
+}
+
+// Every joint's X_PF and X_BM (frames resolved into the parent and child bodies) in the same
+// files against tests/data/osim/joint_frames.txt, computed by `count_osim.py --frames` with its
+// own rotation and transform code. Joints on station-defined frames are not in that file.
+// Tolerance 1e-12: a few products of rotations of O(1) numbers, done in a different order.
+TEST(OsimJointFrames, MatchIndependentComputation) {
+  std::ifstream in(std::string(SINEW_TEST_DATA_DIR) + "/osim/joint_frames.txt");
+  ASSERT_TRUE(in.good());
+  // (file, joint name, occurrence) -> 24 numbers.
+  std::map<std::string, std::map<std::string, std::vector<std::vector<double>>>> expected;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string file, joint;
+    fields >> file >> joint;
+    std::vector<double> numbers(24);
+    for (double& x : numbers) fields >> x;
+    ASSERT_FALSE(fields.fail()) << line;
+    expected[file][joint].push_back(numbers);
+  }
+  int compared = 0;
+  for (const auto& [file, joints] : expected) {
+    const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) + "/" + file);
+    std::map<std::string, size_t> seen;
+    for (const JointSpec& j : spec.joints) {
+      const std::string key = j.element.name.empty() ? "-" : j.name;
+      const auto it = joints.find(key);
+      if (it == joints.end()) continue;  // on a station-defined frame
+      const size_t k = seen[key]++;
+      ASSERT_LT(k, it->second.size()) << file << " " << key;
+      const std::vector<double>& e = it->second[k];
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(j.X_PF.R(r, c), e[3 * r + c], 1e-12) << file << " " << j.name;
+          EXPECT_NEAR(j.X_BM.R(r, c), e[12 + 3 * r + c], 1e-12) << file << " " << j.name;
+        }
+        EXPECT_NEAR(j.X_PF.p(r), e[9 + r], 1e-12) << file << " " << j.name;
+        EXPECT_NEAR(j.X_BM.p(r), e[21 + r], 1e-12) << file << " " << j.name;
+      }
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 113);
+}
 
 }  // namespace
 }  // namespace sinew

@@ -245,7 +245,54 @@ TEST(OsimErrors, DeeplyNestedInputFailsWithoutExhaustingTheStack) {
   ExpectError(text, 1, "", "nested deeper than");
 }
 
-TEST(OsimErrors, MissingFile) { EXPECT_THROW(ReadOsim("/nonexistent/model.osim"), Error); }
+TEST(OsimErrors, LongChainOfOffsetFramesFailsWithoutExhaustingTheStack) {
+  std::string frames;
+  for (int i = 1; i <= 5000; ++i) {
+    frames += "<PhysicalOffsetFrame name=\"f" + std::to_string(i) + "\"><socket_parent>" +
+              (i == 1 ? std::string("/ground") : "/f" + std::to_string(i - 1)) +
+              "</socket_parent></PhysicalOffsetFrame>\n";
+  }
+  std::string text = Model40(Pin("j1", "/f5000", "/bodyset/upper", "q1") +
+                             Pin("j2", "/bodyset/upper", "/bodyset/lower", "q2"));
+  text.insert(text.find("    <BodySet"), "<components>" + frames + "</components>\n");
+  ExpectError(text, LineOf(text, "name=\"f4500\""), "/f4500", "chained deeper than 500");
+  // A chain of 100 is fine: the joint's parent frame is on ground.
+  std::string short_text = text;
+  short_text.replace(short_text.find("/f5000"), 6, "/f100");
+  const size_t from = short_text.find("<PhysicalOffsetFrame name=\"f101\"");
+  short_text.erase(from, short_text.find("</components>") - from);
+  const ModelSpec spec = ReadOsimString(short_text, "chain.osim");
+  EXPECT_EQ(spec.joints[0].parent_body, kGroundIndex);
+  EXPECT_EQ(spec.frames.size(), 100u);
+}
+
+// A long chain (10000 bodies, joints, coordinates, markers) reads in linear time: every name
+// lookup is indexed. (No time is asserted; a quadratic reader would take minutes here.)
+TEST(OsimErrors, ManyElementsReadInLinearTime) {
+  const int n = 10000;
+  std::string bodies, joints, markers;
+  for (int i = 0; i < n; ++i) {
+    const std::string b = "b" + std::to_string(i);
+    bodies += "<Body name=\"" + b + "\"><mass>1</mass></Body>\n";
+    joints +=
+        Pin("j" + std::to_string(i), i == 0 ? "/ground" : "/bodyset/b" + std::to_string(i - 1),
+            "/bodyset/" + b, "q" + std::to_string(i));
+    markers += "<Marker name=\"m" + std::to_string(i) + "\"><socket_parent_frame>/bodyset/" + b +
+               "</socket_parent_frame></Marker>\n";
+  }
+  std::string text = Model40(Pin("j_upper", "/ground", "/bodyset/upper", "qu") +
+                                 Pin("j_lower", "/bodyset/upper", "/bodyset/lower", "ql") + joints,
+                             bodies);
+  text.insert(text.find("  </Model>"), "<MarkerSet><objects>" + markers + "</objects></MarkerSet>");
+  const ModelSpec spec = ReadOsimString(text, "long.osim");
+  EXPECT_EQ(spec.bodies.size(), static_cast<size_t>(n + 3));
+  EXPECT_EQ(spec.markers.back().body, n + 2);
+}
+
+TEST(OsimErrors, MissingFileOrDirectory) {
+  EXPECT_THROW(ReadOsim("/nonexistent/model.osim"), Error);
+  EXPECT_THROW(ReadOsim(testing::TempDir()), Error);
+}
 
 }  // namespace
 }  // namespace sinew

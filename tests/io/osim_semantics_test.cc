@@ -368,5 +368,47 @@ TEST(OsimSemantics, ScapulothoracicParameters) {
   EXPECT_EQ(j.coordinates.size(), 4u);
 }
 
+// A prescribed coordinate keeps its function of time; without <prescribed> it is not prescribed
+// (the property's default), even with a function.
+TEST(OsimSemantics, PrescribedCoordinates) {
+  const std::string joint = R"(<Ground name="ground"/>
+<BodySet><objects><Body name="b"><mass>1</mass></Body></objects></BodySet>
+<JointSet><objects><SliderJoint name="s"><socket_parent_frame>/ground</socket_parent_frame>
+<socket_child_frame>/bodyset/b</socket_child_frame><coordinates><Coordinate name="x">
+<prescribed_function><LinearFunction><coefficients>0.5 0.1</coefficients></LinearFunction>
+</prescribed_function>PRESCRIBED</Coordinate></coordinates></SliderJoint></objects></JointSet>)";
+  auto read = [&](const std::string& prescribed) {
+    std::string body = joint;
+    body.replace(body.find("PRESCRIBED"), 10, prescribed);
+    return ReadOsimString(Doc(40000, body), "prescribed.osim");
+  };
+  const ModelSpec on = read("<prescribed>true</prescribed>");
+  EXPECT_TRUE(on.coordinates[0].prescribed);
+  ASSERT_NE(on.coordinates[0].prescribed_function, nullptr);
+  EXPECT_DOUBLE_EQ(on.coordinates[0].prescribed_function->Calc(2.0), 1.1);
+  EXPECT_FALSE(read("<prescribed>false</prescribed>").coordinates[0].prescribed);
+  EXPECT_FALSE(read("").coordinates[0].prescribed);
+  EXPECT_NE(read("").coordinates[0].prescribed_function, nullptr);
+}
+
+// chrono's newton_cradle names five joints `sph1` (and their coordinates q1..q3 each): it loads,
+// with warnings, and paths stay unique.
+TEST(OsimSemantics, DuplicateJointNamesLoadWithWarnings) {
+  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                  "/osim/projectchrono/chrono/data/opensim/newton_cradle.osim");
+  ASSERT_EQ(spec.joints.size(), 5u);
+  EXPECT_EQ(spec.joints[0].path, "/jointset/sph1");
+  EXPECT_EQ(spec.joints[4].path, "/jointset/sph1_5");
+  EXPECT_EQ(spec.coordinates[14].path, "/jointset/sph1_5/q3");
+  int duplicate_joints = 0, duplicate_coordinates = 0;
+  for (const Diagnostic& d : spec.warnings) {
+    duplicate_joints += d.message.find("duplicate joint name 'sph1'") != std::string::npos;
+    duplicate_coordinates +=
+        d.message.find("3 coordinate names are used more than once") != std::string::npos;
+  }
+  EXPECT_EQ(duplicate_joints, 4);
+  EXPECT_EQ(duplicate_coordinates, 1);
+}
+
 }  // namespace
 }  // namespace sinew
