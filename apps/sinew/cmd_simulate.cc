@@ -139,7 +139,7 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--duration", options->duration, "Simulated time (s)")->required();
   cmd->add_option("--accuracy", options->accuracy, "Integrator accuracy (default 1e-6)");
   cmd->add_option("--integrator", options->integrator,
-                  "rk45 (error-controlled, default) or euler (fixed step)");
+                  "rk45 (error-controlled, default), euler or implicit-euler (fixed step)");
   cmd->add_option("--step", options->step, "Fixed step for euler; largest step for rk45 (s)");
   cmd->add_option("--report-interval", options->report_interval,
                   "Time between output rows (s, default 0.01)");

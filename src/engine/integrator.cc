@@ -1,5 +1,6 @@
 #include "engine/integrator.h"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -258,6 +259,97 @@ class SemiImplicitEuler final : public Integrator {
   }
 };
 
+// Linearized implicit Euler (fixed step): the applied loads f(x, v) are linearized about the
+// step's start with K = df/dx and D = df/dv (finite differences over every velocity unknown),
+//   [M - h D - h^2 K   J^T] [v+ ]   [M (v + h vdot) - h D v]
+//   [J                  0 ] [mu ] = [c(t + h)              ]
+// then positions move with v+ and are projected. Stable for stiff springs and dampers; the
+// dense solve and the O(n) load evaluations per Jacobian column make it O(n^2)-O(n^3): meant
+// for small stiff models.
+class LinearizedImplicitEuler final : public Integrator {
+ public:
+  LinearizedImplicitEuler(const System& system, const IntegratorSettings& settings)
+      : Integrator(system, settings) {
+    if (!(settings.step > 0.0)) throw Error("integrator 'implicit-euler' needs a step > 0");
+  }
+
+  void StepTo(State& state, double t_final) override {
+    if (t_final < state.t) throw Error("integrator: cannot step backwards in time");
+    while (state.t < t_final) {
+      const double remaining = t_final - state.t;
+      const double h = remaining < 1.0001 * settings_.step ? remaining : settings_.step;
+      Step(state, h, h == remaining ? t_final : state.t + h);
+      ++stats_.steps;
+    }
+  }
+
+ private:
+  // The applied loads in KKT velocity layout (body rows, integrated speeds' rows).
+  VecX LoadVector(const State& state) const {
+    Loads loads;
+    CalcLoads(system_, state, external_, loads);
+    VecX f = VecX::Zero(kkt_.num_velocities());
+    for (int b = 1; b < system_.num_bodies(); ++b) f.segment<6>(kkt_.BodyColumn(b)) = loads.body[b];
+    for (int c = 0; c < system_.num_coordinates(); ++c) {
+      if (system_.IsIntegrated(c)) f[kkt_.SpeedColumn(c)] = loads.mobility[c];
+    }
+    return f;
+  }
+
+  void Step(State& state, double h, double t_new) {
+    const int nv = kkt_.num_velocities(), nc = kkt_.num_equations();
+    ++stats_.evaluations;
+    const Accelerations acc = CalcAccelerations(system_, state, external_, kkt_);
+    const VecX v0 = GatherVelocities(system_, kkt_, state);
+    const VecX f0 = LoadVector(state);
+    MatX D(nv, nv), K(nv, nv);
+    const double eps = 1e-7;
+    for (int k = 0; k < nv; ++k) {
+      State moved = state;
+      VecX v = v0;
+      v[k] += eps;
+      ScatterVelocities(system_, kkt_, v, moved);
+      UpdateDirectCoordinates(system_, moved);  // force elements may read their q, u
+      D.col(k) = (LoadVector(moved) - f0) / eps;
+      moved = state;
+      VecX dx = VecX::Zero(nv);
+      dx[k] = eps;
+      ApplyPositionDisplacement(system_, kkt_, dx, moved);
+      UpdateDirectCoordinates(system_, moved);
+      K.col(k) = (LoadVector(moved) - f0) / eps;
+    }
+    MatX A = kkt_.AssembleDense();
+    A.topLeftCorner(nv, nv) -= h * D + h * h * K;
+    VecX rhs(nv + nc);
+    rhs.head(nv) = kkt_.MultiplyMass(v0 + h * acc.vdot) - h * (D * v0);
+    State later = state;
+    later.t = t_new;
+    const auto& constraints = system_.constraints();
+    for (size_t k = 0; k < constraints.size(); ++k) {
+      constraints[k]->CalcVelocityRhs(
+          system_, later, rhs.segment(nv + kkt_.EquationRow(k), constraints[k]->NumEquations()));
+    }
+    const Eigen::PartialPivLU<MatX> lu(A);
+    const VecX x = lu.solve(rhs);
+    if (!x.allFinite() ||
+        (A * x - rhs).lpNorm<Eigen::Infinity>() > 1e-6 * (1.0 + rhs.lpNorm<Eigen::Infinity>())) {
+      throw Error("integrator 'implicit-euler': singular step matrix at t = " +
+                  std::to_string(state.t) + " s");
+    }
+    const VecX v1 = x.head(nv);
+    ScatterVelocities(system_, kkt_, v1, later);
+    ApplyPositionDisplacement(system_, kkt_, h * v1, later);
+    if (!ProjectPositions(system_, later, ConstraintTolerance(), kkt_, 10,
+                          &stats_.projection_factorizations)) {
+      throw Error("integrator 'implicit-euler': position projection failed at t = " +
+                  std::to_string(t_new) + " s (step too large?)");
+    }
+    ProjectVelocities(system_, later, kkt_);
+    UpdateDirectCoordinates(system_, later);
+    state = std::move(later);
+  }
+};
+
 }  // namespace
 
 std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System& system,
@@ -266,7 +358,8 @@ std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System
   if (name == "euler" || name == "semi-implicit-euler") {
     return std::make_unique<SemiImplicitEuler>(system, settings);
   }
-  throw Error("unknown integrator '" + name + "' (known: rk45, euler)");
+  if (name == "implicit-euler") return std::make_unique<LinearizedImplicitEuler>(system, settings);
+  throw Error("unknown integrator '" + name + "' (known: rk45, euler, implicit-euler)");
 }
 
 }  // namespace sinew::engine

@@ -1,11 +1,13 @@
-// Time stepping. Two schemes share one interface:
+// Time stepping. Three schemes share one interface:
 //  - "rk45": Dormand-Prince 5(4) with error control on positions and velocities and, after each
 //    accepted step, projection of positions (Newton) and velocities (least squares) onto the
 //    constraints. Used to match OpenSim's results.
 //  - "euler": fixed-step semi-implicit (symplectic) Euler: the new velocities solve the
 //    velocity-level KKT system M (v+ - v) = h f + J^T lambda, J v+ = c; positions then move
 //    with v+ and are projected. First order, robust, one factorization per step: meant for
-//    stiff and non-smooth (contact) problems.
+//    non-smooth (contact) problems without stiff forces.
+//  - "implicit-euler": fixed-step linearized implicit Euler (force Jacobians by finite
+//    differences, dense solve): stable for stiff springs and dampers on small models.
 #pragma once
 
 #include <memory>
@@ -63,7 +65,8 @@ class Integrator {
   IntegratorStats stats_;
 };
 
-/// Makes the integrator named `name` ("rk45" or "euler"). Throws sinew::Error for another name.
+/// Makes the integrator named `name` ("rk45", "euler" or "implicit-euler"). Throws sinew::Error for
+/// another name.
 std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System& system,
                                            const IntegratorSettings& settings);
 

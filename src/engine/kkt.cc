@@ -151,6 +151,25 @@ VecX KktSolver::MultiplyJacobian(const VecX& x) const {
   return y;
 }
 
+MatX KktSolver::AssembleDense() const {
+  MatX K = MatX::Zero(nv_ + nc_, nv_ + nc_);
+  for (int b = 1; b < system_.num_bodies(); ++b) {
+    K.block<6, 6>(BodyColumn(b), BodyColumn(b)) = mass_[b];
+  }
+  for (size_t k = 0; k < jacobian_.size(); ++k) {
+    const MatX& J = jacobian_[k];
+    for (int i = 0; i < J.rows(); ++i) {
+      for (int j = 0; j < J.cols(); ++j) {
+        if (columns_[k][j] < 0) continue;
+        K(nv_ + row_[k] + i, columns_[k][j]) += J(i, j);
+        K(columns_[k][j], nv_ + row_[k] + i) += J(i, j);
+      }
+    }
+  }
+  if (!tree_) K.bottomRightCorner(nc_, nc_).diagonal().array() -= kCompliance;
+  return K;
+}
+
 VecX KktSolver::MultiplyJacobianTranspose(const VecX& y) const {
   VecX x = VecX::Zero(nv_);
   for (size_t k = 0; k < jacobian_.size(); ++k) {

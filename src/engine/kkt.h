@@ -51,6 +51,8 @@ class KktSolver {
   VecX MultiplyMass(const VecX& x) const;
   /// J * x with the J of the last Factorize.
   VecX MultiplyJacobian(const VecX& x) const;
+  /// The dense matrix [M J^T; J 0] of the last Factorize (small systems; implicit schemes).
+  MatX AssembleDense() const;
   /// J^T * y (y has nc entries) with the J of the last Factorize.
   VecX MultiplyJacobianTranspose(const VecX& y) const;
 
