@@ -188,8 +188,7 @@ class CoordinateMotionConstraint final : public Constraint {
   void CalcVelocityRhs(const System&, const State& state, Eigen::Ref<VecX> c) const override {
     c[0] = Value(state.t, 1);
   }
-  void CalcAccelerationRhs(const System&, const State& state,
-                           Eigen::Ref<VecX> b) const override {
+  void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
     const std::vector<double> q = Gather(state.q), u = Gather(state.u);
     const size_t n = q.size();
     std::vector<double> qdot(n), q_plus(n), q_minus(n), a(n), c(n);

@@ -65,8 +65,12 @@ KktSolver::KktSolver(const System& system, bool allow_tree) : system_(system) {
     for (int c = 0; c < system.num_coordinates(); ++c) {
       if (system.IsIntegrated(c)) speed_columns[c] = SpeedColumn(c);
     }
-    tree_ =
-        std::make_unique<TreeKktSolver>(system, nv_, body_columns, speed_columns, row_, columns_);
+    try {
+      tree_ =
+          std::make_unique<TreeKktSolver>(system, nv_, body_columns, speed_columns, row_, columns_);
+    } catch (const Error&) {
+      tree_.reset();  // a structure the tree solver does not take: the sparse LU does
+    }
   }
 }
 

@@ -72,8 +72,10 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
   }
   for (Node& node : nodes_) {
     const int n = static_cast<int>(node.global.size());
-    node.K = MatX::Zero(n, n);
-    node.C = MatX::Zero(n, 6);
+    if (n > kMaxNode) throw Error("engine: a joint block is too large for the tree solver");
+    node.K = NodeMatrix::Zero(n, n);
+    node.C = NodeCoupling::Zero(n, 6);
+    node.W = NodeCoupling::Zero(n, 6);
   }
 }
 
@@ -118,7 +120,7 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
 }
 
 VecX TreeKktSolver::Solve(const VecX& rhs) const {
-  std::vector<VecX>& r = scratch_;
+  std::vector<NodeVector>& r = scratch_;
   r.resize(nodes_.size());
   for (size_t k = 0; k < nodes_.size(); ++k) {
     r[k].resize(nodes_[k].global.size());

@@ -36,6 +36,18 @@ class TreeKktSolver {
     int row, col;  // local row and local column (col < 0: inboard body column -1 - col)
     int jac_row, jac_col;
   };
+  // Node blocks never exceed 24 rows (6 twist + 6 speeds + 6 joint rows + 6 coordinate rows):
+  // fixed-capacity matrices keep them off the heap.
+  static constexpr int kMaxNode = 24;
+  using NodeMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxNode, kMaxNode>;
+  using NodeCoupling = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kMaxNode, 6>;
+  using NodeVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxNode, 1>;
+
+ public:
+  /// The largest supernode the solver takes (larger ones: use the sparse LU).
+  static constexpr int max_node_size() { return kMaxNode; }
+
+ private:
   struct Node {
     int body = 0;             // outboard body
     int parent = -1;          // node of the inboard body (-1: ground)
@@ -49,7 +61,7 @@ class TreeKktSolver {
   };
   const System& system_;
   std::vector<Node> nodes_;  // in tree order (a node after its parent)
-  mutable std::vector<VecX> scratch_;
+  mutable std::vector<NodeVector> scratch_;
 };
 
 }  // namespace sinew::engine
