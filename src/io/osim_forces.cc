@@ -1,5 +1,6 @@
 // Forces, actuators and muscles with their geometry paths (path points, conditional and moving
 // path points, path wraps). Muscle parameters stay in ForceSpec::element.
+#include <cmath>
 #include <string_view>
 
 #include "functions/constant.h"
@@ -133,7 +134,14 @@ GeometryPathSpec ReadGeometryPath(ReadContext& ctx, const pugi::xml_node& points
     if (wrap.method.empty()) wrap.method = "hybrid";
     if (pugi::xml_node range = node.child("range")) {
       std::vector<double> r = doc.ReadNumbers(range, component, 2);
-      wrap.range = {static_cast<int>(r[0]), static_cast<int>(r[1])};
+      for (int i = 0; i < 2; ++i) {
+        // Path point numbers (1-based) or -1: whole numbers in int range (casting anything else
+        // would be undefined behaviour).
+        if (!(r[i] >= -1e9 && r[i] <= 1e9) || r[i] != std::floor(r[i])) {
+          doc.Fail(range, component, "<range> expects two whole numbers (path point indices)");
+        }
+        wrap.range[i] = static_cast<int>(r[i]);
+      }
     }
     if (!ctx.HasWrapObject(wrap.wrap_object)) {
       doc.Fail(node.child("wrap_object") ? node.child("wrap_object") : node, component,

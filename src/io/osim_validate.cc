@@ -90,6 +90,14 @@ void ValidateSpec(ReadContext& ctx, const pugi::xml_node& model) {
     }
   }
 
+  // Zero mass everywhere: fine for kinematics, singular for forward dynamics (say so once).
+  bool any_mass = false;
+  for (int b = 1; b < n; ++b) any_mass = any_mass || spec.bodies[b].mass > 0;
+  if (n > 1 && !any_mass) {
+    ctx.Warn(model, "/bodyset",
+             "every body has zero mass: kinematics only, forward dynamics would be singular");
+  }
+
   // Coordinate names used twice: fine until something refers to one by name (that fails).
   std::map<std::string, int> uses;
   for (const CoordinateSpec& c : spec.coordinates) ++uses[c.name];

@@ -31,46 +31,67 @@ bool ParseNumber(std::string_view token, double* value) {
 // nest never closes, the comment ends at its first `-->` (what TinyXML, OpenSim's parser, does).
 // Every other byte, newlines included, is kept, so line numbers do not move.
 void MergeNestedComments(std::string& text) {
-  size_t pos = 0;
-  while ((pos = text.find("<!--", pos)) != std::string::npos) {
-    const size_t body = pos + 4;
-    const size_t first_end = text.find("-->", body);
-    if (first_end == std::string::npos) return;  // unterminated: pugixml reports it
-    const size_t inner = text.find("<!--", body);
-    if (inner == std::string::npos || inner > first_end) {
-      pos = first_end + 3;
+  // All comment markers in text order (an overlapping "-->" inside "<!--" is not one). Two
+  // substring searches and a merge: '<' and '-' are too common in XML to test byte by byte.
+  struct Marker {
+    size_t at;
+    bool open;
+  };
+  std::vector<size_t> opens, closes;
+  for (size_t i = text.find("<!--"); i != std::string::npos; i = text.find("<!--", i + 4)) {
+    opens.push_back(i);
+  }
+  if (opens.empty()) return;
+  for (size_t i = text.find("-->"); i != std::string::npos; i = text.find("-->", i + 3)) {
+    closes.push_back(i);
+  }
+  std::vector<Marker> markers;
+  markers.reserve(opens.size() + closes.size());
+  size_t a = 0, b = 0;
+  while (a < opens.size() || b < closes.size()) {
+    if (b == closes.size() || (a < opens.size() && opens[a] < closes[b])) {
+      markers.push_back({opens[a++], true});
+    } else {
+      const size_t at = closes[b++];
+      if (!markers.empty() && markers.back().open && at < markers.back().at + 4) continue;
+      markers.push_back({at, false});
+    }
+  }
+  const size_t m = markers.size();
+  if (m == 0) return;
+  constexpr size_t kNever = static_cast<size_t>(-1);
+  // depth[k]: opens minus closes among markers[0, k). The nest opened at marker k closes at the
+  // first j > k with depth[j + 1] == depth[k] (the depth moves by one per marker). One pass from
+  // the right finds it for every k, and the first close marker after every k: linear time, so
+  // no input can make this quadratic.
+  std::vector<long> depth(m + 1, 0);
+  for (size_t k = 0; k < m; ++k) depth[k + 1] = depth[k] + (markers[k].open ? 1 : -1);
+  std::vector<size_t> first_at(2 * m + 3, kNever);  // depth value (offset m+1) -> index
+  std::vector<size_t> close_of(m, kNever), first_close(m, kNever);
+  size_t next_close = kNever;
+  for (size_t k = m; k-- > 0;) {
+    first_close[k] = next_close;
+    if (markers[k].open) close_of[k] = first_at[depth[k] + static_cast<long>(m) + 1];
+    first_at[depth[k + 1] + static_cast<long>(m) + 1] = k;
+    if (!markers[k].open) next_close = k;
+  }
+  size_t k = 0;
+  while (k < m) {
+    if (!markers[k].open) {  // a stray "-->" outside comments is text
+      ++k;
       continue;
     }
-    // Count the nest depth until it returns to zero.
-    int depth = 1;
-    size_t i = body;
-    std::vector<size_t> markers;  // offsets of inner "<!--" and non-final "-->"
-    size_t close = std::string::npos;
-    while (i < text.size()) {
-      if (text.compare(i, 4, "<!--") == 0) {
-        ++depth;
-        markers.push_back(i);
-        i += 4;
-      } else if (text.compare(i, 3, "-->") == 0) {
-        if (--depth == 0) {
-          close = i;
-          break;
-        }
-        markers.push_back(i);
-        i += 3;
-      } else {
-        ++i;
-      }
-    }
-    if (close == std::string::npos) {
-      pos = first_end + 3;
+    if (first_close[k] == kNever) return;     // unterminated: pugixml reports it
+    const bool nested = markers[k + 1].open;  // an inner "<!--" before the first "-->"
+    if (!nested || close_of[k] == kNever) {
+      k = first_close[k] + 1;  // plain, or a nest that never closes: ends at its first "-->"
       continue;
     }
-    for (size_t m : markers) {
-      const size_t len = text[m] == '<' ? 4 : 3;
-      for (size_t k = 0; k < len; ++k) text[m + k] = ' ';
+    for (size_t j = k + 1; j < close_of[k]; ++j) {
+      const size_t len = markers[j].open ? 4 : 3;
+      for (size_t c = 0; c < len; ++c) text[markers[j].at + c] = ' ';
     }
-    pos = close + 3;
+    k = close_of[k] + 1;
   }
 }
 
@@ -99,8 +120,8 @@ XmlDocument XmlDocument::Parse(std::string text, const std::string& file) {
   result.IndexLines();
   result.doc_ = std::make_shared<pugi::xml_document>();
   const unsigned options = pugi::parse_default | pugi::parse_ws_pcdata_single;
-  pugi::xml_parse_result parsed = result.doc_->load_buffer(
-      result.text_.data(), result.text_.size(), options, pugi::encoding_utf8);
+  pugi::xml_parse_result parsed = result.doc_->load_buffer(result.text_.data(), result.text_.size(),
+                                                           options, pugi::encoding_utf8);
   if (!parsed) {
     int line = 1;
     if (parsed.offset >= 0) {
@@ -165,9 +186,7 @@ void XmlDocument::Fail(const pugi::xml_node& node, const std::string& component,
   throw Error(Where(node), component, message);
 }
 
-std::string_view XmlDocument::Text(const pugi::xml_node& node) {
-  return Trim(node.child_value());
-}
+std::string_view XmlDocument::Text(const pugi::xml_node& node) { return Trim(node.child_value()); }
 
 double XmlDocument::ReadDouble(const pugi::xml_node& node, const std::string& component) const {
   std::vector<double> values = ReadNumbers(node, component, 1);
@@ -187,8 +206,9 @@ std::vector<double> XmlDocument::ReadNumbers(const pugi::xml_node& node,
     double value = 0;
     std::string_view token = text.substr(start, i - start);
     if (!ParseNumber(token, &value)) {
-      Fail(node, component,
-           "<" + std::string(node.name()) + "> expects numbers, found '" + std::string(token) + "'");
+      Fail(
+          node, component,
+          "<" + std::string(node.name()) + "> expects numbers, found '" + std::string(token) + "'");
     }
     values.push_back(value);
   }

@@ -2,6 +2,7 @@
 // crash, a hang or a silent misread.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 
 #include "io/osim_reader.h"
@@ -287,6 +288,28 @@ TEST(OsimErrors, ManyElementsReadInLinearTime) {
   const ModelSpec spec = ReadOsimString(text, "long.osim");
   EXPECT_EQ(spec.bodies.size(), static_cast<size_t>(n + 3));
   EXPECT_EQ(spec.markers.back().body, n + 2);
+}
+
+TEST(OsimErrors, PathWrapRangeMustBeWholeNumbers) {
+  std::string text = Model40(kGoodJoints);
+  const std::string forces = R"(<ForceSet><objects><PathSpring name="s"><GeometryPath>
+<PathPointSet><objects>
+<PathPoint name="p1"><socket_parent_frame>/ground</socket_parent_frame></PathPoint>
+<PathPoint name="p2"><socket_parent_frame>/bodyset/lower</socket_parent_frame></PathPoint>
+</objects></PathPointSet>
+<PathWrapSet><objects><PathWrap name="w"><wrap_object>cyl</wrap_object>
+<range>1 1e300</range></PathWrap></objects></PathWrapSet>
+</GeometryPath></PathSpring></objects></ForceSet>)";
+  text.insert(text.find("  </Model>"), forces);
+  const std::string wrap = R"(<WrapObjectSet><objects><WrapCylinder name="cyl"><radius>0.1</radius>
+</WrapCylinder></objects></WrapObjectSet>)";
+  text.insert(text.find("        </Body>"), wrap);
+  ExpectError(text, LineOf(text, "<range>1 1e300"), "/forceset/s/geometrypath/w",
+              "<range> expects two whole numbers");
+  text.replace(text.find("1 1e300"), 7, "1 2");
+  const ModelSpec spec = ReadOsimString(text, "wrap.osim");
+  EXPECT_EQ(spec.forces[0].geometry_path->wraps[0].range, (std::array<int, 2>{1, 2}));
+  EXPECT_EQ(spec.bodies[1].wrap_objects[0].name, "cyl");
 }
 
 TEST(OsimErrors, MissingFileOrDirectory) {

@@ -410,5 +410,15 @@ TEST(OsimSemantics, DuplicateJointNamesLoadWithWarnings) {
   EXPECT_EQ(duplicate_coordinates, 1);
 }
 
+TEST(OsimSemantics, ZeroMassModelIsNoted) {
+  const std::string text = Doc(40000, R"(<Ground name="ground"/>
+<BodySet><objects><Body name="b"><mass>0</mass></Body></objects></BodySet>
+<JointSet><objects><WeldJoint name="w"><socket_parent_frame>/ground</socket_parent_frame>
+<socket_child_frame>/bodyset/b</socket_child_frame></WeldJoint></objects></JointSet>)");
+  const ModelSpec spec = ReadOsimString(text, "massless.osim");
+  ASSERT_EQ(spec.warnings.size(), 1u);
+  EXPECT_NE(spec.warnings[0].message.find("every body has zero mass"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace sinew
