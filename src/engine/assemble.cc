@@ -48,7 +48,18 @@ State MakeDefaultState(const System& system, double t) {
   return state;
 }
 
+void CheckState(const System& system, const State& state) {
+  if (static_cast<int>(state.bodies.size()) != system.num_bodies() ||
+      state.q.size() != system.num_coordinates() || state.u.size() != system.num_coordinates()) {
+    throw Error("engine: the state does not belong to this system (" +
+                std::to_string(state.bodies.size()) + " bodies, " + std::to_string(state.q.size()) +
+                " coordinates; the system has " + std::to_string(system.num_bodies()) + " and " +
+                std::to_string(system.num_coordinates()) + ")");
+  }
+}
+
 void PlaceBodies(const System& system, State& state) {
+  CheckState(system, state);
   for (int j : system.tree_order()) {
     const Joint& joint = system.joints()[j];
     const std::vector<double> q = Gather(state.q, joint.coordinates);

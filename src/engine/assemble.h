@@ -13,6 +13,9 @@ namespace sinew::engine {
 /// coordinates at f(t), f'(t)); bodies placed and moving accordingly.
 State MakeDefaultState(const System& system, double t = 0.0);
 
+/// Throws sinew::Error unless `state` has the sizes of `system` (bodies, coordinates).
+void CheckState(const System& system, const State& state);
+
 /// Places every body (pose and twist) from the coordinates q and speeds u of `state`, walking
 /// the tree from ground: X_GB = X_GP X_PF X_FM(q) inverse(X_BM), V_FM_F = H_FM(q) u.
 void PlaceBodies(const System& system, State& state);

@@ -111,6 +111,7 @@ class RungeKutta45 final : public Integrator {
       : Integrator(system, settings), vector_(system, kkt_) {}
 
   void StepTo(State& state, double t_final) override {
+    CheckState(system_, state);
     if (t_final < state.t) throw Error("integrator: cannot step backwards in time");
     if (h_ <= 0.0) h_ = settings_.step > 0.0 ? std::min(settings_.step, 1e-3) : 1e-3;
     while (state.t < t_final) {
@@ -216,6 +217,7 @@ class SemiImplicitEuler final : public Integrator {
   }
 
   void StepTo(State& state, double t_final) override {
+    CheckState(system_, state);
     if (t_final < state.t) throw Error("integrator: cannot step backwards in time");
     while (state.t < t_final) {
       const double remaining = t_final - state.t;
@@ -274,6 +276,7 @@ class LinearizedImplicitEuler final : public Integrator {
   }
 
   void StepTo(State& state, double t_final) override {
+    CheckState(system_, state);
     if (t_final < state.t) throw Error("integrator: cannot step backwards in time");
     while (state.t < t_final) {
       const double remaining = t_final - state.t;

@@ -43,7 +43,8 @@ struct IntegratorStats {
   long projection_failures = 0;        ///< steps rejected because the projection did not converge
 };
 
-/// Advances a State of one System in time.
+/// Advances a State of one System in time. Keeps a reference to the System: the System must
+/// outlive the integrator and stay where it is (hold it by unique_ptr or in place).
 class Integrator {
  public:
   virtual ~Integrator() = default;

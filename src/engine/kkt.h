@@ -23,7 +23,8 @@ namespace sinew::engine {
 Eigen::Matrix<double, 6, 6> CalcBodyMassMatrix(const Body& body, const Quat& quat_GB);
 
 /// Assembles, factorizes and solves the KKT system above for one System. Reusable across
-/// states; not shareable between threads (use one per thread).
+/// states; not shareable between threads (use one per thread). Keeps a reference to the
+/// System, which must outlive it.
 class KktSolver {
  public:
   /// `allow_tree` false forces the general sparse LU (used to cross-check the two).

@@ -91,6 +91,7 @@ void ProjectVelocities(const System& system, State& state, KktSolver& kkt) {
 }
 
 void ProjectState(const System& system, State& state, double tolerance) {
+  CheckState(system, state);
   KktSolver kkt(system);
   if (!ProjectPositions(system, state, tolerance, kkt, 50)) {
     throw Error("engine: cannot satisfy the constraints from this state");

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "common/error.h"
 #include "engine/assemble.h"
 #include "engine/dynamics.h"
 #include "engine/energy.h"
@@ -133,6 +134,28 @@ TEST(EulerTest, FixedStepSchemeKeepsEnergyBounded) {
   }
   // Symplectic: the energy error oscillates with amplitude O(h) but does not grow over 10 s.
   EXPECT_LT(max_drift / std::abs(e0), 1e-2);
+}
+
+}  // namespace
+}  // namespace sinew::engine
+
+namespace sinew::engine {
+namespace {
+
+TEST(StateTest, AStateOfAnotherSystemIsRefused) {
+  const System one = MakeRod(JointForm::kPin);
+  System two(Vec3(0, -9.81, 0));
+  const int a = two.AddBody(testing::MakeBody("a", 1.0, Vec3(0, -0.5, 0), 0.01 * Mat3::Identity()));
+  const int b = two.AddBody(testing::MakeBody("b", 1.0, Vec3(0, -0.5, 0), 0.01 * Mat3::Identity()));
+  two.AddJoint("p1", 0, Transform::Identity(), a, Transform::Identity(), JointForm::kPin, nullptr,
+               {testing::Coord("q1")});
+  two.AddJoint("p2", a, Transform::Translation(Vec3(0, -1, 0)), b, Transform::Identity(),
+               JointForm::kPin, nullptr, {testing::Coord("q2")});
+  two.Finalize();
+  State state = MakeDefaultState(two);
+  IntegratorSettings settings;
+  EXPECT_THROW(MakeIntegrator("rk45", one, settings)->StepTo(state, 0.1), Error);
+  EXPECT_THROW(PlaceBodies(one, state), Error);
 }
 
 }  // namespace
