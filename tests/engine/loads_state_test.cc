@@ -160,3 +160,43 @@ TEST(StateTest, AStateOfAnotherSystemIsRefused) {
 
 }  // namespace
 }  // namespace sinew::engine
+
+namespace sinew::engine {
+namespace {
+
+// Generalized forces on Ball and Universal coordinates act the same on the direct forms (as
+// torques along H's columns) as on the parameterized ones (on the joint speeds).
+TEST(LoadsTest, GeneralizedForcesOnDirectAndParameterizedJointsAgree) {
+  const Body body =
+      testing::MakeBody("b", 1.3, Vec3(0.1, -0.4, 0.2), Mat3(Vec3(0.02, 0.03, 0.04).asDiagonal()));
+  const Transform X_PF(Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix(),
+                       Vec3(0.1, 0.2, 0.3));
+  for (JointForm form : {JointForm::kBall, JointForm::kUniversal}) {
+    Eigen::VectorXd vdot[2];
+    for (int k = 0; k < 2; ++k) {
+      System system(Vec3(0, -9.81, 0));
+      const int b = system.AddBody(body);
+      std::shared_ptr<const JointModel> model;
+      std::vector<CoordinateDesc> coordinates{testing::Coord("a", 0.3, 0.5),
+                                              testing::Coord("b", -0.2, 0.7)};
+      if (form == JointForm::kBall) {
+        model = std::make_shared<testing::BallModel>();
+        coordinates.push_back(testing::Coord("c", 0.4, -0.3));
+      } else {
+        model = std::make_shared<testing::UniversalModel>();
+      }
+      system.AddJoint("j", 0, X_PF, b, Transform::Identity(),
+                      k == 0 ? JointForm::kParameterized : form, model, coordinates);
+      system.Finalize();
+      const State state = MakeDefaultState(system);
+      Loads loads(system.num_bodies(), system.num_coordinates());
+      for (int c = 0; c < system.num_coordinates(); ++c) loads.AddGeneralizedForce(c, 1.0 + c);
+      KktSolver kkt(system);
+      vdot[k] = CalcAccelerations(system, state, &loads, kkt).vdot.head<6>();
+    }
+    EXPECT_LT((vdot[0] - vdot[1]).norm(), 1e-12 * (1 + vdot[0].norm()));
+  }
+}
+
+}  // namespace
+}  // namespace sinew::engine

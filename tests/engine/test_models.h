@@ -140,6 +140,41 @@ class BallModel final : public JointModel {
   }
 };
 
+/// OpenSim's UniversalJoint: rotation q0 about F's x, then q1 about the new y (qdot = u).
+class UniversalModel final : public JointModel {
+ public:
+  int nq() const override { return 2; }
+  Transform CalcX_FM(std::span<const double> q) const override {
+    return Transform::Rotation(Rx(q[0]) *
+                               Eigen::AngleAxisd(q[1], Vec3::UnitY()).toRotationMatrix());
+  }
+  Mat6X CalcH_FM(std::span<const double> q) const override {
+    Mat6X H = Mat6X::Zero(6, 2);
+    H.block<3, 1>(0, 0) = Vec3::UnitX();
+    H.block<3, 1>(0, 1) = Rx(q[0]) * Vec3::UnitY();
+    return H;
+  }
+  void CalcQDot(std::span<const double>, std::span<const double> u,
+                std::span<double> qdot) const override {
+    qdot[0] = u[0];
+    qdot[1] = u[1];
+  }
+  void CalcU(std::span<const double>, std::span<const double> qdot,
+             std::span<double> u) const override {
+    u[0] = qdot[0];
+    u[1] = qdot[1];
+  }
+  // d/dt (Rx(q0) y) u1 = (q0' x) x (Rx(q0) y) u1.
+  SpatialVec CalcHDotU(std::span<const double> q, std::span<const double> u) const override {
+    SpatialVec a = SpatialVec::Zero();
+    a.head<3>() = (u[0] * Vec3::UnitX()).cross(Rx(q[0]) * Vec3::UnitY()) * u[1];
+    return a;
+  }
+
+ private:
+  static Mat3 Rx(double a) { return Eigen::AngleAxisd(a, Vec3::UnitX()).toRotationMatrix(); }
+};
+
 /// OpenSim's FreeJoint: body-fixed X-Y-Z angles and a translation along F's axes; speeds are
 /// w_FM and v_FM, both in F.
 class FreeModel final : public JointModel {
