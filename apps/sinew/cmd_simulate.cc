@@ -76,7 +76,15 @@ void RunSimulate(const SimulateOptions& options) {
   ModelSpec spec = ReadOsim(options.model);
   double t0 = 0.0;
   if (!options.initial_states.empty()) t0 = ApplyInitialStates(options.initial_states, spec);
-  const std::unique_ptr<engine::System> system = BuildSystem(spec);
+  Diagnostics notes;
+  const std::unique_ptr<engine::System> system = BuildSystem(spec, {}, &notes);
+  if (!options.quiet && !notes.empty()) {
+    // The skeleton build simulates bodies, joints, coordinates and gravity only: say what else
+    // the model has.
+    std::cerr << "sinew: note: " << notes.size()
+              << " components are not simulated (skeleton only), e.g. " << notes[0].Format()
+              << "\n";
+  }
   engine::State state = engine::MakeDefaultState(*system, t0);
   engine::IntegratorSettings settings;
   settings.accuracy = options.accuracy;
