@@ -10,6 +10,7 @@
 #include "engine/dynamics.h"
 #include "engine/energy.h"
 #include "engine/integrator.h"
+#include "engine/reactions.h"
 #include "engine/system.h"
 #include "engine/test_models.h"
 
@@ -195,6 +196,30 @@ TEST(LoadsTest, GeneralizedForcesOnDirectAndParameterizedJointsAgree) {
       vdot[k] = CalcAccelerations(system, state, &loads, kkt).vdot.head<6>();
     }
     EXPECT_LT((vdot[0] - vdot[1]).norm(), 1e-12 * (1 + vdot[0].norm()));
+  }
+}
+
+}  // namespace
+}  // namespace sinew::engine
+
+namespace sinew::engine {
+namespace {
+
+// A rod (pivot at its frame origin, mass centre 0.5 m down) passing through the bottom with
+// angular speed w: the pin pulls it up with m (g + w^2 l) and no torque about the pivot.
+TEST(LoadsTest, PinReactionAtTheBottomOfTheSwing) {
+  for (JointForm form : {JointForm::kParameterized, JointForm::kPin}) {
+    const System system = MakeRod(form);
+    State state = MakeDefaultState(system);
+    SetCoordinateValue(system, state, "q", 0.0);
+    SetCoordinateSpeed(system, state, "q", 3.0);
+    KktSolver kkt(system);
+    const Accelerations a = CalcAccelerations(system, state, nullptr, kkt);
+    const SpatialVec reaction = CalcJointReaction(system, state, a, kkt, 0);
+    EXPECT_NEAR(reaction[4], 2.0 * (9.81 + 9.0 * 0.5), 1e-10);
+    EXPECT_NEAR(reaction[3], 0.0, 1e-10);
+    EXPECT_NEAR(reaction[5], 0.0, 1e-10);
+    EXPECT_LT(reaction.head<3>().norm(), 1e-10);
   }
 }
 
