@@ -59,18 +59,32 @@ void PlaceBodies(const System& system, State& state) {
       X_FM = CalcDirectX_FM(joint.form, q);
       H = CalcDirectH_FM(joint.form, q);
     }
-    const BodyState& P = state.bodies[joint.parent];
-    BodyState& B = state.bodies[joint.child];
-    const Transform X_GF = PoseOf(P) * joint.X_PF;
-    const Transform X_GM = X_GF * X_FM;
-    const Transform X_GB = X_GM * joint.X_BM.Inverse();
-    B.p_GB = X_GB.p;
-    B.quat_GB = Quat(X_GB.R).normalized();
     SpatialVec V_FM_F = SpatialVec::Zero();
     if (H.cols() > 0) V_FM_F = H * Eigen::Map<const VecX>(u.data(), u.size());
-    B.w_GB = P.w_GB + X_GF.R * V_FM_F.head<3>();
-    const Vec3 v_M = PointVelocity(P, X_GM.p) + X_GF.R * V_FM_F.tail<3>();
-    B.v_GB = v_M + B.w_GB.cross(B.p_GB - X_GM.p);
+    if (!system.IsReversed(j)) {
+      const BodyState& P = state.bodies[joint.parent];
+      BodyState& B = state.bodies[joint.child];
+      const Transform X_GF = PoseOf(P) * joint.X_PF;
+      const Transform X_GM = X_GF * X_FM;
+      const Transform X_GB = X_GM * joint.X_BM.Inverse();
+      B.p_GB = X_GB.p;
+      B.quat_GB = Quat(X_GB.R).normalized();
+      B.w_GB = P.w_GB + X_GF.R * V_FM_F.head<3>();
+      const Vec3 v_M = PointVelocity(P, X_GM.p) + X_GF.R * V_FM_F.tail<3>();
+      B.v_GB = v_M + B.w_GB.cross(B.p_GB - X_GM.p);
+    } else {
+      // The child B is placed: X_GP = X_GB X_BM inverse(X_FM) inverse(X_PF).
+      const BodyState& B = state.bodies[joint.child];
+      BodyState& P = state.bodies[joint.parent];
+      const Transform X_GM = PoseOf(B) * joint.X_BM;
+      const Transform X_GF = X_GM * X_FM.Inverse();
+      const Transform X_GP = X_GF * joint.X_PF.Inverse();
+      P.p_GB = X_GP.p;
+      P.quat_GB = Quat(X_GP.R).normalized();
+      P.w_GB = B.w_GB - X_GF.R * V_FM_F.head<3>();
+      const Vec3 v_M = PointVelocity(B, X_GM.p) - X_GF.R * V_FM_F.tail<3>();
+      P.v_GB = v_M + P.w_GB.cross(P.p_GB - X_GM.p);
+    }
   }
 }
 

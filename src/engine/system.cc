@@ -35,7 +35,7 @@ int System::AddJoint(const std::string& name, int parent, const Transform& X_PF,
                      const Transform& X_BM, JointForm form, std::shared_ptr<const JointModel> model,
                      const std::vector<CoordinateDesc>& coordinates) {
   RequireNotFinalized();
-  if (parent < 0 || parent >= num_bodies() || child <= 0 || child >= num_bodies() ||
+  if (parent < 0 || parent >= num_bodies() || child < 0 || child >= num_bodies() ||
       parent == child) {
     throw Error({}, name, "joint connects invalid bodies");
   }
@@ -92,46 +92,47 @@ void System::AddForceElement(std::shared_ptr<const ForceElement> force) {
 
 void System::Finalize() {
   RequireNotFinalized();
-  // Tree: each body (but ground) is the child of exactly one joint, and reaches ground.
+  // Tree: walking the joints outward from ground places every body exactly once. A joint whose
+  // child is nearer to ground is used reversed (the constraint itself is the same).
   joint_of_body_.assign(bodies_.size(), -1);
-  for (size_t j = 0; j < joints_.size(); ++j) {
-    const int child = joints_[j].child;
-    if (joint_of_body_[child] >= 0) {
-      throw Error({}, joints_[j].name,
-                  "body '" + bodies_[child].name +
-                      "' is the child of two joints (use a "
-                      "constraint to close a loop)");
+  reversed_.assign(joints_.size(), false);
+  tree_order_.clear();
+  std::vector<bool> placed_body(bodies_.size(), false);
+  placed_body[0] = true;
+  std::vector<bool> placed(joints_.size(), false);
+  for (bool progress = true; progress;) {
+    progress = false;
+    for (size_t j = 0; j < joints_.size(); ++j) {
+      if (placed[j]) continue;
+      const Joint& joint = joints_[j];
+      if (placed_body[joint.parent] && placed_body[joint.child]) {
+        throw Error({}, joint.name,
+                    "the joints form a closed loop (use a constraint to close a loop)");
+      }
+      if (!placed_body[joint.parent] && !placed_body[joint.child]) continue;
+      reversed_[j] = placed_body[joint.child];
+      const int outboard = reversed_[j] ? joint.parent : joint.child;
+      placed_body[outboard] = true;
+      joint_of_body_[outboard] = static_cast<int>(j);
+      placed[j] = true;
+      tree_order_.push_back(static_cast<int>(j));
+      progress = true;
     }
-    joint_of_body_[child] = static_cast<int>(j);
   }
   bool any_mass = false;
   for (int b = 1; b < num_bodies(); ++b) {
-    if (joint_of_body_[b] < 0) {
-      throw Error({}, bodies_[b].name, "body has no joint to its parent (add a FreeJoint)");
+    if (!placed_body[b]) {
+      throw Error({}, bodies_[b].name, "no chain of joints connects the body to ground");
     }
     any_mass = any_mass || bodies_[b].mass > 0.0;
+  }
+  for (size_t j = 0; j < joints_.size(); ++j) {
+    if (!placed[j]) throw Error({}, joints_[j].name, "joint is not connected to ground");
   }
   if (num_bodies() > 1 && !any_mass) {
     throw Error(
         "every body has zero mass: forward dynamics is singular (a kinematics-only "
         "model cannot be simulated)");
-  }
-  // Tree order: a joint after the joint of its parent body.
-  tree_order_.clear();
-  std::vector<int> depth(bodies_.size(), -1);
-  depth[0] = 0;
-  std::vector<bool> placed(joints_.size(), false);
-  for (size_t pass = 0; pass < joints_.size() + 1 && tree_order_.size() < joints_.size(); ++pass) {
-    for (size_t j = 0; j < joints_.size(); ++j) {
-      if (!placed[j] && depth[joints_[j].parent] >= 0) {
-        depth[joints_[j].child] = depth[joints_[j].parent] + 1;
-        placed[j] = true;
-        tree_order_.push_back(static_cast<int>(j));
-      }
-    }
-  }
-  if (tree_order_.size() != joints_.size()) {
-    throw Error("the joints do not form a tree rooted at ground (a loop of joints?)");
   }
   // Speeds of parameterized joints are integrated unknowns.
   u_column_.assign(coordinates_.size(), -1);

@@ -71,7 +71,7 @@ class System {
   /// Adds a body; returns its index. Mass must be >= 0 and the inertia symmetric.
   int AddBody(const Body& body);
   /// Adds a joint (its coordinates in joint order); returns its index. The joints must form a
-  /// tree rooted at ground: each body is the child of exactly one joint.
+  /// tree containing ground (a joint may point towards ground: it is then used reversed).
   int AddJoint(const std::string& name, int parent, const Transform& X_PF, int child,
                const Transform& X_BM, JointForm form, std::shared_ptr<const JointModel> model,
                const std::vector<CoordinateDesc>& coordinates);
@@ -103,9 +103,11 @@ class System {
   int SpeedIndex(int i) const { return u_column_[i]; }
   /// Number of integrated speeds (coordinates of parameterized joints).
   int num_integrated() const { return num_integrated_; }
-  /// Joint indices in tree order (every joint after the joint of its parent body).
+  /// Joint indices in tree order (every joint after the joint that places its inboard body).
   const std::vector<int>& tree_order() const { return tree_order_; }
-  /// The joint whose child is body `b`, or -1 (ground).
+  /// True when joint j places its parent body from its child (child nearer to ground).
+  bool IsReversed(int j) const { return reversed_[j]; }
+  /// The joint that places body `b` from ground outward, or -1 (ground).
   int JointOfBody(int b) const { return joint_of_body_[b]; }
 
   int FindBody(std::string_view name) const;
@@ -125,6 +127,7 @@ class System {
   std::vector<int> u_column_;
   std::vector<int> tree_order_;
   std::vector<int> joint_of_body_;
+  std::vector<bool> reversed_;
   int num_integrated_ = 0;
   bool finalized_ = false;
 };
