@@ -8,7 +8,7 @@
 #include "functions/constant.h"
 #include "io/osim_reader.h"
 #include "io/read_controls.h"
-#include "kinematics/tree.h"
+#include "kinematics/body_depths.h"
 
 namespace sinew {
 namespace {
@@ -87,7 +87,7 @@ void OpenSimParser::Parse(engine::System& system, const std::string& filename) {
     report_.AddJoint({built.joints[j].name, built.joints[j].type, engine_joint,
                       system.joints()[engine_joint].form, standin[j]});
   }
-  BuildActuators(map.bodies, map.coordinates);
+  BuildActuators(system, map.bodies, map.coordinates);
   AssignExcitations();
   for (std::string& line : ListNotSimulated(spec_)) report_.AddNotSimulated(std::move(line));
   if (collision_enabled_) {
@@ -97,13 +97,14 @@ void OpenSimParser::Parse(engine::System& system, const std::string& filename) {
   CheckStrict();
 }
 
-void OpenSimParser::BuildActuators(const std::vector<int>& body_map,
+void OpenSimParser::BuildActuators(engine::System& system, const std::vector<int>& body_map,
                                    const std::vector<int>& coordinate_map) {
   for (const ForceSpec& force : spec_.forces) {
     ForceInfo info{force.name, force.type, nullptr, nullptr, ""};
     if (IsForceSimulated(force)) {
       info.actuator = MakeActuator(spec_, force, body_map, coordinate_map);
       info.load = info.actuator;
+      system.AddForceElement(info.actuator);
       info.excitation_source = "default 0";
     }
     report_.AddForce(std::move(info));

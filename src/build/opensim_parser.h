@@ -75,7 +75,8 @@ class OpenSimParser {
   ContactMethod GetContactMethod() const { return contact_method_; }
 
  private:
-  void BuildActuators(const std::vector<int>& body_map, const std::vector<int>& coordinate_map);
+  void BuildActuators(engine::System& system, const std::vector<int>& body_map,
+                      const std::vector<int>& coordinate_map);
   void AssignExcitations();
   void CheckStrict() const;
 
