@@ -8,4 +8,5 @@ for kind in release asan; do
   bash "$root/scripts/build.sh" "$kind"
   echo "== $kind tests"
   (cd "$root/build/$kind" && ctest --output-on-failure -j "$(nproc)")
+  if [ "$kind" = release ]; then bash "$root/scripts/check-install.sh" "$root/build/release"; fi
 done
