@@ -10,3 +10,6 @@ for kind in release asan; do
   (cd "$root/build/$kind" && ctest --output-on-failure -j "$(nproc)")
   if [ "$kind" = release ]; then bash "$root/scripts/check-install.sh" "$root/build/release"; fi
 done
+# The .osim reader's fuzz target, for a bounded time (needs clang with libFuzzer).
+echo "== fuzz (60 s)"
+bash "$root/scripts/fuzz.sh" 60

@@ -2,9 +2,8 @@
 #include <iostream>
 #include <map>
 #include <memory>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "apps/sinew/commands.h"
 #include "build/support.h"

@@ -12,5 +12,10 @@ inline constexpr int kExitUsage = 1;
 inline constexpr int kExitBadInput = 2;
 
 void AddInspectCommand(CLI::App& app);
+/// `sinew export`: glTF (.glb) or HTML viewer of a model and its motion (cmd_export.cc).
+void AddExportCommand(CLI::App& app);
+/// `sinew render`: a still PNG from the software renderer (cmd_render.cc).
+void AddRenderCommand(CLI::App& app);
+void AddKinematicsCommand(CLI::App& app);
 
 }  // namespace sinew::cli

@@ -7,6 +7,9 @@
 int main(int argc, char** argv) {
   CLI::App app{"Sinew: load OpenSim models (.osim) and simulate them in a Cartesian engine"};
   sinew::cli::AddInspectCommand(app);
+  sinew::cli::AddExportCommand(app);
+  sinew::cli::AddRenderCommand(app);
+  sinew::cli::AddKinematicsCommand(app);
   app.require_subcommand(1);
   try {
     app.parse(argc, argv);

@@ -12,7 +12,7 @@ namespace sinew {
 double Ramp::Calc(double t) const { return t < start_ ? 0.0 : slope_ * (t - start_); }
 
 double Ramp::CalcDerivative(double t, int order) const {
-  CheckDerivativeOrder(order, TypeName());
+  CheckDerivativeOrder(order, "Ramp");
   if (order == 0) return Calc(t);
   if (order == 2) return 0.0;
   return t < start_ ? 0.0 : slope_;
@@ -21,7 +21,7 @@ double Ramp::CalcDerivative(double t, int order) const {
 double SineExcitation::Calc(double t) const { return CalcDerivative(t, 0); }
 
 double SineExcitation::CalcDerivative(double t, int order) const {
-  CheckDerivativeOrder(order, TypeName());
+  CheckDerivativeOrder(order, "SineExcitation");
   const double omega = 2.0 * std::numbers::pi * frequency_hz_;
   const double angle = omega * t + phase_;
   switch (order) {
@@ -40,7 +40,7 @@ CallableFunction::CallableFunction(std::function<double(double)> function, std::
 }
 
 double CallableFunction::CalcDerivative(double x, int order) const {
-  CheckDerivativeOrder(order, TypeName());
+  CheckDerivativeOrder(order, name_);
   const double scale = std::max(1.0, std::abs(x));
   if (order == 0) return function_(x);
   if (order == 1) {

@@ -5,7 +5,7 @@
 namespace sinew {
 
 double LinearFunction::CalcDerivative(double x, int order) const {
-  CheckDerivativeOrder(order, TypeName());
+  CheckDerivativeOrder(order, "LinearFunction");
   if (order == 0) return Calc(x);
   return order == 1 ? slope_ : 0.0;
 }

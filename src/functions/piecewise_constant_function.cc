@@ -1,5 +1,7 @@
 #include "functions/piecewise_constant_function.h"
 
+#include <cmath>
+
 #include "functions/derivative_order.h"
 #include "functions/knots.h"
 
@@ -12,13 +14,14 @@ PiecewiseConstantFunction::PiecewiseConstantFunction(std::vector<double> x, std:
 
 double PiecewiseConstantFunction::Calc(double x) const {
   const size_t last = x_.size() - 1;
+  if (std::isnan(x)) return x;
   if (x <= x_[0]) return y_[0];
   if (x >= x_[last]) return y_[last];
   return y_[FindKnotInterval(x_, x)];
 }
 
 double PiecewiseConstantFunction::CalcDerivative(double x, int order) const {
-  CheckDerivativeOrder(order, TypeName());
+  CheckDerivativeOrder(order, "PiecewiseConstantFunction");
   return order == 0 ? Calc(x) : 0.0;
 }
 

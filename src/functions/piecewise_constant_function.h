@@ -20,6 +20,7 @@ class PiecewiseConstantFunction final : public Function {
   double Calc(double x) const override;
   double CalcDerivative(double x, int order) const override;
 
+  /// The knots and the data values, as given.
   const std::vector<double>& x() const { return x_; }
   const std::vector<double>& y() const { return y_; }
 

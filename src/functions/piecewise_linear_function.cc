@@ -27,7 +27,7 @@ double PiecewiseLinearFunction::Calc(double x) const {
 }
 
 double PiecewiseLinearFunction::CalcDerivative(double x, int order) const {
-  CheckDerivativeOrder(order, TypeName());
+  CheckDerivativeOrder(order, "PiecewiseLinearFunction");
   if (order == 0) return Calc(x);
   if (order == 2) return 0.0;
   return slope_[FindKnotInterval(x_, x)];

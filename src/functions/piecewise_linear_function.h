@@ -9,8 +9,8 @@ namespace sinew {
 
 /// Straight lines between the knots (x[i], y[i]); outside [x[0], x[n-1]] it extrapolates
 /// linearly with the first (last) segment's slope, as OpenSim does. The first derivative is the
-/// slope of the segment [x[k], x[k+1]) holding x (at an interior knot: the segment to its
-/// right; at and beyond x[n-1]: the last segment); the second derivative is 0.
+/// slope of the segment holding x (exactly on an interior knot: the segment OpenSim's bisection
+/// picks; before x[0] the first, at and beyond x[n-1] the last); the second derivative is 0.
 /// Knot spacings below 1e-7 are raised to 1e-7 (no division by zero on duplicate knots).
 class PiecewiseLinearFunction final : public Function {
  public:
@@ -21,6 +21,7 @@ class PiecewiseLinearFunction final : public Function {
   double Calc(double x) const override;
   double CalcDerivative(double x, int order) const override;
 
+  /// The knots and the data values, as given.
   const std::vector<double>& x() const { return x_; }
   const std::vector<double>& y() const { return y_; }
 

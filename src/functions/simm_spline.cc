@@ -89,7 +89,7 @@ double SimmSpline::Calc(double x) const {
 }
 
 double SimmSpline::CalcDerivative(double x, int order) const {
-  CheckDerivativeOrder(order, TypeName());
+  CheckDerivativeOrder(order, "SimmSpline");
   if (order == 0) return Calc(x);
   const int last = static_cast<int>(x_.size()) - 1;
   // Linear extrapolation: constant slope, no curvature.

@@ -9,7 +9,7 @@ namespace sinew {
 double Sine::Calc(double x) const { return amplitude_ * std::sin(omega_ * x + phase_) + offset_; }
 
 double Sine::CalcDerivative(double x, int order) const {
-  CheckDerivativeOrder(order, TypeName());
+  CheckDerivativeOrder(order, "Sine");
   const double angle = omega_ * x + phase_;
   switch (order) {
     case 0:

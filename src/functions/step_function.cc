@@ -15,7 +15,7 @@ StepFunction::StepFunction(double transition_start_time, double transition_end_t
 }
 
 double StepFunction::CalcDerivative(double x, int order) const {
-  CheckDerivativeOrder(order, TypeName());
+  CheckDerivativeOrder(order, "StepFunction");
   const double inverse_width = 1.0 / (x1_ - x0_);
   const double s = (x - x0_) * inverse_width;
   // Before the transition (s <= 0) and after it (s >= 1) the step is flat.

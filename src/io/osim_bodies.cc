@@ -9,9 +9,10 @@ namespace {
 // Body properties the reader understands; anything else gets one warning per tag.
 bool IsKnownBodyProperty(std::string_view tag) {
   static constexpr std::string_view kKnown[] = {
-      "mass", "mass_center", "inertia", "inertia_xx", "inertia_yy", "inertia_zz", "inertia_xy",
-      "inertia_xz", "inertia_yz", "Joint", "VisibleObject", "WrapObjectSet", "attached_geometry",
-      "components", "FrameGeometry", "frame_geometry", "socket_frame", "Appearance"};
+      "mass",           "mass_center",   "inertia",           "inertia_xx", "inertia_yy",
+      "inertia_zz",     "inertia_xy",    "inertia_xz",        "inertia_yz", "Joint",
+      "VisibleObject",  "WrapObjectSet", "attached_geometry", "components", "FrameGeometry",
+      "frame_geometry", "socket_frame",  "Appearance"};
   for (std::string_view known : kKnown) {
     if (tag == known) return true;
   }
@@ -175,8 +176,9 @@ void ReadBodies(ReadContext& ctx, const pugi::xml_node& model) {
     }
     for (pugi::xml_node child : node.children()) {
       if (child.type() == pugi::node_element && !IsKnownBodyProperty(child.name())) {
-        ctx.Warn(child, component, "unknown body property <" + std::string(child.name()) +
-                                       "> ignored", std::string("body:") + child.name());
+        ctx.Warn(child, component,
+                 "unknown body property <" + std::string(child.name()) + "> ignored",
+                 std::string("body:") + child.name());
       }
     }
     body_nodes.emplace_back(node, index);

@@ -44,6 +44,13 @@ void ReadConstraints(ReadContext& ctx, const pugi::xml_node& model) {
     } else if (pugi::xml_node disabled = node.child("isDisabled")) {
       c.enabled = !doc.ReadBool(disabled, c.path);
     }
+    // CoordinateCouplerConstraint: the coordinates it couples must exist (and be unambiguous).
+    for (const char* tag : {"dependent_coordinate_name", "independent_coordinate_names"}) {
+      pugi::xml_node names = node.child(tag);
+      std::istringstream list(names ? std::string(XmlDocument::Text(names)) : std::string());
+      std::string name;
+      while (list >> name) ResolveCoordinateName(ctx, names, name, c.path);
+    }
     c.element = ToElement(doc, node);
     c.where = doc.Where(node);
     ctx.spec().constraints.push_back(std::move(c));
@@ -75,9 +82,8 @@ void ReadContactGeometry(ReadContext& ctx, const pugi::xml_node& model) {
     const std::string path = "/contactgeometryset/" + c.name;
     const FrameEntry* frame = Attachment(ctx, node, path, "socket_frame", "body_name", &c.frame);
     c.body = frame->body;
-    c.X_BC = frame->X_BF *
-             MakeTransform(ReadVec3Or(doc, node, "orientation", path, Vec3::Zero()),
-                           ReadVec3Or(doc, node, "location", path, Vec3::Zero()));
+    c.X_BC = frame->X_BF * MakeTransform(ReadVec3Or(doc, node, "orientation", path, Vec3::Zero()),
+                                         ReadVec3Or(doc, node, "location", path, Vec3::Zero()));
     c.dimensions = ReadNumericLeaves(doc, node, path, {"location", "orientation"});
     c.mesh_file = TextOf(node, "filename");
     c.element = ToElement(doc, node);
@@ -121,13 +127,35 @@ void ReadControllers(ReadContext& ctx, const pugi::xml_node& model) {
 
 // Model children the reader handles (or that carry no model content).
 bool IsKnownModelChild(std::string_view tag) {
-  static constexpr std::string_view kKnown[] = {
-      "Ground", "BodySet", "JointSet", "ForceSet", "ConstraintSet", "MarkerSet",
-      "ContactGeometrySet", "ControllerSet", "ProbeSet", "ComponentSet", "components",
-      "FrameSet", "gravity", "credits", "publications", "length_units", "force_units",
-      "defaults", "assembly_accuracy", "validationLog", "FrameGeometry", "socket_frame",
-      "WrapObjectSet", "attached_geometry", "Appearance", "DynamicsEngine", "AnalysisSet",
-      "frame_geometry", "ModelVisualPreferences"};
+  static constexpr std::string_view kKnown[] = {"Ground",
+                                                "BodySet",
+                                                "JointSet",
+                                                "ForceSet",
+                                                "ConstraintSet",
+                                                "MarkerSet",
+                                                "ContactGeometrySet",
+                                                "ControllerSet",
+                                                "ProbeSet",
+                                                "ComponentSet",
+                                                "components",
+                                                "FrameSet",
+                                                "gravity",
+                                                "credits",
+                                                "publications",
+                                                "length_units",
+                                                "force_units",
+                                                "defaults",
+                                                "assembly_accuracy",
+                                                "validationLog",
+                                                "FrameGeometry",
+                                                "socket_frame",
+                                                "WrapObjectSet",
+                                                "attached_geometry",
+                                                "Appearance",
+                                                "DynamicsEngine",
+                                                "AnalysisSet",
+                                                "frame_geometry",
+                                                "ModelVisualPreferences"};
   for (std::string_view known : kKnown) {
     if (tag == known) return true;
   }
@@ -152,7 +180,8 @@ void ReadOtherComponents(ReadContext& ctx, const pugi::xml_node& model) {
   }
   for (pugi::xml_node child : model.children()) {
     if (child.type() != pugi::node_element || IsKnownModelChild(child.name())) continue;
-    ctx.Warn(child, "/", "unknown model property <" + std::string(child.name()) + "> kept, not used",
+    ctx.Warn(child, "/",
+             "unknown model property <" + std::string(child.name()) + "> kept, not used",
              std::string("model:") + child.name());
     spec.other_components.push_back(ToElement(doc, child));
   }

@@ -79,8 +79,8 @@ std::string ReadContext::ResolveFrame(const std::string& owner_path, std::string
       it = match;
     } else if (count > 1) {
       doc_.Fail(socket, component,
-                "<" + tag + "> '" + std::string(path) + "' is ambiguous: " +
-                    std::to_string(count) + " frames have that name");
+                "<" + tag + "> '" + std::string(path) + "' is ambiguous: " + std::to_string(count) +
+                    " frames have that name");
     }
   }
   if (it == frames_.end()) {
@@ -153,7 +153,8 @@ void ReadContext::ResolveStationDefined(const std::string& path, FrameEntry& ent
   Vec3 p[4];
   for (int i = 0; i < 4; ++i) {
     pugi::xml_node socket = node.child(sockets[i]);
-    if (!socket) doc_.Fail(node, path, std::string("StationDefinedFrame has no <") + sockets[i] + ">");
+    if (!socket)
+      doc_.Fail(node, path, std::string("StationDefinedFrame has no <") + sockets[i] + ">");
     auto [station_body, p_BS] = ResolveStation(path, socket, path);
     if (body != kNone && station_body != body) {
       doc_.Fail(socket, path, "the stations of a StationDefinedFrame are on different bodies");
@@ -170,7 +171,8 @@ void ReadContext::ResolveStationDefined(const std::string& path, FrameEntry& ent
       text = text.substr(1);
     }
     if (text != "x" && text != "y" && text != "z") {
-      doc_.Fail(node.child(tag), path, "<" + std::string(tag) + "> must be one of x, y, z, -x, ...");
+      doc_.Fail(node.child(tag), path,
+                "<" + std::string(tag) + "> must be one of x, y, z, -x, ...");
     }
     *index = text[0] - 'x';
   };

@@ -2,14 +2,13 @@
 // document, the spec being filled, the frame table that resolves socket paths) and small helpers.
 #pragma once
 
+#include <pugixml.hpp>
 #include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 #include <utility>
 #include <vector>
-
-#include <pugixml.hpp>
 
 #include "io/xml_document.h"
 #include "model/model_spec.h"
@@ -19,15 +18,15 @@ namespace sinew::osim {
 /// A physical frame known by its absolute component path: a body, ground, or an offset frame
 /// (4.x PhysicalOffsetFrame or a frame the 3.x upgrade creates).
 struct FrameEntry {
-  pugi::xml_node node;         ///< The element that defines it (for messages).
-  std::string component;       ///< Component path used in messages.
-  std::string parent_path;     ///< Offset frames: the parent frame's path (absolute).
-  pugi::xml_node parent_node;  ///< The socket element naming the parent (for messages).
-  Transform X_PF;              ///< Offset frames: pose in the parent frame.
-  int body = kNone;            ///< Resolved body index (kNone until resolved).
-  Transform X_BF;              ///< Resolved pose in that body's frame.
-  int state = 0;               ///< 0 unresolved, 1 being resolved, 2 resolved.
-  int spec_frame = kNone;      ///< Index into ModelSpec::frames for offset frames.
+  pugi::xml_node node;           ///< The element that defines it (for messages).
+  std::string component;         ///< Component path used in messages.
+  std::string parent_path;       ///< Offset frames: the parent frame's path (absolute).
+  pugi::xml_node parent_node;    ///< The socket element naming the parent (for messages).
+  Transform X_PF;                ///< Offset frames: pose in the parent frame.
+  int body = kNone;              ///< Resolved body index (kNone until resolved).
+  Transform X_BF;                ///< Resolved pose in that body's frame.
+  int state = 0;                 ///< 0 unresolved, 1 being resolved, 2 resolved.
+  int spec_frame = kNone;        ///< Index into ModelSpec::frames for offset frames.
   pugi::xml_node station_frame;  ///< A 4.5 StationDefinedFrame (else empty).
 };
 
@@ -119,6 +118,11 @@ bool IsNumberList(std::string_view text);
 NumberMap ReadNumericLeaves(const XmlDocument& doc, const pugi::xml_node& node,
                             const std::string& component,
                             std::initializer_list<std::string_view> skip);
+
+/// The coordinate a property names (a 4.x path or a 3.x name); fails at `node` when there is
+/// none; when several have that name, warns and takes the first (as OpenSim 3's lookup does).
+int ResolveCoordinateName(ReadContext& ctx, const pugi::xml_node& node, std::string_view text,
+                          const std::string& component);
 
 // ---- the reader's parts ----
 

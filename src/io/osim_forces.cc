@@ -7,11 +7,9 @@
 #include "io/read_function.h"
 
 namespace sinew::osim {
-namespace {
 
-// A coordinate named by a 4.x socket path or a 3.x name; fails when missing or ambiguous.
-int ResolveCoordinate(ReadContext& ctx, const pugi::xml_node& node, const std::string& component) {
-  const std::string_view text = XmlDocument::Text(node);
+int ResolveCoordinateName(ReadContext& ctx, const pugi::xml_node& node, std::string_view text,
+                          const std::string& component) {
   const auto& coords = ctx.spec().coordinates;
   const size_t slash = text.rfind('/');
   const std::string_view name = slash == std::string_view::npos ? text : text.substr(slash + 1);
@@ -19,7 +17,7 @@ int ResolveCoordinate(ReadContext& ctx, const pugi::xml_node& node, const std::s
   for (size_t i = 0; i < coords.size(); ++i) {
     if (coords[i].path == text) return static_cast<int>(i);
     if (coords[i].name == name) {
-      found = static_cast<int>(i);
+      if (found == kNone) found = static_cast<int>(i);
       ++count;
     }
   }
@@ -28,11 +26,19 @@ int ResolveCoordinate(ReadContext& ctx, const pugi::xml_node& node, const std::s
     ctx.doc().Fail(node, component, "<" + tag + "> '" + std::string(text) + "' does not exist");
   }
   if (count > 1) {
-    ctx.doc().Fail(node, component,
-                   "<" + tag + "> '" + std::string(text) + "' is ambiguous: " +
-                       std::to_string(count) + " coordinates have that name");
+    // OpenSim 3 looks names up in its CoordinateSet, which returns the first match.
+    ctx.Warn(node, component,
+             "<" + tag + "> '" + std::string(text) + "' is ambiguous: " + std::to_string(count) +
+                 " coordinates have that name; using the first, '" + coords[found].path + "'");
   }
   return found;
+}
+
+namespace {
+
+// A coordinate named by a 4.x socket path or a 3.x name; fails when missing or ambiguous.
+int ResolveCoordinate(ReadContext& ctx, const pugi::xml_node& node, const std::string& component) {
+  return ResolveCoordinateName(ctx, node, XmlDocument::Text(node), component);
 }
 
 // The frame a path point, marker or contact geometry is fixed to: 4.x `socket_tag` (relative to
@@ -50,8 +56,7 @@ const FrameEntry* ResolveAttachment(ReadContext& ctx, const pugi::xml_node& node
     const std::string path = name == "ground" ? "/ground" : "/bodyset/" + std::string(name);
     if (name.empty() || !ctx.HasFrame(path)) {
       ctx.doc().Fail(body, own_path,
-                     "<" + std::string(body_tag) + "> '" + std::string(name) +
-                         "' does not exist");
+                     "<" + std::string(body_tag) + "> '" + std::string(name) + "' does not exist");
     }
     const FrameEntry* frame = nullptr;
     *frame_path = ctx.ResolveFrame("", path, body, own_path, &frame);
@@ -136,7 +141,8 @@ GeometryPathSpec ReadGeometryPath(ReadContext& ctx, const pugi::xml_node& points
     }
     bool exists = false;
     for (const BodySpec& body : ctx.spec().bodies) {
-      for (const WrapObjectSpec& w : body.wrap_objects) exists = exists || w.name == wrap.wrap_object;
+      for (const WrapObjectSpec& w : body.wrap_objects)
+        exists = exists || w.name == wrap.wrap_object;
     }
     if (!exists) {
       doc.Fail(node.child("wrap_object") ? node.child("wrap_object") : node, component,
@@ -181,6 +187,10 @@ void ReadForces(ReadContext& ctx, const pugi::xml_node& model) {
       std::string name = owner == node ? "geometrypath" : NameOf(owner);
       if (name.empty()) name = "geometrypath";
       force.geometry_path = ReadGeometryPath(ctx, owner, force.path + "/" + name);
+    }
+    // CoordinateActuator, CoordinateLimitForce, ...: the coordinate must exist.
+    if (pugi::xml_node coordinate = node.child("coordinate")) {
+      if (!XmlDocument::Text(coordinate).empty()) ResolveCoordinate(ctx, coordinate, force.path);
     }
     force.element = ToElement(doc, node);
     force.where = doc.Where(node);

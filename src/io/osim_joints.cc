@@ -73,14 +73,26 @@ MotionType FixedMotion(JointType kind, int i) {
 constexpr std::string_view kAxisNames[6] = {"rotation1",    "rotation2",    "rotation3",
                                             "translation1", "translation2", "translation3"};
 
-
 bool IsKnownCoordinateProperty(std::string_view tag) {
-  static constexpr std::string_view kKnown[] = {
-      "default_value", "default_speed_value", "initial_value", "range", "clamped", "locked",
-      "prescribed_function", "prescribed", "motion_type", "is_free_to_satisfy_constraints",
-      "restraint_function", "min_restraint_function", "max_restraint_function",
-      "restraint_active", "dynamic_restraint_function", "speed_name", "tolerance",
-      "stiffness", "keys"};
+  static constexpr std::string_view kKnown[] = {"default_value",
+                                                "default_speed_value",
+                                                "initial_value",
+                                                "range",
+                                                "clamped",
+                                                "locked",
+                                                "prescribed_function",
+                                                "prescribed",
+                                                "motion_type",
+                                                "is_free_to_satisfy_constraints",
+                                                "restraint_function",
+                                                "min_restraint_function",
+                                                "max_restraint_function",
+                                                "restraint_active",
+                                                "dynamic_restraint_function",
+                                                "speed_name",
+                                                "tolerance",
+                                                "stiffness",
+                                                "keys"};
   for (std::string_view known : kKnown) {
     if (tag == known) return true;
   }
@@ -124,8 +136,8 @@ class JointReader {
       if (!child_name) doc_.Fail(connectors, joint.path, "no child_body connector");
       const int parent = BodyByName(parent_name, joint.path, "parent body");
       const int child = BodyByName(child_name, joint.path, "child body");
-      ConnectWithOffsets(node, index, parent, "location_in_parent", "orientation_in_parent",
-                         child, "location_in_child", "orientation_in_child");
+      ConnectWithOffsets(node, index, parent, "location_in_parent", "orientation_in_parent", child,
+                         "location_in_child", "orientation_in_child");
     } else {
       doc_.Fail(node, joint.path, "joint names neither parent nor child frame");
     }
@@ -183,10 +195,10 @@ class JointReader {
     joint.element = ToElement(doc_, node);
     joint.where = doc_.Where(node);
     // Properties that are not "parameters" (radii_x_y_z, ...): the 3.x offsets.
-    joint.parameters = ReadNumericLeaves(
-        doc_, node, joint.path,
-        {"location_in_parent", "orientation_in_parent", "location", "orientation",
-         "location_in_child", "orientation_in_child", "reverse"});
+    joint.parameters =
+        ReadNumericLeaves(doc_, node, joint.path,
+                          {"location_in_parent", "orientation_in_parent", "location", "orientation",
+                           "location_in_child", "orientation_in_child", "reverse"});
     spec_.joints.push_back(std::move(joint));
     return spec_.joints.back();
   }
@@ -206,8 +218,7 @@ class JointReader {
     if (text.empty()) doc_.Fail(node, component, std::string(what) + " is empty");
     const int body = spec_.FindBody(text);
     if (body == kNone) {
-      doc_.Fail(node, component,
-                std::string(what) + " '" + std::string(text) + "' does not exist");
+      doc_.Fail(node, component, std::string(what) + " '" + std::string(text) + "' does not exist");
     }
     return body;
   }
@@ -223,12 +234,10 @@ class JointReader {
     joint.parent_body = parent;
     joint.child_body = child;
     joint.reverse = ReadBoolOr(doc_, node, "reverse", joint.path, false);
-    const Transform X_PF =
-        MakeTransform(ReadVec3Or(doc_, node, p_ori, joint.path, Vec3::Zero()),
-                      ReadVec3Or(doc_, node, p_loc, joint.path, Vec3::Zero()));
-    const Transform X_BM =
-        MakeTransform(ReadVec3Or(doc_, node, c_ori, joint.path, Vec3::Zero()),
-                      ReadVec3Or(doc_, node, c_loc, joint.path, Vec3::Zero()));
+    const Transform X_PF = MakeTransform(ReadVec3Or(doc_, node, p_ori, joint.path, Vec3::Zero()),
+                                         ReadVec3Or(doc_, node, p_loc, joint.path, Vec3::Zero()));
+    const Transform X_BM = MakeTransform(ReadVec3Or(doc_, node, c_ori, joint.path, Vec3::Zero()),
+                                         ReadVec3Or(doc_, node, c_loc, joint.path, Vec3::Zero()));
     joint.parent_frame = AddUpgradeFrame(node, joint.path, parent, X_PF);
     joint.child_frame = AddUpgradeFrame(node, joint.path, child, X_BM);
     joint.X_PF = X_PF;
@@ -390,8 +399,8 @@ class JointReader {
           if (kAxisNames[i] == name) slot = i;
         }
         if (slot < 0) {
-          doc_.Fail(axis, path, "TransformAxis '" + name +
-                                    "' is not one of rotation1..3, translation1..3");
+          doc_.Fail(axis, path,
+                    "TransformAxis '" + name + "' is not one of rotation1..3, translation1..3");
         }
         if (axes[slot]) doc_.Fail(axis, path, "TransformAxis '" + name + "' appears twice");
         axes[slot] = axis;
@@ -426,10 +435,10 @@ class JointReader {
         axis.function = ReadAxisFunction(a, component);
         if (axis.function && axis.function->NumArguments() != 1 &&
             axis.function->NumArguments() != static_cast<int>(axis.coordinates.size())) {
-          doc_.Fail(a, component, "the function takes " +
-                                      std::to_string(axis.function->NumArguments()) +
-                                      " arguments for " + std::to_string(axis.coordinates.size()) +
-                                      " coordinates");
+          doc_.Fail(a, component,
+                    "the function takes " + std::to_string(axis.function->NumArguments()) +
+                        " arguments for " + std::to_string(axis.coordinates.size()) +
+                        " coordinates");
         }
       }
       if (!axis.function) {

@@ -13,7 +13,7 @@ void ValidateSpec(ReadContext& ctx, const pugi::xml_node& model) {
   const XmlDocument& doc = ctx.doc();
   const int n = static_cast<int>(spec.bodies.size());
 
-  std::vector<std::vector<int>> joints_of(n);  // joints touching each body
+  std::vector<std::vector<int>> joints_of(n);      // joints touching each body
   std::vector<std::vector<int>> parent_joints(n);  // joints whose child is the body
   for (size_t j = 0; j < spec.joints.size(); ++j) {
     const JointSpec& joint = spec.joints[j];
@@ -35,8 +35,8 @@ void ValidateSpec(ReadContext& ctx, const pugi::xml_node& model) {
     const int b = stack.back();
     stack.pop_back();
     for (int j : joints_of[b]) {
-      const int other = spec.joints[j].parent_body == b ? spec.joints[j].child_body
-                                                        : spec.joints[j].parent_body;
+      const int other =
+          spec.joints[j].parent_body == b ? spec.joints[j].child_body : spec.joints[j].parent_body;
       if (!reached[other]) {
         reached[other] = true;
         stack.push_back(other);
@@ -81,10 +81,10 @@ void ValidateSpec(ReadContext& ctx, const pugi::xml_node& model) {
   for (const JointSpec& joint : spec.joints) {
     const int a = find(joint.parent_body), b = find(joint.child_body);
     if (a == b) {
-      ctx.spec().warnings.push_back(
-          {joint.where, joint.path,
-           "joint closes a kinematic loop between '" + spec.bodies[joint.parent_body].name +
-               "' and '" + spec.bodies[joint.child_body].name + "'"});
+      ctx.spec().warnings.push_back({joint.where, joint.path,
+                                     "joint closes a kinematic loop between '" +
+                                         spec.bodies[joint.parent_body].name + "' and '" +
+                                         spec.bodies[joint.child_body].name + "'"});
     } else {
       root[a] = b;
     }

@@ -20,13 +20,14 @@ namespace sinew {
 namespace {
 
 // Every Function class the reader knows, by its OpenSim tag.
-constexpr std::array<std::string_view, 12> kFunctionTypes = {
+constexpr std::array<std::string_view, 13> kFunctionTypes = {
     "Constant",
     "LinearFunction",
     "PolynomialFunction",
     "MultiplierFunction",
     "SimmSpline",
-    "NaturalCubicSpline",  // read as SimmSpline
+    "NaturalCubicSpline",  // OpenSim renames it SimmSpline
+    "natCubicSpline",      // older name, also renamed SimmSpline
     "PiecewiseLinearFunction",
     "PiecewiseConstantFunction",
     "StepFunction",
@@ -140,8 +141,8 @@ FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node& element,
     if (!inner) doc.Fail(element, component, "<MultiplierFunction> has no inner <function>");
     return std::make_shared<MultiplierFunction>(std::move(inner), scale);
   }
-  if (type == "SimmSpline" || type == "NaturalCubicSpline" || type == "PiecewiseLinearFunction" ||
-      type == "PiecewiseConstantFunction") {
+  if (type == "SimmSpline" || type == "NaturalCubicSpline" || type == "natCubicSpline" ||
+      type == "PiecewiseLinearFunction" || type == "PiecewiseConstantFunction") {
     return ReadKnotFunction(doc, element, component, type);
   }
   if (type == "Sine") {
@@ -194,6 +195,21 @@ FunctionPtr ReadFunctionProperty(const XmlDocument& doc, const pugi::xml_node& p
   }
   if (!function) return nullptr;
   return ReadFunction(doc, function, component);
+}
+
+pugi::xml_node FindFunctionProperty(const pugi::xml_node& parent, const std::string& property) {
+  for (pugi::xml_node child : parent.children()) {
+    if (child.type() != pugi::node_element) continue;
+    if (property == child.name()) return child;
+    if (IsFunctionType(child.name()) && property == child.attribute("name").value()) return child;
+  }
+  return {};
+}
+
+FunctionPtr ReadFunctionProperty(const XmlDocument& doc, const pugi::xml_node& parent,
+                                 const std::string& property, const std::string& component) {
+  pugi::xml_node node = FindFunctionProperty(parent, property);
+  return node ? ReadFunctionProperty(doc, node, component) : nullptr;
 }
 
 }  // namespace sinew

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstring>
 #include <fstream>
-#include <sstream>
 
 namespace sinew {
 namespace {
@@ -76,11 +76,14 @@ void MergeNestedComments(std::string& text) {
 }  // namespace
 
 XmlDocument XmlDocument::Load(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
   if (!in) throw Error(SourceLocation{file, 0}, "", "cannot open file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return Parse(std::move(buffer).str(), file);
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw Error(SourceLocation{file, 0}, "", "cannot read file");
+  std::string text(static_cast<size_t>(size), '\0');
+  in.seekg(0);
+  if (!in.read(text.data(), size)) throw Error(SourceLocation{file, 0}, "", "cannot read file");
+  return Parse(std::move(text), file);
 }
 
 XmlDocument XmlDocument::Parse(std::string text, const std::string& file) {
@@ -91,8 +94,8 @@ XmlDocument XmlDocument::Parse(std::string text, const std::string& file) {
   result.IndexLines();
   result.doc_ = std::make_shared<pugi::xml_document>();
   const unsigned options = pugi::parse_default | pugi::parse_ws_pcdata_single;
-  pugi::xml_parse_result parsed = result.doc_->load_buffer(result.text_.data(), result.text_.size(),
-                                                           options, pugi::encoding_utf8);
+  pugi::xml_parse_result parsed = result.doc_->load_buffer(
+      result.text_.data(), result.text_.size(), options, pugi::encoding_utf8);
   if (!parsed) {
     int line = 1;
     if (parsed.offset >= 0) {
@@ -106,14 +109,42 @@ XmlDocument XmlDocument::Parse(std::string text, const std::string& file) {
   if (!result.doc_->document_element()) {
     throw Error(SourceLocation{file, 1}, "", "the document has no root element");
   }
+  result.CheckDepth();
   return result;
+}
+
+void XmlDocument::CheckDepth() const {
+  // Readers walk the tree recursively; a hostile file must not exhaust the stack. Iterative walk.
+  const pugi::xml_node root = doc_->document_element();
+  pugi::xml_node node = root;
+  int depth = 0;
+  while (node) {
+    if (pugi::xml_node child = node.first_child()) {
+      node = child;
+      if (++depth > kMaxDepth) {
+        Fail(node, "", "elements are nested deeper than " + std::to_string(kMaxDepth) + " levels");
+      }
+      continue;
+    }
+    while (node && node != root && !node.next_sibling()) {
+      node = node.parent();
+      --depth;
+    }
+    if (!node || node == root) break;
+    node = node.next_sibling();
+  }
 }
 
 void XmlDocument::IndexLines() {
   line_starts_.clear();
   line_starts_.push_back(0);
-  for (size_t i = 0; i < text_.size(); ++i) {
-    if (text_[i] == '\n') line_starts_.push_back(i + 1);
+  const char* begin = text_.data();
+  const char* end = begin + text_.size();
+  for (const char* p = begin; p < end;) {
+    p = static_cast<const char*>(std::memchr(p, '\n', static_cast<size_t>(end - p)));
+    if (!p) break;
+    ++p;
+    line_starts_.push_back(static_cast<size_t>(p - begin));
   }
 }
 
@@ -129,7 +160,9 @@ void XmlDocument::Fail(const pugi::xml_node& node, const std::string& component,
   throw Error(Where(node), component, message);
 }
 
-std::string_view XmlDocument::Text(const pugi::xml_node& node) { return Trim(node.child_value()); }
+std::string_view XmlDocument::Text(const pugi::xml_node& node) {
+  return Trim(node.child_value());
+}
 
 double XmlDocument::ReadDouble(const pugi::xml_node& node, const std::string& component) const {
   std::vector<double> values = ReadNumbers(node, component, 1);
@@ -149,9 +182,8 @@ std::vector<double> XmlDocument::ReadNumbers(const pugi::xml_node& node,
     double value = 0;
     std::string_view token = text.substr(start, i - start);
     if (!ParseNumber(token, &value)) {
-      Fail(
-          node, component,
-          "<" + std::string(node.name()) + "> expects numbers, found '" + std::string(token) + "'");
+      Fail(node, component,
+           "<" + std::string(node.name()) + "> expects numbers, found '" + std::string(token) + "'");
     }
     values.push_back(value);
   }

@@ -4,11 +4,10 @@
 #pragma once
 
 #include <memory>
+#include <pugixml.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <pugixml.hpp>
 
 #include "common/error.h"
 #include "math/types.h"
@@ -50,10 +49,13 @@ class XmlDocument {
  private:
   XmlDocument() = default;
   void IndexLines();
+  // Fails when elements nest deeper than kMaxDepth (real models nest about 15 levels).
+  void CheckDepth() const;
+  static constexpr int kMaxDepth = 200;
 
   std::string file_;
-  std::string text_;                  // the buffer pugixml parsed (kept for offsets)
-  std::vector<size_t> line_starts_;   // offset of each line's first character
+  std::string text_;                 // the buffer pugixml parsed (kept for offsets)
+  std::vector<size_t> line_starts_;  // offset of each line's first character
   std::shared_ptr<pugi::xml_document> doc_;
 };
 

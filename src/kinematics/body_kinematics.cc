@@ -8,7 +8,12 @@
 namespace sinew {
 namespace {
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+
+// Appends a vector's entries; adding +0.0 turns -0.0 into 0.0, so files never show "-0".
+void Append(std::vector<double>& row, const Vec3& v) {
+  row.insert(row.end(), {v.x() + 0.0, v.y() + 0.0, v.z() + 0.0});
 }
+}  // namespace
 
 std::vector<std::string> BodyKinematicsLabels(const ModelSpec& spec) {
   std::vector<std::string> labels;
@@ -30,12 +35,13 @@ std::vector<double> CalcBodyKinematicsRow(const ModelSpec& spec, std::span<const
   for (size_t b = 0; b < spec.bodies.size(); ++b) {
     const Vec3 p = X_GB[b] * spec.bodies[b].mass_center;
     const Vec3 angles = BodyFixedXYZFromRotation(X_GB[b].R) * kDegreesPerRadian;
-    row.insert(row.end(), {p.x(), p.y(), p.z(), angles.x(), angles.y(), angles.z()});
+    Append(row, p);
+    Append(row, angles);
     weighted += spec.bodies[b].mass * p;
     total_mass += spec.bodies[b].mass;
   }
   const Vec3 com = total_mass > 0 ? Vec3(weighted / total_mass) : Vec3::Zero();
-  row.insert(row.end(), {com.x(), com.y(), com.z()});
+  Append(row, com);
   return row;
 }
 
@@ -48,12 +54,13 @@ std::vector<double> CalcBodyVelocityRow(const ModelSpec& spec, std::span<const T
   for (size_t b = 0; b < spec.bodies.size(); ++b) {
     const Vec3 v = CalcStationVelocity(X_GB[b], V_GB[b], spec.bodies[b].mass_center);
     const Vec3 w = V_GB[b].head<3>() * kDegreesPerRadian;
-    row.insert(row.end(), {v.x(), v.y(), v.z(), w.x(), w.y(), w.z()});
+    Append(row, v);
+    Append(row, w);
     weighted += spec.bodies[b].mass * v;
     total_mass += spec.bodies[b].mass;
   }
   const Vec3 com = total_mass > 0 ? Vec3(weighted / total_mass) : Vec3::Zero();
-  row.insert(row.end(), {com.x(), com.y(), com.z()});
+  Append(row, com);
   return row;
 }
 
@@ -68,8 +75,7 @@ std::vector<std::string> MarkerLocationLabels(const ModelSpec& spec) {
 std::vector<double> CalcMarkerLocationRow(const ModelSpec& spec, std::span<const Transform> X_GB) {
   std::vector<double> row;
   row.reserve(spec.markers.size() * 3);
-  for (const Vec3& p : CalcMarkerLocations(spec, X_GB))
-    row.insert(row.end(), {p.x(), p.y(), p.z()});
+  for (const Vec3& p : CalcMarkerLocations(spec, X_GB)) Append(row, p);
   return row;
 }
 

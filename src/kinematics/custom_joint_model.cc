@@ -33,6 +33,14 @@ CustomJointModel::CustomJointModel(std::array<TransformAxisTerm, 6> axes, int nq
       throw Error("CustomJointModel: axis without function");
     }
   }
+  for (int i = 0; i < 3; ++i) {
+    rotation_fixed_[i] = axes_[i].kind == TransformAxisTerm::Kind::kConstant;
+    fixed_rotation_[i] = RotationAboutUnitAxis(axes_[i].axis, axes_[i].value);
+  }
+}
+
+Mat3 CustomJointModel::CalcAxisRotation(int i, double s) const {
+  return rotation_fixed_[i] ? fixed_rotation_[i] : RotationAboutUnitAxis(axes_[i].axis, s);
 }
 
 void CustomJointModel::CalcS(std::span<const double> q, double* s) const {
@@ -116,21 +124,25 @@ double CustomJointModel::CalcSecondTerm(int i, std::span<const double> q,
 }
 
 void CustomJointModel::CalcRotationAxesInF(const double* s, Vec3* e, Mat3* R_FM) const {
-  const Mat3 R1 = RotationAboutUnitAxis(axes_[0].axis, s[0]);
-  const Mat3 R2 = RotationAboutUnitAxis(axes_[1].axis, s[1]);
-  const Mat3 R12 = R1 * R2;
+  const Mat3 R1 = CalcAxisRotation(0, s[0]);
+  const Mat3 R12 = R1 * CalcAxisRotation(1, s[1]);
   e[0] = axes_[0].axis;
   e[1] = R1 * axes_[1].axis;
   e[2] = R12 * axes_[2].axis;
-  if (R_FM) *R_FM = R12 * RotationAboutUnitAxis(axes_[2].axis, s[2]);
+  if (R_FM) *R_FM = R12 * CalcAxisRotation(2, s[2]);
 }
 
 Transform CustomJointModel::CalcX_FM(std::span<const double> q) const {
   double s[6];
   CalcS(q, s);
   Transform X;
-  X.R = RotationAboutUnitAxis(axes_[0].axis, s[0]) * RotationAboutUnitAxis(axes_[1].axis, s[1]) *
-        RotationAboutUnitAxis(axes_[2].axis, s[2]);
+  // Skip the constant zero rotations (every Pin, Slider, Universal, Planar joint has some).
+  bool any = false;
+  for (int i = 0; i < 3; ++i) {
+    if (rotation_fixed_[i] && axes_[i].value == 0.0) continue;
+    X.R = any ? Mat3(X.R * CalcAxisRotation(i, s[i])) : CalcAxisRotation(i, s[i]);
+    any = true;
+  }
   X.p = s[3] * axes_[3].axis + s[4] * axes_[4].axis + s[5] * axes_[5].axis;
   return X;
 }
@@ -152,6 +164,26 @@ Mat6X CustomJointModel::CalcH_FM(std::span<const double> q) const {
     }
   }
   return H;
+}
+
+SpatialVec CustomJointModel::CalcV_FM(std::span<const double> q, std::span<const double> u) const {
+  double s[6];
+  CalcS(q, s);
+  double J[6][6];
+  CalcJ(q, J);
+  Vec3 e[3];
+  CalcRotationAxesInF(s, e, nullptr);
+  SpatialVec V = SpatialVec::Zero();
+  for (int i = 0; i < 3; ++i) {
+    double sdot_rot = 0.0, sdot_trans = 0.0;
+    for (int k = 0; k < nq_; ++k) {
+      sdot_rot += J[i][k] * u[k];
+      sdot_trans += J[i + 3][k] * u[k];
+    }
+    V.head<3>() += sdot_rot * e[i];
+    V.tail<3>() += sdot_trans * axes_[i + 3].axis;
+  }
+  return V;
 }
 
 void CustomJointModel::CalcQDot(std::span<const double>, std::span<const double> u,

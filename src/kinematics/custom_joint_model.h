@@ -36,6 +36,7 @@ class CustomJointModel final : public JointModel {
   void CalcU(std::span<const double> q, std::span<const double> qdot,
              std::span<double> u) const override;
   SpatialVec CalcHDotU(std::span<const double> q, std::span<const double> u) const override;
+  SpatialVec CalcV_FM(std::span<const double> q, std::span<const double> u) const override;
 
   /// The six axes (for reports and tests).
   const std::array<TransformAxisTerm, 6>& axes() const { return axes_; }
@@ -50,8 +51,13 @@ class CustomJointModel final : public JointModel {
   // The three rotation axes in F for the current s: a1, R1 a2, R1 R2 a3; and R_FM.
   void CalcRotationAxesInF(const double* s, Vec3* e, Mat3* R_FM) const;
 
+  // R(a_i, s_i) for rotation axis i (0..2).
+  Mat3 CalcAxisRotation(int i, double s) const;
+
   std::array<TransformAxisTerm, 6> axes_;
   int nq_;
+  std::array<bool, 3> rotation_fixed_{};  // rotation axis i is constant: use fixed_rotation_[i]
+  std::array<Mat3, 3> fixed_rotation_;
 };
 
 }  // namespace sinew

@@ -91,6 +91,15 @@ void EllipsoidJointModel::CalcU(std::span<const double> q, std::span<const doubl
                                 std::span<double> u) const {
   AngVel(q, qdot, u);
 }
+SpatialVec EllipsoidJointModel::CalcV_FM(std::span<const double> q,
+                                         std::span<const double> u) const {
+  const Vec3 n = BodyFixedXYZ(q[0], q[1], q[2]).col(2);
+  const Vec3 w(u[0], u[1], u[2]);
+  SpatialVec V;
+  V << w, radii_.cwiseProduct(w.cross(n));
+  return V;
+}
+
 SpatialVec EllipsoidJointModel::CalcHDotU(std::span<const double> q,
                                           std::span<const double> u) const {
   // d/dt (r .* (w x n)) with wdot = 0: r .* (w x (w x n)).

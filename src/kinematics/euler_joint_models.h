@@ -10,6 +10,11 @@ namespace sinew {
 /// BallJoint: q = body-fixed X-Y-Z angles of R_FM (rad), u = w_FM in F (rad/s), p_FM = 0.
 class BallJointModel final : public JointModel {
  public:
+  SpatialVec CalcV_FM(std::span<const double>, std::span<const double> u) const override {
+    SpatialVec V;
+    V << u[0], u[1], u[2], 0, 0, 0;
+    return V;
+  }
   int nq() const override { return 3; }
   Transform CalcX_FM(std::span<const double> q) const override;
   Mat6X CalcH_FM(std::span<const double> q) const override;
@@ -23,6 +28,11 @@ class BallJointModel final : public JointModel {
 /// FreeJoint: q = [3 body-fixed X-Y-Z angles (rad); p_FM in F (m)], u = [w_FM in F; v_FM in F].
 class FreeJointModel final : public JointModel {
  public:
+  SpatialVec CalcV_FM(std::span<const double>, std::span<const double> u) const override {
+    SpatialVec V;
+    V << u[0], u[1], u[2], u[3], u[4], u[5];
+    return V;
+  }
   int nq() const override { return 6; }
   Transform CalcX_FM(std::span<const double> q) const override;
   Mat6X CalcH_FM(std::span<const double> q) const override;
@@ -48,6 +58,7 @@ class EllipsoidJointModel final : public JointModel {
   void CalcU(std::span<const double> q, std::span<const double> qdot,
              std::span<double> u) const override;
   SpatialVec CalcHDotU(std::span<const double> q, std::span<const double> u) const override;
+  SpatialVec CalcV_FM(std::span<const double> q, std::span<const double> u) const override;
 
   const Vec3& radii() const { return radii_; }
 

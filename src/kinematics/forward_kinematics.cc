@@ -19,6 +19,10 @@ std::array<double, 6> Gather(const TreeJoint& t, std::span<const double> values)
 
 void CalcBodyPoses(const KinematicTree& tree, std::span<const double> q,
                    std::span<Transform> X_GB) {
+  if (static_cast<int>(q.size()) < tree.num_coordinates() ||
+      static_cast<int>(X_GB.size()) < tree.num_bodies()) {
+    throw Error("CalcBodyPoses: q or X_GB is too short for the model");
+  }
   X_GB[kGroundIndex] = Transform();
   for (const TreeJoint& t : tree.joints()) {
     const std::array<double, 6> q_local = Gather(t, q);
@@ -31,19 +35,20 @@ void CalcBodyPoses(const KinematicTree& tree, std::span<const double> q,
 void CalcBodyVelocities(const KinematicTree& tree, std::span<const double> q,
                         std::span<const double> u, std::span<const Transform> X_GB,
                         std::span<SpatialVec> V_GB) {
+  if (static_cast<int>(q.size()) < tree.num_coordinates() ||
+      static_cast<int>(u.size()) < tree.num_coordinates() ||
+      static_cast<int>(X_GB.size()) < tree.num_bodies() ||
+      static_cast<int>(V_GB.size()) < tree.num_bodies()) {
+    throw Error("CalcBodyVelocities: q, u, X_GB or V_GB is too short for the model");
+  }
   V_GB[kGroundIndex].setZero();
   for (const TreeJoint& t : tree.joints()) {
     const std::array<double, 6> q_local = Gather(t, q);
     const std::array<double, 6> u_local = Gather(t, u);
     const std::span<const double> qs(q_local.data(), t.nq);
     // V_FM in F from the joint's velocity map.
-    Vec3 w_rel = Vec3::Zero(), v_rel = Vec3::Zero();
-    if (t.nq > 0) {
-      const Mat6X H = t.model->CalcH_FM(qs);
-      const SpatialVec V_FM = H * Eigen::Map<const VecX>(u_local.data(), t.nq);
-      w_rel = V_FM.head<3>();
-      v_rel = V_FM.tail<3>();
-    }
+    const SpatialVec V_FM = t.model->CalcV_FM(qs, std::span<const double>(u_local.data(), t.nq));
+    Vec3 w_rel = V_FM.head<3>(), v_rel = V_FM.tail<3>();
     // Relative motion of the outboard joint frame J2 in the inboard one J1, in J1. Reversed:
     // the motion of F in M: w_MF = -R_MF w_FM, v_MF = w_MF x p_MF - R_MF v_FM.
     if (t.reversed) {

@@ -13,7 +13,8 @@ namespace sinew {
 
 /// X_GB for every body (ground included, identity) from q (ModelSpec::coordinates order, rad
 /// or m): X_GB = X_GP * X_PF * X_FM(q) * inverse(X_BM) (inverted across reversed joints).
-/// `X_GB` must hold tree.num_bodies() entries. No heap allocation.
+/// `X_GB` must hold tree.num_bodies() entries (sinew::Error if q or X_GB is too short). No heap
+/// allocation.
 void CalcBodyPoses(const KinematicTree& tree, std::span<const double> q, std::span<Transform> X_GB);
 
 /// Spatial velocities V_GB = [w_GB; v_GBo], both expressed in G (rad/s, m/s; v of the body

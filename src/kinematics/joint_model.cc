@@ -71,8 +71,16 @@ TransformAxisTerm MakeCustomTerm(const JointSpec& joint, const TransformAxisSpec
   const int n = static_cast<int>(t.args.size());
   if (n == 0) {
     t.kind = Kind::kConstant;
-    const double zero[1] = {0.0};
-    t.value = t.function->CalcN(zero);
+    if (t.function->TypeName() == "LinearFunction") {
+      // OpenSim evaluates an axis without coordinates through SimTK::Function::Linear with an
+      // empty argument vector, which returns coefficients[0]: the slope, not the intercept.
+      t.value = t.function->CalcDerivative(0.0, 1);
+    } else {
+      // Constant (and MultiplierFunction of a Constant) ignore the argument; the corpus has no
+      // other function on an axis without coordinates.
+      const double zero[1] = {0.0};
+      t.value = t.function->CalcN(zero);
+    }
   } else if (n == 1) {
     if (t.function->NumArguments() != 1) {
       Fail(joint, axis_spec.name + ": function of " + std::to_string(t.function->NumArguments()) +

@@ -37,6 +37,12 @@ class JointModel {
                      std::span<double> u) const = 0;
   /// The bias term Hdot(q, u) * u of the spatial acceleration A_FM_F = H * udot + Hdot * u.
   virtual SpatialVec CalcHDotU(std::span<const double> q, std::span<const double> u) const = 0;
+  /// V_FM_F = H_FM(q) * u. Joint models override it to avoid allocating H (forward
+  /// kinematics calls it per joint and pose); the default forms H.
+  virtual SpatialVec CalcV_FM(std::span<const double> q, std::span<const double> u) const {
+    if (nq() == 0) return SpatialVec::Zero();
+    return CalcH_FM(q) * Eigen::Map<const VecX>(u.data(), nq());
+  }
 };
 
 /// Builds the JointModel of `spec.joints[joint_index]` (every JointType but kUnknown).

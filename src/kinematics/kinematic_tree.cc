@@ -65,12 +65,11 @@ KinematicTree::KinematicTree(const ModelSpec& spec)
     }
   }
   for (int j = 0; j < num_joints; ++j) {
-    if (!used[j]) {
-      const JointSpec& joint = spec.joints[j];
-      throw Error(joint.where, joint.path.empty() ? joint.name : joint.path,
-                  placed[joint.parent_body]
-                      ? "joint closes a kinematic loop (not supported by forward kinematics)"
-                      : "joint is not connected to ground");
+    if (used[j]) continue;
+    const JointSpec& joint = spec.joints[j];
+    if (placed[joint.parent_body] && placed[joint.child_body]) {
+      MakeJointModel(spec, j);  // still a joint Sinew must be able to model
+      loop_joints_.push_back(j);
     }
   }
   for (int b = 0; b < num_bodies_; ++b) {

@@ -32,13 +32,19 @@ struct TreeJoint {
 class KinematicTree {
  public:
   /// Builds the tree. Throws sinew::Error (file, line, component) for a joint that cannot be
-  /// modelled, a body no joint connects to ground, or a closed loop of joints.
+  /// modelled or a body no joint connects to ground. A joint whose two bodies are already
+  /// placed closes a loop: it does not place anything and is listed in loop_joints() (OpenSim
+  /// likewise cuts such a joint, splitting its child body with a weld constraint, so it only
+  /// acts when the model is assembled or simulated).
   explicit KinematicTree(const ModelSpec& spec);
 
   int num_bodies() const { return num_bodies_; }
   int num_coordinates() const { return num_coordinates_; }
   /// Joints in placement order (every body but ground placed once).
   const std::vector<TreeJoint>& joints() const { return joints_; }
+
+  /// Joints (indices into ModelSpec::joints) that close kinematic loops.
+  const std::vector<int>& loop_joints() const { return loop_joints_; }
 
   /// Coordinate default values (rad or m), in ModelSpec::coordinates order.
   const std::vector<double>& default_q() const { return default_q_; }
@@ -49,6 +55,7 @@ class KinematicTree {
   int num_bodies_ = 0;
   int num_coordinates_ = 0;
   std::vector<TreeJoint> joints_;
+  std::vector<int> loop_joints_;
   std::vector<double> default_q_, default_u_;
 };
 

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "common/error.h"
-#include "functions/simm_spline.h"
+#include "functions/functions.h"
 
 namespace sinew {
 namespace {

@@ -89,6 +89,13 @@ TEST(FunctionTypesTest, PiecewiseLinearExtrapolatesWithTheEndSlopes) {
   EXPECT_EQ(f.CalcDerivative(0.5, 1), -0.5);
   EXPECT_EQ(f.CalcDerivative(5.0, 1), -0.5);
   EXPECT_EQ(f.CalcDerivative(0.5, 2), 0.0);
+  // Exactly on an interior knot the slope is that of the segment OpenSim's bisection lands on:
+  // for five knots and x = x[3] the first probe k = 2 stops, giving the LEFT segment's slope.
+  PiecewiseLinearFunction g({0.0, 1.0, 2.0, 3.0, 4.0}, {0.0, 1.0, 3.0, 6.0, 10.0});
+  EXPECT_EQ(g.CalcDerivative(3.0, 1), 3.0);
+  EXPECT_EQ(g.CalcDerivative(3.0 + 1e-12, 1), 4.0);
+  EXPECT_EQ(g.Calc(3.0), 6.0);
+  ExpectDerivativesMatchFiniteDifferences(g, {0.5, 1.5, 2.7}, 1e-8);
 }
 
 TEST(FunctionTypesTest, PiecewiseConstantHoldsEachValueUntilTheNextKnot) {

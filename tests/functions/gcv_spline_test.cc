@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "common/error.h"
@@ -98,12 +99,128 @@ TEST(GCVSplineTest, QuinticIsSmoothNaturalAndReproducesQuadratics) {
   }
 }
 
-TEST(GCVSplineTest, RejectsWhatIsNotImplementedOrInvalid) {
-  EXPECT_THROW(GCVSpline(3, kX, kY, 0.01), Error);  // smoothing
-  EXPECT_THROW(GCVSpline(3, kX, kY, -1.0), Error);  // GCV
+// Penalized least squares of a spline: sum (y - s(x_i))^2 + p * integral (s^(m))^2 for m = 1, 2
+// (s' or s'' from the spline; exact 2-point Gauss per interval; zero outside the knots).
+double SmoothingObjective(const GCVSpline& s, const std::vector<double>& x,
+                          const std::vector<double>& y, double p) {
+  const int m = s.half_order();
+  double sum = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) sum += std::pow(y[i] - s.Calc(x[i]), 2);
+  double integral = 0.0;
+  const double g = 1.0 / std::sqrt(3.0);
+  for (size_t k = 0; k + 1 < x.size(); ++k) {
+    const double mid = 0.5 * (x[k] + x[k + 1]), half = 0.5 * (x[k + 1] - x[k]);
+    for (double t : {-g, g}) integral += half * std::pow(s.CalcDerivative(mid + t * half, m), 2);
+  }
+  return sum + p * integral;
+}
+
+// Noisy samples of a smooth function (uniform noise of half-width 0.05: variance 0.05^2 / 3).
+struct NoisyData {
+  std::vector<double> x, y, truth;
+  double variance = 0.05 * 0.05 / 3.0;
+};
+NoisyData MakeNoisyData(int n) {
+  NoisyData d;
+  std::mt19937 random(12345);
+  std::uniform_real_distribution<double> noise(-0.05, 0.05);
+  for (int i = 0; i < n; ++i) {
+    const double t = 0.02 * i;
+    d.x.push_back(t);
+    d.truth.push_back(std::sin(2.0 * t) + 0.5 * t);
+    d.y.push_back(d.truth.back() + noise(random));
+  }
+  return d;
+}
+
+TEST(GCVSplineTest, SmoothingSplineMinimizesThePenalizedLeastSquares) {
+  // For fixed p the fit must beat every other natural spline on the same knots: fits with other
+  // p, the interpolant, and the fit to perturbed data. Checks the optimality rows (their sign
+  // and scale) independently of how they were derived.
+  NoisyData d = MakeNoisyData(30);
+  for (int m : {1, 2}) {
+    const double p = m == 1 ? 1e-3 : 1e-5;
+    GCVSpline best = GCVSpline::WithSmoothingParameter(m, d.x, d.y, p);
+    const double objective = SmoothingObjective(best, d.x, d.y, p);
+    std::vector<double> perturbed = d.y;
+    perturbed[7] += 0.01;
+    for (const GCVSpline& other :
+         {GCVSpline::WithSmoothingParameter(m, d.x, d.y, 0.5 * p),
+          GCVSpline::WithSmoothingParameter(m, d.x, d.y, 2.0 * p), GCVSpline(m, d.x, d.y),
+          GCVSpline::WithSmoothingParameter(m, d.x, perturbed, p)}) {
+      EXPECT_LT(objective, SmoothingObjective(other, d.x, d.y, p)) << m;
+    }
+    // Stationarity: a small change of the fit changes the objective only to second order.
+    EXPECT_NEAR(objective,
+                SmoothingObjective(GCVSpline::WithSmoothingParameter(m, d.x, d.y, p * (1 + 1e-6)),
+                                   d.x, d.y, p),
+                1e-9 * objective);
+  }
+}
+
+TEST(GCVSplineTest, SmoothingMatchesTheRadialFormAndLimits) {
+  // Quintic smoothing spline in the radial form: (K + lambda I) a + T b = y, T' a = 0 with
+  // K_ij = |x_i - x_j|^5 and lambda = (-1)^m 2 (2m-1)! p (the jump of s^(5) at x_i is 2 5! a_i).
+  NoisyData d = MakeNoisyData(15);
+  const int m = 3, n = 15;
+  const double p = 1e-9;
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n + m, n + m);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + m);
+  const double lambda = -2.0 * 120.0 * p;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) a(i, j) = std::pow(std::abs(d.x[i] - d.x[j]), 5);
+    a(i, i) += lambda;
+    for (int k = 0; k < m; ++k) a(i, n + k) = a(n + k, i) = std::pow(d.x[i], k);
+    rhs(i) = d.y[i];
+  }
+  Eigen::VectorXd c = a.fullPivLu().solve(rhs);
+  GCVSpline spline = GCVSpline::WithSmoothingParameter(m, d.x, d.y, p);
+  for (double t = -0.1; t <= 0.4; t += 0.013) {
+    double expected = 0.0;
+    for (int j = 0; j < n; ++j) expected += c(j) * std::pow(std::abs(t - d.x[j]), 5);
+    for (int k = 0; k < m; ++k) expected += c(n + k) * std::pow(t, k);
+    EXPECT_NEAR(spline.Calc(t), expected, 1e-9) << t;
+  }
+  // A very stiff cubic smoothing spline is the least-squares line.
+  GCVSpline stiff = GCVSpline::WithSmoothingParameter(2, d.x, d.y, 1e6);
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (int i = 0; i < n; ++i) {
+    sx += d.x[i], sy += d.y[i], sxx += d.x[i] * d.x[i], sxy += d.x[i] * d.y[i];
+  }
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const double intercept = (sy - slope * sx) / n;
+  for (double t : {0.0, 0.1, 0.28}) EXPECT_NEAR(stiff.Calc(t), intercept + slope * t, 1e-6);
+}
+
+TEST(GCVSplineTest, ErrorVarianceAndGcvChooseTheCriterionMinimum) {
+  NoisyData d = MakeNoisyData(40);
+  for (double error_variance : {d.variance, -1.0}) {
+    GCVSpline fit(3, d.x, d.y, error_variance);
+    const double p = fit.smoothing_parameter();
+    ASSERT_GT(p, 0.0);
+    const double at_p = GCVSpline::CalcSmoothingCriterion(3, d.x, d.y, error_variance, p);
+    for (double factor : {0.9, 1.1, 0.5, 2.0}) {
+      EXPECT_LE(at_p,
+                GCVSpline::CalcSmoothingCriterion(3, d.x, d.y, error_variance, p * factor) + 1e-15)
+          << error_variance << " " << factor;
+    }
+    // The smoothed curve is closer to the truth than the noisy samples are.
+    double data_error = 0.0, fit_error = 0.0;
+    for (size_t i = 0; i < d.x.size(); ++i) {
+      data_error += std::pow(d.y[i] - d.truth[i], 2);
+      fit_error += std::pow(fit.Calc(d.x[i]) - d.truth[i], 2);
+    }
+    EXPECT_LT(fit_error, 0.5 * data_error) << error_variance;
+  }
+  EXPECT_EQ(GCVSpline(3, d.x, d.y, 0.0).smoothing_parameter(), 0.0);
+}
+
+TEST(GCVSplineTest, RejectsInvalidInput) {
   EXPECT_THROW(GCVSpline(0, kX, kY), Error);
+  EXPECT_THROW(GCVSpline(5, kX, kY), Error);
   EXPECT_THROW(GCVSpline(3, {0, 1, 2, 3, 4}, {0, 1, 2, 3, 4}), Error);  // needs 6 points
   EXPECT_THROW(GCVSpline(1, {0, 1, 1}, {0, 1, 2}), Error);              // not increasing
+  EXPECT_THROW(GCVSpline::WithSmoothingParameter(3, kX, kY, -1.0), Error);
 }
 
 }  // namespace

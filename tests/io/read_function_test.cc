@@ -10,6 +10,7 @@
 
 #include "common/error.h"
 #include "functions/constant.h"
+#include "functions/gcv_spline.h"
 #include "functions/linear_function.h"
 #include "functions/multiplier_function.h"
 #include "functions/piecewise_linear_function.h"
@@ -50,6 +51,8 @@ TEST(ReadFunctionTest, NaturalCubicSplineIsReadAsSimmSpline) {
   ASSERT_TRUE(spline);
   // y = x^2 sampled at 4 knots: the FMM end conditions reproduce it exactly.
   EXPECT_NEAR(f->Calc(0.5), 0.25, 1e-14);
+  EXPECT_EQ(ReadRoot("<natCubicSpline><x>0 1</x><y>0 1</y></natCubicSpline>")->TypeName(),
+            "SimmSpline");
 }
 
 TEST(ReadFunctionTest, ConstantLinearPolynomial) {
@@ -130,6 +133,13 @@ TEST(ReadFunctionTest, OtherTypesWithTheirPropertyNames) {
       "<y> 0.5 0.4 0.3 0.18 0.09 0.04 -0.008</y><weights> 1 1 1 1 1 1 1</weights>"
       "<coefficients> 0 0 0 0 0 0 0</coefficients></GCVSpline>");
   EXPECT_NEAR(gcv->Calc(0.3), 0.18, 1e-14);
+  // A smoothing fit (known error variance) is read too; it no longer interpolates.
+  auto smoothed = std::dynamic_pointer_cast<const GCVSpline>(ReadRoot(
+      "<GCVSpline><half_order>2</half_order><error_variance>0.001</error_variance>"
+      "<x> 0 0.1 0.2 0.3 0.4 0.5 0.6 0.7</x><y> 0.5 0.42 0.3 0.21 0.09 0.04 -0.01 -0.05</y>"
+      "</GCVSpline>"));
+  ASSERT_TRUE(smoothed);
+  EXPECT_GT(smoothed->smoothing_parameter(), 0.0);
   for (const char* type :
        {"Constant", "SimmSpline", "NaturalCubicSpline", "GCVSpline", "Sine", "StepFunction",
         "MultivariatePolynomialFunction", "PiecewiseConstantFunction", "PiecewiseLinearFunction"}) {
@@ -137,6 +147,29 @@ TEST(ReadFunctionTest, OtherTypesWithTheirPropertyNames) {
   }
   EXPECT_FALSE(IsFunctionType("function"));
   EXPECT_FALSE(IsFunctionType("Body"));
+}
+
+TEST(ReadFunctionTest, FindsPropertiesInBothForms) {
+  XmlDocument doc = XmlDocument::Parse(
+      "<TransformAxis name=\"rotation1\">\n"
+      "  <coordinates>knee_angle_r</coordinates>\n"
+      "  <SimmSpline name=\"function\"><x>0 1</x><y>0 2</y></SimmSpline>\n"
+      "</TransformAxis>\n",
+      "a.osim");
+  FunctionPtr inline_form = ReadFunctionProperty(doc, doc.root(), "function", "/a");
+  ASSERT_TRUE(inline_form);
+  EXPECT_DOUBLE_EQ(inline_form->Calc(0.5), 1.0);
+  EXPECT_EQ(ReadFunctionProperty(doc, doc.root(), "x_location", "/a"), nullptr);
+  EXPECT_FALSE(FindFunctionProperty(doc.root(), "coordinates").empty());  // a plain child too
+  XmlDocument wrapped = XmlDocument::Parse(
+      "<MovingPathPoint>\n  <x_location>\n    <NaturalCubicSpline name=\"\">\n"
+      "      <x>0 1 2</x><y>0 1 4</y>\n    </NaturalCubicSpline>\n  </x_location>\n"
+      "  <y_location/>\n</MovingPathPoint>\n",
+      "b.osim");
+  FunctionPtr x = ReadFunctionProperty(wrapped, wrapped.root(), "x_location", "/b");
+  ASSERT_TRUE(x);
+  EXPECT_DOUBLE_EQ(x->Calc(1.5), 2.25);  // three knots: the parabola
+  EXPECT_EQ(ReadFunctionProperty(wrapped, wrapped.root(), "y_location", "/b"), nullptr);
 }
 
 TEST(ReadFunctionTest, EmptyWrapperGivesNull) {
@@ -171,10 +204,8 @@ TEST(ReadFunctionTest, ErrorsNameFileLineAndComponent) {
       "<StepFunction>\n<transition_start_time>1</transition_start_time>\n"
       "<transition_end_time>1</transition_end_time></StepFunction>",
       1, "must differ");
-  ExpectError(
-      "<GCVSpline>\n<half_order>3</half_order><error_variance>0.1</error_variance>"
-      "<x>0 1 2 3 4 5</x><y>0 1 2 3 4 5</y></GCVSpline>",
-      1, "smoothing");
+  ExpectError("<GCVSpline>\n<half_order>3</half_order><x>0 1 2 3</x><y>0 1 2 3</y></GCVSpline>", 1,
+              "at least 6 points");
   ExpectError("<GCVSpline>\n<half_order>2.5</half_order></GCVSpline>", 2, "integer");
   ExpectError(
       "<MultivariatePolynomialFunction>\n<coefficients>1 1</coefficients>"

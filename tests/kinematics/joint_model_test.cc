@@ -140,6 +140,7 @@ TEST_P(JointModelTest, VelocityMapMatchesFiniteDifferences) {
     ASSERT_EQ(H.cols(), n) << c.name;
     const Eigen::Map<const VecX> u_vec(u.data(), n);
     const SpatialVec V = H * u_vec;
+    EXPECT_LT((joint->CalcV_FM(q, u) - V).norm(), 1e-14) << c.name;
     // Central differences with h = 1e-5: truncation ~h^2 |X'''| ~ 1e-10, rounding ~1e-11.
     const SpatialVec V_num = NumericVelocity(*joint, q, qdot, 1e-5);
     EXPECT_LT((V - V_num).norm(), 1e-8)
@@ -287,6 +288,18 @@ TEST(JointTransformTest, CustomJointComposesBodyFixedRotationsAndUnrotatedTransl
   EXPECT_TRUE(X.p.isApprox(p, 1e-14));
 }
 
+TEST(JointTransformTest, LinearFunctionWithoutCoordinatesGivesItsSlopeAsOpenSimDoes) {
+  // SimTK::Function::Linear called with no arguments returns coefficients[0].
+  ModelSpec spec = MakeCustomSpec();
+  spec.joints[0].spatial_transform[4].function = std::make_shared<TestLinearFunction>(0.3, 0.7);
+  const auto joint = MakeJointModel(spec, 0);
+  const ModelSpec reference_spec = MakeCustomSpec();  // translation2 = Constant(0.05)
+  const auto reference = MakeJointModel(reference_spec, 0);
+  const double q[] = {0.3, -0.5, 0.8};
+  const Vec3 dp = joint->CalcX_FM(q).p - reference->CalcX_FM(q).p;
+  EXPECT_TRUE(dp.isApprox(Vec3(0, 0.3 - 0.05, 0), 1e-15)) << dp.transpose();
+}
+
 TEST(JointModelErrorsTest, WrongCoordinateCountNamesTheJoint) {
   ModelSpec spec = MakeSpec(JointType::kPin, "PinJoint", 2);
   spec.joints[0].where = {"model.osim", 42};
@@ -306,6 +319,18 @@ TEST(JointModelErrorsTest, CollinearCustomAxesAndMissingParametersAreErrors) {
   EXPECT_THROW(MakeJointModel(spec, 0), Error);
   EXPECT_THROW(MakeJointModel(MakeSpec(JointType::kEllipsoid, "EllipsoidJoint", 3), 0), Error);
   EXPECT_THROW(MakeJointModel(MakeSpec(JointType::kUnknown, "PluginJoint", 1), 0), Error);
+}
+
+TEST(JointModelErrorsTest, CustomAxisWithForeignCoordinateOrWrongArityIsAnError) {
+  ModelSpec foreign = MakeCustomSpec();
+  CoordinateSpec other;
+  other.name = "other";
+  foreign.coordinates.push_back(other);
+  foreign.joints[0].spatial_transform[0].coordinates = {3};  // not one of the joint's
+  EXPECT_THROW(MakeJointModel(foreign, 0), Error);
+  ModelSpec arity = MakeCustomSpec();
+  arity.joints[0].spatial_transform[1].coordinates = {0};  // a 2-argument function, 1 coordinate
+  EXPECT_THROW(MakeJointModel(arity, 0), Error);
 }
 
 }  // namespace

@@ -1,0 +1,76 @@
+// `sinew export MODEL.osim [--motion FILE | --states FILE] --vis primitives|mesh
+//  --out FILE.glb|FILE.html`: the model (and its motion) for a glTF viewer or a browser.
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/sinew/commands.h"
+#include "io/osim_reader.h"
+#include "io/storage.h"
+#include "viz/export_animation.h"
+#include "viz/motion_poses.h"
+
+namespace sinew::cli {
+namespace {
+
+struct ExportArgs {
+  std::string model;
+  std::string motion;
+  std::string states;
+  std::string vis = "mesh";
+  std::string out;
+  std::vector<std::string> geometry_dirs;
+  double fps = 0;
+};
+
+void PrintWarnings(const Diagnostics& warnings) {
+  for (const Diagnostic& d : warnings) std::cerr << "sinew: warning: " << d.Format() << "\n";
+}
+
+void RunExport(const ExportArgs& args) {
+  const ModelSpec spec = ReadOsim(args.model);
+  viz::ExportOptions options;
+  options.visual.mode = viz::ParseVisMode(args.vis);
+  options.visual.geometry_dirs = args.geometry_dirs;
+  options.max_fps = args.fps;
+  viz::BodyMotion motion;
+  const std::string& table_file = args.motion.empty() ? args.states : args.motion;
+  if (table_file.empty()) {
+    motion = viz::DefaultPoseMotion(spec);
+  } else {
+    Diagnostics notes;
+    motion = viz::MotionFromTable(spec, ReadStorage(table_file), &notes);
+    if (!notes.empty()) {
+      std::cerr << "sinew: note: " << notes.size()
+                << " coordinates or columns not matched between model and table; first: "
+                << notes.front().Format() << "\n";
+    }
+  }
+  PrintWarnings(viz::ExportAnimation(spec, motion, args.out, options));
+  std::cout << "wrote " << args.out << " (" << spec.bodies.size() << " bodies, "
+            << motion.times.size() << " frames)\n";
+}
+
+}  // namespace
+
+void AddExportCommand(CLI::App& app) {
+  auto args = std::make_shared<ExportArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "export",
+      "Export a model and its motion as binary glTF (.glb) or a self-contained HTML viewer");
+  cmd->add_option("model", args->model, "OpenSim model file (.osim)")->required();
+  auto* motion = cmd->add_option("--motion", args->motion, "Coordinates over time (.mot/.sto)");
+  auto* states = cmd->add_option("--states", args->states, "States over time (.sto)");
+  motion->excludes(states);
+  cmd->add_option("--vis", args->vis, "Visualization: primitives, mesh or none")
+      ->check(CLI::IsMember({"primitives", "mesh", "none"}));
+  cmd->add_option("--geometry-dir", args->geometry_dirs,
+                  "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
+  cmd->add_option("--fps", args->fps, "Keep at most this many frames per second (default: all)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--out,-o", args->out, "Output file: .glb or .html")->required();
+  cmd->callback([args] { RunExport(*args); });
+}
+
+}  // namespace sinew::cli

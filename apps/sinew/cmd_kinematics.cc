@@ -1,0 +1,99 @@
+// `sinew kinematics MODEL.osim [--motion FILE] --out DIR`: body mass-centre positions and
+// orientations (OpenSim BodyKinematics layout) and marker locations, at the default pose or for
+// every row of a motion file.
+#include <filesystem>
+#include <iostream>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "apps/sinew/commands.h"
+#include "common/error.h"
+#include "io/osim_reader.h"
+#include "io/storage.h"
+#include "kinematics/body_kinematics.h"
+#include "kinematics/coordinate_motion.h"
+#include "kinematics/forward_kinematics.h"
+#include "kinematics/kinematic_tree.h"
+
+namespace sinew::cli {
+namespace {
+
+struct Options {
+  std::string model;
+  std::string motion;
+  std::string out;
+};
+
+void Run(const Options& options) {
+  const ModelSpec spec = ReadOsim(options.model);
+  const KinematicTree tree(spec);
+  for (int j : tree.loop_joints()) {
+    std::cerr << "sinew: note: joint '" << spec.joints[j].name
+              << "' closes a kinematic loop; it is not enforced by forward kinematics\n";
+  }
+  std::vector<double> q = tree.default_q();
+  std::vector<Transform> X_GB(tree.num_bodies());
+
+  Storage motion;
+  MotionColumnMap map;
+  if (!options.motion.empty()) {
+    motion = ReadStorage(options.motion);
+    for (const Diagnostic& note : motion.notes)
+      std::cerr << "sinew: note: " << note.Format() << "\n";
+    map = MapMotionColumns(spec, motion.labels);
+    for (const std::string& label : map.unknown) {
+      std::cerr << "sinew: warning: " << options.motion << ": column '" << label
+                << "' names no coordinate of the model; ignored\n";
+    }
+    for (int c : map.missing) {
+      std::cerr << "sinew: note: coordinate '" << spec.coordinates[c].name
+                << "' is not in the motion; it keeps its default value\n";
+    }
+  } else {
+    motion.time = {0.0};  // one row at the default pose
+  }
+
+  Storage bodies, markers;
+  bodies.name = "Positions";
+  bodies.labels = BodyKinematicsLabels(spec);
+  // OpenSim writes these angles in degrees under inDegrees=no; we write what they are.
+  bodies.in_degrees = true;
+  markers.name = "Model Marker Locations";
+  markers.labels = MarkerLocationLabels(spec);
+  const size_t num_columns = motion.labels.size();
+  for (int r = 0; r < motion.NumRows(); ++r) {
+    if (num_columns > 0) {
+      ApplyMotionRow(spec, map,
+                     std::span<const double>(motion.values.data() + r * num_columns, num_columns),
+                     motion.in_degrees, q);
+    }
+    CalcBodyPoses(tree, q, X_GB);
+    bodies.AppendRow(motion.time[r], CalcBodyKinematicsRow(spec, X_GB));
+    markers.AppendRow(motion.time[r], CalcMarkerLocationRow(spec, X_GB));
+  }
+
+  std::error_code ec;
+  std::filesystem::create_directories(options.out, ec);
+  if (ec) {
+    throw Error(SourceLocation{options.out, 0}, "", "cannot create directory: " + ec.message());
+  }
+  const std::filesystem::path dir(options.out);
+  WriteStorage(bodies, (dir / "bodies.sto").string());
+  if (!spec.markers.empty()) WriteStorage(markers, (dir / "markers.sto").string());
+}
+
+}  // namespace
+
+void AddKinematicsCommand(CLI::App& app) {
+  auto options = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand(
+      "kinematics", "Body positions/orientations and marker locations from coordinate values");
+  cmd->add_option("model", options->model, "OpenSim model (.osim)")->required();
+  cmd->add_option("--motion", options->motion,
+                  "Coordinates over time (.mot/.sto); without it, one row at the default pose");
+  cmd->add_option("--out", options->out, "Output directory (bodies.sto, markers.sto)")->required();
+  cmd->callback([options] { Run(*options); });
+}
+
+}  // namespace sinew::cli

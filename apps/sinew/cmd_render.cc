@@ -1,0 +1,86 @@
+// `sinew render MODEL.osim [--states FILE --time T] --out FILE.png`: a still picture made by
+// the built-in software renderer (no display or GPU needed).
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/sinew/commands.h"
+#include "io/osim_reader.h"
+#include "io/storage.h"
+#include "viz/gltf_writer.h"
+#include "viz/motion_poses.h"
+#include "viz/rasterizer.h"
+
+namespace sinew::cli {
+namespace {
+
+struct RenderArgs {
+  std::string model;
+  std::string motion;
+  std::string states;
+  double time = 0;
+  bool has_time = false;
+  std::string vis = "mesh";
+  std::string view = "iso";
+  int width = 800;
+  int height = 800;
+  std::string out;
+  std::vector<std::string> geometry_dirs;
+  bool no_floor = false;
+};
+
+void RunRender(const RenderArgs& args) {
+  const ModelSpec spec = ReadOsim(args.model);
+  viz::VisualOptions visual;
+  visual.mode = viz::ParseVisMode(args.vis);
+  visual.geometry_dirs = args.geometry_dirs;
+  std::vector<Transform> X_GB;
+  const std::string& table_file = args.motion.empty() ? args.states : args.motion;
+  if (table_file.empty()) {
+    if (args.has_time) throw Error("--time needs --states or --motion");
+    X_GB = viz::DefaultPoseMotion(spec).X_GB[0];
+  } else {
+    const Storage table = ReadStorage(table_file);
+    const double t = args.has_time || table.time.empty() ? args.time : table.time.front();
+    X_GB = viz::PosesAtTime(spec, table, t);
+  }
+  const viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
+  for (const Diagnostic& d : scene.warnings) std::cerr << "sinew: warning: " << d.Format() << "\n";
+  viz::RenderOptions options;
+  options.width = args.width;
+  options.height = args.height;
+  options.floor = !args.no_floor;
+  const viz::Camera camera =
+      viz::FrameCamera(viz::SceneBounds(scene, X_GB), viz::ParseViewDirection(args.view),
+                       static_cast<double>(args.width) / args.height);
+  viz::WriteFileBytes(args.out, viz::EncodePng(viz::RenderScene(scene, X_GB, camera, options)));
+  std::cout << "wrote " << args.out << " (" << args.width << "x" << args.height << ")\n";
+}
+
+}  // namespace
+
+void AddRenderCommand(CLI::App& app) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* cmd = app.add_subcommand("render", "Render a still PNG image of a model (no display)");
+  cmd->add_option("model", args->model, "OpenSim model file (.osim)")->required();
+  auto* motion = cmd->add_option("--motion", args->motion, "Coordinates over time (.mot/.sto)");
+  auto* states = cmd->add_option("--states", args->states, "States over time (.sto)");
+  motion->excludes(states);
+  cmd->add_option_function<double>(
+      "--time", [args](double t) { args->time = t, args->has_time = true; },
+      "Time (s) in the table to show (default: its first row)");
+  cmd->add_option("--vis", args->vis, "Visualization: primitives, mesh or none")
+      ->check(CLI::IsMember({"primitives", "mesh", "none"}));
+  cmd->add_option("--view", args->view, "Camera: iso, front, back, right, left or top")
+      ->check(CLI::IsMember({"iso", "front", "back", "right", "left", "top"}));
+  cmd->add_option("--width", args->width, "Image width (pixels)")->check(CLI::Range(1, 8192));
+  cmd->add_option("--height", args->height, "Image height (pixels)")->check(CLI::Range(1, 8192));
+  cmd->add_option("--geometry-dir", args->geometry_dirs,
+                  "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
+  cmd->add_flag("--no-floor", args->no_floor, "Leave out the floor and the model's shadow");
+  cmd->add_option("--out,-o", args->out, "Output PNG file")->required();
+  cmd->callback([args] { RunRender(*args); });
+}
+
+}  // namespace sinew::cli

@@ -1,0 +1,79 @@
+// Visualization costs on a real model: Rajagopal2016 (23 bodies, 81 .vtp meshes) driven by
+// 599 frames of the Hamner running motion.
+#include <benchmark/benchmark.h>
+
+#include "io/mesh_file.h"
+#include "io/osim_reader.h"
+#include "io/storage.h"
+#include "viz/gltf_writer.h"
+#include "viz/html_viewer.h"
+#include "viz/motion_poses.h"
+#include "viz/rasterizer.h"
+
+namespace sinew::viz {
+namespace {
+
+const std::string kData = SINEW_TEST_DATA_DIR;
+const std::string kModel = kData + "/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
+const std::string kGeometry = kData + "/opensim-models/Geometry";
+const std::string kMotion = kData + "/kinematics/hamner/subject02_running_ik.mot";
+
+VisualScene MeshScene(const ModelSpec& spec) {
+  VisualOptions options;
+  options.mode = VisMode::kMesh;
+  options.geometry_dirs = {kGeometry};
+  return BuildVisualScene(spec, options);
+}
+
+// Finding and reading all 81 meshes of the model (ascii .vtp).
+void BM_BuildMeshScene(benchmark::State& state) {
+  const ModelSpec spec = ReadOsim(kModel);
+  for (auto _ : state) benchmark::DoNotOptimize(MeshScene(spec));
+}
+BENCHMARK(BM_BuildMeshScene)->Unit(benchmark::kMillisecond);
+
+// Forward kinematics of every motion row into body poses.
+void BM_MotionFromTable(benchmark::State& state) {
+  const ModelSpec spec = ReadOsim(kModel);
+  const Storage table = ReadStorage(kMotion);
+  for (auto _ : state) benchmark::DoNotOptimize(MotionFromTable(spec, table, nullptr));
+}
+BENCHMARK(BM_MotionFromTable)->Unit(benchmark::kMillisecond);
+
+// The .glb with 81 meshes and 599 frames x 23 bodies of animation.
+void BM_WriteGlb(benchmark::State& state) {
+  const ModelSpec spec = ReadOsim(kModel);
+  const VisualScene scene = MeshScene(spec);
+  const BodyMotion motion = MotionFromTable(spec, ReadStorage(kMotion), nullptr);
+  size_t bytes = 0;
+  for (auto _ : state) {
+    std::vector<uint8_t> glb = WriteGlb(scene, motion, spec.name);
+    bytes = glb.size();
+    benchmark::DoNotOptimize(glb);
+  }
+  state.counters["MB"] = bytes / 1e6;
+}
+BENCHMARK(BM_WriteGlb)->Unit(benchmark::kMillisecond);
+
+// The HTML page around that .glb (base64 of the model and of three.js).
+void BM_MakeViewerHtml(benchmark::State& state) {
+  const ModelSpec spec = ReadOsim(kModel);
+  const std::vector<uint8_t> glb =
+      WriteGlb(MeshScene(spec), MotionFromTable(spec, ReadStorage(kMotion), nullptr), spec.name);
+  for (auto _ : state) benchmark::DoNotOptimize(MakeViewerHtml(glb, spec.name));
+}
+BENCHMARK(BM_MakeViewerHtml)->Unit(benchmark::kMillisecond);
+
+// One 800x800 software-rendered picture of the meshed model (2x2 supersampled).
+void BM_RenderScene(benchmark::State& state) {
+  const ModelSpec spec = ReadOsim(kModel);
+  const VisualScene scene = MeshScene(spec);
+  const std::vector<Transform> X_GB = DefaultPoseMotion(spec).X_GB[0];
+  RenderOptions options;
+  const Camera camera = FrameCamera(SceneBounds(scene, X_GB), Vec3(1, 0.35, 0.8), 1.0);
+  for (auto _ : state) benchmark::DoNotOptimize(RenderScene(scene, X_GB, camera, options));
+}
+BENCHMARK(BM_RenderScene)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace sinew::viz

@@ -1,0 +1,87 @@
+// `sinew inspect`: the text summary, the --json object's fields, and exit code 2 with a precise
+// message for bad input. Runs the built CLI (SINEW_CLI_PATH).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+struct CliRun {
+  int exit_code;
+  std::string out;
+};
+
+// Runs the CLI with `args`, capturing stdout and stderr together.
+CliRun RunCli(const std::string& args) {
+  const std::string command = std::string(SINEW_CLI_PATH) + " " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  EXPECT_NE(pipe, nullptr);
+  std::string out;
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) out.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  return {WEXITSTATUS(status), out};
+}
+
+const std::string kArm26 =
+    std::string(SINEW_TEST_DATA_DIR) + "/osim/opensim-org/opensim-models/Models/Arm26/arm26.osim";
+
+TEST(Inspect, TextSummary) {
+  const CliRun run = RunCli("inspect " + kArm26);
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("format version: 40000"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("r_shoulder  CustomJoint  base -> r_humerus  [r_shoulder_elev]"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("Thelen2003Muscle: 6"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("/forceset/TRIlong: Thelen2003Muscle"), std::string::npos) << run.out;
+}
+
+TEST(Inspect, JsonFields) {
+  const CliRun run = RunCli("inspect --json " + kArm26);
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  const nlohmann::json j = nlohmann::json::parse(run.out);
+  EXPECT_EQ(j["version"], 40000);
+  ASSERT_EQ(j["bodies"].size(), 3u);  // ground is not listed
+  for (const auto& b : j["bodies"]) EXPECT_NE(b["name"], "ground");
+  EXPECT_EQ(j["bodies"][1]["name"], "r_humerus");
+  EXPECT_NEAR(j["bodies"][1]["mass"].get<double>(), 1.8645719999999999, 1e-15);
+  ASSERT_EQ(j["joints"].size(), 3u);
+  EXPECT_EQ(j["joints"][0]["name"], "offset");
+  EXPECT_EQ(j["joints"][0]["type"], "WeldJoint");
+  EXPECT_EQ(j["joints"][0]["parent"], "ground");  // offset frames resolved to bodies
+  EXPECT_EQ(j["joints"][0]["child"], "base");
+  EXPECT_EQ(j["joints"][2]["coordinates"][0], "r_elbow_flex");
+  ASSERT_EQ(j["coordinates"].size(), 2u);
+  EXPECT_EQ(j["coordinates"][0]["name"], "r_shoulder_elev");
+  EXPECT_TRUE(j["coordinates"][0]["default_value"].is_number());
+  EXPECT_TRUE(j["coordinates"][0]["default_speed_value"].is_number());
+  EXPECT_EQ(j["coordinates"][0]["locked"], false);
+  ASSERT_EQ(j["forces"].size(), 6u);
+  EXPECT_EQ(j["forces"][0]["name"], "TRIlong");
+  EXPECT_EQ(j["forces"][0]["type"], "Thelen2003Muscle");
+  EXPECT_TRUE(j["constraints"].is_array());
+  ASSERT_EQ(j["markers"].size(), 3u);
+  EXPECT_EQ(j["markers"][0]["body"], "base");
+  EXPECT_TRUE(j["warnings"].is_array());
+  EXPECT_GE(j["not_simulated"].size(), 6u);
+}
+
+TEST(Inspect, BadInputExitsWithTwo) {
+  const std::string file = testing::TempDir() + "/bad_inspect.osim";
+  std::ofstream(file) << "<OpenSimDocument Version=\"40000\">\n<Model name=\"m\">\n"
+                         "<BodySet><objects><Body name=\"b\"><mass>x</mass></Body>\n";
+  const CliRun run = RunCli("inspect " + file);
+  EXPECT_EQ(run.exit_code, 2) << run.out;
+  EXPECT_NE(run.out.find("bad_inspect.osim:"), std::string::npos) << run.out;
+  const CliRun missing = RunCli("inspect /nonexistent/model.osim");
+  EXPECT_EQ(missing.exit_code, 2) << missing.out;
+}
+
+}  // namespace

@@ -1,0 +1,251 @@
+// Malformed input gives a sinew::Error naming the file, the line and the component; never a
+// crash, a hang or a silent misread.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "io/osim_reader.h"
+
+namespace sinew {
+namespace {
+
+// A small 4.x model: ground -> (pin) -> upper -> (pin) -> lower. `joints` replaces the JointSet
+// body and `extra_bodies` is appended to the BodySet.
+std::string Model40(const std::string& joints, const std::string& extra_bodies = "",
+                    const std::string& upper_mass = "1.5") {
+  return R"(<?xml version="1.0" encoding="UTF-8" ?>
+<OpenSimDocument Version="40000">
+  <Model name="m">
+    <Ground name="ground"/>
+    <BodySet name="bodyset">
+      <objects>
+        <Body name="upper">
+          <mass>)" +
+         upper_mass + R"(</mass>
+          <mass_center>0 -0.5 0</mass_center>
+          <inertia>0.1 0.1 0.1 0 0 0</inertia>
+        </Body>
+        <Body name="lower">
+          <mass>1</mass>
+          <mass_center>0 -0.5 0</mass_center>
+          <inertia>0.1 0.1 0.1 0 0 0</inertia>
+        </Body>)" +
+         extra_bodies + R"(
+      </objects>
+    </BodySet>
+    <JointSet name="jointset">
+      <objects>)" +
+         joints + R"(
+      </objects>
+    </JointSet>
+  </Model>
+</OpenSimDocument>
+)";
+}
+
+std::string Pin(const std::string& name, const std::string& parent, const std::string& child,
+                const std::string& coordinate) {
+  return R"(
+        <PinJoint name=")" +
+         name + R"(">
+          <socket_parent_frame>)" +
+         parent + R"(</socket_parent_frame>
+          <socket_child_frame>)" +
+         child + R"(</socket_child_frame>
+          <coordinates><Coordinate name=")" +
+         coordinate + R"("/></coordinates>
+        </PinJoint>)";
+}
+
+const std::string kGoodJoints = Pin("j1", "/ground", "/bodyset/upper", "q1") +
+                                Pin("j2", "/bodyset/upper", "/bodyset/lower", "q2");
+
+// Reads `text` expecting an Error; checks file and line, returns it for further checks.
+Error ExpectError(const std::string& text, int line, const std::string& component,
+                  const std::string& fragment) {
+  try {
+    ReadOsimString(text, "bad.osim");
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where().file, "bad.osim") << e.what();
+    if (line > 0) {
+      EXPECT_EQ(e.where().line, line) << e.what();
+    }
+    EXPECT_EQ(e.component(), component) << e.what();
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    return e;
+  }
+  ADD_FAILURE() << "no error for input expected to fail with '" << fragment << "'";
+  return Error("none");
+}
+
+int LineOf(const std::string& text, const std::string& needle) {
+  const size_t at = text.find(needle);
+  EXPECT_NE(at, std::string::npos) << needle;
+  int line = 1;
+  for (size_t i = 0; i < at; ++i) line += text[i] == '\n';
+  return line;
+}
+
+TEST(OsimErrors, GoodModelLoads) {
+  const ModelSpec spec = ReadOsimString(Model40(kGoodJoints), "good.osim");
+  ASSERT_EQ(spec.bodies.size(), 3u);
+  ASSERT_EQ(spec.joints.size(), 2u);
+  EXPECT_EQ(spec.joints[1].parent_body, 1);
+  EXPECT_EQ(spec.joints[1].child_body, 2);
+}
+
+TEST(OsimErrors, TruncatedFile) {
+  const std::string text = Model40(kGoodJoints);
+  const std::string truncated = text.substr(0, text.find("<JointSet"));
+  const Error e = ExpectError(truncated, 0, "", "not a well-formed XML document");
+  EXPECT_GT(e.where().line, 1);
+}
+
+TEST(OsimErrors, NotXml) {
+  ExpectError("this is not a model", 1, "", "not a well-formed XML document");
+  ExpectError("", 1, "", "");
+  ExpectError("<html><body/></html>", 1, "", "not an OpenSim model");
+}
+
+TEST(OsimErrors, UnknownParentBody3x) {
+  const std::string text = R"(<OpenSimDocument Version="30000"><Model name="m"><BodySet><objects>
+<Body name="ground"/>
+<Body name="arm"><mass>1</mass><Joint><PinJoint name="shoulder">
+<parent_body>torso</parent_body>
+<CoordinateSet><objects><Coordinate name="q"/></objects></CoordinateSet>
+</PinJoint></Joint></Body>
+</objects></BodySet></Model></OpenSimDocument>)";
+  ExpectError(text, 4, "/jointset/shoulder", "parent_body 'torso' does not exist");
+}
+
+TEST(OsimErrors, DanglingSocketPath) {
+  const std::string joints = Pin("j1", "/ground", "/bodyset/upper", "q1") +
+                             Pin("knee_r", "/bodyset/femur", "/bodyset/lower", "q2");
+  const std::string text = Model40(joints);
+  ExpectError(text, LineOf(text, "/bodyset/femur"), "/jointset/knee_r",
+              "<socket_parent_frame> '/bodyset/femur' does not exist");
+  // Relative paths resolve from the joint: '../upper' is /jointset/upper, which does not exist.
+  const std::string relative = Model40(Pin("j1", "/ground", "/bodyset/upper", "q1") +
+                                       Pin("j2", "../upper", "/bodyset/lower", "q2"));
+  ExpectError(relative, LineOf(relative, "../upper"), "/jointset/j2", "'/jointset/upper'");
+}
+
+TEST(OsimErrors, DuplicateBodyNames) {
+  const std::string text = Model40(kGoodJoints, R"(
+        <Body name="upper"><mass>1</mass></Body>)");
+  ExpectError(text, LineOf(text, "<Body name=\"upper\"><mass>"), "/bodyset/upper",
+              "duplicate body name 'upper'");
+}
+
+TEST(OsimErrors, AmbiguousCoordinateReferenceWarnsAndTakesTheFirst) {
+  // Two coordinates named q: a path point conditioned on "q" gets the first, with a warning (as
+  // OpenSim 3's name lookup does; chrono's newton_cradle.osim needs it).
+  std::string text = Model40(Pin("j1", "/ground", "/bodyset/upper", "q") +
+                             Pin("j2", "/bodyset/upper", "/bodyset/lower", "q"));
+  const std::string forces = R"(<ForceSet><objects><PathSpring name="s"><GeometryPath>
+<PathPointSet><objects>
+<ConditionalPathPoint name="p"><socket_parent_frame>/ground</socket_parent_frame>
+<socket_coordinate>q</socket_coordinate><range>0 1</range></ConditionalPathPoint>
+</objects></PathPointSet></GeometryPath></PathSpring></objects></ForceSet>)";
+  text.insert(text.find("  </Model>"), forces);
+  const ModelSpec spec = ReadOsimString(text, "ambiguous.osim");
+  EXPECT_EQ(spec.forces[0].geometry_path->points[0].coordinate, 0);
+  bool warned = false;
+  for (const Diagnostic& d : spec.warnings) {
+    warned = warned || (d.component == "/forceset/s/geometrypath/p" &&
+                        d.where.line == LineOf(text, "<socket_coordinate>") &&
+                        d.message.find("'q' is ambiguous") != std::string::npos);
+  }
+  EXPECT_TRUE(warned);
+  // A name that matches nothing is an error.
+  const size_t at = text.find("<socket_coordinate>q<");
+  text.replace(at, 21, "<socket_coordinate>z<");
+  ExpectError(text, LineOf(text, "<socket_coordinate>"), "/forceset/s/geometrypath/p",
+              "<socket_coordinate> 'z' does not exist");
+}
+
+TEST(OsimErrors, CycleOfJoints) {
+  // upper and lower hang from each other and never from ground.
+  const std::string text = Model40(Pin("a", "/bodyset/lower", "/bodyset/upper", "q1") +
+                                   Pin("b", "/bodyset/upper", "/bodyset/lower", "q2"));
+  ExpectError(text, 0, "/jointset/a", "joints form a cycle that never reaches ground");
+}
+
+TEST(OsimErrors, OffsetFramesInACycle) {
+  const std::string joints = R"(
+        <WeldJoint name="w">
+          <socket_parent_frame>f1</socket_parent_frame>
+          <socket_child_frame>/bodyset/upper</socket_child_frame>
+          <frames>
+            <PhysicalOffsetFrame name="f1"><socket_parent>f2</socket_parent></PhysicalOffsetFrame>
+            <PhysicalOffsetFrame name="f2"><socket_parent>f1</socket_parent></PhysicalOffsetFrame>
+          </frames>
+        </WeldJoint>)";
+  ExpectError(Model40(joints), 0, "/jointset/w/f1", "cycle");
+}
+
+TEST(OsimErrors, NonNumericValue) {
+  const std::string text = Model40(kGoodJoints, "", "heavy");
+  ExpectError(text, LineOf(text, "heavy"), "/bodyset/upper", "expects numbers, found 'heavy'");
+}
+
+TEST(OsimErrors, VectorOfWrongLength) {
+  std::string text = Model40(kGoodJoints);
+  const std::string from = "<mass_center>0 -0.5 0</mass_center>";
+  text.replace(text.find(from), from.size(), "<mass_center>0 -0.5</mass_center>");
+  ExpectError(text, LineOf(text, "<mass_center>0 -0.5<"), "/bodyset/upper",
+              "<mass_center> expects 3 numbers, found 2");
+}
+
+TEST(OsimErrors, BodyLeftUnconnected) {
+  const std::string text = Model40(kGoodJoints, R"(
+        <Body name="loose"><mass>1</mass></Body>)");
+  ExpectError(text, LineOf(text, "loose"), "/bodyset/loose",
+              "body 'loose' is not connected to ground");
+}
+
+TEST(OsimErrors, JointWithWrongCoordinateCount) {
+  const std::string joints = Pin("j1", "/ground", "/bodyset/upper", "q1") + R"(
+        <PinJoint name="j2">
+          <socket_parent_frame>/bodyset/upper</socket_parent_frame>
+          <socket_child_frame>/bodyset/lower</socket_child_frame>
+          <coordinates><Coordinate name="a"/><Coordinate name="b"/></coordinates>
+        </PinJoint>)";
+  const std::string text = Model40(joints);
+  ExpectError(text, LineOf(text, "<PinJoint name=\"j2\">"), "/jointset/j2",
+              "PinJoint needs 1 coordinate, found 2");
+}
+
+TEST(OsimErrors, CustomJointAxisNamesUnknownCoordinate) {
+  const std::string joints = Pin("j1", "/ground", "/bodyset/upper", "q1") + R"(
+        <CustomJoint name="c">
+          <socket_parent_frame>/bodyset/upper</socket_parent_frame>
+          <socket_child_frame>/bodyset/lower</socket_child_frame>
+          <coordinates><Coordinate name="a"/></coordinates>
+          <SpatialTransform>
+            <TransformAxis name="rotation1"><coordinates>zz</coordinates><axis>0 0 1</axis></TransformAxis>
+          </SpatialTransform>
+        </CustomJoint>)";
+  const std::string text = Model40(joints);
+  ExpectError(text, LineOf(text, "<coordinates>zz"), "/jointset/c/rotation1",
+              "coordinate 'zz' is not one of the joint's coordinates");
+}
+
+TEST(OsimErrors, BadVersionAndMissingModel) {
+  ExpectError(R"(<OpenSimDocument Version="4x"><Model/></OpenSimDocument>)", 1, "",
+              "Version '4x' is not a number");
+  ExpectError(R"(<OpenSimDocument Version="40000"></OpenSimDocument>)", 1, "", "holds no <Model>");
+}
+
+TEST(OsimErrors, DeeplyNestedInputFailsWithoutExhaustingTheStack) {
+  std::string text = "<OpenSimDocument Version=\"40000\"><Model name=\"m\">";
+  for (int i = 0; i < 100000; ++i) text += "<a>";
+  for (int i = 0; i < 100000; ++i) text += "</a>";
+  text += "</Model></OpenSimDocument>";
+  ExpectError(text, 1, "", "nested deeper than");
+}
+
+TEST(OsimErrors, MissingFile) { EXPECT_THROW(ReadOsim("/nonexistent/model.osim"), Error); }
+
+}  // namespace
+}  // namespace sinew

@@ -1,0 +1,280 @@
+// What the reader makes of OpenSim's conventions, checked against values computed by hand:
+// offset frames (nested, relative paths), 3.x offsets and `reverse`, CustomJoint defaults,
+// coordinate order and motion types, markers, StationDefinedFrame, geometry, gravity.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "io/osim_reader.h"
+#include "math/rotation.h"
+
+namespace sinew {
+namespace {
+
+constexpr double kTol = 1e-14;
+constexpr double kPi = std::numbers::pi;
+
+std::string Doc(int version, const std::string& model_body) {
+  return "<OpenSimDocument Version=\"" + std::to_string(version) + "\">\n<Model name=\"m\">\n" +
+         model_body + "\n</Model>\n</OpenSimDocument>\n";
+}
+
+// Two nested offset frames on `upper`, addressed by relative paths from the joint:
+// f1 = (translation 1 0 0, orientation 0 0 pi/2) on upper; f2 = (translation 0 1 0) on f1.
+// By hand: p_B(f2) = Rz(pi/2) * (0 1 0) + (1 0 0) = (-1 0 0) + (1 0 0) = (0 0 0);
+// R_B(f2) = Rz(pi/2).
+const std::string kNested = Doc(40000, R"(
+<Ground name="ground"/>
+<BodySet name="bodyset"><objects>
+  <Body name="upper"><mass>2</mass><mass_center>0 -0.5 0</mass_center>
+    <inertia>1 2 3 0.1 0.2 0.3</inertia>
+    <attached_geometry><Sphere name="ball"><socket_frame>..</socket_frame><radius>0.1</radius>
+      <Appearance><opacity>0.5</opacity><color>1 0 0</color></Appearance></Sphere>
+    </attached_geometry>
+    <components>
+      <PhysicalOffsetFrame name="f1"><socket_parent>..</socket_parent>
+        <translation>1 0 0</translation><orientation>0 0 1.5707963267948966</orientation>
+      </PhysicalOffsetFrame>
+    </components>
+  </Body>
+  <Body name="lower"><mass>1</mass></Body>
+</objects></BodySet>
+<JointSet name="jointset"><objects>
+  <WeldJoint name="w">
+    <socket_parent_frame>/ground</socket_parent_frame>
+    <socket_child_frame>../../bodyset/upper</socket_child_frame>
+  </WeldJoint>
+  <PinJoint name="pin">
+    <socket_parent_frame>f2</socket_parent_frame>
+    <socket_child_frame>/bodyset/lower</socket_child_frame>
+    <coordinates><Coordinate name="q"><default_value>0.25</default_value>
+      <default_speed_value>-1</default_speed_value><range>-1 2</range><locked>true</locked>
+    </Coordinate></coordinates>
+    <frames>
+      <PhysicalOffsetFrame name="f2"><socket_parent>/bodyset/upper/f1</socket_parent>
+        <translation>0 1 0</translation>
+      </PhysicalOffsetFrame>
+    </frames>
+  </PinJoint>
+</objects></JointSet>
+<MarkerSet><objects>
+  <Marker name="m1"><socket_parent_frame>/jointset/pin/f2</socket_parent_frame>
+    <location>1 0 0</location></Marker>
+</objects></MarkerSet>)");
+
+TEST(OsimSemantics, NestedOffsetFramesAndRelativePaths) {
+  const ModelSpec spec = ReadOsimString(kNested, "nested.osim");
+  EXPECT_EQ(spec.version, 40000);
+  EXPECT_TRUE(spec.gravity.isApprox(Vec3(0, -9.80665, 0)));  // OpenSim's default
+  const JointSpec& pin = spec.joints[spec.FindJoint("pin")];
+  EXPECT_EQ(pin.parent_body, spec.FindBody("upper"));
+  EXPECT_EQ(pin.child_body, spec.FindBody("lower"));
+  EXPECT_EQ(pin.parent_frame, "/jointset/pin/f2");
+  EXPECT_EQ(pin.child_frame, "/bodyset/lower");
+  EXPECT_NEAR((pin.X_PF.p - Vec3(0, 0, 0)).norm(), 0, kTol);
+  const Mat3 Rz = RotationAboutAxis(Vec3::UnitZ(), kPi / 2);
+  EXPECT_NEAR((pin.X_PF.R - Rz).norm(), 0, kTol);
+  EXPECT_TRUE(pin.X_BM.isApprox(Transform::Identity()));
+  // Both offset frames are listed with their parents and poses in the body.
+  ASSERT_EQ(spec.frames.size(), 2u);
+  for (const FrameSpec& f : spec.frames) {
+    EXPECT_EQ(f.body, spec.FindBody("upper"));
+    if (f.name == "f1") {
+      EXPECT_EQ(f.path, "/bodyset/upper/f1");
+      EXPECT_EQ(f.parent, "/bodyset/upper");
+      EXPECT_NEAR((f.X_BF.p - Vec3(1, 0, 0)).norm(), 0, kTol);
+    } else {
+      EXPECT_EQ(f.path, "/jointset/pin/f2");
+      EXPECT_EQ(f.parent, "/bodyset/upper/f1");
+      EXPECT_NEAR((f.X_PF.p - Vec3(0, 1, 0)).norm(), 0, kTol);
+    }
+  }
+  // Marker at (1 0 0) in f2: p_B = Rz(pi/2) * (1 0 0) + 0 = (0 1 0).
+  ASSERT_EQ(spec.markers.size(), 1u);
+  EXPECT_EQ(spec.markers[0].body, spec.FindBody("upper"));
+  EXPECT_NEAR((spec.markers[0].location - Vec3(0, 1, 0)).norm(), 0, kTol);
+  // Body mass properties: inertia [Ixx Iyy Izz Ixy Ixz Iyz] into a symmetric matrix.
+  const BodySpec& upper = spec.bodies[spec.FindBody("upper")];
+  EXPECT_EQ(upper.mass, 2.0);
+  EXPECT_EQ(upper.inertia(0, 1), 0.1);
+  EXPECT_EQ(upper.inertia(2, 0), 0.2);
+  EXPECT_EQ(upper.inertia(1, 2), 0.3);
+  EXPECT_EQ(upper.inertia(2, 2), 3.0);
+  ASSERT_EQ(upper.geometry.size(), 1u);
+  EXPECT_EQ(upper.geometry[0].type, "Sphere");
+  EXPECT_EQ(upper.geometry[0].opacity, 0.5);
+  EXPECT_EQ(upper.geometry[0].dimensions.at("radius")[0], 0.1);
+  // Coordinate properties.
+  const CoordinateSpec& q = spec.coordinates[spec.FindCoordinate("q")];
+  EXPECT_EQ(q.path, "/jointset/pin/q");
+  EXPECT_EQ(q.default_value, 0.25);
+  EXPECT_EQ(q.default_speed_value, -1.0);
+  EXPECT_EQ(q.range_min, -1.0);
+  EXPECT_EQ(q.range_max, 2.0);
+  EXPECT_TRUE(q.locked);
+  EXPECT_EQ(q.motion_type, MotionType::kRotational);
+}
+
+// A 3.x file: offsets become frames named <body>_offset under the joint.
+TEST(OsimSemantics, ThreeXOffsetsBecomeFrames) {
+  const std::string text = Doc(30000, R"(<gravity>0 -9.81 0</gravity>
+<BodySet><objects>
+<Body name="ground"><Joint/></Body>
+<Body name="rod"><mass>1</mass><inertia_xx>0.5</inertia_xx><inertia_xy>0.1</inertia_xy>
+<Joint><SliderJoint name="slide"><parent_body>ground</parent_body>
+<location_in_parent>1 2 3</location_in_parent><orientation_in_parent>0 0 0</orientation_in_parent>
+<location>0 0.5 0</location><orientation>0.1 0.2 0.3</orientation>
+<CoordinateSet><objects><Coordinate name="x"/></objects></CoordinateSet>
+</SliderJoint></Joint></Body>
+</objects></BodySet>)");
+  const ModelSpec spec = ReadOsimString(text, "old.osim");
+  EXPECT_TRUE(spec.gravity.isApprox(Vec3(0, -9.81, 0)));
+  const JointSpec& j = spec.joints[0];
+  EXPECT_EQ(j.parent_frame, "/jointset/slide/ground_offset");
+  EXPECT_EQ(j.child_frame, "/jointset/slide/rod_offset");
+  EXPECT_NEAR((j.X_PF.p - Vec3(1, 2, 3)).norm(), 0, kTol);
+  EXPECT_NEAR((j.X_BM.p - Vec3(0, 0.5, 0)).norm(), 0, kTol);
+  EXPECT_NEAR((j.X_BM.R - RotationFromBodyFixedXYZ(Vec3(0.1, 0.2, 0.3))).norm(), 0, kTol);
+  EXPECT_EQ(spec.coordinates[0].motion_type, MotionType::kTranslational);
+  EXPECT_EQ(spec.bodies[1].inertia(0, 0), 0.5);
+  EXPECT_EQ(spec.bodies[1].inertia(1, 0), 0.1);
+  EXPECT_EQ(spec.frames.size(), 2u);
+}
+
+// 3.x reverse=true: OpenSim's 30514 upgrade swaps the parent and child frames.
+TEST(OsimSemantics, ReverseSwapsParentAndChild) {
+  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                  "/osim/opensim-org/opensim-core/OpenSim/Simulation/"
+                                  "SimbodyEngine/Test/double_pendulum_testReverse.osim");
+  const JointSpec& pin1 = spec.joints[spec.FindJoint("pin1")];
+  const JointSpec& pin2 = spec.joints[spec.FindJoint("pin2")];
+  EXPECT_FALSE(pin1.reverse);
+  EXPECT_TRUE(pin2.reverse);
+  EXPECT_EQ(spec.bodies[pin2.parent_body].name, "rod2");
+  EXPECT_EQ(spec.bodies[pin2.child_body].name, "rod1");
+  EXPECT_EQ(pin2.parent_frame, "/jointset/pin2/rod2_offset");
+  EXPECT_NEAR((pin2.X_PF.p - Vec3(0, 0.5, 0)).norm(), 0, kTol);  // `location` on rod2
+  EXPECT_NEAR(pin2.X_BM.p.norm(), 0, kTol);                      // `location_in_parent`
+}
+
+// CustomJoint: missing functions take OpenSim's defaults, coordinates are ordered by first
+// appearance across the axes, motion types follow the LinearFunction slope +-1 rule.
+TEST(OsimSemantics, CustomJointDefaultsOrderAndMotionTypes) {
+  const std::string text = Doc(40000, R"(<Ground name="ground"/>
+<BodySet><objects><Body name="b"><mass>1</mass></Body></objects></BodySet>
+<JointSet><objects><CustomJoint name="c">
+<socket_parent_frame>/ground</socket_parent_frame><socket_child_frame>/bodyset/b</socket_child_frame>
+<coordinates><Coordinate name="a"/><Coordinate name="t"/><Coordinate name="k"/><Coordinate name="s"/></coordinates>
+<SpatialTransform>
+ <TransformAxis name="rotation1"><coordinates>k</coordinates><axis>0 0 1</axis></TransformAxis>
+ <TransformAxis name="rotation2"><coordinates>a</coordinates><axis>1 0 0</axis>
+   <LinearFunction name="function"><coefficients>-1 0</coefficients></LinearFunction></TransformAxis>
+ <TransformAxis name="rotation3"><coordinates></coordinates><axis>0 1 0</axis></TransformAxis>
+ <TransformAxis name="translation1"><coordinates>k</coordinates><axis>1 0 0</axis>
+   <SimmSpline name="function"><x>0 1 2</x><y>0 0.1 0.4</y></SimmSpline></TransformAxis>
+ <TransformAxis name="translation2"><coordinates>t</coordinates><axis>0 1 0</axis></TransformAxis>
+ <TransformAxis name="translation3"><coordinates>s</coordinates><axis>0 0 1</axis>
+   <function><LinearFunction><coefficients>2 0</coefficients></LinearFunction></function></TransformAxis>
+</SpatialTransform></CustomJoint></objects></JointSet>)");
+  const ModelSpec spec = ReadOsimString(text, "custom.osim");
+  const JointSpec& j = spec.joints[0];
+  ASSERT_EQ(j.spatial_transform.size(), 6u);
+  auto name = [&](int i) { return spec.coordinates[j.coordinates[i]].name; };
+  ASSERT_EQ(j.coordinates.size(), 4u);
+  EXPECT_EQ(name(0), "k");
+  EXPECT_EQ(name(1), "a");
+  EXPECT_EQ(name(2), "t");
+  EXPECT_EQ(name(3), "s");
+  // rotation1: one coordinate, no function -> identity LinearFunction.
+  EXPECT_EQ(j.spatial_transform[0].function->TypeName(), "LinearFunction");
+  EXPECT_EQ(j.spatial_transform[0].function->Calc(0.7), 0.7);
+  // rotation3: no coordinate -> Constant 0.
+  EXPECT_EQ(j.spatial_transform[2].function->TypeName(), "Constant");
+  EXPECT_EQ(j.spatial_transform[2].function->Calc(3.0), 0.0);
+  EXPECT_EQ(j.spatial_transform[3].function->TypeName(), "SimmSpline");
+  EXPECT_EQ(j.spatial_transform[5].function->Calc(1.5), 3.0);  // wrapped 3.x form
+  auto motion = [&](const char* n) { return spec.coordinates[spec.FindCoordinate(n)].motion_type; };
+  EXPECT_EQ(motion("k"), MotionType::kRotational);     // rotation1, slope 1 (and a spline)
+  EXPECT_EQ(motion("a"), MotionType::kRotational);     // slope -1
+  EXPECT_EQ(motion("t"), MotionType::kTranslational);  // translation2, slope 1
+  EXPECT_EQ(motion("s"), MotionType::kCoupled);        // slope 2
+}
+
+// StationDefinedFrame (4.5+): a = (0 0 0), b = (0 0 2), c = (1 0 0), origin (0 0 1), on body b,
+// ab_axis z, ab_x_ac_axis x. By hand: z = (b - a)/|b - a| = (0 0 1); x = (b-a)x(c-a) normalized
+// = (0 2 0)/2 = (0 1 0); y = z x x = (-1 0 0).
+TEST(OsimSemantics, StationDefinedFrame) {
+  const std::string text = Doc(40600, R"(<Ground name="ground"/>
+<components>
+ <Station name="a"><socket_parent_frame>/bodyset/b</socket_parent_frame><location>0 0 0</location></Station>
+ <Station name="b"><socket_parent_frame>/bodyset/b</socket_parent_frame><location>0 0 2</location></Station>
+ <Station name="c"><socket_parent_frame>/bodyset/b</socket_parent_frame><location>1 0 0</location></Station>
+ <Station name="o"><socket_parent_frame>/bodyset/b</socket_parent_frame><location>0 0 1</location></Station>
+ <StationDefinedFrame name="sdf"><socket_point_a>/a</socket_point_a><socket_point_b>/b</socket_point_b>
+   <socket_point_c>/c</socket_point_c><socket_origin_point>/o</socket_origin_point>
+   <ab_axis>z</ab_axis><ab_x_ac_axis>x</ab_x_ac_axis></StationDefinedFrame>
+</components>
+<BodySet><objects><Body name="b"><mass>1</mass></Body></objects></BodySet>
+<JointSet><objects><FreeJoint name="free">
+<socket_parent_frame>/ground</socket_parent_frame><socket_child_frame>/sdf</socket_child_frame>
+</FreeJoint></objects></JointSet>)");
+  const ModelSpec spec = ReadOsimString(text, "sdf.osim");
+  const JointSpec& j = spec.joints[0];
+  EXPECT_EQ(j.child_body, spec.FindBody("b"));
+  Mat3 R;
+  R.col(0) = Vec3(0, 1, 0);
+  R.col(1) = Vec3(-1, 0, 0);
+  R.col(2) = Vec3(0, 0, 1);
+  EXPECT_NEAR((j.X_BM.R - R).norm(), 0, kTol);
+  EXPECT_NEAR((j.X_BM.p - Vec3(0, 0, 1)).norm(), 0, kTol);
+  // FreeJoint without coordinates: OpenSim makes six, rotations then translations.
+  ASSERT_EQ(j.coordinates.size(), 6u);
+  EXPECT_EQ(spec.coordinates[j.coordinates[2]].motion_type, MotionType::kRotational);
+  EXPECT_EQ(spec.coordinates[j.coordinates[3]].motion_type, MotionType::kTranslational);
+}
+
+// Real files: arm26 (4.x) markers, wrap objects, path points; Rajagopal2016 joint frames.
+TEST(OsimSemantics, Arm26PathsWrapsAndMarkers) {
+  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                  "/osim/opensim-org/opensim-models/Models/Arm26/arm26.osim");
+  const ForceSpec& tri = spec.forces[0];
+  EXPECT_EQ(tri.type, "Thelen2003Muscle");
+  ASSERT_TRUE(tri.geometry_path.has_value());
+  EXPECT_GE(tri.geometry_path->points.size(), 2u);
+  EXPECT_FALSE(tri.geometry_path->wraps.empty());
+  ASSERT_NE(tri.element.Child("max_isometric_force"), nullptr);
+  EXPECT_EQ(tri.element.Child("max_isometric_force")->text, "798.51999999999998");
+  int wraps = 0;
+  for (const BodySpec& b : spec.bodies) wraps += static_cast<int>(b.wrap_objects.size());
+  EXPECT_GT(wraps, 0);
+  EXPECT_EQ(spec.markers[0].name, "r_acromion");
+}
+
+TEST(OsimSemantics, MovingAndConditionalPathPoints) {
+  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                  "/osim/opensim-org/opensim-core/OpenSim/Simulation/Test/"
+                                  "testSimulationUtilities_leg6dof9musc_20303.osim");
+  int moving = 0, conditional = 0;
+  for (const ForceSpec& f : spec.forces) {
+    if (!f.geometry_path) continue;
+    for (const PathPointSpec& p : f.geometry_path->points) {
+      if (p.type == "MovingPathPoint") {
+        ++moving;
+        for (int i = 0; i < 3; ++i) EXPECT_NE(p.location_functions[i], nullptr);
+      }
+      if (p.type == "ConditionalPathPoint") {
+        ++conditional;
+        EXPECT_NE(p.coordinate, kNone);
+        EXPECT_LT(p.range_min, p.range_max);
+      }
+    }
+  }
+  EXPECT_GT(moving, 0);
+  EXPECT_GT(conditional, 0);
+  EXPECT_EQ(spec.constraints[0].type, "CoordinateCouplerConstraint");
+}
+
+}  // namespace
+}  // namespace sinew

@@ -1,0 +1,68 @@
+// Every model of the shared OpenSim corpus can be posed at its default coordinates: the joint
+// tree builds, every pose is finite and rotations are orthonormal. Files the reader rejects
+// are skipped (listed), as are models with joint types Sinew does not model (listed).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "io/osim_reader.h"
+#include "kinematics/forward_kinematics.h"
+#include "kinematics/kinematic_tree.h"
+
+namespace sinew {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(CorpusPoseTest, EveryModelPosesAtItsDefaults) {
+  const fs::path root(SINEW_SHARED_DATA_DIR);
+  if (!fs::exists(root)) GTEST_SKIP() << "no shared corpus at " << root;
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".osim") files.push_back(entry);
+  }
+  std::sort(files.begin(), files.end());
+  ASSERT_FALSE(files.empty());
+  int posed = 0;
+  std::vector<std::string> rejected_by_reader, unsupported_joint;
+  for (const fs::path& file : files) {
+    ModelSpec spec;
+    try {
+      spec = ReadOsim(file.string());
+    } catch (const Error& e) {
+      rejected_by_reader.push_back(e.what());
+      continue;
+    }
+    bool unsupported = false;
+    for (const JointSpec& j : spec.joints) {
+      if (j.kind == JointType::kUnknown || j.kind == JointType::kConstantCurvature) {
+        unsupported_joint.push_back(file.string() + ": " + j.path + " (" + j.type + ")");
+        unsupported = true;
+      }
+    }
+    if (unsupported) continue;
+    try {
+      const KinematicTree tree(spec);
+      std::vector<Transform> X(tree.num_bodies());
+      CalcBodyPoses(tree, tree.default_q(), X);
+      for (size_t b = 0; b < X.size(); ++b) {
+        EXPECT_TRUE(X[b].p.allFinite() && X[b].R.allFinite()) << file << " " << spec.bodies[b].name;
+        EXPECT_LT((X[b].R.transpose() * X[b].R - Mat3::Identity()).norm(), 1e-12)
+            << file << " " << spec.bodies[b].name;
+      }
+      ++posed;
+    } catch (const Error& e) {
+      ADD_FAILURE() << file << ": " << e.what();
+    }
+  }
+  std::cout << "posed " << posed << " of " << files.size() << " models\n";
+  for (const std::string& m : rejected_by_reader) std::cout << "  reader rejected: " << m << "\n";
+  for (const std::string& m : unsupported_joint) std::cout << "  unsupported joint: " << m << "\n";
+  EXPECT_GT(posed, 100);
+}
+
+}  // namespace
+}  // namespace sinew

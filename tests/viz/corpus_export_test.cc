@@ -1,0 +1,64 @@
+// Every model of the shared OpenSim corpus goes through the visualization pipeline (mesh mode
+// with the corpus' Geometry folder, default pose) without crashing, and every mesh file the
+// models name that exists in the corpus is read. Skipped when the corpus is absent.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+
+#include "io/mesh_file.h"
+#include "io/osim_reader.h"
+#include "viz/gltf_writer.h"
+#include "viz/motion_poses.h"
+#include "viz/visual_scene.h"
+
+namespace sinew::viz {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(CorpusExportTest, EveryModelExportsOrFailsWithASinewError) {
+  const fs::path corpus = SINEW_SHARED_DATA_DIR;
+  if (!fs::is_directory(corpus)) GTEST_SKIP() << "no shared corpus at " << corpus;
+  const std::string geometry = (corpus / "opensim-org/opensim-models/Geometry").string();
+  int models = 0, exported = 0, meshes = 0;
+  std::set<std::string> unreadable;
+  for (const auto& entry : fs::recursive_directory_iterator(corpus)) {
+    if (entry.path().extension() != ".osim") continue;
+    ++models;
+    ModelSpec spec;
+    try {
+      spec = ReadOsim(entry.path().string());
+    } catch (const Error&) {
+      continue;  // the reader's own tests cover files it rejects
+    }
+    VisualOptions options;
+    options.geometry_dirs = {geometry};
+    const VisualScene scene = BuildVisualScene(spec, options);
+    for (const Diagnostic& d : scene.warnings) {
+      if (d.message.find("cannot read mesh") != std::string::npos) unreadable.insert(d.Format());
+    }
+    for (const VisualBody& b : scene.bodies) {
+      for (const VisualPart& p : b.parts) meshes += p.source.ends_with(".vtp") ? 1 : 0;
+    }
+    BodyMotion pose;
+    try {
+      pose = DefaultPoseMotion(spec);
+    } catch (const Error&) {
+      // Kinematics rejects the joint tree (kinematics' tests cover which); export unposed.
+    }
+    const std::vector<uint8_t> glb = WriteGlb(scene, pose, spec.name);
+    EXPECT_GT(glb.size(), 20u);
+    ++exported;
+  }
+  EXPECT_GT(models, 100);
+  EXPECT_GT(exported, 0.9 * models) << "most corpus models should export";
+  EXPECT_GT(meshes, 1000) << "the corpus models use well over a thousand .vtp meshes";
+  for (const std::string& w : unreadable) ADD_FAILURE() << w;
+  RecordProperty("models", models);
+  RecordProperty("exported", exported);
+  RecordProperty("vtp_parts", meshes);
+}
+
+}  // namespace
+}  // namespace sinew::viz

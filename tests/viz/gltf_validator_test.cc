@@ -1,0 +1,75 @@
+// The .glb files Sinew writes pass the Khronos glTF validator (npm gltf-validator, pinned in
+// web/package.json) with no errors and no warnings: a reference independent of our writer and
+// of our own parsing in glb_test_util.h. Skipped when node or the validator is not installed.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io/osim_reader.h"
+#include "io/storage.h"
+#include "viz/gltf_writer.h"
+#include "viz/motion_poses.h"
+#include "viz/two_link_spec.h"
+
+namespace sinew::viz {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(GltfValidatorTest, KhronosValidatorFindsNoIssues) {
+  const fs::path web = fs::path(SINEW_TEST_DATA_DIR) / ".." / ".." / "web";
+  if (std::system("command -v node >/dev/null 2>&1") != 0 ||
+      !fs::exists(web / "node_modules" / "gltf-validator")) {
+    GTEST_SKIP() << "node or web/node_modules/gltf-validator missing (run scripts/setup.sh)";
+  }
+  const fs::path dir =
+      fs::temp_directory_path() / ("sinew_gltf_validator_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  // A small animated scene, the same without motion, one with no geometry at all, and the
+  // full Rajagopal2016 model with 81 meshes and the 599-frame running motion.
+  VisualOptions mesh;
+  mesh.geometry_dirs = {testing::kDataDir + "/opensim-models/Geometry"};
+  VisualOptions none;
+  none.mode = VisMode::kNone;
+  const ModelSpec two_link = testing::TwoLinkSpec();
+  const ModelSpec rajagopal =
+      ReadOsim(testing::kDataDir + "/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
+  const BodyMotion running = MotionFromTable(
+      rajagopal, ReadStorage(testing::kDataDir + "/kinematics/hamner/subject02_running_ik.mot"),
+      nullptr);
+  const std::vector<std::pair<std::string, std::vector<uint8_t>>> files = {
+      {"animated.glb",
+       WriteGlb(BuildVisualScene(two_link, mesh), testing::SwingMotion(5, 0, 0.1, 0.3), "a")},
+      {"static.glb", WriteGlb(BuildVisualScene(two_link, mesh), {}, "s")},
+      {"empty.glb", WriteGlb(BuildVisualScene(two_link, none), {}, "e")},
+      {"rajagopal.glb", WriteGlb(BuildVisualScene(rajagopal, mesh), running, "r")}};
+  std::string args;
+  for (const auto& [name, bytes] : files) {
+    WriteFileBytes((dir / name).string(), bytes);
+    args += " " + (dir / name).string();
+  }
+  const fs::path report = dir / "report.jsonl";
+  const std::string command =
+      "cd " + web.string() + " && node validate_gltf.mjs" + args + " >" + report.string() + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  std::ifstream in(report);
+  std::string line;
+  int checked = 0;
+  while (std::getline(in, line)) {
+    const nlohmann::json r = nlohmann::json::parse(line);
+    EXPECT_EQ(r["errors"], 0) << r.dump(1);
+    EXPECT_EQ(r["warnings"], 0) << r.dump(1);
+    ++checked;
+  }
+  EXPECT_EQ(checked, static_cast<int>(files.size()));
+  if (!HasFailure()) fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace sinew::viz
