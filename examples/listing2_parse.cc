@@ -28,8 +28,8 @@ int main(int argc, char** argv) {
     const double e0 = sinew::engine::CalcMechanicalEnergy(my_system, state);
     integrator->StepTo(state, 1.0);
     const double e1 = sinew::engine::CalcMechanicalEnergy(my_system, state);
-    std::printf("simulated 1 s in %ld steps; energy %.9f J -> %.9f J\n",
-                integrator->stats().steps, e0, e1);
+    std::printf("simulated 1 s in %ld steps; energy %.9f J -> %.9f J\n", integrator->stats().steps,
+                e0, e1);
     for (const sinew::engine::Coordinate& c : my_system.coordinates()) {
       std::printf("  %-20s %12.6f\n", c.name.c_str(),
                   sinew::engine::GetCoordinateValue(my_system, state, c.name));

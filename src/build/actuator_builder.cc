@@ -59,8 +59,8 @@ std::shared_ptr<Actuator> MakeTorqueActuator(const ModelSpec& spec, const ForceS
 std::shared_ptr<Actuator> MakeCoordinateActuator(const ModelSpec& spec, const ForceSpec& force,
                                                  const ElementValues& v,
                                                  const std::vector<int>& coordinate_map) {
-  const std::string name = LastPathSegment(v.FirstString({"coordinate", "socket_coordinate"})
-                                               .value_or(""));
+  const std::string name =
+      LastPathSegment(v.FirstString({"coordinate", "socket_coordinate"}).value_or(""));
   const int c = spec.FindCoordinate(name);
   if (c == kNone) v.Fail("coordinate '" + name + "' is not a coordinate of the model");
   return std::make_shared<CoordinateActuator>(force.name, v.Double("optimal_force", 1.0),
@@ -89,7 +89,8 @@ std::shared_ptr<Actuator> MakeActuator(const ModelSpec& spec, const ForceSpec& f
     values.Fail("'" + force.type + "' is not an ideal actuator");
   }
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  actuator->SetControlRange(values.Double("min_control", -kInf), values.Double("max_control", kInf));
+  actuator->SetControlRange(values.Double("min_control", -kInf),
+                            values.Double("max_control", kInf));
   return actuator;
 }
 

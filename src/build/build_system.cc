@@ -80,10 +80,9 @@ SpecToSystem BuildInto(const ModelSpec& spec, engine::System& system, const Buil
     if (!options.direct_joints || constrained_coordinate) form = engine::JointForm::kParameterized;
     try {
       std::shared_ptr<const JointModel> model = MakeJointModel(spec, static_cast<int>(j));
-      const int engine_joint =
-          system.AddJoint(joint.name, map.bodies[joint.parent_body], joint.X_PF,
-                          map.bodies[joint.child_body], joint.X_BM, form, std::move(model),
-                          coordinates);
+      const int engine_joint = system.AddJoint(joint.name, map.bodies[joint.parent_body],
+                                               joint.X_PF, map.bodies[joint.child_body], joint.X_BM,
+                                               form, std::move(model), coordinates);
       map.joints.push_back(engine_joint);
       for (size_t k = 0; k < joint.coordinates.size(); ++k) {
         map.coordinates[joint.coordinates[k]] = system.joints()[engine_joint].coordinates[k];

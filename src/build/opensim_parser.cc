@@ -93,6 +93,14 @@ void OpenSimParser::Parse(engine::System& system, const std::string& filename) {
   if (collision_enabled_) {
     collision_ = BuildCollisionModel(spec_, CalcBodyDepths(spec_), family_1_, family_2_);
   }
+  scene_ = viz::VisualScene();
+  if (vis_type_ != VisType::NONE) {
+    viz::VisualOptions options;
+    options.mode = vis_type_ == VisType::MESH ? viz::VisMode::kMesh : viz::VisMode::kPrimitives;
+    options.geometry_dirs = geometry_dirs_;
+    scene_ = viz::BuildVisualScene(spec_, options);
+    for (const Diagnostic& w : scene_.warnings) report_.AddWarning(w);
+  }
   if (verbose_) report_.Print(std::cerr);
   CheckStrict();
 }

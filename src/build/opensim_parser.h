@@ -8,11 +8,12 @@
 #include <memory>
 #include <string>
 
-#include "contact/collision_model.h"
 #include "build/report.h"
+#include "contact/collision_model.h"
 #include "engine/system.h"
 #include "functions/function.h"
 #include "model/model_spec.h"
+#include "viz/visual_scene.h"
 
 namespace sinew {
 
@@ -34,10 +35,12 @@ class OpenSimParser {
  public:
   OpenSimParser() = default;
 
-  /// Visual assets to describe for the parsed bodies (default NONE). The assets themselves are
-  /// made by viz/ from the spec and this choice (see GetVisualizationType()).
+  /// Visual assets to make for the parsed bodies (default NONE): see GetVisualScene().
   void SetVisualizationType(VisType type) { vis_type_ = type; }
   VisType GetVisualizationType() const { return vis_type_; }
+  /// A folder searched for mesh files after the model's folder and its Geometry/ subfolder
+  /// (then $SINEW_GEOMETRY_PATH). May be called several times.
+  void AddGeometryDir(const std::string& dir) { geometry_dirs_.push_back(dir); }
   /// Creates collision shapes (cylinders along each body's segments, as in PRIMITIVES) with
   /// bodies in two alternating families by tree depth, so a body never collides with its
   /// parent or children (default: off).
@@ -71,6 +74,9 @@ class OpenSimParser {
   const ModelSpec& GetSpec() const { return spec_; }
   /// The collision shapes of the last Parse (empty unless EnableCollision was called).
   const CollisionModel& GetCollisionModel() const { return collision_; }
+  /// The visual assets of the last Parse, one entry per spec body (no parts with NONE).
+  /// A mesh that cannot be found is a Report warning and its body gets primitives.
+  const viz::VisualScene& GetVisualScene() const { return scene_; }
   /// The contact method chosen in Parse(filename, method) (NSC otherwise).
   ContactMethod GetContactMethod() const { return contact_method_; }
 
@@ -88,11 +94,13 @@ class OpenSimParser {
   bool activate_actuators_ = false;
   bool strict_ = false;
   std::string controls_file_;
+  std::vector<std::string> geometry_dirs_;
   ContactMethod contact_method_ = ContactMethod::NSC;
 
   ModelSpec spec_;
   Report report_;
   CollisionModel collision_;
+  viz::VisualScene scene_;
 };
 
 }  // namespace sinew

@@ -23,17 +23,17 @@ struct BodyInfo {
 
 /// A joint read from the file and the engine joint made for it.
 struct JointInfo {
-  std::string name;       ///< The name in the file.
-  std::string type;       ///< The OpenSim class, as written in the file.
-  int joint = -1;         ///< Index into engine::System::joints().
+  std::string name;  ///< The name in the file.
+  std::string type;  ///< The OpenSim class, as written in the file.
+  int joint = -1;    ///< Index into engine::System::joints().
   engine::JointForm form = engine::JointForm::kParameterized;  ///< How the engine imposes it.
-  bool standin = false;   ///< True when an unknown joint type was replaced by a ball joint.
+  bool standin = false;  ///< True when an unknown joint type was replaced by a ball joint.
 };
 
 /// A force (actuator, spring, muscle, ...) read from the file and what was made of it.
 struct ForceInfo {
-  std::string name;       ///< The name in the file.
-  std::string type;       ///< The OpenSim class, as written in the file.
+  std::string name;  ///< The name in the file.
+  std::string type;  ///< The OpenSim class, as written in the file.
   /// The engine force element made for it; null when the type is not simulated (yet).
   std::shared_ptr<engine::ForceElement> load;
   /// For actuators: the same object as `load`, for setting excitations; else null.

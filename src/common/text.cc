@@ -17,8 +17,7 @@ bool ParseNumber(std::string_view token, double* value) {
   return !token.empty() && ec == std::errc() && ptr == end;
 }
 
-bool ParseNumbers(std::string_view text, std::vector<double>* values,
-                  std::string_view* bad_token) {
+bool ParseNumbers(std::string_view text, std::vector<double>* values, std::string_view* bad_token) {
   size_t i = 0;
   while (i < text.size()) {
     while (i < text.size() && IsXmlSpace(text[i])) ++i;

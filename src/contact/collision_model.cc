@@ -19,8 +19,8 @@ CollisionModel BuildCollisionModel(const ModelSpec& spec, const std::vector<int>
   // One segment per joint end that lies on a body other than ground.
   std::vector<double> lengths;
   for (const JointSpec& j : spec.joints) {
-    for (const auto& [body, p_BJ] : {std::pair{j.parent_body, j.X_PF.p},
-                                     std::pair{j.child_body, j.X_BM.p}}) {
+    for (const auto& [body, p_BJ] :
+         {std::pair{j.parent_body, j.X_PF.p}, std::pair{j.child_body, j.X_BM.p}}) {
       if (body == kGroundIndex || p_BJ.norm() < kShortestSegment) continue;
       model.shapes.push_back({body, Vec3::Zero(), p_BJ, 0.0});
       lengths.push_back(p_BJ.norm());

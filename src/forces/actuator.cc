@@ -68,9 +68,8 @@ void TorqueActuator::AddLoads(const engine::System& /*system*/, const engine::St
                               engine::Loads& loads) const {
   const double torque = CalcActuation(state.t);
   if (torque == 0.0) return;
-  const Vec3 axis_G = torque_is_global_
-                          ? unit_axis_
-                          : Vec3(engine::PoseOf(state.bodies[body_a_]).R * unit_axis_);
+  const Vec3 axis_G =
+      torque_is_global_ ? unit_axis_ : Vec3(engine::PoseOf(state.bodies[body_a_]).R * unit_axis_);
   // AddTorqueBetween(x, y, tau) puts +tau on y and -tau on x: here +tau on A, -tau on B.
   loads.AddTorqueBetween(body_b_, body_a_, torque * axis_G);
 }

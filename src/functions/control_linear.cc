@@ -7,9 +7,12 @@
 
 namespace sinew {
 
-ControlLinear::ControlLinear(std::vector<double> times, std::vector<double> values,
-                             bool use_steps, bool extrapolate)
-    : t_(std::move(times)), v_(std::move(values)), use_steps_(use_steps), extrapolate_(extrapolate) {
+ControlLinear::ControlLinear(std::vector<double> times, std::vector<double> values, bool use_steps,
+                             bool extrapolate)
+    : t_(std::move(times)),
+      v_(std::move(values)),
+      use_steps_(use_steps),
+      extrapolate_(extrapolate) {
   if (t_.empty() || t_.size() != v_.size()) {
     throw Error("ControlLinear needs as many values as times, and at least one node");
   }

@@ -42,11 +42,10 @@ FunctionPtr ReadControlLinear(const XmlDocument& doc, const pugi::xml_node& cont
     }
   }
   if (times.empty()) doc.Fail(control, component, "the control has no <x_nodes>");
-  return std::make_shared<ControlLinear>(std::move(times), std::move(values),
-                                         ReadOptionalBool(doc, control, "use_steps", component,
-                                                          false),
-                                         ReadOptionalBool(doc, control, "extrapolate", component,
-                                                          true));
+  return std::make_shared<ControlLinear>(
+      std::move(times), std::move(values),
+      ReadOptionalBool(doc, control, "use_steps", component, false),
+      ReadOptionalBool(doc, control, "extrapolate", component, true));
 }
 
 }  // namespace
@@ -56,8 +55,8 @@ std::map<std::string, FunctionPtr> ReadControlSet(const std::string& file) {
   pugi::xml_node set = doc.root();
   if (std::string_view(set.name()) == "OpenSimDocument") set = set.child("ControlSet");
   if (!set || std::string_view(set.name()) != "ControlSet") {
-    doc.Fail(doc.root(), "", "not a ControlSet file (root element <" +
-                                 std::string(doc.root().name()) + ">)");
+    doc.Fail(doc.root(), "",
+             "not a ControlSet file (root element <" + std::string(doc.root().name()) + ">)");
   }
   std::map<std::string, FunctionPtr> controls;
   for (const pugi::xml_node& control : set.child("objects").children()) {

@@ -29,8 +29,7 @@ double ElementValues::Double(std::string_view tag, double fallback) const {
   if (!child) return fallback;
   std::vector<double> values;
   if (!ParseNumbers(child->text, &values) || values.size() != 1) {
-    Fail("<" + std::string(tag) + "> expects one number, found '" + child->text + "'",
-         child->line);
+    Fail("<" + std::string(tag) + "> expects one number, found '" + child->text + "'", child->line);
   }
   return values[0];
 }
@@ -40,8 +39,7 @@ Vec3 ElementValues::Vector3(std::string_view tag, const Vec3& fallback) const {
   if (!child) return fallback;
   std::vector<double> values;
   if (!ParseNumbers(child->text, &values) || values.size() != 3) {
-    Fail("<" + std::string(tag) + "> expects 3 numbers, found '" + child->text + "'",
-         child->line);
+    Fail("<" + std::string(tag) + "> expects 3 numbers, found '" + child->text + "'", child->line);
   }
   return {values[0], values[1], values[2]};
 }

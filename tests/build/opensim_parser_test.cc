@@ -284,6 +284,34 @@ TEST(OpenSimParserTest, CollisionFamiliesAlternateWithTreeDepth) {
   }
 }
 
+TEST(OpenSimParserTest, VisualizationTypeChoosesTheVisualAssets) {
+  // PRIMITIVES: every body gets parts (a sphere and its segments); NONE: no parts at all.
+  OpenSimParser parser;
+  parser.SetVisualizationType(VisType::PRIMITIVES);
+  parser.Parse(kChronoDir + "triple_revolute.osim");
+  const viz::VisualScene& scene = parser.GetVisualScene();
+  ASSERT_EQ(scene.bodies.size(), parser.GetSpec().bodies.size());
+  for (size_t b = 1; b < scene.bodies.size(); ++b) EXPECT_FALSE(scene.bodies[b].parts.empty());
+
+  // MESH: the model names mesh files (cylinder.vtp, sphere.vtp) not shipped beside it: each is
+  // a warning naming the file, and the body falls back to primitives.
+  OpenSimParser mesh;
+  mesh.SetVisualizationType(VisType::MESH);
+  mesh.Parse(kChronoDir + "double_pendulum.osim");
+  bool missing_mesh_warned = false;
+  for (const Diagnostic& w : mesh.GetReport().warnings()) {
+    missing_mesh_warned |= w.message.find("not found") != std::string::npos;
+  }
+  EXPECT_TRUE(missing_mesh_warned);
+  for (size_t b = 1; b < mesh.GetVisualScene().bodies.size(); ++b) {
+    EXPECT_FALSE(mesh.GetVisualScene().bodies[b].parts.empty());
+  }
+
+  OpenSimParser none;
+  none.Parse(kChronoDir + "triple_revolute.osim");
+  for (const viz::VisualBody& body : none.GetVisualScene().bodies) EXPECT_TRUE(body.parts.empty());
+}
+
 TEST(OpenSimParserTest, UnknownActuatorNameIsAnError) {
   OpenSimParser parser;
   parser.Parse(kChronoDir + "torque-actuator.osim");
