@@ -8,6 +8,7 @@ for kind in release asan; do
   bash "$root/scripts/build.sh" "$kind"
   echo "== $kind tests"
   (cd "$root/build/$kind" && ctest --output-on-failure -j "$(nproc)")
+  if [ "$kind" = release ]; then bash "$root/scripts/check-install.sh" "$root/build/release"; fi
 done
 # The .osim reader's fuzz target, for a bounded time (needs clang with libFuzzer).
 echo "== fuzz (60 s)"

@@ -31,10 +31,12 @@ void Note(Diagnostics* notes, const SourceLocation& where, const std::string& co
 
 }  // namespace
 
-std::unique_ptr<engine::System> BuildSystem(const ModelSpec& spec, const BuildOptions& options,
-                                            Diagnostics* notes) {
-  auto system = std::make_unique<engine::System>(spec.gravity);
+SpecToSystem BuildInto(const ModelSpec& spec, engine::System& system, const BuildOptions& options,
+                       Diagnostics* notes) {
   if (spec.bodies.empty()) throw Error({spec.file, 0}, "/ground", "the model has no ground");
+  SpecToSystem map;
+  map.bodies.assign(spec.bodies.size(), 0);
+  map.coordinates.assign(spec.coordinates.size(), kNone);
   for (size_t b = 1; b < spec.bodies.size(); ++b) {
     const BodySpec& body = spec.bodies[b];
     if (!(body.mass >= 0.0) || !std::isfinite(body.mass)) {
@@ -46,7 +48,7 @@ std::unique_ptr<engine::System> BuildSystem(const ModelSpec& spec, const BuildOp
     e.p_BCm = body.mass_center;
     e.I_Bcm_B = body.inertia;
     try {
-      system->AddBody(e);
+      map.bodies[b] = system.AddBody(e);
     } catch (const Error& error) {
       throw Error(body.where, body.path, error.message());
     }
@@ -78,13 +80,25 @@ std::unique_ptr<engine::System> BuildSystem(const ModelSpec& spec, const BuildOp
     if (!options.direct_joints || constrained_coordinate) form = engine::JointForm::kParameterized;
     try {
       std::shared_ptr<const JointModel> model = MakeJointModel(spec, static_cast<int>(j));
-      system->AddJoint(joint.name, joint.parent_body, joint.X_PF, joint.child_body, joint.X_BM,
-                       form, std::move(model), coordinates);
+      const int engine_joint = system.AddJoint(joint.name, map.bodies[joint.parent_body],
+                                               joint.X_PF, map.bodies[joint.child_body], joint.X_BM,
+                                               form, std::move(model), coordinates);
+      map.joints.push_back(engine_joint);
+      for (size_t k = 0; k < joint.coordinates.size(); ++k) {
+        map.coordinates[joint.coordinates[k]] = system.joints()[engine_joint].coordinates[k];
+      }
     } catch (const Error& error) {
       if (!error.where().file.empty()) throw;
       throw Error(joint.where, joint.path, error.message());
     }
   }
+  return map;
+}
+
+std::unique_ptr<engine::System> BuildSystem(const ModelSpec& spec, const BuildOptions& options,
+                                            Diagnostics* notes) {
+  auto system = std::make_unique<engine::System>(spec.gravity);
+  BuildInto(spec, *system, options, notes);
   for (const ConstraintSpec& c : spec.constraints) {
     if (c.enabled) Note(notes, c.where, c.path, c.type + " is not simulated by the skeleton build");
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "common/error.h"
 #include "engine/system.h"
@@ -17,6 +18,20 @@ struct BuildOptions {
   /// parameterized form. Joints with locked or prescribed coordinates always use the latter.
   bool direct_joints = true;
 };
+
+/// Where each spec element went in an engine::System (spec index -> engine index).
+struct SpecToSystem {
+  std::vector<int> bodies;       ///< per spec body (0, ground, maps to engine ground 0)
+  std::vector<int> joints;       ///< per spec joint
+  std::vector<int> coordinates;  ///< per spec coordinate (kNone for one no joint uses)
+};
+
+/// Adds `spec`'s skeleton (bodies, joints, coordinates) to `system`, which must not be
+/// finalized; bodies, joints and coordinates are appended after what `system` already holds,
+/// the spec's ground being the system's ground. Gravity, forces and constraints are left to the
+/// caller. Throws sinew::Error (file, line, component) for a skeleton that cannot be built.
+SpecToSystem BuildInto(const ModelSpec& spec, engine::System& system, const BuildOptions& options,
+                       Diagnostics* notes);
 
 /// Builds the engine system of `spec`'s skeleton: engine body i is spec body i (0 = ground),
 /// engine joint j is spec joint j, engine coordinate c is spec coordinate c (same names).

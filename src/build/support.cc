@@ -1,11 +1,17 @@
 #include "build/support.h"
 
+#include "build/actuator_builder.h"
+
 namespace sinew {
 
 bool IsJointSimulated(const JointSpec& joint) { return joint.kind != JointType::kUnknown; }
-bool IsForceSimulated(const ForceSpec& /*force*/) { return false; }
+bool IsForceSimulated(const ForceSpec& force) {
+  return force.applies_force && IsIdealActuator(force.type);
+}
 bool IsConstraintSimulated(const ConstraintSpec& /*constraint*/) { return false; }
-bool IsControllerSimulated(const ControllerSpec& /*controller*/) { return false; }
+bool IsControllerSimulated(const ControllerSpec& controller) {
+  return controller.type == "PrescribedController";
+}
 bool IsContactGeometrySimulated(const ContactGeometrySpec& /*contact*/) { return false; }
 bool IsWrapObjectSimulated(const WrapObjectSpec& /*wrap*/) { return false; }
 

@@ -11,11 +11,11 @@ namespace sinew {
 
 /// True if the engine can build this joint (every type Sinew knows; not kUnknown).
 bool IsJointSimulated(const JointSpec& joint);
-/// True if the engine simulates forces of this OpenSim class (none yet).
+/// True if the engine simulates this force (PointActuator, TorqueActuator, CoordinateActuator).
 bool IsForceSimulated(const ForceSpec& force);
 /// True if the engine enforces constraints of this OpenSim class (none yet).
 bool IsConstraintSimulated(const ConstraintSpec& constraint);
-/// True if the engine runs controllers of this OpenSim class (none yet).
+/// True if the engine runs controllers of this OpenSim class (PrescribedController).
 bool IsControllerSimulated(const ControllerSpec& controller);
 /// True if the engine uses contact geometry of this OpenSim class (none yet).
 bool IsContactGeometrySimulated(const ContactGeometrySpec& contact);

@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "io/osim_context.h"
+#include "io/read_function.h"
 
 namespace sinew::osim {
 namespace {
@@ -91,6 +92,21 @@ void ReadContactGeometry(ReadContext& ctx, const pugi::xml_node& model) {
   }
 }
 
+// A PrescribedController's FunctionSet: one function per actuator, in actuator_list order.
+void ReadControlFunctions(const XmlDocument& doc, const pugi::xml_node& node, ControllerSpec& c) {
+  const std::string path = "/controllerset/" + c.name;
+  for (pugi::xml_node set : node.children("FunctionSet")) {
+    for (pugi::xml_node f : set.child("objects").children()) {
+      if (f.type() == pugi::node_element) c.functions.push_back(ReadFunction(doc, f, path));
+    }
+  }
+  if (c.functions.size() != c.actuators.size()) {
+    doc.Fail(node, path,
+             std::to_string(c.actuators.size()) + " actuator(s) but " +
+                 std::to_string(c.functions.size()) + " control function(s)");
+  }
+}
+
 void ReadControllers(ReadContext& ctx, const pugi::xml_node& model) {
   const XmlDocument& doc = ctx.doc();
   for (pugi::xml_node node : ObjectsOf(model.child("ControllerSet"))) {
@@ -102,6 +118,7 @@ void ReadControllers(ReadContext& ctx, const pugi::xml_node& model) {
     std::istringstream names(list);
     std::string name;
     while (names >> name) c.actuators.push_back(name);
+    if (c.type == "PrescribedController") ReadControlFunctions(doc, node, c);
     c.element = ToElement(doc, node);
     c.where = doc.Where(node);
     ctx.spec().controllers.push_back(std::move(c));

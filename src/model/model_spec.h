@@ -202,6 +202,8 @@ struct ControllerSpec {
   std::string name;
   std::string type;
   std::vector<std::string> actuators;
+  /// PrescribedController: one control function of time per entry of `actuators`.
+  std::vector<FunctionPtr> functions;
   Element element;
   SourceLocation where;
 };

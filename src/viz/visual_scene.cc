@@ -4,6 +4,7 @@
 #include <map>
 
 #include "io/mesh_file.h"
+#include "kinematics/body_depths.h"
 #include "viz/primitive_shapes.h"
 
 namespace sinew::viz {
@@ -74,7 +75,9 @@ class SceneBuilder {
 
   VisualScene Build() {
     VisualScene scene;
-    const std::vector<int> depth = BodyDepths(spec_);
+    // Unreached bodies (depth -1) are coloured as the root.
+    std::vector<int> depth = CalcBodyDepths(spec_);
+    for (int& d : depth) d = std::max(d, 0);
     const int max_depth = *std::max_element(depth.begin(), depth.end());
     const double radius = SkeletonRadius(spec_);
     for (int b = 0; b < static_cast<int>(spec_.bodies.size()); ++b) {
@@ -221,27 +224,6 @@ VisMode ParseVisMode(const std::string& text) {
   if (text == "primitives") return VisMode::kPrimitives;
   if (text == "mesh") return VisMode::kMesh;
   throw Error("unknown visualization mode '" + text + "' (expected none, primitives or mesh)");
-}
-
-std::vector<int> BodyDepths(const ModelSpec& spec) {
-  const int n = static_cast<int>(spec.bodies.size());
-  std::vector<int> depth(n, -1);
-  if (n > 0) depth[kGroundIndex] = 0;
-  // Relax over the joints until no depth changes (joints may be listed in any order).
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (const JointSpec& j : spec.joints) {
-      if (j.parent_body < 0 || j.parent_body >= n || j.child_body < 0 || j.child_body >= n) {
-        continue;
-      }
-      if (depth[j.parent_body] >= 0 && depth[j.child_body] < 0) {
-        depth[j.child_body] = depth[j.parent_body] + 1;
-        changed = true;
-      }
-    }
-  }
-  for (int& d : depth) d = std::max(d, 0);
-  return depth;
 }
 
 VisualScene BuildVisualScene(const ModelSpec& spec, const VisualOptions& options) {

@@ -59,7 +59,4 @@ struct VisualOptions {
 /// and is drawn with primitives instead. Mesh files shared by several bodies are read once.
 VisualScene BuildVisualScene(const ModelSpec& spec, const VisualOptions& options);
 
-/// Depth of each body in the joint tree (ground 0; bodies no joint reaches get 0).
-std::vector<int> BodyDepths(const ModelSpec& spec);
-
 }  // namespace sinew::viz

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "kinematics/body_depths.h"
 #include "math/rotation.h"
 #include "viz/export_animation.h"
 #include "viz/glb_test_util.h"
@@ -72,7 +73,7 @@ TEST(VisualSceneTest, ArrowsAndLinesBecomeCylindersAndCones) {
 
 TEST(VisualSceneTest, PrimitivesLinkEachBodyFrameToItsJointsColouredByDepth) {
   const ModelSpec spec = testing::TwoLinkSpec();
-  EXPECT_EQ(BodyDepths(spec), (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(CalcBodyDepths(spec), (std::vector<int>{0, 1, 2}));
   VisualOptions options;
   options.mode = VisMode::kPrimitives;
   VisualScene scene = BuildVisualScene(spec, options);

@@ -1,0 +1,23 @@
+// Small text utilities shared by the file readers.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+namespace sinew {
+
+/// True for the XML white-space characters (space, tab, CR, LF).
+inline bool IsXmlSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+/// `text` without leading and trailing white space.
+std::string_view TrimSpace(std::string_view text);
+
+/// Parses one number (a leading '+' allowed); false unless the whole token is a number.
+bool ParseNumber(std::string_view token, double* value);
+
+/// Appends the white-space separated numbers of `text` to `values`. On a token that is not a
+/// number returns false and sets `bad_token` (when not null) to it.
+bool ParseNumbers(std::string_view text, std::vector<double>* values,
+                  std::string_view* bad_token = nullptr);
+
+}  // namespace sinew
