@@ -9,6 +9,8 @@ namespace sinew {
 namespace {
 
 TEST(Support, ListsEverythingNotSimulatedYet) {
+  // Ideal actuators and PrescribedControllers are simulated; muscles, other controllers,
+  // constraints, contact geometry, wrap objects and unknown joints are not yet.
   const std::string text = R"(<OpenSimDocument Version="40000"><Model name="m">
 <Ground name="ground"/>
 <BodySet><objects><Body name="b"><mass>1</mass>
@@ -20,11 +22,13 @@ TEST(Support, ListsEverythingNotSimulatedYet) {
   <MyPluginJoint name="plugin"><socket_parent_frame>/bodyset/b</socket_parent_frame>
     <socket_child_frame>/bodyset/c</socket_child_frame></MyPluginJoint>
 </objects></JointSet>
-<ForceSet><objects><CoordinateActuator name="act"><coordinate>x</coordinate></CoordinateActuator></objects></ForceSet>
+<ForceSet><objects><CoordinateActuator name="act"><coordinate>x</coordinate></CoordinateActuator>
+  <Thelen2003Muscle name="musc"/></objects></ForceSet>
 <ConstraintSet><objects><WeldConstraint name="weld"/></objects></ConstraintSet>
 <ContactGeometrySet><objects><ContactSphere name="cs"><socket_frame>/bodyset/c</socket_frame>
   <radius>0.2</radius></ContactSphere></objects></ContactGeometrySet>
-<ControllerSet><objects><PrescribedController name="ctl"/></objects></ControllerSet>
+<ControllerSet><objects><PrescribedController name="ctl"/><ToyReflexController name="reflex"/>
+</objects></ControllerSet>
 <ProbeSet><objects><JointInternalPowerProbe name="probe"/></objects></ProbeSet>
 </Model></OpenSimDocument>)";
   const ModelSpec spec = ReadOsimString(text, "support.osim");
@@ -34,8 +38,8 @@ TEST(Support, ListsEverythingNotSimulatedYet) {
   EXPECT_EQ(plugin.parent_body, spec.FindBody("b"));
   EXPECT_EQ(plugin.child_body, spec.FindBody("c"));
   const std::vector<std::string> expected = {
-      "/jointset/plugin: MyPluginJoint",       "/forceset/act: CoordinateActuator",
-      "/constraintset/weld: WeldConstraint",   "/controllerset/ctl: PrescribedController",
+      "/jointset/plugin: MyPluginJoint",       "/forceset/musc: Thelen2003Muscle",
+      "/constraintset/weld: WeldConstraint",   "/controllerset/reflex: ToyReflexController",
       "/contactgeometryset/cs: ContactSphere", "/bodyset/b/wrapobjectset/ws: WrapSphere",
       "/probe: JointInternalPowerProbe",
   };
