@@ -1,4 +1,5 @@
-// `sinew inspect MODEL.osim [--json]`: what a model file says, as text or one JSON object.
+// `sinew inspect MODEL.osim [--json]`: what a model file says and what the OpenSim parser
+// builds from it (its Report), as text or one JSON object.
 #include <iostream>
 #include <map>
 #include <memory>
@@ -6,6 +7,7 @@
 #include <string>
 
 #include "apps/sinew/commands.h"
+#include "build/opensim_parser.h"
 #include "build/support.h"
 #include "io/osim_reader.h"
 
@@ -147,6 +149,63 @@ void PrintText(const ModelSpec& spec, std::ostream& os) {
   for (const std::string& line : not_simulated) os << "  " << line << "\n";
 }
 
+// What the parser builds from `spec`: its Report, or why the model cannot be simulated.
+struct BuildOutcome {
+  OpenSimParser parser;
+  std::string error;  // empty when the build succeeded
+};
+
+std::unique_ptr<BuildOutcome> BuildForReport(const ModelSpec& spec) {
+  auto outcome = std::make_unique<BuildOutcome>();
+  try {
+    engine::System system;
+    outcome->parser.ParseSpec(system, spec);
+    system.Finalize();
+  } catch (const Error& e) {
+    outcome->error = e.what();
+  }
+  return outcome;
+}
+
+nlohmann::json ReportToJson(const BuildOutcome& outcome) {
+  using nlohmann::json;
+  json out;
+  out["simulatable"] = outcome.error.empty();
+  if (!outcome.error.empty()) {
+    out["error"] = outcome.error;
+    return out;
+  }
+  const Report& report = outcome.parser.GetReport();
+  json joints = json::array();
+  for (const auto& [key, info] : report.joints()) {
+    joints.push_back({{"name", key},
+                      {"type", info.type},
+                      {"engine_joint", JointFormName(info.form)},
+                      {"standin", info.standin}});
+  }
+  out["joints"] = joints;
+  json forces = json::array();
+  for (const auto& [key, info] : report.forces()) {
+    json force = {{"name", key}, {"type", info.type}, {"simulated", info.load != nullptr}};
+    if (info.actuator) force["excitation"] = info.excitation_source;
+    forces.push_back(force);
+  }
+  out["forces"] = forces;
+  json warnings = json::array();
+  for (const Diagnostic& d : report.warnings()) warnings.push_back(d.Format());
+  out["warnings"] = warnings;
+  return out;
+}
+
+void PrintReport(const BuildOutcome& outcome, std::ostream& os) {
+  os << "\nbuilt by the parser:\n";
+  if (!outcome.error.empty()) {
+    os << "  cannot be simulated: " << outcome.error << "\n";
+    return;
+  }
+  outcome.parser.GetReport().Print(os);
+}
+
 }  // namespace
 
 void AddInspectCommand(CLI::App& app) {
@@ -160,10 +219,14 @@ void AddInspectCommand(CLI::App& app) {
   cmd->add_flag("--json", options->json, "Print one JSON object instead of text");
   cmd->callback([options]() {
     const ModelSpec spec = ReadOsim(options->model);
+    const std::unique_ptr<BuildOutcome> build = BuildForReport(spec);
     if (options->json) {
-      std::cout << ToJson(spec).dump(2) << "\n";
+      nlohmann::json out = ToJson(spec);
+      out["build"] = ReportToJson(*build);
+      std::cout << out.dump(2) << "\n";
     } else {
       PrintText(spec, std::cout);
+      PrintReport(*build, std::cout);
     }
   });
 }

@@ -1,6 +1,8 @@
 // `sinew simulate MODEL.osim --duration T [--accuracy A] [--integrator NAME] [--step H]
-//  [--report-interval DT] [--initial-states FILE.sto] [--quiet] --out DIR`: a passive forward
-// simulation of the model's skeleton. Writes DIR/states.sto (every coordinate's value and speed,
+//  [--report-interval DT] [--initial-states FILE.sto] [--activate-actuators]
+//  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--strict] [--export FILE] [--quiet]
+//  --out DIR`: a forward simulation of what the OpenSim parser builds (skeleton, ideal
+// actuators and their excitations). Writes DIR/states.sto (every coordinate's value and speed,
 // OpenSim 4 labels, radians and metres) and DIR/bodies.sto (OpenSim BodyKinematics positions).
 #include <unistd.h>
 
@@ -13,7 +15,8 @@
 #include <vector>
 
 #include "apps/sinew/commands.h"
-#include "build/build_system.h"
+#include "apps/sinew/excitation_option.h"
+#include "build/opensim_parser.h"
 #include "common/error.h"
 #include "engine/assemble.h"
 #include "engine/integrator.h"
@@ -22,6 +25,7 @@
 #include "io/storage.h"
 #include "io/storage_labels.h"
 #include "kinematics/body_kinematics.h"
+#include "viz/export_animation.h"
 
 namespace sinew::cli {
 namespace {
@@ -36,6 +40,13 @@ struct SimulateOptions {
   std::string initial_states;
   std::string out;
   bool quiet = false;
+  bool activate_actuators = false;
+  std::vector<std::string> excitations;
+  std::string controls;
+  bool strict = false;
+  std::string export_file;
+  std::string vis = "mesh";
+  std::vector<std::string> geometry_dirs;
 };
 
 // Takes the first row of an initial-states file (OpenSim 4 paths or old names; rotational
@@ -76,14 +87,21 @@ void RunSimulate(const SimulateOptions& options) {
   ModelSpec spec = ReadOsim(options.model);
   double t0 = 0.0;
   if (!options.initial_states.empty()) t0 = ApplyInitialStates(options.initial_states, spec);
-  Diagnostics notes;
-  const std::unique_ptr<engine::System> system = BuildSystem(spec, {}, &notes);
-  if (!options.quiet && !notes.empty()) {
-    // The skeleton build simulates bodies, joints, coordinates and gravity only: say what else
-    // the model has.
-    std::cerr << "sinew: note: " << notes.size()
-              << " components are not simulated (skeleton only), e.g. " << notes[0].Format()
-              << "\n";
+  OpenSimParser parser;
+  parser.ActivateActuators(options.activate_actuators);
+  parser.SetControlsFile(options.controls);
+  parser.SetStrict(options.strict);
+  auto system = std::make_unique<engine::System>();
+  parser.ParseSpec(*system, spec);
+  system->Finalize();
+  for (const std::string& option : options.excitations) {
+    auto [name, function] = ParseExcitationOption(option);
+    parser.SetExcitationFunction(name, std::move(function));
+  }
+  const Report& report = parser.GetReport();
+  if (!options.quiet && (!report.not_simulated().empty() || !report.warnings().empty())) {
+    std::cerr << "sinew: note: " << report.not_simulated().size() << " element(s) not simulated, "
+              << report.warnings().size() << " warning(s); `sinew inspect` lists them\n";
   }
   engine::State state = engine::MakeDefaultState(*system, t0);
   engine::IntegratorSettings settings;
@@ -104,7 +122,9 @@ void RunSimulate(const SimulateOptions& options) {
   bodies.name = "Positions";
   bodies.labels = BodyKinematicsLabels(spec);
   bodies.in_degrees = true;
+  // A fresh system holds the spec's bodies in spec order (stand-ins add none).
   std::vector<Transform> X_GB(system->num_bodies());
+  viz::BodyMotion motion;
   auto record = [&]() {
     std::vector<double> row;
     for (int c = 0; c < system->num_coordinates(); ++c) {
@@ -114,6 +134,10 @@ void RunSimulate(const SimulateOptions& options) {
     states.AppendRow(state.t, row);
     for (int b = 0; b < system->num_bodies(); ++b) X_GB[b] = engine::PoseOf(state.bodies[b]);
     bodies.AppendRow(state.t, CalcBodyKinematicsRow(spec, X_GB));
+    if (!options.export_file.empty()) {
+      motion.times.push_back(state.t);
+      motion.X_GB.push_back(X_GB);
+    }
   };
 
   const bool progress = !options.quiet && isatty(fileno(stderr));
@@ -129,6 +153,15 @@ void RunSimulate(const SimulateOptions& options) {
   if (progress) std::fprintf(stderr, "\n");
   WriteStorage(states, options.out + "/states.sto");
   WriteStorage(bodies, options.out + "/bodies.sto");
+  if (!options.export_file.empty()) {
+    viz::ExportOptions export_options;
+    export_options.visual.mode = viz::ParseVisMode(options.vis);
+    export_options.visual.geometry_dirs = options.geometry_dirs;
+    for (const Diagnostic& w :
+         viz::ExportAnimation(spec, motion, options.export_file, export_options)) {
+      if (!options.quiet) std::cerr << "sinew: warning: " << w.Format() << "\n";
+    }
+  }
   if (!options.quiet) {
     const auto& stats = integrator->stats();
     std::cout << "simulated " << options.duration << " s of " << spec.name << ": " << stats.steps
@@ -141,8 +174,8 @@ void RunSimulate(const SimulateOptions& options) {
 
 void AddSimulateCommand(CLI::App& app) {
   auto options = std::make_shared<SimulateOptions>();
-  CLI::App* cmd =
-      app.add_subcommand("simulate", "Passive forward simulation of a model's skeleton");
+  CLI::App* cmd = app.add_subcommand(
+      "simulate", "Forward simulation of a model (skeleton and ideal actuators)");
   cmd->add_option("model", options->model, "The .osim file")->required();
   cmd->add_option("--duration", options->duration, "Simulated time (s)")->required();
   cmd->add_option("--accuracy", options->accuracy, "Integrator accuracy (default 1e-6)");
@@ -154,6 +187,21 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--initial-states", options->initial_states,
                   "Storage file whose first row gives the initial coordinates and speeds");
   cmd->add_option("--out", options->out, "Output folder")->required();
+  cmd->add_flag("--activate-actuators", options->activate_actuators,
+                "Excite every actuator with the constant 1");
+  cmd->add_option("--excitation", options->excitations,
+                  "NAME=constant:V | NAME=ramp:START,SLOPE | NAME=sine:AMPLITUDE,FREQUENCY_HZ,PHASE"
+                  " (repeatable; overrides the other sources for that actuator)");
+  cmd->add_option("--controls", options->controls,
+                  "OpenSim ControlSet file (e.g. *_controls.xml) driving the actuators it names");
+  cmd->add_flag("--strict", options->strict,
+                "Fail if anything in the model is approximated or not simulated");
+  cmd->add_option("--export", options->export_file,
+                  "Also write the motion as a .glb or self-contained .html viewer");
+  cmd->add_option("--vis", options->vis, "Visualization for --export: mesh (default), primitives")
+      ->check(CLI::IsMember({"primitives", "mesh"}));
+  cmd->add_option("--geometry-dir", options->geometry_dirs,
+                  "Extra folder to search for mesh files (repeatable)");
   cmd->add_flag("--quiet", options->quiet, "No progress bar or summary");
   cmd->callback([options]() { RunSimulate(*options); });
 }

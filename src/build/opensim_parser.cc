@@ -13,6 +13,13 @@
 namespace sinew {
 namespace {
 
+// The name a component is reported under: the last segment of its path, which the reader has
+// already made unique (a repeated joint name `sph1` becomes `/jointset/sph1_2`, with a warning).
+std::string ReportName(const std::string& path, const std::string& name) {
+  const size_t slash = path.find_last_of('/');
+  return path.empty() || slash == std::string::npos ? name : path.substr(slash + 1);
+}
+
 // Replaces every joint of unknown type by a ball joint with three new coordinates, F and M
 // coincident at the start (the seed's stand-in). Returns which joints were replaced.
 std::vector<bool> ReplaceUnknownJoints(ModelSpec& spec, Report& report) {
@@ -61,7 +68,11 @@ std::unique_ptr<engine::System> OpenSimParser::Parse(const std::string& filename
 }
 
 void OpenSimParser::Parse(engine::System& system, const std::string& filename) {
-  spec_ = ReadOsim(filename);
+  ParseSpec(system, ReadOsim(filename));
+}
+
+void OpenSimParser::ParseSpec(engine::System& system, ModelSpec spec) {
+  spec_ = std::move(spec);
   report_ = Report();
   collision_ = CollisionModel();
   contact_method_ = ContactMethod::NSC;
@@ -84,8 +95,8 @@ void OpenSimParser::Parse(engine::System& system, const std::string& filename) {
   }
   for (size_t j = 0; j < built.joints.size(); ++j) {
     const int engine_joint = map.joints[j];
-    report_.AddJoint({built.joints[j].name, built.joints[j].type, engine_joint,
-                      system.joints()[engine_joint].form, standin[j]});
+    report_.AddJoint({ReportName(built.joints[j].path, built.joints[j].name), built.joints[j].type,
+                      engine_joint, system.joints()[engine_joint].form, standin[j]});
   }
   BuildActuators(system, map.bodies, map.coordinates);
   AssignExcitations();
@@ -108,7 +119,7 @@ void OpenSimParser::Parse(engine::System& system, const std::string& filename) {
 void OpenSimParser::BuildActuators(engine::System& system, const std::vector<int>& body_map,
                                    const std::vector<int>& coordinate_map) {
   for (const ForceSpec& force : spec_.forces) {
-    ForceInfo info{force.name, force.type, nullptr, nullptr, ""};
+    ForceInfo info{ReportName(force.path, force.name), force.type, nullptr, nullptr, ""};
     if (IsForceSimulated(force)) {
       info.actuator = MakeActuator(spec_, force, body_map, coordinate_map);
       info.load = info.actuator;

@@ -59,6 +59,9 @@ class OpenSimParser {
   /// Reads `filename` and adds its bodies, joints and actuators to `system` (which must not be
   /// finalized yet; call system.Finalize() before simulating). Throws sinew::Error.
   void Parse(engine::System& system, const std::string& filename);
+  /// As Parse(system, filename), from a spec already read (e.g. one whose defaults were set
+  /// from an initial-states file).
+  void ParseSpec(engine::System& system, ModelSpec spec);
   /// Creates a system (gravity from the file), parses `filename` into it, finalizes it and
   /// returns it; the caller owns it.
   std::unique_ptr<engine::System> Parse(const std::string& filename,

@@ -43,9 +43,10 @@ struct ForceInfo {
   std::string excitation_source;
 };
 
-/// Everything one Parse call built. Names are the file's; when a name repeats within a kind
-/// (chrono's newton_cradle.osim names five joints `sph1`), the later ones are kept as
-/// `name#2`, `name#3`, ... and a warning says so.
+/// Everything one Parse call built, by name. A name repeated within a kind (chrono's
+/// newton_cradle.osim names five joints `sph1`) is reported under the unique path name the
+/// reader gave it (`sph1`, `sph1_2`, ... with a warning from the reader); should two entries
+/// still share a key, the later ones are kept as `name#2`, `name#3`, ... with a warning.
 class Report {
  public:
   /// Prints a readable table of bodies, joints, forces and warnings.
