@@ -208,14 +208,10 @@ class RungeKutta45 final : public Integrator {
   bool just_rejected_ = false;
 };
 
-// Fixed-step semi-implicit Euler on the velocity-level KKT system, with projection.
-class SemiImplicitEuler final : public Integrator {
+// The schemes that advance by a fixed step `settings.step` (the last step of a StepTo call
+// shortened to land exactly on t_final).
+class FixedStepIntegrator : public Integrator {
  public:
-  SemiImplicitEuler(const System& system, const IntegratorSettings& settings)
-      : Integrator(system, settings) {
-    if (!(settings.step > 0.0)) throw Error("integrator 'euler' needs a step > 0");
-  }
-
   void StepTo(State& state, double t_final) override {
     CheckState(system_, state);
     if (t_final < state.t) throw Error("integrator: cannot step backwards in time");
@@ -227,8 +223,25 @@ class SemiImplicitEuler final : public Integrator {
     }
   }
 
+ protected:
+  FixedStepIntegrator(const System& system, const IntegratorSettings& settings, const char* name)
+      : Integrator(system, settings) {
+    if (!(settings.step > 0.0)) {
+      throw Error(std::string("integrator '") + name + "' needs a step > 0");
+    }
+  }
+  // One step of length h from state.t, ending at time t_new.
+  virtual void Step(State& state, double h, double t_new) = 0;
+};
+
+// Fixed-step semi-implicit Euler on the velocity-level KKT system, with projection.
+class SemiImplicitEuler final : public FixedStepIntegrator {
+ public:
+  SemiImplicitEuler(const System& system, const IntegratorSettings& settings)
+      : FixedStepIntegrator(system, settings, "euler") {}
+
  private:
-  void Step(State& state, double h, double t_new) {
+  void Step(State& state, double h, double t_new) override {
     const int nv = kkt_.num_velocities();
     // Accelerations' right-hand side f at (x, v); the same matrix serves the velocity solve.
     ++stats_.evaluations;
@@ -268,23 +281,10 @@ class SemiImplicitEuler final : public Integrator {
 // then positions move with v+ and are projected. Stable for stiff springs and dampers; the
 // dense solve and the O(n) load evaluations per Jacobian column make it O(n^2)-O(n^3): meant
 // for small stiff models.
-class LinearizedImplicitEuler final : public Integrator {
+class LinearizedImplicitEuler final : public FixedStepIntegrator {
  public:
   LinearizedImplicitEuler(const System& system, const IntegratorSettings& settings)
-      : Integrator(system, settings) {
-    if (!(settings.step > 0.0)) throw Error("integrator 'implicit-euler' needs a step > 0");
-  }
-
-  void StepTo(State& state, double t_final) override {
-    CheckState(system_, state);
-    if (t_final < state.t) throw Error("integrator: cannot step backwards in time");
-    while (state.t < t_final) {
-      const double remaining = t_final - state.t;
-      const double h = remaining < 1.0001 * settings_.step ? remaining : settings_.step;
-      Step(state, h, h == remaining ? t_final : state.t + h);
-      ++stats_.steps;
-    }
-  }
+      : FixedStepIntegrator(system, settings, "implicit-euler") {}
 
  private:
   // The applied loads in KKT velocity layout (body rows, integrated speeds' rows).
@@ -299,7 +299,7 @@ class LinearizedImplicitEuler final : public Integrator {
     return f;
   }
 
-  void Step(State& state, double h, double t_new) {
+  void Step(State& state, double h, double t_new) override {
     const int nv = kkt_.num_velocities(), nc = kkt_.num_equations();
     ++stats_.evaluations;
     const Accelerations acc = CalcAccelerations(system_, state, external_, kkt_);

@@ -1,29 +1,14 @@
 #include "io/xml_document.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 
+#include "common/text.h"
+
 namespace sinew {
 namespace {
-
-bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
-
-std::string_view Trim(std::string_view s) {
-  while (!s.empty() && IsSpace(s.front())) s.remove_prefix(1);
-  while (!s.empty() && IsSpace(s.back())) s.remove_suffix(1);
-  return s;
-}
-
-// Parses one number token; accepts a leading '+', which from_chars does not.
-bool ParseNumber(std::string_view token, double* value) {
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  const char* end = token.data() + token.size();
-  auto [ptr, ec] = std::from_chars(token.data(), end, *value);
-  return ec == std::errc() && ptr == end;
-}
 
 // Makes nested comments (`<!-- a <!-- b --> c -->`) one comment, as a reader that counts
 // `<!--` and `-->` would see them: the inner markers become spaces, so pugixml sees one comment
@@ -186,7 +171,9 @@ void XmlDocument::Fail(const pugi::xml_node& node, const std::string& component,
   throw Error(Where(node), component, message);
 }
 
-std::string_view XmlDocument::Text(const pugi::xml_node& node) { return Trim(node.child_value()); }
+std::string_view XmlDocument::Text(const pugi::xml_node& node) {
+  return TrimSpace(node.child_value());
+}
 
 double XmlDocument::ReadDouble(const pugi::xml_node& node, const std::string& component) const {
   std::vector<double> values = ReadNumbers(node, component, 1);
@@ -196,21 +183,11 @@ double XmlDocument::ReadDouble(const pugi::xml_node& node, const std::string& co
 std::vector<double> XmlDocument::ReadNumbers(const pugi::xml_node& node,
                                              const std::string& component, int count) const {
   std::vector<double> values;
-  std::string_view text = Text(node);
-  size_t i = 0;
-  while (i < text.size()) {
-    while (i < text.size() && IsSpace(text[i])) ++i;
-    size_t start = i;
-    while (i < text.size() && !IsSpace(text[i])) ++i;
-    if (start == i) break;
-    double value = 0;
-    std::string_view token = text.substr(start, i - start);
-    if (!ParseNumber(token, &value)) {
-      Fail(
-          node, component,
-          "<" + std::string(node.name()) + "> expects numbers, found '" + std::string(token) + "'");
-    }
-    values.push_back(value);
+  std::string_view bad_token;
+  if (!ParseNumbers(Text(node), &values, &bad_token)) {
+    Fail(node, component,
+         "<" + std::string(node.name()) + "> expects numbers, found '" + std::string(bad_token) +
+             "'");
   }
   if (count >= 0 && static_cast<int>(values.size()) != count) {
     Fail(node, component,
