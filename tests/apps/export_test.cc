@@ -199,7 +199,9 @@ TEST_P(StatesExportTest, StatesFileDrivesThePendulumAsHandComputed) {
       kData + "/opensim-org/opensim-core/Applications/Analyze/tests/resources/SinglePin.osim";
   // Also as a simulation writes states: OpenSim 4 labels (/jointset/pin1/r1_z/value).
   const bool opensim4_labels = GetParam();
-  std::string states = kData + "/storage/SinglePin_states.sto";
+  std::string states = kData +
+                       "/opensim-org/opensim-core/Applications/Analyze/tests/resources/"
+                       "SinglePin_states.sto";
   if (opensim4_labels) {
     Storage relabelled = ReadStorage(states);
     for (std::string& label : relabelled.labels) {

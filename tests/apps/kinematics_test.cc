@@ -21,6 +21,8 @@ using sinew::testing::ReadStoTable;
 using sinew::testing::StoTable;
 
 const std::string kData = std::string(SINEW_TEST_DATA_DIR) + "/kinematics/";
+const std::string kChrono =
+    std::string(SINEW_TEST_DATA_DIR) + "/osim/projectchrono/chrono/data/opensim/";
 
 struct Result {
   int exit_code;
@@ -105,8 +107,7 @@ TEST(KinematicsCliTest, HamnerMarkersMatchOpenSimAndUnknownColumnsAreReported) {
 
 TEST(KinematicsCliTest, DefaultPoseWithoutMotion) {
   const fs::path dir = TempDir("default");
-  const Result r =
-      RunCli(kData + "chrono/double_pendulum.osim --out " + (dir / "out").string(), dir);
+  const Result r = RunCli(kChrono + "double_pendulum.osim --out " + (dir / "out").string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const StoTable ours = ReadStoTable((dir / "out/bodies.sto").string());
   ASSERT_EQ(ours.rows.size(), 1u);
@@ -127,8 +128,8 @@ TEST(KinematicsCliTest, BadInputGivesExitCode2WithFileAndLine) {
     std::ofstream out(dir / "bad.mot");
     out << "Coordinates\nversion=1\ninDegrees=no\nendheader\ntime\tq1\n0.0\t0.1\n0.1\tabc\n";
   }
-  r = RunCli(kData + "chrono/double_pendulum.osim --motion " + (dir / "bad.mot").string() +
-                 " --out " + (dir / "out").string(),
+  r = RunCli(kChrono + "double_pendulum.osim --motion " + (dir / "bad.mot").string() + " --out " +
+                 (dir / "out").string(),
              dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("bad.mot:7"), std::string::npos) << r.err;

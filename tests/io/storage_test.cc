@@ -19,6 +19,12 @@ std::string DataFile(const std::string& name) {
   return std::string(SINEW_TEST_DATA_DIR) + "/storage/" + name;
 }
 
+// OpenSim's SinglePin run, kept with the model it belongs to.
+std::string PendulumFile(const std::string& name) {
+  return std::string(SINEW_TEST_DATA_DIR) +
+         "/opensim-org/opensim-core/Applications/Analyze/tests/resources/" + name;
+}
+
 TEST(StorageTest, ReadsOpenSim4PathLabelsInDegrees) {
   Storage s = ReadStorage(DataFile("double_pendum1sec.sto"));
   EXPECT_EQ(s.name, "Results");
@@ -47,7 +53,7 @@ TEST(StorageTest, DegreesFileMatchesItsRadiansTwin) {
   // OpenSim wrote the same SinglePin run in radians (.sto) and in degrees (.mot). The .mot has
   // no inDegrees line (it carries an old SIMM header instead), so the caller says it is in
   // degrees. Values have 20 digits, so the converted degrees agree with the radians to rounding.
-  Storage radians = ReadStorage(DataFile("SinglePin_states.sto"));
+  Storage radians = ReadStorage(PendulumFile("SinglePin_states.sto"));
   Storage degrees = ReadStorage(DataFile("SinglePin_states_degrees.mot"));
   EXPECT_FALSE(degrees.in_degrees);
   EXPECT_EQ(degrees.comments.front(), "# SIMM Motion File Header:");
@@ -70,7 +76,7 @@ TEST(StorageTest, DegreesFileMatchesItsRadiansTwin) {
 
 TEST(StorageTest, ReadsLenientOldFiles) {
   // Tabs after every header line, an empty label between two tabs, no version or inDegrees.
-  Storage s = ReadStorage(DataFile("SinglePin_InitialStates.sto"));
+  Storage s = ReadStorage(PendulumFile("SinglePin_InitialStates.sto"));
   EXPECT_EQ(s.name, "S26pre_CMC_states");
   ASSERT_EQ(s.labels, (std::vector<std::string>{"r1_z", "r1_z_u"}));
   ASSERT_EQ(s.NumRows(), 1);
@@ -186,7 +192,7 @@ TEST(StorageFunctionsTest, SplinesThroughAPendulumRunGiveItsSpeeds) {
   // 8e-6 at t = 0, decaying by ~0.4 per sample. The file also repeats its final time
   // (2.99999999999998 and 3.0, 2e-14 apart), a near-duplicate knot that spoils the last few
   // samples' slopes. OpenSim's GCVSplineSet fit has both effects too.
-  Storage s = ReadStorage(DataFile("SinglePin_states.sto"));
+  Storage s = ReadStorage(PendulumFile("SinglePin_states.sto"));
   std::vector<FunctionPtr> splines = FitColumnSplines(s);
   ASSERT_EQ(splines.size(), 2u);
   double worst_value = 0.0, worst_speed = 0.0;
@@ -200,7 +206,7 @@ TEST(StorageFunctionsTest, SplinesThroughAPendulumRunGiveItsSpeeds) {
   EXPECT_LT(worst_value, 1e-12);
   EXPECT_LT(worst_speed, 1e-7);
   EXPECT_LT(std::abs(splines[0]->CalcDerivative(0.0, 1) - s.Value(0, 1)), 2e-5);
-  Storage one_row = ReadStorage(DataFile("SinglePin_InitialStates.sto"));
+  Storage one_row = ReadStorage(PendulumFile("SinglePin_InitialStates.sto"));
   EXPECT_THROW(FitColumnSplines(one_row), Error);
 }
 
@@ -237,7 +243,7 @@ TEST(StorageLabelsTest, FindsCoordinateColumnsInEitherStyle) {
   EXPECT_EQ(FindCoordinateColumn(path_style, "q2"), 2);
   EXPECT_EQ(FindCoordinateColumn(path_style, "q2", CoordinateColumnKind::kSpeed), 3);
   EXPECT_EQ(FindCoordinateColumn(path_style, "q3"), -1);
-  Storage old_style = ReadStorage(DataFile("SinglePin_states.sto"));
+  Storage old_style = ReadStorage(PendulumFile("SinglePin_states.sto"));
   EXPECT_EQ(FindCoordinateColumn(old_style, "r1_z"), 0);
   EXPECT_EQ(FindCoordinateColumn(old_style, "r1_z", CoordinateColumnKind::kSpeed), 1);
   EXPECT_EQ(FindCoordinateColumn(old_style, "r1"), -1);

@@ -24,6 +24,8 @@ using sinew::testing::ReadStoTable;
 using sinew::testing::StoTable;
 
 const std::string kData = std::string(SINEW_TEST_DATA_DIR) + "/kinematics/";
+const std::string kChrono =
+    std::string(SINEW_TEST_DATA_DIR) + "/osim/projectchrono/chrono/data/opensim/";
 
 // Poses every row of `motion` and calls `check(row_index, X_GB)`.
 template <typename Check>
@@ -274,7 +276,7 @@ std::vector<Transform> DefaultPoses(const ModelSpec& spec, std::vector<double>* 
 Mat3 Rot(const Vec3& axis, double angle) { return RotationAboutAxis(axis, angle); }
 
 TEST(SeedModelsTest, DoublePendulumByHand) {
-  const ModelSpec spec = ReadOsim(kData + "chrono/double_pendulum.osim");
+  const ModelSpec spec = ReadOsim(kChrono + "double_pendulum.osim");
   const std::vector<Transform> X = DefaultPoses(spec);
   // Pins at the parent origins; each rod's joint frame at y = +0.5 in the rod.
   const double q1 = -0.78539816, q2 = -1.04719755;
@@ -286,7 +288,7 @@ TEST(SeedModelsTest, DoublePendulumByHand) {
 }
 
 TEST(SeedModelsTest, TripleRevoluteByHand) {
-  const ModelSpec spec = ReadOsim(kData + "chrono/triple_revolute.osim");
+  const ModelSpec spec = ReadOsim(kChrono + "triple_revolute.osim");
   const std::vector<Transform> X = DefaultPoses(spec);
   // pin1: z by -2; pin2: CustomJoint, x by 0.01 q + 0.2 with q = -0.754; pin3: a PinJoint (its
   // SpatialTransform element is not a PinJoint property in OpenSim and is ignored): z by 0.54.
@@ -302,7 +304,7 @@ TEST(SeedModelsTest, TripleRevoluteByHand) {
 }
 
 TEST(SeedModelsTest, SimmSplineJointByHand) {
-  const ModelSpec spec = ReadOsim(kData + "chrono/test.osim");
+  const ModelSpec spec = ReadOsim(kChrono + "test.osim");
   const std::vector<Transform> X = DefaultPoses(spec);
   // rotation1 about x by f(q), f the SimmSpline in the file; the other axes are constant 0.
   const std::vector<double> x = {0,       0.174533, 0.349066, 0.523599, 0.698132, 0.872665, 1.0472,
@@ -318,7 +320,7 @@ TEST(SeedModelsTest, SimmSplineJointByHand) {
 }
 
 TEST(SeedModelsTest, ScapulothoracicJointPlacesTheScapulaAsOpenSim) {
-  const ModelSpec spec = ReadOsim(kData + "chrono/ScapulothorachicJoint_Shoulder.osim");
+  const ModelSpec spec = ReadOsim(kChrono + "ScapulothorachicJoint_Shoulder.osim");
   const int scapula = spec.FindBody("scapula"), thorax = spec.FindBody("thorax");
   ASSERT_GE(scapula, 0);
   const Transform X_PF(RotationFromBodyFixedXYZ(Vec3(0, -0.87, 0)), Vec3(-0.02, -0.0173, 0.07));
@@ -357,7 +359,9 @@ TEST(SeedModelsTest, Reversed3xJointMatchesTheForwardModel) {
   // double_pendulum_testReverse.osim: pin2 has reverse=true, so OpenSim swaps its frames: the
   // rotation is applied from rod2's frame to rod1's, i.e. rod2 turns by -q2 relative to the
   // forward model (whose pin2 frames are otherwise identical).
-  const ModelSpec spec = ReadOsim(kData + "reverse/double_pendulum_testReverse.osim");
+  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                  "/osim/opensim-org/opensim-core/OpenSim/Simulation/"
+                                  "SimbodyEngine/Test/double_pendulum_testReverse.osim");
   const KinematicTree tree(spec);
   const int pin2 = spec.FindJoint("pin2");
   ASSERT_GE(pin2, 0);
