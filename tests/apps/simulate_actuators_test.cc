@@ -27,8 +27,12 @@ constexpr double kInertia = 1.25;
 constexpr double kTolerance = 1e-7;
 
 int RunCli(const std::string& arguments, std::string* stdout_text = nullptr) {
+  // One file per test: ctest runs the tests of this program in parallel processes.
   const std::string out_file =
-      (std::filesystem::temp_directory_path() / "sinew_simulate_actuators_stdout.txt").string();
+      (std::filesystem::temp_directory_path() /
+       ("sinew_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+        "_stdout.txt"))
+          .string();
   const std::string command =
       std::string(SINEW_CLI_PATH) + " " + arguments + " > " + out_file + " 2>/dev/null";
   const int status = std::system(command.c_str());
