@@ -6,9 +6,7 @@ kind=${1:-release}
 root=$(cd "$(dirname "$0")/.." && pwd)
 case "$kind" in
   release) flags=(-DCMAKE_BUILD_TYPE=Release) ;;
-  # -O1 -g1: sanitizer reports keep function names and lines, and the build stays short.
-  asan) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1"
-               -DSINEW_SANITIZE=ON -DSINEW_BUILD_BENCHMARKS=OFF) ;;
+  asan) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSINEW_SANITIZE=ON -DSINEW_BUILD_BENCHMARKS=OFF) ;;
   *) echo "usage: $0 [release|asan]" >&2; exit 1 ;;
 esac
 cmake -S "$root" -B "$root/build/$kind" -G Ninja -DSINEW_WERROR=ON "${flags[@]}" >/dev/null
