@@ -39,11 +39,7 @@ void ReadConstraints(ReadContext& ctx, const pugi::xml_node& model) {
     c.name = NameOf(node);
     c.type = node.name();
     c.path = "/constraintset/" + c.name;
-    if (pugi::xml_node enforced = node.child("isEnforced")) {
-      c.enabled = doc.ReadBool(enforced, c.path);
-    } else if (pugi::xml_node disabled = node.child("isDisabled")) {
-      c.enabled = !doc.ReadBool(disabled, c.path);
-    }
+    c.enabled = ReadEnabledFlag(doc, node, "isEnforced", c.path, c.enabled);
     // CoordinateCouplerConstraint: the coordinates it couples must exist (and be unambiguous).
     for (const char* tag : {"dependent_coordinate_name", "independent_coordinate_names"}) {
       pugi::xml_node names = node.child(tag);

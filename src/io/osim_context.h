@@ -142,6 +142,11 @@ bool ReadBoolOr(const XmlDocument& doc, const pugi::xml_node& parent, const char
                 const std::string& component, bool fallback);
 /// The trimmed text of child `tag` ("" when absent).
 std::string TextOf(const pugi::xml_node& parent, const char* tag);
+
+/// A component's on/off flag: `current_tag` (appliesForce, isEnforced) when present, else the
+/// negation of the pre-30509 `isDisabled`, else `fallback`.
+bool ReadEnabledFlag(const XmlDocument& doc, const pugi::xml_node& node, const char* current_tag,
+                     const std::string& path, bool fallback);
 /// X = [R(body-fixed XYZ angles), p].
 Transform MakeTransform(const Vec3& angles, const Vec3& p);
 /// True if the trimmed text is a non-empty whitespace-separated list of numbers.

@@ -177,11 +177,8 @@ void ReadForces(ReadContext& ctx, const pugi::xml_node& model) {
     force.name = NameOf(node);
     force.type = node.name();
     force.path = "/forceset/" + force.name;
-    if (pugi::xml_node applies = node.child("appliesForce")) {
-      force.applies_force = doc.ReadBool(applies, force.path);
-    } else if (pugi::xml_node disabled = node.child("isDisabled")) {
-      force.applies_force = !doc.ReadBool(disabled, force.path);
-    }
+    force.applies_force =
+        ReadEnabledFlag(doc, node, "appliesForce", force.path, force.applies_force);
     if (pugi::xml_node owner = FindPathOwner(node)) {
       std::string name = owner == node ? "geometrypath" : NameOf(owner);
       if (name.empty()) name = "geometrypath";

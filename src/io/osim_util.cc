@@ -66,6 +66,13 @@ bool ReadBoolOr(const XmlDocument& doc, const pugi::xml_node& parent, const char
   return IsSet(node) ? doc.ReadBool(node, component) : fallback;
 }
 
+bool ReadEnabledFlag(const XmlDocument& doc, const pugi::xml_node& node, const char* current_tag,
+                     const std::string& path, bool fallback) {
+  if (pugi::xml_node current = node.child(current_tag)) return doc.ReadBool(current, path);
+  if (pugi::xml_node disabled = node.child("isDisabled")) return !doc.ReadBool(disabled, path);
+  return fallback;
+}
+
 std::string TextOf(const pugi::xml_node& parent, const char* tag) {
   pugi::xml_node node = parent.child(tag);
   return node ? std::string(XmlDocument::Text(node)) : std::string();
