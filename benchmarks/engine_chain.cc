@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "engine/assemble.h"
-#include "engine/dynamics.h"
-#include "engine/integrator.h"
-#include "engine/system.h"
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/dynamics.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/engine/system.h>
 
 namespace {
 

@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <string>
 
-#include "build/build_system.h"
-#include "engine/assemble.h"
-#include "engine/integrator.h"
-#include "io/osim_reader.h"
+#include <sinew/opensim/build_system.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/io/osim_reader.h>
 
 namespace {
 

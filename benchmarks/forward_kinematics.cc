@@ -1,6 +1,6 @@
 // Forward kinematics of the Hamner full-body model (37 coordinates, CustomJoints with
 // SimmSplines): body poses per pose, and poses plus the 37 marker positions. Goal: < 5 us/pose.
-#include "kinematics/forward_kinematics.h"
+#include <sinew/kinematics/forward_kinematics.h>
 
 #include <benchmark/benchmark.h>
 
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "io/osim_reader.h"
-#include "kinematics/kinematic_tree.h"
+#include <sinew/io/osim_reader.h>
+#include <sinew/kinematics/kinematic_tree.h>
 
 namespace {
 

@@ -6,10 +6,10 @@
 #include <memory>
 #include <vector>
 
-#include "functions/gcv_spline.h"
-#include "functions/multiplier_function.h"
-#include "functions/simm_spline.h"
-#include "io/storage.h"
+#include <sinew/functions/gcv_spline.h>
+#include <sinew/functions/multiplier_function.h>
+#include <sinew/functions/simm_spline.h>
+#include <sinew/io/storage.h>
 
 namespace {
 

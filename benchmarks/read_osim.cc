@@ -6,8 +6,8 @@
 #include <sstream>
 #include <string>
 
-#include "io/osim_reader.h"
-#include "io/xml_document.h"
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/internal/xml_document.h>
 
 namespace {
 

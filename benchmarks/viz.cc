@@ -2,13 +2,13 @@
 // 599 frames of the Hamner running motion.
 #include <benchmark/benchmark.h>
 
-#include "io/mesh_file.h"
-#include "io/osim_reader.h"
-#include "io/storage.h"
-#include "viz/gltf_writer.h"
-#include "viz/html_viewer.h"
-#include "viz/motion_poses.h"
-#include "viz/rasterizer.h"
+#include <sinew/io/mesh_file.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
+#include <sinew/viz/gltf_writer.h>
+#include <sinew/viz/html_viewer.h>
+#include <sinew/viz/motion_poses.h>
+#include <sinew/viz/rasterizer.h>
 
 namespace sinew::viz {
 namespace {

@@ -2,12 +2,13 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION include/sinew
-  FILES_MATCHING PATTERN "*.h")
+# Public headers only: internal/ folders hold implementation headers (pugixml and the like).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/sinew/ DESTINATION include/sinew
+  FILES_MATCHING PATTERN "*.h" PATTERN "internal" EXCLUDE)
 install(TARGETS sinew ${SINEW_LAYER_TARGETS} EXPORT sinewTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  INCLUDES DESTINATION include/sinew)
+  INCLUDES DESTINATION include)
 install(TARGETS sinew_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT sinewTargets NAMESPACE sinew:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/sinew)
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/sinewConfig.cmake.in

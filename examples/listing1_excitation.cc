@@ -7,10 +7,10 @@
 #include <memory>
 #include <string>
 
-#include "build/opensim_parser.h"
-#include "engine/assemble.h"
-#include "engine/integrator.h"
-#include "functions/excitations.h"
+#include <sinew/opensim/parser.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/functions/excitations.h>
 
 int main(int argc, char** argv) {
   const std::string model =

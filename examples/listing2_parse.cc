@@ -6,10 +6,10 @@
 #include <iostream>
 #include <string>
 
-#include "build/opensim_parser.h"
-#include "engine/assemble.h"
-#include "engine/energy.h"
-#include "engine/integrator.h"
+#include <sinew/opensim/parser.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/energy.h>
+#include <sinew/engine/integrator.h>
 
 int main(int argc, char** argv) {
   const std::string filename =

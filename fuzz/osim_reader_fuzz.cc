@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "io/osim_reader.h"
+#include <sinew/io/osim_reader.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {

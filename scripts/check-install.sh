@@ -1,12 +1,30 @@
 #!/usr/bin/env bash
-# Installs a built Sinew into a scratch prefix and builds and runs a project outside the tree
-# that finds it with find_package(sinew). Usage: scripts/check-install.sh BUILD_DIR
+# Installs a built Sinew into a scratch prefix, checks that the install holds public headers only,
+# and builds and runs a project outside the tree that finds it with find_package(sinew).
+# Usage: scripts/check-install.sh BUILD_DIR
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:?usage: $0 BUILD_DIR}
+build=$(cd "${1:?usage: $0 BUILD_DIR}" && pwd)
 prefix="$build/install-check/prefix"
 rm -rf "$build/install-check"
 cmake --install "$build" --prefix "$prefix" >/dev/null
+
+# Public headers only: no internal/ folder, no header that includes an implementation library.
+include="$prefix/include"
+private=$(find "$include" -path '*/internal/*' -o -name 'internal' | sort)
+leaks=$(grep -rlE '^#include [<"](pugixml|zlib|nlohmann/|CLI/)' "$include" || true)
+if [ -n "$private$leaks" ]; then
+  echo "install check: private headers installed:" >&2
+  printf '  %s\n' $private $leaks >&2
+  exit 1
+fi
+# Every installed header compiles with only the install tree and Eigen on the include path.
+headers=$(cd "$include" && find sinew -name '*.h' | sort)
+{ for h in $headers; do echo "#include <$h>"; done; } > "$build/install-check/all_headers.cc"
+"${CXX:-c++}" -std=c++20 -fsyntax-only -I"$include" -I/usr/include/eigen3 \
+  "$build/install-check/all_headers.cc"
+echo "install check: $(echo "$headers" | wc -l) public headers, none private, all compile against the install tree alone"
+
 cmake -S "$root/examples/find_package_consumer" -B "$build/install-check/consumer" -G Ninja \
   -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build/install-check/consumer" >/dev/null

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "apps/sinew/commands.h"
-#include "io/osim_reader.h"
-#include "io/storage.h"
-#include "viz/export_animation.h"
-#include "viz/motion_poses.h"
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
+#include <sinew/viz/export_animation.h>
+#include <sinew/viz/motion_poses.h>
 
 namespace sinew::cli {
 namespace {

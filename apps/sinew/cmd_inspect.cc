@@ -7,9 +7,9 @@
 #include <string>
 
 #include "apps/sinew/commands.h"
-#include "build/opensim_parser.h"
-#include "build/support.h"
-#include "io/osim_reader.h"
+#include <sinew/opensim/parser.h>
+#include <sinew/opensim/support.h>
+#include <sinew/io/osim_reader.h>
 
 namespace sinew::cli {
 namespace {

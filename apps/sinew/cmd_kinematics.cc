@@ -8,13 +8,13 @@
 #include <vector>
 
 #include "apps/sinew/commands.h"
-#include "common/error.h"
-#include "io/osim_reader.h"
-#include "io/storage.h"
-#include "kinematics/body_kinematics.h"
-#include "kinematics/coordinate_motion.h"
-#include "kinematics/forward_kinematics.h"
-#include "kinematics/kinematic_tree.h"
+#include <sinew/common/error.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
+#include <sinew/kinematics/body_kinematics.h>
+#include <sinew/kinematics/coordinate_motion.h>
+#include <sinew/kinematics/forward_kinematics.h>
+#include <sinew/kinematics/kinematic_tree.h>
 
 namespace sinew::cli {
 namespace {

@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "apps/sinew/commands.h"
-#include "io/osim_reader.h"
-#include "io/storage.h"
-#include "viz/gltf_writer.h"
-#include "viz/motion_poses.h"
-#include "viz/rasterizer.h"
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
+#include <sinew/viz/gltf_writer.h>
+#include <sinew/viz/motion_poses.h>
+#include <sinew/viz/rasterizer.h>
 
 namespace sinew::cli {
 namespace {

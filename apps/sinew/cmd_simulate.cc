@@ -16,16 +16,16 @@
 
 #include "apps/sinew/commands.h"
 #include "apps/sinew/excitation_option.h"
-#include "build/opensim_parser.h"
-#include "common/error.h"
-#include "engine/assemble.h"
-#include "engine/integrator.h"
-#include "engine/pose.h"
-#include "io/osim_reader.h"
-#include "io/storage.h"
-#include "io/storage_labels.h"
-#include "kinematics/body_kinematics.h"
-#include "viz/export_animation.h"
+#include <sinew/opensim/parser.h>
+#include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/engine/pose.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
+#include <sinew/io/storage_labels.h>
+#include <sinew/kinematics/body_kinematics.h>
+#include <sinew/viz/export_animation.h>
 
 namespace sinew::cli {
 namespace {

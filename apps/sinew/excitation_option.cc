@@ -3,10 +3,10 @@
 #include <memory>
 #include <vector>
 
-#include "common/error.h"
-#include "common/text.h"
-#include "functions/constant.h"
-#include "functions/excitations.h"
+#include <sinew/common/error.h>
+#include <sinew/common/text.h>
+#include <sinew/functions/constant.h>
+#include <sinew/functions/excitations.h>
 
 namespace sinew::cli {
 namespace {

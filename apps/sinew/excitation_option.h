@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "functions/function.h"
+#include <sinew/functions/function.h>
 
 namespace sinew::cli {
 

@@ -2,7 +2,7 @@
 #include <iostream>
 
 #include "apps/sinew/commands.h"
-#include "common/error.h"
+#include <sinew/common/error.h>
 
 int main(int argc, char** argv) {
   CLI::App app{"Sinew: load OpenSim models (.osim) and simulate them in a Cartesian engine"};

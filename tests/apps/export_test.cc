@@ -12,10 +12,10 @@
 #include <sstream>
 #include <string>
 
-#include "io/mesh_file.h"
-#include "io/storage.h"
+#include <sinew/io/mesh_file.h>
+#include <sinew/io/storage.h>
 #include "viz/glb_test_util.h"
-#include "viz/image.h"
+#include <sinew/viz/image.h>
 
 namespace sinew {
 namespace {

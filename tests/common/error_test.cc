@@ -1,4 +1,4 @@
-#include "common/error.h"
+#include <sinew/common/error.h>
 
 #include <gtest/gtest.h>
 

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <memory>
 
-#include "engine/assemble.h"
-#include "engine/integrator.h"
-#include "engine/loads.h"
-#include "engine/system.h"
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/engine/loads.h>
+#include <sinew/engine/system.h>
 #include "engine/test_models.h"
 
 namespace sinew::engine {

@@ -5,13 +5,13 @@
 #include <cmath>
 #include <memory>
 
-#include "common/error.h"
-#include "engine/assemble.h"
-#include "engine/dynamics.h"
-#include "engine/energy.h"
-#include "engine/integrator.h"
-#include "engine/reactions.h"
-#include "engine/system.h"
+#include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/dynamics.h>
+#include <sinew/engine/energy.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/engine/reactions.h>
+#include <sinew/engine/system.h>
 #include "engine/test_models.h"
 
 namespace sinew::engine {

@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "common/error.h"
-#include "engine/assemble.h"
-#include "engine/energy.h"
-#include "engine/integrator.h"
-#include "engine/pose.h"
-#include "engine/system.h"
+#include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/energy.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/engine/pose.h>
+#include <sinew/engine/system.h>
 #include "engine/test_models.h"
 
 namespace sinew::engine {

@@ -8,11 +8,11 @@
 #include <memory>
 #include <string>
 
-#include "engine/assemble.h"
-#include "engine/energy.h"
-#include "engine/integrator.h"
-#include "engine/projection.h"
-#include "engine/system.h"
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/energy.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/engine/projection.h>
+#include <sinew/engine/system.h>
 #include "engine/test_models.h"
 
 namespace sinew::engine {

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "engine/system.h"
-#include "kinematics/joint_model.h"
-#include "math/rotation.h"
+#include <sinew/engine/system.h>
+#include <sinew/kinematics/joint_model.h>
+#include <sinew/math/rotation.h>
 
 namespace sinew::engine::testing {
 

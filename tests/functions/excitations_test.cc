@@ -1,12 +1,12 @@
-#include "functions/excitations.h"
+#include <sinew/functions/excitations.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "common/error.h"
-#include "functions/functions.h"
+#include <sinew/common/error.h>
+#include <sinew/functions/functions.h>
 
 namespace sinew {
 namespace {

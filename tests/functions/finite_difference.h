@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "functions/function.h"
+#include <sinew/functions/function.h>
 
 namespace sinew::testing {
 

@@ -7,18 +7,18 @@
 #include <memory>
 #include <numbers>
 
-#include "common/error.h"
+#include <sinew/common/error.h>
 #include "finite_difference.h"
-#include "functions/constant.h"
-#include "functions/linear_function.h"
-#include "functions/multiplier_function.h"
-#include "functions/multivariate_polynomial_function.h"
-#include "functions/piecewise_constant_function.h"
-#include "functions/piecewise_linear_function.h"
-#include "functions/polynomial_function.h"
-#include "functions/simm_spline.h"
-#include "functions/sine.h"
-#include "functions/step_function.h"
+#include <sinew/functions/constant.h>
+#include <sinew/functions/linear_function.h>
+#include <sinew/functions/multiplier_function.h>
+#include <sinew/functions/multivariate_polynomial_function.h>
+#include <sinew/functions/piecewise_constant_function.h>
+#include <sinew/functions/piecewise_linear_function.h>
+#include <sinew/functions/polynomial_function.h>
+#include <sinew/functions/simm_spline.h>
+#include <sinew/functions/sine.h>
+#include <sinew/functions/step_function.h>
 
 namespace sinew {
 namespace {

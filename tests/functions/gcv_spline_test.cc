@@ -1,4 +1,4 @@
-#include "functions/gcv_spline.h"
+#include <sinew/functions/gcv_spline.h>
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "common/error.h"
+#include <sinew/common/error.h>
 #include "finite_difference.h"
 
 namespace sinew {

@@ -1,4 +1,4 @@
-#include "functions/simm_spline.h"
+#include <sinew/functions/simm_spline.h>
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "common/error.h"
+#include <sinew/common/error.h>
 #include "finite_difference.h"
 
 namespace sinew {

@@ -7,10 +7,10 @@
 #include <fstream>
 #include <string>
 
-#include "common/error.h"
-#include "io/mesh_file.h"
-#include "io/mesh_obj.h"
-#include "io/mesh_stl.h"
+#include <sinew/common/error.h>
+#include <sinew/io/mesh_file.h>
+#include <sinew/io/mesh_obj.h>
+#include <sinew/io/mesh_stl.h>
 
 namespace sinew {
 namespace {

@@ -1,6 +1,6 @@
 // Tests for the .vtp reader: a real OpenSim mesh (ascii), and the same small mesh written in
 // every binary variant (base64, zlib blocks, UInt64 headers, big-endian) must read alike.
-#include "io/mesh_vtp.h"
+#include <sinew/io/mesh_vtp.h>
 
 #include <gtest/gtest.h>
 #include <zlib.h>
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "common/error.h"
-#include "io/mesh_base64.h"
+#include <sinew/common/error.h>
+#include <sinew/io/mesh_base64.h>
 
 namespace sinew {
 namespace {

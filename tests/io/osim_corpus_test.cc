@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-#include "io/osim_reader.h"
+#include <sinew/io/osim_reader.h>
 
 namespace sinew {
 namespace {

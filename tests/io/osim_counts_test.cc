@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "io/osim_reader.h"
+#include <sinew/io/osim_reader.h>
 
 namespace sinew {
 namespace {

@@ -5,7 +5,7 @@
 #include <array>
 #include <string>
 
-#include "io/osim_reader.h"
+#include <sinew/io/osim_reader.h>
 
 namespace sinew {
 namespace {

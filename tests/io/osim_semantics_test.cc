@@ -7,8 +7,8 @@
 #include <numbers>
 #include <string>
 
-#include "io/osim_reader.h"
-#include "math/rotation.h"
+#include <sinew/io/osim_reader.h>
+#include <sinew/math/rotation.h>
 
 namespace sinew {
 namespace {

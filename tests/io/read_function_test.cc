@@ -1,4 +1,4 @@
-#include "io/read_function.h"
+#include <sinew/io/internal/read_function.h>
 
 #include <gtest/gtest.h>
 
@@ -8,14 +8,14 @@
 #include <map>
 #include <optional>
 
-#include "common/error.h"
-#include "functions/constant.h"
-#include "functions/gcv_spline.h"
-#include "functions/linear_function.h"
-#include "functions/multiplier_function.h"
-#include "functions/piecewise_linear_function.h"
-#include "functions/polynomial_function.h"
-#include "functions/simm_spline.h"
+#include <sinew/common/error.h>
+#include <sinew/functions/constant.h>
+#include <sinew/functions/gcv_spline.h>
+#include <sinew/functions/linear_function.h>
+#include <sinew/functions/multiplier_function.h>
+#include <sinew/functions/piecewise_linear_function.h>
+#include <sinew/functions/polynomial_function.h>
+#include <sinew/functions/simm_spline.h>
 
 namespace sinew {
 namespace {

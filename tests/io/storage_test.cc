@@ -1,4 +1,4 @@
-#include "io/storage.h"
+#include <sinew/io/storage.h>
 
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include <numbers>
 #include <string>
 
-#include "common/error.h"
-#include "io/storage_functions.h"
-#include "io/storage_labels.h"
+#include <sinew/common/error.h>
+#include <sinew/io/storage_functions.h>
+#include <sinew/io/storage_labels.h>
 
 namespace sinew {
 namespace {

@@ -1,4 +1,4 @@
-#include "kinematics/coordinate_motion.h"
+#include <sinew/kinematics/coordinate_motion.h>
 
 #include <gtest/gtest.h>
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "io/osim_reader.h"
-#include "kinematics/forward_kinematics.h"
-#include "kinematics/kinematic_tree.h"
+#include <sinew/io/osim_reader.h>
+#include <sinew/kinematics/forward_kinematics.h>
+#include <sinew/kinematics/kinematic_tree.h>
 
 namespace sinew {
 namespace {

@@ -1,6 +1,6 @@
 // Forward kinematics on hand-built models: poses derived by hand, reversed joints, and body
 // velocities against finite differences of the poses.
-#include "kinematics/forward_kinematics.h"
+#include <sinew/kinematics/forward_kinematics.h>
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "kinematics/test_functions.h"
-#include "math/rotation.h"
+#include <sinew/math/rotation.h>
 
 namespace sinew {
 namespace {

@@ -1,6 +1,6 @@
 // Every joint type: X_FM against hand-derived values, and H_FM, N(q) and Hdot*u against
 // central finite differences of X_FM along the motion qdot = N(q) u.
-#include "kinematics/joint_model.h"
+#include <sinew/kinematics/joint_model.h>
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "kinematics/test_functions.h"
-#include "math/rotation.h"
+#include <sinew/math/rotation.h>
 
 namespace sinew {
 namespace {

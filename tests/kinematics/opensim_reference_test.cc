@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "functions/simm_spline.h"
-#include "io/osim_reader.h"
-#include "kinematics/body_kinematics.h"
-#include "kinematics/coordinate_motion.h"
-#include "kinematics/forward_kinematics.h"
-#include "kinematics/kinematic_tree.h"
+#include <sinew/functions/simm_spline.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/kinematics/body_kinematics.h>
+#include <sinew/kinematics/coordinate_motion.h>
+#include <sinew/kinematics/forward_kinematics.h>
+#include <sinew/kinematics/kinematic_tree.h>
 #include "kinematics/sto_table.h"
-#include "math/rotation.h"
+#include <sinew/math/rotation.h>
 
 namespace sinew {
 namespace {

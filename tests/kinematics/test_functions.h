@@ -6,7 +6,7 @@
 #include <span>
 #include <string>
 
-#include "functions/function.h"
+#include <sinew/functions/function.h>
 
 namespace sinew::testing {
 

@@ -1,10 +1,10 @@
-#include "math/rotation.h"
+#include <sinew/math/rotation.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "math/transform.h"
+#include <sinew/math/transform.h>
 
 namespace sinew {
 namespace {

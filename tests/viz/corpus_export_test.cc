@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <set>
 
-#include "io/mesh_file.h"
-#include "io/osim_reader.h"
-#include "viz/gltf_writer.h"
-#include "viz/motion_poses.h"
-#include "viz/visual_scene.h"
+#include <sinew/io/mesh_file.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/viz/gltf_writer.h>
+#include <sinew/viz/motion_poses.h>
+#include <sinew/viz/visual_scene.h>
 
 namespace sinew::viz {
 namespace {

@@ -11,10 +11,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "io/osim_reader.h"
-#include "io/storage.h"
-#include "viz/gltf_writer.h"
-#include "viz/motion_poses.h"
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
+#include <sinew/viz/gltf_writer.h>
+#include <sinew/viz/motion_poses.h>
 #include "viz/two_link_spec.h"
 
 namespace sinew::viz {

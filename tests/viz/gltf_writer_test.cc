@@ -1,14 +1,14 @@
 // The .glb written for a small hand-made model: container layout, node/mesh structure,
 // accessor bounds and the animation samples, all read back with nlohmann-json.
-#include "viz/gltf_writer.h"
+#include <sinew/viz/gltf_writer.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "kinematics/body_depths.h"
-#include "math/rotation.h"
-#include "viz/export_animation.h"
+#include <sinew/kinematics/body_depths.h>
+#include <sinew/math/rotation.h>
+#include <sinew/viz/export_animation.h>
 #include "viz/glb_test_util.h"
 #include "viz/two_link_spec.h"
 

@@ -1,6 +1,6 @@
 // The HTML viewer in headless Chromium (software WebGL through SwiftShader): the page must show
 // the model (not a blank canvas) and the picture must change as the animation plays.
-#include "viz/html_viewer.h"
+#include <sinew/viz/html_viewer.h>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <string>
 
-#include "viz/export_animation.h"
-#include "viz/image.h"
+#include <sinew/viz/export_animation.h>
+#include <sinew/viz/image.h>
 #include "viz/two_link_spec.h"
 
 namespace sinew::viz {

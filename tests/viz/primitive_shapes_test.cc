@@ -1,5 +1,5 @@
 // The unit shapes must be closed-looking, outward facing, and the size their doc says.
-#include "viz/primitive_shapes.h"
+#include <sinew/viz/primitive_shapes.h>
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
 // The software renderer against hand-computed projections, and the PNG codec round trip.
-#include "viz/rasterizer.h"
+#include <sinew/viz/rasterizer.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "viz/primitive_shapes.h"
+#include <sinew/viz/primitive_shapes.h>
 
 namespace sinew::viz {
 namespace {

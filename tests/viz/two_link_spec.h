@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "math/rotation.h"
-#include "model/model_spec.h"
-#include "viz/body_motion.h"
+#include <sinew/math/rotation.h>
+#include <sinew/model/model_spec.h>
+#include <sinew/viz/body_motion.h>
 
 namespace sinew::viz::testing {
 

@@ -1,0 +1,36 @@
+#include <sinew/contact/collision_model.h>
+
+#include <algorithm>
+
+namespace sinew {
+namespace {
+
+constexpr double kShortestSegment = 1e-3;  // m
+
+}  // namespace
+
+CollisionModel BuildCollisionModel(const ModelSpec& spec, const std::vector<int>& depth,
+                                   int family_1, int family_2) {
+  CollisionModel model;
+  model.family.assign(spec.bodies.size(), 0);
+  for (size_t b = 1; b < spec.bodies.size(); ++b) {
+    model.family[b] = depth[b] % 2 == 1 ? family_1 : family_2;
+  }
+  // One segment per joint end that lies on a body other than ground.
+  std::vector<double> lengths;
+  for (const JointSpec& j : spec.joints) {
+    for (const auto& [body, p_BJ] :
+         {std::pair{j.parent_body, j.X_PF.p}, std::pair{j.child_body, j.X_BM.p}}) {
+      if (body == kGroundIndex || p_BJ.norm() < kShortestSegment) continue;
+      model.shapes.push_back({body, Vec3::Zero(), p_BJ, 0.0});
+      lengths.push_back(p_BJ.norm());
+    }
+  }
+  if (lengths.empty()) return model;
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  const double radius = std::max(0.1 * lengths[lengths.size() / 2], kShortestSegment);
+  for (CollisionCylinder& c : model.shapes) c.radius = radius;
+  return model;
+}
+
+}  // namespace sinew

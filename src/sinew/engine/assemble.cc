@@ -1,0 +1,153 @@
+#include <sinew/engine/assemble.h>
+
+#include <string>
+#include <vector>
+
+#include <sinew/common/error.h>
+#include <sinew/engine/direct_joint.h>
+#include <sinew/engine/pose.h>
+#include <sinew/engine/projection.h>
+
+namespace sinew::engine {
+namespace {
+
+std::vector<double> Gather(const VecX& x, const std::vector<int>& indices) {
+  std::vector<double> out;
+  out.reserve(indices.size());
+  for (int i : indices) out.push_back(x[i]);
+  return out;
+}
+
+int RequireCoordinate(const System& system, std::string_view name) {
+  const int c = system.FindCoordinate(name);
+  if (c < 0) throw Error("no coordinate named '" + std::string(name) + "'");
+  return c;
+}
+
+}  // namespace
+
+State MakeDefaultState(const System& system, double t) {
+  State state;
+  state.t = t;
+  state.bodies.assign(system.num_bodies(), BodyState{});
+  state.q = VecX::Zero(system.num_coordinates());
+  state.u = VecX::Zero(system.num_coordinates());
+  for (int c = 0; c < system.num_coordinates(); ++c) {
+    const Coordinate& coordinate = system.coordinates()[c];
+    if (coordinate.motion == CoordinateMotion::kPrescribed) {
+      state.q[c] = coordinate.prescribed->Calc(t);
+      state.u[c] = coordinate.prescribed->CalcDerivative(t, 1);
+    } else {
+      state.q[c] = coordinate.default_value;
+      state.u[c] = coordinate.motion == CoordinateMotion::kLocked ? 0.0 : coordinate.default_speed;
+    }
+  }
+  PlaceBodies(system, state);
+  // Joints that close loops were not used to place bodies: assemble them by projection.
+  if (system.HasLoops()) ProjectState(system, state);
+  return state;
+}
+
+void CheckState(const System& system, const State& state) {
+  if (static_cast<int>(state.bodies.size()) != system.num_bodies() ||
+      state.q.size() != system.num_coordinates() || state.u.size() != system.num_coordinates()) {
+    throw Error("engine: the state does not belong to this system (" +
+                std::to_string(state.bodies.size()) + " bodies, " + std::to_string(state.q.size()) +
+                " coordinates; the system has " + std::to_string(system.num_bodies()) + " and " +
+                std::to_string(system.num_coordinates()) + ")");
+  }
+}
+
+void PlaceBodies(const System& system, State& state) {
+  CheckState(system, state);
+  for (int j : system.tree_order()) {
+    const Joint& joint = system.joints()[j];
+    const std::vector<double> q = Gather(state.q, joint.coordinates);
+    const std::vector<double> u = Gather(state.u, joint.coordinates);
+    Transform X_FM;
+    Mat6X H;
+    if (joint.form == JointForm::kParameterized) {
+      X_FM = joint.model->CalcX_FM(q);
+      H = joint.model->CalcH_FM(q);
+    } else {
+      X_FM = CalcDirectX_FM(joint.form, q);
+      H = CalcDirectH_FM(joint.form, q);
+    }
+    SpatialVec V_FM_F = SpatialVec::Zero();
+    if (H.cols() > 0) V_FM_F = H * Eigen::Map<const VecX>(u.data(), u.size());
+    if (!system.IsReversed(j)) {
+      const BodyState& P = state.bodies[joint.parent];
+      BodyState& B = state.bodies[joint.child];
+      const Transform X_GF = PoseOf(P) * joint.X_PF;
+      const Transform X_GM = X_GF * X_FM;
+      const Transform X_GB = X_GM * joint.X_BM.Inverse();
+      B.p_GB = X_GB.p;
+      B.quat_GB = Quat(X_GB.R).normalized();
+      B.w_GB = P.w_GB + X_GF.R * V_FM_F.head<3>();
+      const Vec3 v_M = PointVelocity(P, X_GM.p) + X_GF.R * V_FM_F.tail<3>();
+      B.v_GB = v_M + B.w_GB.cross(B.p_GB - X_GM.p);
+    } else {
+      // The child B is placed: X_GP = X_GB X_BM inverse(X_FM) inverse(X_PF).
+      const BodyState& B = state.bodies[joint.child];
+      BodyState& P = state.bodies[joint.parent];
+      const Transform X_GM = PoseOf(B) * joint.X_BM;
+      const Transform X_GF = X_GM * X_FM.Inverse();
+      const Transform X_GP = X_GF * joint.X_PF.Inverse();
+      P.p_GB = X_GP.p;
+      P.quat_GB = Quat(X_GP.R).normalized();
+      P.w_GB = B.w_GB - X_GF.R * V_FM_F.head<3>();
+      const Vec3 v_M = PointVelocity(B, X_GM.p) - X_GF.R * V_FM_F.tail<3>();
+      P.v_GB = v_M + P.w_GB.cross(P.p_GB - X_GM.p);
+    }
+  }
+}
+
+SpatialVec CalcJointVelocity(const System& system, const State& state, int j) {
+  const Joint& joint = system.joints()[j];
+  const BodyState& P = state.bodies[joint.parent];
+  const BodyState& B = state.bodies[joint.child];
+  const Transform X_GF = PoseOf(P) * joint.X_PF;
+  const Vec3 p_GM = PoseOf(B) * joint.X_BM.p;
+  const Mat3 Rt = X_GF.R.transpose();
+  SpatialVec V;
+  V.head<3>() = Rt * (B.w_GB - P.w_GB);
+  V.tail<3>() = Rt * (PointVelocity(B, p_GM) - PointVelocity(P, p_GM));
+  return V;
+}
+
+void UpdateDirectCoordinates(const System& system, State& state) {
+  for (size_t j = 0; j < system.joints().size(); ++j) {
+    const Joint& joint = system.joints()[j];
+    if (joint.form == JointForm::kParameterized || joint.coordinates.empty()) continue;
+    const Transform X_FM = (PoseOf(state.bodies[joint.parent]) * joint.X_PF).Inverse() *
+                           PoseOf(state.bodies[joint.child]) * joint.X_BM;
+    std::vector<double> q = Gather(state.q, joint.coordinates);
+    std::vector<double> u(q.size(), 0.0);
+    ReadDirectCoordinates(joint.form, X_FM, CalcJointVelocity(system, state, static_cast<int>(j)),
+                          q, u);
+    for (size_t i = 0; i < q.size(); ++i) {
+      state.q[joint.coordinates[i]] = q[i];
+      state.u[joint.coordinates[i]] = u[i];
+    }
+  }
+}
+
+double GetCoordinateValue(const System& system, const State& state, std::string_view name) {
+  return state.q[RequireCoordinate(system, name)];
+}
+
+double GetCoordinateSpeed(const System& system, const State& state, std::string_view name) {
+  return state.u[RequireCoordinate(system, name)];
+}
+
+void SetCoordinateValue(const System& system, State& state, std::string_view name, double q) {
+  state.q[RequireCoordinate(system, name)] = q;
+  PlaceBodies(system, state);
+}
+
+void SetCoordinateSpeed(const System& system, State& state, std::string_view name, double u) {
+  state.u[RequireCoordinate(system, name)] = u;
+  PlaceBodies(system, state);
+}
+
+}  // namespace sinew::engine

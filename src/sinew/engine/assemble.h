@@ -1,0 +1,37 @@
+// Building and changing a State: the default state, placing bodies from joint coordinates, and
+// reading coordinates back from body poses.
+#pragma once
+
+#include <string_view>
+
+#include <sinew/engine/state.h>
+#include <sinew/engine/system.h>
+
+namespace sinew::engine {
+
+/// The state at time `t` with every coordinate at its default value and speed (prescribed
+/// coordinates at f(t), f'(t)); bodies placed and moving accordingly.
+State MakeDefaultState(const System& system, double t = 0.0);
+
+/// Throws sinew::Error unless `state` has the sizes of `system` (bodies, coordinates).
+void CheckState(const System& system, const State& state);
+
+/// Places every body (pose and twist) from the coordinates q and speeds u of `state`, walking
+/// the tree from ground: X_GB = X_GP X_PF X_FM(q) inverse(X_BM), V_FM_F = H_FM(q) u.
+void PlaceBodies(const System& system, State& state);
+
+/// Reads the coordinates and speeds of the direct Cartesian joints off the body poses and
+/// twists (angles unwrapped relative to the values held in `state`).
+void UpdateDirectCoordinates(const System& system, State& state);
+
+/// Coordinate value / speed by name (throws sinew::Error for an unknown name).
+double GetCoordinateValue(const System& system, const State& state, std::string_view name);
+double GetCoordinateSpeed(const System& system, const State& state, std::string_view name);
+/// Sets a coordinate value / speed by name and re-places the bodies.
+void SetCoordinateValue(const System& system, State& state, std::string_view name, double q);
+void SetCoordinateSpeed(const System& system, State& state, std::string_view name, double u);
+
+/// The spatial velocity of M in F, expressed in F, [w_FM_F; v_FM_F], of joint `j`.
+SpatialVec CalcJointVelocity(const System& system, const State& state, int j);
+
+}  // namespace sinew::engine

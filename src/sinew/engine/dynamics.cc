@@ -1,0 +1,89 @@
+#include <sinew/engine/dynamics.h>
+
+#include <vector>
+
+#include <sinew/engine/direct_joint.h>
+#include <sinew/engine/pose.h>
+
+namespace sinew::engine {
+namespace {
+
+// Generalized forces on a direct joint's coordinates act as torques along the columns of
+// H_FM (in F): tau on the child, -tau on the parent.
+void MapDirectJointForces(const System& system, const State& state, Loads& loads) {
+  for (const Joint& joint : system.joints()) {
+    if (joint.form == JointForm::kParameterized || joint.coordinates.empty()) continue;
+    std::vector<double> q;
+    bool any = false;
+    for (int c : joint.coordinates) {
+      q.push_back(state.q[c]);
+      any = any || loads.mobility[c] != 0.0;
+    }
+    if (!any) continue;
+    const Mat6X H = CalcDirectH_FM(joint.form, q);
+    const Mat3 R_GF = (PoseOf(state.bodies[joint.parent]) * joint.X_PF).R;
+    for (size_t i = 0; i < joint.coordinates.size(); ++i) {
+      const Vec3 tau_G = R_GF * H.col(i).head<3>() * loads.mobility[joint.coordinates[i]];
+      loads.AddTorqueBetween(joint.parent, joint.child, tau_G);
+    }
+  }
+}
+
+}  // namespace
+
+void CalcLoads(const System& system, const State& state, const Loads* external, Loads& loads) {
+  loads = Loads(system.num_bodies(), system.num_coordinates());
+  for (int b = 1; b < system.num_bodies(); ++b) {
+    const Body& body = system.bodies()[b];
+    if (body.mass == 0.0) continue;
+    const Vec3 c_G = state.bodies[b].quat_GB.normalized() * body.p_BCm;
+    const Vec3 f_G = body.mass * system.gravity();
+    loads.body[b].head<3>() += c_G.cross(f_G);
+    loads.body[b].tail<3>() += f_G;
+  }
+  for (const auto& force : system.force_elements()) force->AddLoads(system, state, loads);
+  if (external) {
+    for (int b = 0; b < system.num_bodies(); ++b) loads.body[b] += external->body[b];
+    loads.mobility += external->mobility;
+  }
+  MapDirectJointForces(system, state, loads);
+}
+
+Accelerations CalcAccelerations(const System& system, const State& state, const Loads* external,
+                                KktSolver& kkt) {
+  Loads loads;
+  CalcLoads(system, state, external, loads);
+  kkt.Factorize(state);
+  const int nv = kkt.num_velocities();
+  VecX rhs = VecX::Zero(nv + kkt.num_equations());
+  // Body rows: applied loads minus the velocity-dependent (gyroscopic, centripetal) terms of
+  // the Newton-Euler equations about the body origin.
+  for (int b = 1; b < system.num_bodies(); ++b) {
+    const Body& body = system.bodies()[b];
+    const BodyState& s = state.bodies[b];
+    const Mat3 R = s.quat_GB.normalized().toRotationMatrix();
+    const Vec3 c = R * body.p_BCm;
+    const Mat3 I_G = R * body.I_Bcm_B * R.transpose();
+    const Vec3& w = s.w_GB;
+    const Vec3 centripetal = body.mass * w.cross(w.cross(c));
+    SpatialVec bias;
+    bias.head<3>() = w.cross(I_G * w) + c.cross(centripetal);
+    bias.tail<3>() = centripetal;
+    rhs.segment<6>(kkt.BodyColumn(b)) = loads.body[b] - bias;
+  }
+  for (int c = 0; c < system.num_coordinates(); ++c) {
+    if (system.IsIntegrated(c)) rhs[kkt.SpeedColumn(c)] = loads.mobility[c];
+  }
+  const auto& constraints = system.constraints();
+  for (size_t k = 0; k < constraints.size(); ++k) {
+    constraints[k]->CalcAccelerationRhs(
+        system, state, rhs.segment(nv + kkt.EquationRow(k), constraints[k]->NumEquations()));
+  }
+  const VecX x = kkt.Solve(rhs);
+  Accelerations a;
+  a.vdot = x.head(nv);
+  a.lambda = x.tail(kkt.num_equations());
+  return a;
+}
+
+}  // namespace sinew::engine

@@ -1,0 +1,29 @@
+// Stage "accelerations" of one evaluation: loads (gravity, force elements, external loads),
+// then the KKT solve for body accelerations, joint-speed derivatives and constraint multipliers.
+#pragma once
+
+#include <sinew/engine/kkt.h>
+#include <sinew/engine/loads.h>
+#include <sinew/engine/state.h>
+#include <sinew/engine/system.h>
+
+namespace sinew::engine {
+
+/// Result of CalcAccelerations, in KKT velocity order (see KktSolver).
+struct Accelerations {
+  /// Body spatial accelerations [alpha_GB; a_GBo] (in G) and integrated speed derivatives udot.
+  VecX vdot;
+  /// Constraint multipliers, one per constraint equation (reaction loads in the rows' units).
+  VecX lambda;
+};
+
+/// Adds gravity, every force element of `system` and `external` (may be null) for `state`.
+/// Generalized forces on coordinates of direct Cartesian joints are turned into body torques.
+void CalcLoads(const System& system, const State& state, const Loads* external, Loads& loads);
+
+/// The accelerations of `state` under the loads of CalcLoads. `kkt` must belong to `system`;
+/// it is refactorized at `state`. Throws sinew::Error for a singular system.
+Accelerations CalcAccelerations(const System& system, const State& state, const Loads* external,
+                                KktSolver& kkt);
+
+}  // namespace sinew::engine

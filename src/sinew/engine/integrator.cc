@@ -1,0 +1,368 @@
+#include <sinew/engine/integrator.h>
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/dynamics.h>
+#include <sinew/engine/pose.h>
+#include <sinew/engine/projection.h>
+
+namespace sinew::engine {
+
+Integrator::Integrator(const System& system, const IntegratorSettings& settings)
+    : system_(system), settings_(settings), kkt_(system) {
+  if (!(settings.accuracy > 0.0)) throw Error("integrator: accuracy must be > 0");
+  if (settings.step < 0.0) throw Error("integrator: step must be >= 0");
+}
+
+double Integrator::ConstraintTolerance() const {
+  return settings_.constraint_tolerance > 0.0 ? settings_.constraint_tolerance
+                                              : std::min(1e-3 * settings_.accuracy, 1e-10);
+}
+
+namespace {
+
+// The integrated vector y = [positions; velocities]: per moving body p_GB and quat_GB
+// (w, x, y, z), then the integrated q; then the KKT velocities.
+class StateVector {
+ public:
+  StateVector(const System& system, const KktSolver& kkt) : system_(system), kkt_(kkt) {
+    nb_ = system.num_bodies() - 1;
+    np_ = 7 * nb_ + system.num_integrated();
+    nv_ = kkt.num_velocities();
+  }
+  int size() const { return np_ + nv_; }
+
+  VecX Pack(const State& state) const {
+    VecX y(size());
+    for (int b = 1; b <= nb_; ++b) {
+      const BodyState& s = state.bodies[b];
+      y.segment<3>(7 * (b - 1)) = s.p_GB;
+      y.segment<4>(7 * (b - 1) + 3) << s.quat_GB.w(), s.quat_GB.x(), s.quat_GB.y(), s.quat_GB.z();
+    }
+    for (int c = 0; c < system_.num_coordinates(); ++c) {
+      if (system_.IsIntegrated(c)) y[7 * nb_ + system_.SpeedIndex(c)] = state.q[c];
+    }
+    y.tail(nv_) = GatherVelocities(system_, kkt_, state);
+    return y;
+  }
+
+  // Writes y into `state` (direct coordinates then read off the poses).
+  void Unpack(const VecX& y, double t, State& state) const {
+    state.t = t;
+    for (int b = 1; b <= nb_; ++b) {
+      BodyState& s = state.bodies[b];
+      s.p_GB = y.segment<3>(7 * (b - 1));
+      const auto qv = y.segment<4>(7 * (b - 1) + 3);
+      s.quat_GB = Quat(qv[0], qv[1], qv[2], qv[3]).normalized();
+    }
+    for (int c = 0; c < system_.num_coordinates(); ++c) {
+      if (system_.IsIntegrated(c)) state.q[c] = y[7 * nb_ + system_.SpeedIndex(c)];
+    }
+    ScatterVelocities(system_, kkt_, y.tail(nv_), state);
+    UpdateDirectCoordinates(system_, state);
+  }
+
+  // ydot at the state (whose quaternions are those of y, unnormalized kept in y).
+  VecX Derivative(const VecX& y, const State& state, const VecX& vdot) const {
+    VecX yd(size());
+    for (int b = 1; b <= nb_; ++b) {
+      const BodyState& s = state.bodies[b];
+      yd.segment<3>(7 * (b - 1)) = s.v_GB;
+      const auto qv = y.segment<4>(7 * (b - 1) + 3);
+      const Quat quat(qv[0], qv[1], qv[2], qv[3]);
+      // quat_dot = 1/2 [0, w_G] * quat
+      const Quat wq(0.0, s.w_GB.x(), s.w_GB.y(), s.w_GB.z());
+      const Quat qd = wq * quat;
+      yd.segment<4>(7 * (b - 1) + 3) << 0.5 * qd.w(), 0.5 * qd.x(), 0.5 * qd.y(), 0.5 * qd.z();
+    }
+    for (const Joint& joint : system_.joints()) {
+      if (joint.form != JointForm::kParameterized || joint.coordinates.empty()) continue;
+      const size_t n = joint.coordinates.size();
+      std::vector<double> q(n), u(n), qdot(n);
+      for (size_t i = 0; i < n; ++i) {
+        q[i] = state.q[joint.coordinates[i]];
+        u[i] = state.u[joint.coordinates[i]];
+      }
+      joint.model->CalcQDot(q, u, qdot);
+      for (size_t i = 0; i < n; ++i) {
+        yd[7 * nb_ + system_.SpeedIndex(joint.coordinates[i])] = qdot[i];
+      }
+    }
+    yd.tail(nv_) = vdot;
+    return yd;
+  }
+
+ private:
+  const System& system_;
+  const KktSolver& kkt_;
+  int nb_ = 0, np_ = 0, nv_ = 0;
+};
+
+// Dormand-Prince 5(4) with projection after every accepted step.
+class RungeKutta45 final : public Integrator {
+ public:
+  RungeKutta45(const System& system, const IntegratorSettings& settings)
+      : Integrator(system, settings), vector_(system, kkt_) {}
+
+  void StepTo(State& state, double t_final) override {
+    CheckState(system_, state);
+    if (t_final < state.t) throw Error("integrator: cannot step backwards in time");
+    if (h_ <= 0.0) h_ = settings_.step > 0.0 ? std::min(settings_.step, 1e-3) : 1e-3;
+    while (state.t < t_final) {
+      const double remaining = t_final - state.t;
+      double h = std::min(h_, remaining);
+      if (settings_.step > 0.0) h = std::min(h, settings_.step);
+      // Avoid a tiny last step: split the remainder evenly instead.
+      if (h < remaining && remaining < 1.5 * h) h = 0.5 * remaining;
+      const bool lands = h >= remaining;
+      if (TryStep(state, lands ? remaining : h, lands ? t_final : state.t + h)) {
+        ++stats_.steps;
+      } else {
+        ++stats_.rejected;
+        if (h_ < settings_.min_step) {
+          throw Error("integrator: step size fell below " + std::to_string(settings_.min_step) +
+                      " s at t = " + std::to_string(state.t) + " s");
+        }
+      }
+    }
+  }
+
+ private:
+  VecX Eval(const VecX& y, double t, State& scratch) {
+    vector_.Unpack(y, t, scratch);
+    ++stats_.evaluations;
+    return vector_.Derivative(y, scratch,
+                              CalcAccelerations(system_, scratch, external_, kkt_).vdot);
+  }
+
+  // One attempt; on success `state` advances and h_ is updated for the next step.
+  bool TryStep(State& state, double h, double t_new) {
+    static constexpr double c[7] = {0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1};
+    static constexpr double a[7][6] = {
+        {0, 0, 0, 0, 0, 0},
+        {1.0 / 5, 0, 0, 0, 0, 0},
+        {3.0 / 40, 9.0 / 40, 0, 0, 0, 0},
+        {44.0 / 45, -56.0 / 15, 32.0 / 9, 0, 0, 0},
+        {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729, 0, 0},
+        {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656, 0},
+        {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
+    // Error coefficients: fifth-order minus fourth-order weights.
+    static constexpr double e[7] = {71.0 / 57600,      0,          -71.0 / 16695, 71.0 / 1920,
+                                    -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
+    State scratch = state;
+    const VecX y0 = vector_.Pack(state);
+    VecX k[7];
+    k[0] = Eval(y0, state.t, scratch);
+    VecX y;
+    for (int s = 1; s < 7; ++s) {
+      y = y0;
+      for (int j = 0; j < s; ++j) {
+        if (a[s][j] != 0.0) y += (h * a[s][j]) * k[j];
+      }
+      k[s] = Eval(y, s == 6 ? t_new : state.t + c[s] * h, scratch);
+    }
+    // y holds the fifth-order solution (the last stage is evaluated at it).
+    VecX err = VecX::Zero(y0.size());
+    for (int s = 0; s < 7; ++s) err += (h * e[s]) * k[s];
+    double norm = 0.0;
+    for (int i = 0; i < err.size(); ++i) {
+      const double scale = std::max({1.0, std::abs(y0[i]), std::abs(y[i])});
+      norm = std::max(norm, std::abs(err[i]) / scale);
+    }
+    norm /= settings_.accuracy;
+    if (!std::isfinite(norm)) norm = 1e10;
+    const double factor = norm == 0.0 ? 5.0 : std::clamp(0.9 * std::pow(norm, -0.2), 0.2, 5.0);
+    if (norm > 1.0) {
+      h_ = h * std::min(factor, 0.9);
+      just_rejected_ = true;
+      return false;
+    }
+    State next = state;
+    vector_.Unpack(y, t_new, next);
+    if (!ProjectPositions(system_, next, ConstraintTolerance(), kkt_, 10,
+                          &stats_.projection_factorizations)) {
+      ++stats_.projection_failures;
+      h_ = 0.5 * h;
+      return false;
+    }
+    ProjectVelocities(system_, next, kkt_);
+    UpdateDirectCoordinates(system_, next);
+    state = std::move(next);
+    // No growth right after a rejection (Hairer's rule: avoids reject/accept cycles). A step
+    // shortened to land on t_final says little about the next one.
+    const double growth = just_rejected_ ? std::min(factor, 1.0) : factor;
+    just_rejected_ = false;
+    h_ = h < h_ ? std::max(h_, h * growth) : h * growth;
+    if (settings_.step > 0.0) h_ = std::min(h_, settings_.step);
+    return true;
+  }
+
+  StateVector vector_;
+  double h_ = 0.0;
+  bool just_rejected_ = false;
+};
+
+// The schemes that advance by a fixed step `settings.step` (the last step of a StepTo call
+// shortened to land exactly on t_final).
+class FixedStepIntegrator : public Integrator {
+ public:
+  void StepTo(State& state, double t_final) override {
+    CheckState(system_, state);
+    if (t_final < state.t) throw Error("integrator: cannot step backwards in time");
+    while (state.t < t_final) {
+      const double remaining = t_final - state.t;
+      const double h = remaining < 1.0001 * settings_.step ? remaining : settings_.step;
+      Step(state, h, h == remaining ? t_final : state.t + h);
+      ++stats_.steps;
+    }
+  }
+
+ protected:
+  FixedStepIntegrator(const System& system, const IntegratorSettings& settings, const char* name)
+      : Integrator(system, settings) {
+    if (!(settings.step > 0.0)) {
+      throw Error(std::string("integrator '") + name + "' needs a step > 0");
+    }
+  }
+  // One step of length h from state.t, ending at time t_new.
+  virtual void Step(State& state, double h, double t_new) = 0;
+};
+
+// Fixed-step semi-implicit Euler on the velocity-level KKT system, with projection.
+class SemiImplicitEuler final : public FixedStepIntegrator {
+ public:
+  SemiImplicitEuler(const System& system, const IntegratorSettings& settings)
+      : FixedStepIntegrator(system, settings, "euler") {}
+
+ private:
+  void Step(State& state, double h, double t_new) override {
+    const int nv = kkt_.num_velocities();
+    // Accelerations' right-hand side f at (x, v); the same matrix serves the velocity solve.
+    ++stats_.evaluations;
+    const Accelerations acc = CalcAccelerations(system_, state, external_, kkt_);
+    // M vdot + J^T lambda = f  =>  f = M vdot + J^T lambda; the new velocities solve
+    // M v+ + J^T (h lambda+) = M v + h f, J v+ = c(t+h).
+    const VecX v0 = GatherVelocities(system_, kkt_, state);
+    VecX rhs(nv + kkt_.num_equations());
+    rhs.head(nv) = kkt_.MultiplyMass(v0 + h * acc.vdot);
+    State later = state;
+    later.t = t_new;
+    const auto& constraints = system_.constraints();
+    for (size_t k = 0; k < constraints.size(); ++k) {
+      constraints[k]->CalcVelocityRhs(
+          system_, later, rhs.segment(nv + kkt_.EquationRow(k), constraints[k]->NumEquations()));
+    }
+    // h * J^T lambda of the acceleration solve is replaced by the new impulse.
+    const VecX v1 = kkt_.Solve(rhs).head(nv);
+    // Positions move with the new velocities.
+    ScatterVelocities(system_, kkt_, v1, later);
+    ApplyPositionDisplacement(system_, kkt_, h * v1, later);
+    if (!ProjectPositions(system_, later, ConstraintTolerance(), kkt_, 10,
+                          &stats_.projection_factorizations)) {
+      throw Error("integrator 'euler': position projection failed at t = " + std::to_string(t_new) +
+                  " s (step too large?)");
+    }
+    ProjectVelocities(system_, later, kkt_);
+    UpdateDirectCoordinates(system_, later);
+    state = std::move(later);
+  }
+};
+
+// Linearized implicit Euler (fixed step): the applied loads f(x, v) are linearized about the
+// step's start with K = df/dx and D = df/dv (finite differences over every velocity unknown),
+//   [M - h D - h^2 K   J^T] [v+ ]   [M (v + h vdot) - h D v]
+//   [J                  0 ] [mu ] = [c(t + h)              ]
+// then positions move with v+ and are projected. Stable for stiff springs and dampers; the
+// dense solve and the O(n) load evaluations per Jacobian column make it O(n^2)-O(n^3): meant
+// for small stiff models.
+class LinearizedImplicitEuler final : public FixedStepIntegrator {
+ public:
+  LinearizedImplicitEuler(const System& system, const IntegratorSettings& settings)
+      : FixedStepIntegrator(system, settings, "implicit-euler") {}
+
+ private:
+  // The applied loads in KKT velocity layout (body rows, integrated speeds' rows).
+  VecX LoadVector(const State& state) const {
+    Loads loads;
+    CalcLoads(system_, state, external_, loads);
+    VecX f = VecX::Zero(kkt_.num_velocities());
+    for (int b = 1; b < system_.num_bodies(); ++b) f.segment<6>(kkt_.BodyColumn(b)) = loads.body[b];
+    for (int c = 0; c < system_.num_coordinates(); ++c) {
+      if (system_.IsIntegrated(c)) f[kkt_.SpeedColumn(c)] = loads.mobility[c];
+    }
+    return f;
+  }
+
+  void Step(State& state, double h, double t_new) override {
+    const int nv = kkt_.num_velocities(), nc = kkt_.num_equations();
+    ++stats_.evaluations;
+    const Accelerations acc = CalcAccelerations(system_, state, external_, kkt_);
+    const VecX v0 = GatherVelocities(system_, kkt_, state);
+    const VecX f0 = LoadVector(state);
+    MatX D(nv, nv), K(nv, nv);
+    const double eps = 1e-7;
+    for (int k = 0; k < nv; ++k) {
+      State moved = state;
+      VecX v = v0;
+      v[k] += eps;
+      ScatterVelocities(system_, kkt_, v, moved);
+      UpdateDirectCoordinates(system_, moved);  // force elements may read their q, u
+      D.col(k) = (LoadVector(moved) - f0) / eps;
+      moved = state;
+      VecX dx = VecX::Zero(nv);
+      dx[k] = eps;
+      ApplyPositionDisplacement(system_, kkt_, dx, moved);
+      UpdateDirectCoordinates(system_, moved);
+      K.col(k) = (LoadVector(moved) - f0) / eps;
+    }
+    MatX A = kkt_.AssembleDense();
+    A.topLeftCorner(nv, nv) -= h * D + h * h * K;
+    VecX rhs(nv + nc);
+    rhs.head(nv) = kkt_.MultiplyMass(v0 + h * acc.vdot) - h * (D * v0);
+    State later = state;
+    later.t = t_new;
+    const auto& constraints = system_.constraints();
+    for (size_t k = 0; k < constraints.size(); ++k) {
+      constraints[k]->CalcVelocityRhs(
+          system_, later, rhs.segment(nv + kkt_.EquationRow(k), constraints[k]->NumEquations()));
+    }
+    const Eigen::PartialPivLU<MatX> lu(A);
+    const VecX x = lu.solve(rhs);
+    if (!x.allFinite() ||
+        (A * x - rhs).lpNorm<Eigen::Infinity>() > 1e-6 * (1.0 + rhs.lpNorm<Eigen::Infinity>())) {
+      throw Error("integrator 'implicit-euler': singular step matrix at t = " +
+                  std::to_string(state.t) + " s");
+    }
+    const VecX v1 = x.head(nv);
+    ScatterVelocities(system_, kkt_, v1, later);
+    ApplyPositionDisplacement(system_, kkt_, h * v1, later);
+    if (!ProjectPositions(system_, later, ConstraintTolerance(), kkt_, 10,
+                          &stats_.projection_factorizations)) {
+      throw Error("integrator 'implicit-euler': position projection failed at t = " +
+                  std::to_string(t_new) + " s (step too large?)");
+    }
+    ProjectVelocities(system_, later, kkt_);
+    UpdateDirectCoordinates(system_, later);
+    state = std::move(later);
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System& system,
+                                           const IntegratorSettings& settings) {
+  if (name == "rk45" || name == "dopri5") return std::make_unique<RungeKutta45>(system, settings);
+  if (name == "euler" || name == "semi-implicit-euler") {
+    return std::make_unique<SemiImplicitEuler>(system, settings);
+  }
+  if (name == "implicit-euler") return std::make_unique<LinearizedImplicitEuler>(system, settings);
+  throw Error("unknown integrator '" + name + "' (known: rk45, euler, implicit-euler)");
+}
+
+}  // namespace sinew::engine

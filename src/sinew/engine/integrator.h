@@ -1,0 +1,74 @@
+// Time stepping. Three schemes share one interface:
+//  - "rk45": Dormand-Prince 5(4) with error control on positions and velocities and, after each
+//    accepted step, projection of positions (Newton) and velocities (least squares) onto the
+//    constraints. Used to match OpenSim's results.
+//  - "euler": fixed-step semi-implicit (symplectic) Euler: the new velocities solve the
+//    velocity-level KKT system M (v+ - v) = h f + J^T lambda, J v+ = c; positions then move
+//    with v+ and are projected. First order, robust, one factorization per step: meant for
+//    non-smooth (contact) problems without stiff forces.
+//  - "implicit-euler": fixed-step linearized implicit Euler (force Jacobians by finite
+//    differences, dense solve): stable for stiff springs and dampers on small models.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <sinew/engine/kkt.h>
+#include <sinew/engine/loads.h>
+#include <sinew/engine/projection.h>
+#include <sinew/engine/state.h>
+#include <sinew/engine/system.h>
+
+namespace sinew::engine {
+
+/// Settings of an integrator.
+struct IntegratorSettings {
+  /// Relative local error allowed per step (with unit absolute floor), error-controlled only.
+  double accuracy = 1e-6;
+  /// Fixed step (s) of fixed-step schemes; upper bound of the step for error-controlled ones
+  /// (0: no bound).
+  double step = 0.0;
+  /// Smallest step before giving up (s).
+  double min_step = 1e-12;
+  /// Constraint position tolerance of the projection (0: min(1e-3 accuracy, 1e-10)).
+  double constraint_tolerance = 0.0;
+};
+
+/// Counters of an integrator's work.
+struct IntegratorStats {
+  long steps = 0;                      ///< accepted steps
+  long rejected = 0;                   ///< rejected steps
+  long evaluations = 0;                ///< acceleration evaluations
+  long projection_factorizations = 0;  ///< KKT factorizations of the position projections
+  long projection_failures = 0;        ///< steps rejected because the projection did not converge
+};
+
+/// Advances a State of one System in time. Keeps a reference to the System: the System must
+/// outlive the integrator and stay where it is (hold it by unique_ptr or in place).
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  /// Advances `state` to exactly `t_final` (>= state.t). Throws sinew::Error on failure.
+  virtual void StepTo(State& state, double t_final) = 0;
+  /// Loads held constant and added to every evaluation (may be null; not owned).
+  void SetExternalLoads(const Loads* loads) { external_ = loads; }
+  const IntegratorStats& stats() const { return stats_; }
+  const IntegratorSettings& settings() const { return settings_; }
+
+ protected:
+  Integrator(const System& system, const IntegratorSettings& settings);
+  double ConstraintTolerance() const;
+
+  const System& system_;
+  IntegratorSettings settings_;
+  KktSolver kkt_;
+  const Loads* external_ = nullptr;
+  IntegratorStats stats_;
+};
+
+/// Makes the integrator named `name` ("rk45", "euler" or "implicit-euler"). Throws sinew::Error for
+/// another name.
+std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System& system,
+                                           const IntegratorSettings& settings);
+
+}  // namespace sinew::engine

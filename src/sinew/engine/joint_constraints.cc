@@ -1,0 +1,242 @@
+#include <sinew/engine/joint_constraints.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <sinew/engine/pose.h>
+#include <sinew/engine/state.h>
+
+namespace sinew::engine {
+namespace {
+
+// Frames F (on the parent P) and M (on the child B) of a joint at a state.
+struct JointFrames {
+  Transform X_GP, X_GB, X_GF, X_GM;
+};
+
+JointFrames CalcJointFrames(const Joint& joint, const State& state) {
+  JointFrames f;
+  f.X_GP = PoseOf(state.bodies[joint.parent]);
+  f.X_GB = PoseOf(state.bodies[joint.child]);
+  f.X_GF = f.X_GP * joint.X_PF;
+  f.X_GM = f.X_GB * joint.X_BM;
+  return f;
+}
+
+// inverse(X_GF) * X_GM = X_FM(q), six rows in F: [rotation; translation].
+class ParameterizedJointConstraint final : public Constraint {
+ public:
+  explicit ParameterizedJointConstraint(const Joint& joint) : joint_(joint) {}
+
+  int NumEquations() const override { return 6; }
+  std::vector<int> Bodies() const override { return {joint_.parent, joint_.child}; }
+  std::vector<int> Coordinates() const override { return joint_.coordinates; }
+
+  void CalcPositionError(const System&, const State& state, Eigen::Ref<VecX> phi) const override {
+    const JointFrames f = CalcJointFrames(joint_, state);
+    const Transform X_FM_actual = f.X_GF.Inverse() * f.X_GM;
+    const Transform X_FM = joint_.model->CalcX_FM(Q(state));
+    phi.head<3>() = RotationVector(X_FM_actual.R * X_FM.R.transpose());
+    phi.tail<3>() = X_FM_actual.p - X_FM.p;
+  }
+
+  void CalcJacobian(const System&, const State& state, Eigen::Ref<MatX> J) const override {
+    const JointFrames f = CalcJointFrames(joint_, state);
+    const Mat3 Rt = f.X_GF.R.transpose();
+    const Vec3 r_BM = f.X_GM.p - f.X_GB.p;
+    const Vec3 d = f.X_GM.p - f.X_GP.p;
+    J.setZero();
+    // Parent twist columns 0..5, child 6..11, then the joint speeds.
+    J.block<3, 3>(0, 0) = -Rt;
+    J.block<3, 3>(3, 0) = Rt * Skew(d);
+    J.block<3, 3>(3, 3) = -Rt;
+    J.block<3, 3>(0, 6) = Rt;
+    J.block<3, 3>(3, 6) = -Rt * Skew(r_BM);
+    J.block<3, 3>(3, 9) = Rt;
+    const int n = static_cast<int>(joint_.coordinates.size());
+    if (n > 0) J.rightCols(n) = -joint_.model->CalcH_FM(Q(state));
+  }
+
+  void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
+    const JointFrames f = CalcJointFrames(joint_, state);
+    const BodyState& P = state.bodies[joint_.parent];
+    const BodyState& B = state.bodies[joint_.child];
+    const Mat3 Rt = f.X_GF.R.transpose();
+    const Vec3 r_BM = f.X_GM.p - f.X_GB.p;
+    const Vec3 d = f.X_GM.p - f.X_GP.p;
+    const Vec3 v_M = B.v_GB + B.w_GB.cross(r_BM);
+    const Vec3 d_dot = v_M - P.v_GB;
+    const Vec3 y = d_dot - P.w_GB.cross(d);
+    SpatialVec bias;
+    bias.head<3>() = -Rt * P.w_GB.cross(B.w_GB - P.w_GB);
+    bias.tail<3>() =
+        Rt * (B.w_GB.cross(B.w_GB.cross(r_BM)) - P.w_GB.cross(d_dot) - P.w_GB.cross(y));
+    SpatialVec hdot_u = SpatialVec::Zero();
+    if (!joint_.coordinates.empty()) hdot_u = joint_.model->CalcHDotU(Q(state), U(state));
+    b = hdot_u - bias;
+  }
+
+ private:
+  std::vector<double> Q(const State& state) const {
+    std::vector<double> q;
+    for (int c : joint_.coordinates) q.push_back(state.q[c]);
+    return q;
+  }
+  std::vector<double> U(const State& state) const {
+    std::vector<double> u;
+    for (int c : joint_.coordinates) u.push_back(state.u[c]);
+    return u;
+  }
+  Joint joint_;
+};
+
+// Pin, Ball, Universal, Weld: the origins of F and M coincide (3 rows), plus dot-product
+// conditions a . b = 0 between a unit vector a fixed in F and b fixed in M. Rows in G.
+class DirectJointConstraint final : public Constraint {
+ public:
+  explicit DirectJointConstraint(const Joint& joint) : joint_(joint) {
+    switch (joint.form) {
+      case JointForm::kPin:  // z_M stays along z_F
+        pairs_ = {{0, 2}, {1, 2}};
+        break;
+      case JointForm::kUniversal:  // y_M stays perpendicular to x_F
+        pairs_ = {{0, 1}};
+        break;
+      case JointForm::kWeld:
+        pairs_ = {{0, 1}, {1, 2}, {2, 0}};
+        break;
+      default:
+        break;
+    }
+  }
+
+  int NumEquations() const override { return 3 + static_cast<int>(pairs_.size()); }
+  std::vector<int> Bodies() const override { return {joint_.parent, joint_.child}; }
+
+  void CalcPositionError(const System&, const State& state, Eigen::Ref<VecX> phi) const override {
+    const JointFrames f = CalcJointFrames(joint_, state);
+    phi.head<3>() = f.X_GM.p - f.X_GF.p;
+    for (size_t k = 0; k < pairs_.size(); ++k) {
+      phi[3 + k] = f.X_GF.R.col(pairs_[k][0]).dot(f.X_GM.R.col(pairs_[k][1]));
+    }
+  }
+
+  void CalcJacobian(const System&, const State& state, Eigen::Ref<MatX> J) const override {
+    const JointFrames f = CalcJointFrames(joint_, state);
+    const Vec3 r_PF = f.X_GF.p - f.X_GP.p;
+    const Vec3 r_BM = f.X_GM.p - f.X_GB.p;
+    J.setZero();
+    J.block<3, 3>(0, 0) = Skew(r_PF);
+    J.block<3, 3>(0, 3) = -Mat3::Identity();
+    J.block<3, 3>(0, 6) = -Skew(r_BM);
+    J.block<3, 3>(0, 9) = Mat3::Identity();
+    for (size_t k = 0; k < pairs_.size(); ++k) {
+      // d/dt (a . b) = (w_B - w_P) . (b x a)
+      const Vec3 bxa = f.X_GM.R.col(pairs_[k][1]).cross(f.X_GF.R.col(pairs_[k][0]));
+      J.block<1, 3>(3 + k, 0) = -bxa.transpose();
+      J.block<1, 3>(3 + k, 6) = bxa.transpose();
+    }
+  }
+
+  void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
+    const JointFrames f = CalcJointFrames(joint_, state);
+    const BodyState& P = state.bodies[joint_.parent];
+    const BodyState& B = state.bodies[joint_.child];
+    const Vec3 r_PF = f.X_GF.p - f.X_GP.p;
+    const Vec3 r_BM = f.X_GM.p - f.X_GB.p;
+    b.head<3>() = P.w_GB.cross(P.w_GB.cross(r_PF)) - B.w_GB.cross(B.w_GB.cross(r_BM));
+    const Vec3 w_rel = B.w_GB - P.w_GB;
+    for (size_t k = 0; k < pairs_.size(); ++k) {
+      const Vec3 a = f.X_GF.R.col(pairs_[k][0]);
+      const Vec3 bb = f.X_GM.R.col(pairs_[k][1]);
+      b[3 + k] = -w_rel.dot(B.w_GB.cross(bb).cross(a) + bb.cross(P.w_GB.cross(a)));
+    }
+  }
+
+ private:
+  Joint joint_;
+  std::vector<std::array<int, 2>> pairs_;
+};
+
+// q_i - f(t) = 0 on a coordinate of a parameterized joint. Velocity: (N(q) u)_i = f'(t);
+// acceleration: (N udot)_i = f''(t) - (Ndot u)_i, Ndot u by a central difference of N along
+// qdot (exactly zero when qdot_i = u_i, the usual case; Ball/Free rotations are not).
+class CoordinateMotionConstraint final : public Constraint {
+ public:
+  CoordinateMotionConstraint(const Joint& joint, int coordinate, const Coordinate& c)
+      : joint_(joint), coordinate_(coordinate), spec_(c) {}
+
+  int NumEquations() const override { return 1; }
+  std::vector<int> Bodies() const override { return {}; }
+  std::vector<int> Coordinates() const override { return joint_.coordinates; }
+
+  void CalcPositionError(const System&, const State& state, Eigen::Ref<VecX> phi) const override {
+    phi[0] = state.q[coordinate_] - Value(state.t, 0);
+  }
+  void CalcJacobian(const System&, const State& state, Eigen::Ref<MatX> J) const override {
+    const std::vector<double> q = Gather(state.q);
+    std::vector<double> u(q.size(), 0.0), qdot(q.size());
+    for (size_t k = 0; k < q.size(); ++k) {
+      u[k] = 1.0;
+      joint_.model->CalcQDot(q, u, qdot);
+      J(0, static_cast<int>(k)) = qdot[spec_.index_in_joint];
+      u[k] = 0.0;
+    }
+  }
+  void CalcVelocityRhs(const System&, const State& state, Eigen::Ref<VecX> c) const override {
+    c[0] = Value(state.t, 1);
+  }
+  void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
+    const std::vector<double> q = Gather(state.q), u = Gather(state.u);
+    const size_t n = q.size();
+    std::vector<double> qdot(n), q_plus(n), q_minus(n), a(n), c(n);
+    joint_.model->CalcQDot(q, u, qdot);
+    double speed = 0.0;
+    for (double x : qdot) speed = std::max(speed, std::abs(x));
+    const double delta = 1e-5 / std::max(1.0, speed);
+    for (size_t k = 0; k < n; ++k) {
+      q_plus[k] = q[k] + delta * qdot[k];
+      q_minus[k] = q[k] - delta * qdot[k];
+    }
+    joint_.model->CalcQDot(q_plus, u, a);
+    joint_.model->CalcQDot(q_minus, u, c);
+    const int i = spec_.index_in_joint;
+    b[0] = Value(state.t, 2) - (a[i] - c[i]) / (2 * delta);
+  }
+
+ private:
+  std::vector<double> Gather(const VecX& x) const {
+    std::vector<double> out;
+    for (int c : joint_.coordinates) out.push_back(x[c]);
+    return out;
+  }
+  double Value(double t, int order) const {
+    if (spec_.motion == CoordinateMotion::kPrescribed && spec_.prescribed) {
+      return order == 0 ? spec_.prescribed->Calc(t) : spec_.prescribed->CalcDerivative(t, order);
+    }
+    return order == 0 ? spec_.default_value : 0.0;
+  }
+  Joint joint_;
+  int coordinate_;
+  Coordinate spec_;
+};
+
+}  // namespace
+
+std::shared_ptr<const Constraint> MakeJointConstraint(const System& system, int joint_index) {
+  const Joint& joint = system.joints()[joint_index];
+  if (joint.form == JointForm::kParameterized) {
+    return std::make_shared<ParameterizedJointConstraint>(joint);
+  }
+  return std::make_shared<DirectJointConstraint>(joint);
+}
+
+std::shared_ptr<const Constraint> MakeCoordinateMotionConstraint(const System& system,
+                                                                 int coordinate) {
+  const Coordinate& c = system.coordinates()[coordinate];
+  return std::make_shared<CoordinateMotionConstraint>(system.joints()[c.joint], coordinate, c);
+}
+
+}  // namespace sinew::engine

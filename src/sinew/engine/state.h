@@ -1,0 +1,23 @@
+// The changing data of a simulation: time, body poses and twists, joint coordinates and speeds.
+// A State is a plain value: copy it to save it, assign it back to restore it.
+#pragma once
+
+#include <vector>
+
+#include <sinew/engine/body.h>
+#include <sinew/math/types.h>
+
+namespace sinew::engine {
+
+/// Everything that changes during a simulation of a System.
+struct State {
+  double t = 0.0;                 ///< time (s)
+  std::vector<BodyState> bodies;  ///< one per System body; bodies[0] (ground) stays at rest
+  /// Every coordinate q (rad or m) and speed u (rad/s or m/s), in System coordinate order.
+  /// Coordinates of parameterized joints are integrated unknowns; those of direct Cartesian
+  /// joints are read off the body poses after every step (see UpdateDirectCoordinates).
+  VecX q;
+  VecX u;
+};
+
+}  // namespace sinew::engine

@@ -1,0 +1,184 @@
+#include <sinew/engine/system.h>
+
+#include <cmath>
+
+#include <sinew/common/error.h>
+#include <sinew/engine/direct_joint.h>
+#include <sinew/engine/joint_constraints.h>
+
+namespace sinew::engine {
+
+System::System(const Vec3& gravity) : gravity_(gravity) {
+  Body ground;
+  ground.name = "ground";
+  bodies_.push_back(ground);
+}
+
+void System::RequireNotFinalized() const {
+  if (finalized_) throw Error("engine::System: cannot add to a finalized system");
+}
+
+int System::AddBody(const Body& body) {
+  RequireNotFinalized();
+  if (!(body.mass >= 0.0) || !std::isfinite(body.mass)) {
+    throw Error({}, body.name, "body mass must be finite and >= 0");
+  }
+  if (!body.I_Bcm_B.allFinite() || !body.I_Bcm_B.isApprox(body.I_Bcm_B.transpose(), 1e-9) ||
+      !body.p_BCm.allFinite()) {
+    throw Error({}, body.name, "body inertia must be finite and symmetric");
+  }
+  bodies_.push_back(body);
+  return num_bodies() - 1;
+}
+
+int System::AddJoint(const std::string& name, int parent, const Transform& X_PF, int child,
+                     const Transform& X_BM, JointForm form, std::shared_ptr<const JointModel> model,
+                     const std::vector<CoordinateDesc>& coordinates) {
+  RequireNotFinalized();
+  if (parent < 0 || parent >= num_bodies() || child < 0 || child >= num_bodies() ||
+      parent == child) {
+    throw Error({}, name, "joint connects invalid bodies");
+  }
+  const int expected =
+      form == JointForm::kParameterized ? (model ? model->nq() : -1) : NumDirectCoordinates(form);
+  if (expected < 0) throw Error({}, name, "a parameterized joint needs a JointModel");
+  if (expected != static_cast<int>(coordinates.size())) {
+    throw Error({}, name,
+                "joint has " + std::to_string(coordinates.size()) + " coordinates, expected " +
+                    std::to_string(expected));
+  }
+  Joint joint;
+  joint.name = name;
+  joint.parent = parent;
+  joint.child = child;
+  joint.X_PF = X_PF;
+  joint.X_BM = X_BM;
+  joint.form = form;
+  joint.model = std::move(model);
+  const int joint_index = static_cast<int>(joints_.size());
+  for (size_t i = 0; i < coordinates.size(); ++i) {
+    const CoordinateDesc& d = coordinates[i];
+    Coordinate c;
+    c.name = d.name;
+    c.joint = joint_index;
+    c.index_in_joint = static_cast<int>(i);
+    c.default_value = d.default_value;
+    c.default_speed = d.default_speed;
+    c.motion = d.motion;
+    c.prescribed = d.prescribed;
+    if (c.motion == CoordinateMotion::kPrescribed && !c.prescribed) {
+      throw Error({}, name + "/" + d.name, "prescribed coordinate without a function");
+    }
+    if (c.motion != CoordinateMotion::kFree && form != JointForm::kParameterized) {
+      throw Error({}, name + "/" + d.name,
+                  "locked or prescribed coordinates need the parameterized joint form");
+    }
+    joint.coordinates.push_back(num_coordinates());
+    coordinates_.push_back(c);
+  }
+  joints_.push_back(std::move(joint));
+  return joint_index;
+}
+
+void System::AddConstraint(std::shared_ptr<const Constraint> constraint) {
+  RequireNotFinalized();
+  extra_constraints_.push_back(std::move(constraint));
+}
+
+void System::AddForceElement(std::shared_ptr<const ForceElement> force) {
+  RequireNotFinalized();
+  forces_.push_back(std::move(force));
+}
+
+void System::Finalize() {
+  RequireNotFinalized();
+  // Tree: walking the joints outward from ground places every body exactly once. A joint whose
+  // child is nearer to ground is used reversed (the constraint itself is the same).
+  joint_of_body_.assign(bodies_.size(), -1);
+  reversed_.assign(joints_.size(), false);
+  loop_.assign(joints_.size(), false);
+  tree_order_.clear();
+  std::vector<bool> placed_body(bodies_.size(), false);
+  placed_body[0] = true;
+  std::vector<bool> placed(joints_.size(), false);
+  for (bool progress = true; progress;) {
+    progress = false;
+    for (size_t j = 0; j < joints_.size(); ++j) {
+      if (placed[j]) continue;
+      const Joint& joint = joints_[j];
+      if (placed_body[joint.parent] && placed_body[joint.child]) {
+        // Both bodies are already placed: this joint closes a loop. It stays a constraint
+        // (solved with the others) but places no body.
+        loop_[j] = true;
+        placed[j] = true;
+        progress = true;
+        continue;
+      }
+      if (!placed_body[joint.parent] && !placed_body[joint.child]) continue;
+      reversed_[j] = placed_body[joint.child];
+      const int outboard = reversed_[j] ? joint.parent : joint.child;
+      placed_body[outboard] = true;
+      joint_of_body_[outboard] = static_cast<int>(j);
+      placed[j] = true;
+      tree_order_.push_back(static_cast<int>(j));
+      progress = true;
+    }
+  }
+  bool any_mass = false;
+  for (int b = 1; b < num_bodies(); ++b) {
+    if (!placed_body[b]) {
+      throw Error({}, bodies_[b].name, "no chain of joints connects the body to ground");
+    }
+    any_mass = any_mass || bodies_[b].mass > 0.0;
+  }
+  for (size_t j = 0; j < joints_.size(); ++j) {
+    if (!placed[j]) throw Error({}, joints_[j].name, "joint is not connected to ground");
+  }
+  if (num_bodies() > 1 && !any_mass) {
+    throw Error(
+        "every body has zero mass: forward dynamics is singular (a kinematics-only "
+        "model cannot be simulated)");
+  }
+  // Speeds of parameterized joints are integrated unknowns.
+  u_column_.assign(coordinates_.size(), -1);
+  num_integrated_ = 0;
+  for (const Joint& joint : joints_) {
+    if (joint.form != JointForm::kParameterized) continue;
+    for (int c : joint.coordinates) u_column_[c] = num_integrated_++;
+  }
+  // Constraints: joints, coordinate motions, extra.
+  finalized_ = true;
+  constraints_.clear();
+  for (size_t j = 0; j < joints_.size(); ++j) {
+    constraints_.push_back(MakeJointConstraint(*this, static_cast<int>(j)));
+  }
+  for (int c = 0; c < num_coordinates(); ++c) {
+    const Coordinate& coordinate = coordinates_[c];
+    if (coordinate.motion == CoordinateMotion::kFree) continue;
+    constraints_.push_back(MakeCoordinateMotionConstraint(*this, c));
+  }
+  for (const auto& c : extra_constraints_) constraints_.push_back(c);
+}
+
+int System::FindBody(std::string_view name) const {
+  for (int i = 0; i < num_bodies(); ++i) {
+    if (bodies_[i].name == name) return i;
+  }
+  return -1;
+}
+
+int System::FindJoint(std::string_view name) const {
+  for (size_t i = 0; i < joints_.size(); ++i) {
+    if (joints_[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+int System::FindCoordinate(std::string_view name) const {
+  for (int i = 0; i < num_coordinates(); ++i) {
+    if (coordinates_[i].name == name) return i;
+  }
+  return -1;
+}
+
+}  // namespace sinew::engine

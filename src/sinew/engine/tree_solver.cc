@@ -1,0 +1,145 @@
+#include <sinew/engine/tree_solver.h>
+
+#include <string>
+
+#include <sinew/common/error.h>
+#include <sinew/engine/system.h>
+
+namespace sinew::engine {
+
+TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int>& body_columns,
+                             const std::vector<int>& speed_columns,
+                             const std::vector<int>& equation_rows,
+                             const std::vector<std::vector<int>>& columns)
+    : system_(system) {
+  const auto& constraints = system.constraints();
+  const int num_joints = static_cast<int>(system.joints().size());
+  std::vector<int> node_of_joint(num_joints, -1), node_of_body(system.num_bodies(), -1);
+  for (int j : system.tree_order()) {
+    const Joint& joint = system.joints()[j];
+    Node node;
+    node.body = system.IsReversed(j) ? joint.parent : joint.child;
+    const int inboard = system.IsReversed(j) ? joint.child : joint.parent;
+    node.parent = inboard == 0 ? -1 : node_of_body[inboard];
+    for (int i = 0; i < 6; ++i) node.global.push_back(body_columns[node.body] + i);
+    for (int c : joint.coordinates) {
+      if (system.IsIntegrated(c)) node.global.push_back(speed_columns[c]);
+    }
+    node_of_joint[j] = static_cast<int>(nodes_.size());
+    node_of_body[node.body] = node_of_joint[j];
+    nodes_.push_back(std::move(node));
+  }
+  // Constraint rows: joint j's own, and coordinate constraints of its coordinates.
+  for (size_t k = 0; k < constraints.size(); ++k) {
+    int joint = -1;
+    if (k < static_cast<size_t>(num_joints)) {
+      joint = static_cast<int>(k);
+    } else {
+      const std::vector<int> coords = constraints[k]->Coordinates();
+      if (!constraints[k]->Bodies().empty() || coords.empty()) {
+        throw Error("engine: TreeKktSolver cannot take loop constraints");
+      }
+      joint = system.coordinates()[coords[0]].joint;
+    }
+    Node& node = nodes_[node_of_joint[joint]];
+    node.constraints.push_back(static_cast<int>(k));
+    const int first_row = static_cast<int>(node.global.size());
+    for (int r = 0; r < constraints[k]->NumEquations(); ++r) {
+      node.global.push_back(nv + equation_rows[k] + r);
+    }
+    const int inboard = node.parent < 0 ? 0 : nodes_[node.parent].body;
+    std::vector<Entry> entries;
+    for (int r = 0; r < constraints[k]->NumEquations(); ++r) {
+      for (size_t jc = 0; jc < columns[k].size(); ++jc) {
+        const int g = columns[k][jc];
+        if (g < 0) continue;  // ground
+        Entry e{first_row + r, 0, r, static_cast<int>(jc)};
+        int local = -1;
+        for (int i = 0; i < first_row; ++i) {
+          if (node.global[i] == g) local = i;
+        }
+        if (local >= 0) {
+          e.col = local;
+        } else if (inboard > 0 && g >= body_columns[inboard] && g < body_columns[inboard] + 6) {
+          e.col = -1 - (g - body_columns[inboard]);
+        } else {
+          throw Error("engine: a joint constraint reaches beyond its two bodies");
+        }
+        entries.push_back(e);
+      }
+    }
+    node.entries.push_back(std::move(entries));
+  }
+  for (Node& node : nodes_) {
+    const int n = static_cast<int>(node.global.size());
+    if (n > kMaxNode) throw Error("engine: a joint block is too large for the tree solver");
+    node.K = NodeMatrix::Zero(n, n);
+    node.C = NodeCoupling::Zero(n, 6);
+    node.W = NodeCoupling::Zero(n, 6);
+  }
+}
+
+void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& mass,
+                              const std::vector<MatX>& jacobian) {
+  for (Node& node : nodes_) {
+    node.K.setZero();
+    node.C.setZero();
+    node.K.topLeftCorner<6, 6>() = mass[node.body];
+    for (size_t i = 0; i < node.constraints.size(); ++i) {
+      const MatX& J = jacobian[node.constraints[i]];
+      for (const Entry& e : node.entries[i]) {
+        const double value = J(e.jac_row, e.jac_col);
+        if (e.col >= 0) {
+          node.K(e.row, e.col) = value;
+          node.K(e.col, e.row) = value;
+        } else {
+          node.C(e.row, -1 - e.col) = value;
+        }
+      }
+    }
+  }
+  // Leaves first: eliminate each node into its parent's body block.
+  for (auto it = nodes_.rbegin(); it != nodes_.rend(); ++it) {
+    Node& node = *it;
+    node.lu.compute(node.K);
+    // Partial pivoting puts each column's largest entry on U's diagonal: a pivot that is tiny
+    // next to the largest one means a singular block.
+    const auto pivots = node.lu.matrixLU().diagonal().cwiseAbs();
+    const double rcond = pivots.minCoeff() / pivots.maxCoeff();
+    if (!(rcond > 1e-14)) {
+      throw Error({}, system_.bodies()[node.body].name,
+                  "engine: the equations of motion are singular at this body (rcond " +
+                      std::to_string(rcond) +
+                      "): a body without mass or inertia in a direction its joint leaves free?");
+    }
+    if (node.parent >= 0) {
+      node.W = node.lu.solve(node.C);
+      nodes_[node.parent].K.topLeftCorner<6, 6>() -= node.C.transpose() * node.W;
+    }
+  }
+}
+
+VecX TreeKktSolver::Solve(const VecX& rhs) const {
+  std::vector<NodeVector>& r = scratch_;
+  r.resize(nodes_.size());
+  for (size_t k = 0; k < nodes_.size(); ++k) {
+    r[k].resize(nodes_[k].global.size());
+    for (size_t i = 0; i < nodes_[k].global.size(); ++i) r[k][i] = rhs[nodes_[k].global[i]];
+  }
+  // Forward: z_k = K_k^-1 r_k, parent's body rows lose C^T z_k.
+  for (size_t k = nodes_.size(); k-- > 0;) {
+    r[k] = nodes_[k].lu.solve(r[k]);
+    if (nodes_[k].parent >= 0) {
+      r[nodes_[k].parent].head<6>() -= nodes_[k].C.transpose() * r[k];
+    }
+  }
+  // Backward: x_k = z_k - W_k x_parent.
+  VecX x(rhs.size());
+  for (size_t k = 0; k < nodes_.size(); ++k) {
+    if (nodes_[k].parent >= 0) r[k] -= nodes_[k].W * r[nodes_[k].parent].head<6>();
+    for (size_t i = 0; i < nodes_[k].global.size(); ++i) x[nodes_[k].global[i]] = r[k][i];
+  }
+  return x;
+}
+
+}  // namespace sinew::engine

@@ -1,0 +1,67 @@
+// Linear-time solution of the KKT system of a tree (no loop constraints): a block elimination
+// that follows the tree from the leaves to ground. Each supernode holds one outboard body's
+// twist, its joint's speeds and the multipliers of the joint's and its coordinates' constraint
+// rows; its pivot block is the KKT matrix of that body, with its subtree's articulated inertia,
+// on a fixed base, which is invertible exactly when the model is well posed (massless bodies
+// are fine when their joints take away the directions without inertia).
+#pragma once
+
+#include <Eigen/LU>
+#include <vector>
+
+#include <sinew/math/types.h>
+
+namespace sinew::engine {
+
+class System;
+
+/// Tree-ordered block elimination of [M J^T; J 0] (see KktSolver for the global layout).
+class TreeKktSolver {
+ public:
+  /// `body_column(b)`, `speed_column(c)`, `equation_row(k)` give global indices; `columns[k]`
+  /// the global column of each Jacobian column of constraint k (-1 for ground).
+  TreeKktSolver(const System& system, int nv, const std::vector<int>& body_columns,
+                const std::vector<int>& speed_columns, const std::vector<int>& equation_rows,
+                const std::vector<std::vector<int>>& columns);
+
+  /// Factorizes with body mass matrices `mass[b]` and constraint Jacobians `jacobian[k]`.
+  /// Throws sinew::Error when a pivot block is singular.
+  void Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& mass,
+                 const std::vector<MatX>& jacobian);
+  /// Solves with the last factorization (global layout).
+  VecX Solve(const VecX& rhs) const;
+
+ private:
+  struct Entry {
+    int row, col;  // local row and local column (col < 0: inboard body column -1 - col)
+    int jac_row, jac_col;
+  };
+  // Node blocks never exceed 24 rows (6 twist + 6 speeds + 6 joint rows + 6 coordinate rows):
+  // fixed-capacity matrices keep them off the heap.
+  static constexpr int kMaxNode = 24;
+  using NodeMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxNode, kMaxNode>;
+  using NodeCoupling = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kMaxNode, 6>;
+  using NodeVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxNode, 1>;
+
+ public:
+  /// The largest supernode the solver takes (larger ones: use the sparse LU).
+  static constexpr int max_node_size() { return kMaxNode; }
+
+ private:
+  struct Node {
+    int body = 0;             // outboard body
+    int parent = -1;          // node of the inboard body (-1: ground)
+    std::vector<int> global;  // global index of each local variable
+    std::vector<int> constraints;
+    std::vector<std::vector<Entry>> entries;  // per constraint: where its J entries go
+    MatX K;                                   // pivot block (n x n)
+    MatX C;                                   // coupling to the inboard body's twist (n x 6)
+    MatX W;                                   // K^-1 C
+    Eigen::PartialPivLU<MatX> lu;
+  };
+  const System& system_;
+  std::vector<Node> nodes_;  // in tree order (a node after its parent)
+  mutable std::vector<NodeVector> scratch_;
+};
+
+}  // namespace sinew::engine

@@ -1,0 +1,89 @@
+// OpenSim's ideal actuators: a force, torque or generalized force equal to
+// optimal_force x excitation(t), the excitation clamped to [min_control, max_control].
+#pragma once
+
+#include <limits>
+#include <string>
+
+#include <sinew/engine/loads.h>
+#include <sinew/functions/function.h>
+#include <sinew/math/types.h>
+
+namespace sinew {
+
+/// The part every actuator shares: a name, a gain and a settable excitation function of time.
+/// The excitation may be replaced after the system is built (the seed's
+/// SetExcitationFunction); the change is seen by the next evaluation.
+class Actuator : public engine::ForceElement {
+ public:
+  Actuator(std::string name, double optimal_force);
+
+  const std::string& name() const { return name_; }
+  double optimal_force() const { return optimal_force_; }
+
+  /// The excitation e(t) (dimensionless); null means the constant 0.
+  void SetExcitation(FunctionPtr excitation) { excitation_ = std::move(excitation); }
+  const FunctionPtr& excitation() const { return excitation_; }
+  /// OpenSim's min_control / max_control: bounds applied to e(t) before the gain.
+  void SetControlRange(double min_control, double max_control);
+
+  /// optimal_force * clamp(e(t)): N for forces, N m for torques.
+  double CalcActuation(double t) const;
+
+ private:
+  std::string name_;
+  double optimal_force_;
+  FunctionPtr excitation_;
+  double min_control_ = -std::numeric_limits<double>::infinity();
+  double max_control_ = std::numeric_limits<double>::infinity();
+};
+
+/// PointActuator: a force of magnitude CalcActuation(t) along `direction` (made unit) on
+/// `body`, applied at `point`. The direction is in ground when `force_is_global`, else in the
+/// body frame B; the point is in ground when `point_is_global` (then the force acts at the body
+/// point that is at that ground location at each instant), else in B.
+class PointActuator : public Actuator {
+ public:
+  PointActuator(std::string name, double optimal_force, int body, const Vec3& point,
+                bool point_is_global, const Vec3& direction, bool force_is_global);
+  void AddLoads(const engine::System& system, const engine::State& state,
+                engine::Loads& loads) const override;
+
+ private:
+  int body_;
+  Vec3 point_;
+  bool point_is_global_;
+  Vec3 unit_direction_;
+  bool force_is_global_;
+};
+
+/// TorqueActuator: torque CalcActuation(t) * unit(axis) on `body_a` and its opposite on
+/// `body_b` (OpenSim's order). The axis is in ground when `torque_is_global`, else in body A's
+/// frame.
+class TorqueActuator : public Actuator {
+ public:
+  TorqueActuator(std::string name, double optimal_force, int body_a, int body_b, const Vec3& axis,
+                 bool torque_is_global);
+  void AddLoads(const engine::System& system, const engine::State& state,
+                engine::Loads& loads) const override;
+
+ private:
+  int body_a_;
+  int body_b_;
+  Vec3 unit_axis_;
+  bool torque_is_global_;
+};
+
+/// CoordinateActuator: generalized force CalcActuation(t) on coordinate `coordinate`
+/// (N m on a rotational coordinate, N on a translational one).
+class CoordinateActuator : public Actuator {
+ public:
+  CoordinateActuator(std::string name, double optimal_force, int coordinate);
+  void AddLoads(const engine::System& system, const engine::State& state,
+                engine::Loads& loads) const override;
+
+ private:
+  int coordinate_;
+};
+
+}  // namespace sinew

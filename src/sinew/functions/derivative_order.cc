@@ -1,0 +1,11 @@
+#include <sinew/functions/derivative_order.h>
+
+#include <sinew/common/error.h>
+
+namespace sinew {
+
+void ThrowBadDerivativeOrder(int order, const std::string& type) {
+  throw Error(type + ": derivative order must be 0, 1 or 2, got " + std::to_string(order));
+}
+
+}  // namespace sinew

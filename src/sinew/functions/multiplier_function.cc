@@ -1,0 +1,12 @@
+#include <sinew/functions/multiplier_function.h>
+
+#include <sinew/common/error.h>
+
+namespace sinew {
+
+MultiplierFunction::MultiplierFunction(FunctionPtr function, double scale)
+    : function_(std::move(function)), scale_(scale) {
+  if (!function_) throw Error("MultiplierFunction: the inner function is missing");
+}
+
+}  // namespace sinew

@@ -1,0 +1,18 @@
+// Reader for Wavefront .obj meshes (the geometry part: v, vn, f).
+#pragma once
+
+#include <string>
+
+#include <sinew/io/mesh_data.h>
+
+namespace sinew {
+
+/// Reads vertices and faces of an .obj file; polygons are fanned into triangles, negative
+/// (relative) indices are honoured, `v/vt/vn` corners keep their normals. Materials, texture
+/// coordinates, groups and lines are ignored. Throws sinew::Error with file and line.
+TriangleMesh ReadObj(const std::string& file);
+
+/// Same, from the file's text.
+TriangleMesh ParseObj(std::string_view text, const std::string& file);
+
+}  // namespace sinew

@@ -1,0 +1,288 @@
+#include <sinew/io/mesh_vtp.h>
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <sinew/io/mesh_base64.h>
+#include <sinew/io/internal/xml_document.h>
+
+namespace sinew {
+namespace {
+
+// How the document stores binary data (attributes of <VTKFile>).
+struct Encoding {
+  bool big_endian = false;
+  int header_bytes = 4;  // header_type UInt32 or UInt64
+  bool zlib = false;     // compressor="vtkZLibDataCompressor"
+};
+
+// Size in bytes and kind of a VTK scalar type name.
+struct ScalarType {
+  int bytes = 0;
+  char kind = 0;  // 'f' float, 'i' signed, 'u' unsigned
+};
+
+ScalarType ParseScalarType(std::string_view name) {
+  static constexpr struct {
+    const char* name;
+    ScalarType type;
+  } kTypes[] = {{"Float32", {4, 'f'}}, {"Float64", {8, 'f'}}, {"Int8", {1, 'i'}},
+                {"Int16", {2, 'i'}},   {"Int32", {4, 'i'}},   {"Int64", {8, 'i'}},
+                {"UInt8", {1, 'u'}},   {"UInt16", {2, 'u'}},  {"UInt32", {4, 'u'}},
+                {"UInt64", {8, 'u'}},  {"Float", {4, 'f'}},   {"Double", {8, 'f'}}};
+  for (const auto& t : kTypes) {
+    if (name == t.name) return t.type;
+  }
+  return {};
+}
+
+// Reads an unsigned little/big-endian integer of `bytes` bytes.
+uint64_t ReadUnsigned(const uint8_t* p, int bytes, bool big_endian) {
+  uint64_t v = 0;
+  for (int i = 0; i < bytes; ++i) {
+    const int shift = big_endian ? 8 * (bytes - 1 - i) : 8 * i;
+    v |= uint64_t{p[i]} << shift;
+  }
+  return v;
+}
+
+// Converts one binary scalar to double.
+double ReadScalar(const uint8_t* p, ScalarType type, bool big_endian) {
+  uint8_t buf[8];
+  for (int i = 0; i < type.bytes; ++i) buf[i] = big_endian ? p[type.bytes - 1 - i] : p[i];
+  // buf now holds the value little-endian; memcpy into float/double assumes a little-endian
+  // host (every platform Sinew builds on).
+  switch (type.kind) {
+    case 'f':
+      if (type.bytes == 4) {
+        float f;
+        std::memcpy(&f, buf, 4);
+        return f;
+      } else {
+        double d;
+        std::memcpy(&d, buf, 8);
+        return d;
+      }
+    case 'i': {
+      uint64_t u = ReadUnsigned(buf, type.bytes, false);
+      if (type.bytes < 8 && (u >> (8 * type.bytes - 1)) & 1) u |= ~uint64_t{0} << (8 * type.bytes);
+      return static_cast<double>(static_cast<int64_t>(u));
+    }
+    default:
+      return static_cast<double>(ReadUnsigned(buf, type.bytes, false));
+  }
+}
+
+class VtpReader {
+ public:
+  explicit VtpReader(const XmlDocument& doc) : doc_(doc) {}
+
+  TriangleMesh Read() {
+    pugi::xml_node root = doc_.root();
+    if (std::string_view(root.name()) != "VTKFile") {
+      doc_.Fail(root, "",
+                "expected a <VTKFile> root element, found <" + std::string(root.name()) + ">");
+    }
+    if (std::string_view type = root.attribute("type").value(); type != "PolyData") {
+      doc_.Fail(root, "", "VTK file type '" + std::string(type) + "' is not PolyData");
+    }
+    encoding_.big_endian = std::string_view(root.attribute("byte_order").value()) == "BigEndian";
+    if (std::string_view h = root.attribute("header_type").value(); h == "UInt64") {
+      encoding_.header_bytes = 8;
+    } else if (!h.empty() && h != "UInt32") {
+      doc_.Fail(root, "", "unsupported header_type '" + std::string(h) + "'");
+    }
+    if (std::string_view c = root.attribute("compressor").value(); c == "vtkZLibDataCompressor") {
+      encoding_.zlib = true;
+    } else if (!c.empty()) {
+      doc_.Fail(root, "", "unsupported compressor '" + std::string(c) + "'");
+    }
+    pugi::xml_node poly = root.child("PolyData");
+    if (!poly) doc_.Fail(root, "", "missing <PolyData>");
+    TriangleMesh mesh;
+    bool all_normals = true;
+    for (pugi::xml_node piece : poly.children("Piece")) ReadPiece(piece, mesh, all_normals);
+    if (!all_normals) mesh.normals.clear();
+    if (mesh.normals.empty()) ComputeVertexNormals(mesh);
+    ValidateMesh(mesh, doc_.file());
+    return mesh;
+  }
+
+ private:
+  void ReadPiece(pugi::xml_node piece, TriangleMesh& mesh, bool& all_normals) {
+    const size_t base = mesh.positions.size();
+    const size_t n_points = piece.attribute("NumberOfPoints").as_ullong();
+    pugi::xml_node points = piece.child("Points").child("DataArray");
+    if (n_points > 0 && !points) doc_.Fail(piece, "", "missing <Points><DataArray>");
+    if (n_points > 0) {
+      std::vector<double> xyz = ReadArray(points, 3 * n_points);
+      for (size_t i = 0; i < n_points; ++i) {
+        mesh.positions.emplace_back(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+      }
+    }
+    // Point normals: the array the PointData names as Normals, else one called "Normals".
+    pugi::xml_node point_data = piece.child("PointData");
+    std::string normals_name = point_data.attribute("Normals").value();
+    if (normals_name.empty()) normals_name = "Normals";
+    pugi::xml_node normals_array =
+        point_data.find_child_by_attribute("DataArray", "Name", normals_name.c_str());
+    if (normals_array && n_points > 0) {
+      std::vector<double> n = ReadArray(normals_array, 3 * n_points);
+      for (size_t i = 0; i < n_points; ++i) {
+        Vec3f v(n[3 * i], n[3 * i + 1], n[3 * i + 2]);
+        const float length = v.norm();
+        mesh.normals.push_back(length > 0 ? Vec3f(v / length) : Vec3f(0, 0, 1));
+      }
+    } else {
+      all_normals = false;
+    }
+    ReadCells(piece, "Polys", "NumberOfPolys", base, n_points, mesh, false);
+    ReadCells(piece, "Strips", "NumberOfStrips", base, n_points, mesh, true);
+  }
+
+  void ReadCells(pugi::xml_node piece, const char* tag, const char* count_attr, size_t base,
+                 size_t n_points, TriangleMesh& mesh, bool strips) {
+    const size_t n_cells = piece.attribute(count_attr).as_ullong();
+    if (n_cells == 0) return;
+    pugi::xml_node cells = piece.child(tag);
+    if (!cells) doc_.Fail(piece, "", std::string("missing <") + tag + ">");
+    pugi::xml_node offsets_node = cells.find_child_by_attribute("DataArray", "Name", "offsets");
+    pugi::xml_node conn_node = cells.find_child_by_attribute("DataArray", "Name", "connectivity");
+    if (!offsets_node || !conn_node) {
+      doc_.Fail(cells, "", std::string("<") + tag + "> needs 'connectivity' and 'offsets' arrays");
+    }
+    std::vector<double> offsets = ReadArray(offsets_node, n_cells);
+    std::vector<double> conn = ReadArray(conn_node, -1);
+    size_t start = 0;
+    for (size_t c = 0; c < n_cells; ++c) {
+      const double end_d = offsets[c];
+      // Written as a negation so that NaN fails too.
+      if (!(end_d >= static_cast<double>(start) && end_d <= static_cast<double>(conn.size()))) {
+        doc_.Fail(offsets_node, "", "cell offsets are not increasing within the connectivity");
+      }
+      const size_t end = static_cast<size_t>(end_d);
+      auto vertex = [&](size_t k) {
+        const double v = conn[start + k];
+        if (!(v >= 0 && v < static_cast<double>(n_points))) {
+          doc_.Fail(conn_node, "",
+                    "connectivity refers to point " + std::to_string(v) + " of " +
+                        std::to_string(n_points));
+        }
+        return static_cast<uint32_t>(base + static_cast<size_t>(v));
+      };
+      const size_t n = end - start;
+      for (size_t k = 2; k < n; ++k) {
+        if (!strips) {
+          mesh.triangles.push_back({vertex(0), vertex(k - 1), vertex(k)});  // fan
+        } else if (k % 2 == 0) {
+          mesh.triangles.push_back({vertex(k - 2), vertex(k - 1), vertex(k)});
+        } else {
+          mesh.triangles.push_back({vertex(k - 1), vertex(k - 2), vertex(k)});  // keep winding
+        }
+      }
+      start = end;
+    }
+  }
+
+  // The values of a <DataArray>; `expected` >= 0 requires exactly that many.
+  std::vector<double> ReadArray(pugi::xml_node array, long long expected) {
+    const std::string_view format = array.attribute("format").value();
+    std::vector<double> values;
+    if (format == "ascii") {
+      values = doc_.ReadNumbers(array, "");
+    } else if (format == "binary") {
+      const ScalarType type = ParseScalarType(array.attribute("type").value());
+      if (type.bytes == 0) {
+        doc_.Fail(
+            array, "",
+            "unsupported DataArray type '" + std::string(array.attribute("type").value()) + "'");
+      }
+      std::vector<uint8_t> bytes = DecodeBinary(array);
+      const size_t n = bytes.size() / type.bytes;
+      values.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        values[i] = ReadScalar(bytes.data() + i * type.bytes, type, encoding_.big_endian);
+      }
+    } else {
+      doc_.Fail(array, "",
+                "DataArray format '" + std::string(format) +
+                    "' is not supported (ascii or inline binary only)");
+    }
+    if (expected >= 0 && values.size() != static_cast<size_t>(expected)) {
+      doc_.Fail(array, "",
+                "DataArray '" + std::string(array.attribute("Name").value()) + "' has " +
+                    std::to_string(values.size()) + " values, expected " +
+                    std::to_string(expected));
+    }
+    return values;
+  }
+
+  // The payload bytes of an inline binary array: base64 of a size header then the data,
+  // the data made of zlib blocks when the file is compressed.
+  std::vector<uint8_t> DecodeBinary(pugi::xml_node array) {
+    // Header and data may be encoded as one base64 stream or as two padded ones; the
+    // decoder continues across padding, so both give the same bytes.
+    std::optional<std::vector<uint8_t>> decoded = DecodeBase64(XmlDocument::Text(array));
+    if (!decoded) doc_.Fail(array, "", "binary DataArray is not valid base64");
+    const std::vector<uint8_t>& raw = *decoded;
+    const int hb = encoding_.header_bytes;
+    auto header = [&](size_t i) -> uint64_t {
+      if ((i + 1) * hb > raw.size()) doc_.Fail(array, "", "binary DataArray header is truncated");
+      return ReadUnsigned(raw.data() + i * hb, hb, encoding_.big_endian);
+    };
+    if (!encoding_.zlib) {
+      const uint64_t size = header(0);
+      if (size > raw.size() - hb) doc_.Fail(array, "", "binary DataArray is truncated");
+      return {raw.begin() + hb, raw.begin() + hb + static_cast<ptrdiff_t>(size)};
+    }
+    // Compressed: [n_blocks, block_size, last_block_size, compressed_size[n_blocks]].
+    const uint64_t n_blocks = header(0);
+    const uint64_t block_size = header(1);
+    const uint64_t last_size = header(2);
+    if (n_blocks > raw.size()) doc_.Fail(array, "", "binary DataArray header is corrupt");
+    size_t offset = (3 + n_blocks) * hb;
+    std::vector<uint8_t> out;
+    for (uint64_t b = 0; b < n_blocks; ++b) {
+      const uint64_t compressed = header(3 + b);
+      uLongf size = (b + 1 == n_blocks && last_size != 0) ? last_size : block_size;
+      if (offset > raw.size() || compressed > raw.size() - offset) {
+        doc_.Fail(array, "", "compressed DataArray is truncated");
+      }
+      // zlib cannot expand data more than ~1032 times: a larger claim is a corrupt header.
+      if (size > 1032 * compressed + 64) {
+        doc_.Fail(array, "", "compressed DataArray header claims an impossible block size");
+      }
+      const size_t at = out.size();
+      out.resize(at + size);
+      if (uncompress(out.data() + at, &size, raw.data() + offset, compressed) != Z_OK) {
+        doc_.Fail(array, "",
+                  "compressed DataArray block " + std::to_string(b) +
+                      " does not inflate (corrupt zlib data)");
+      }
+      out.resize(at + size);
+      offset += compressed;
+    }
+    return out;
+  }
+
+  const XmlDocument& doc_;
+  Encoding encoding_;
+};
+
+}  // namespace
+
+TriangleMesh ParseVtp(std::string text, const std::string& file) {
+  XmlDocument doc = XmlDocument::Parse(std::move(text), file);
+  return VtpReader(doc).Read();
+}
+
+TriangleMesh ReadVtp(const std::string& file) {
+  XmlDocument doc = XmlDocument::Load(file);
+  return VtpReader(doc).Read();
+}
+
+}  // namespace sinew

@@ -1,0 +1,214 @@
+// Ground, bodies (mass properties, geometry, wrap objects) and 4.x PhysicalOffsetFrames.
+#include <string_view>
+
+#include <sinew/io/internal/osim_context.h>
+
+namespace sinew::osim {
+namespace {
+
+// Body properties the reader understands; anything else gets one warning per tag.
+bool IsKnownBodyProperty(std::string_view tag) {
+  static constexpr std::string_view kKnown[] = {
+      "mass",           "mass_center",   "inertia",           "inertia_xx", "inertia_yy",
+      "inertia_zz",     "inertia_xy",    "inertia_xz",        "inertia_yz", "Joint",
+      "VisibleObject",  "WrapObjectSet", "attached_geometry", "components", "FrameGeometry",
+      "frame_geometry", "socket_frame",  "Appearance"};
+  for (std::string_view known : kKnown) {
+    if (tag == known) return true;
+  }
+  return false;
+}
+
+// Inertia about the mass centre: `inertia` [Ixx Iyy Izz Ixy Ixz Iyz] or the older
+// inertia_xx ... inertia_yz.
+Mat3 ReadInertia(const XmlDocument& doc, const pugi::xml_node& body, const std::string& component) {
+  double m[6] = {0, 0, 0, 0, 0, 0};
+  if (pugi::xml_node node = body.child("inertia")) {
+    std::vector<double> v = doc.ReadNumbers(node, component, 6);
+    for (int i = 0; i < 6; ++i) m[i] = v[i];
+  } else {
+    const char* tags[6] = {"inertia_xx", "inertia_yy", "inertia_zz",
+                           "inertia_xy", "inertia_xz", "inertia_yz"};
+    for (int i = 0; i < 6; ++i) m[i] = ReadDoubleOr(doc, body, tags[i], component, 0.0);
+  }
+  Mat3 inertia;
+  inertia << m[0], m[3], m[4], m[3], m[1], m[5], m[4], m[5], m[2];
+  return inertia;
+}
+
+void ReadWrapObjects(ReadContext& ctx, const pugi::xml_node& owner, int body,
+                     const std::string& owner_path) {
+  const XmlDocument& doc = ctx.doc();
+  for (pugi::xml_node wrap : ObjectsOf(owner.child("WrapObjectSet"))) {
+    WrapObjectSpec spec;
+    spec.name = NameOf(wrap);
+    spec.type = wrap.name();
+    const std::string component = owner_path + "/wrapobjectset/" + spec.name;
+    spec.body = body;
+    spec.X_BW = MakeTransform(ReadVec3Or(doc, wrap, "xyz_body_rotation", component, Vec3::Zero()),
+                              ReadVec3Or(doc, wrap, "translation", component, Vec3::Zero()));
+    spec.quadrant = TextOf(wrap, "quadrant");
+    if (spec.quadrant.empty()) spec.quadrant = "all";
+    spec.active = ReadBoolOr(doc, wrap, "active", component, true);
+    spec.dimensions =
+        ReadNumericLeaves(doc, wrap, component, {"xyz_body_rotation", "translation", "active"});
+    spec.where = doc.Where(wrap);
+    ctx.IndexWrapObject(spec.name);
+    ctx.spec().bodies[body].wrap_objects.push_back(std::move(spec));
+  }
+}
+
+// The component path of a 4.x element from its ancestors' names ("/jointset/knee/femur_offset").
+std::string GenericPath(const pugi::xml_node& node) {
+  std::vector<std::string> segments;
+  for (pugi::xml_node n = node; n && n.type() == pugi::node_element; n = n.parent()) {
+    const std::string_view tag = n.name();
+    if (tag == "Model") break;
+    if (tag.size() > 3 && tag.substr(tag.size() - 3) == "Set") {
+      segments.push_back(Lower(tag));
+    } else if (tag == "Ground") {
+      segments.push_back("ground");
+    } else if (n.attribute("name")) {
+      segments.push_back(NameOf(n));
+    }
+  }
+  std::string path;
+  for (auto it = segments.rbegin(); it != segments.rend(); ++it) path += "/" + *it;
+  return path;
+}
+
+// The parent socket of an offset frame: 4.x `socket_parent`, or the 4.0 beta
+// `<connectors><Connector_PhysicalFrame_ name="parent"><connectee_name>`.
+pugi::xml_node ParentSocket(const pugi::xml_node& frame) {
+  if (pugi::xml_node socket = frame.child("socket_parent")) return socket;
+  for (pugi::xml_node connector : frame.child("connectors").children()) {
+    if (NameOf(connector) == "parent") return connector.child("connectee_name");
+  }
+  return {};
+}
+
+void CollectOffsetFrames(ReadContext& ctx, const pugi::xml_node& root,
+                         std::vector<std::pair<pugi::xml_node, std::string>>& found) {
+  const XmlDocument& doc = ctx.doc();
+  for (pugi::xml_node node : root.children()) {
+    if (node.type() != pugi::node_element) continue;
+    const std::string_view tag = node.name();
+    if (tag == "Station") ctx.AddStation(GenericPath(node), node);
+    if (tag == "StationDefinedFrame") {
+      const std::string path = GenericPath(node);
+      FrameEntry entry;
+      entry.node = node;
+      entry.component = path;
+      entry.station_frame = node;
+      if (!ctx.AddOffsetFrame(path, std::move(entry))) {
+        doc.Fail(node, path, "duplicate frame path '" + path + "'");
+      }
+      found.emplace_back(node, path);
+    }
+    if (tag == "PhysicalOffsetFrame") {
+      const std::string path = GenericPath(node);
+      FrameEntry entry;
+      entry.node = node;
+      entry.component = path;
+      entry.parent_node = ParentSocket(node);
+      if (!entry.parent_node) doc.Fail(node, path, "PhysicalOffsetFrame has no <socket_parent>");
+      entry.parent_path = std::string(XmlDocument::Text(entry.parent_node));
+      entry.X_PF = MakeTransform(ReadVec3Or(doc, node, "orientation", path, Vec3::Zero()),
+                                 ReadVec3Or(doc, node, "translation", path, Vec3::Zero()));
+      if (!ctx.AddOffsetFrame(path, std::move(entry))) {
+        doc.Fail(node, path, "duplicate frame path '" + path + "'");
+      }
+      found.emplace_back(node, path);
+    }
+    CollectOffsetFrames(ctx, node, found);
+  }
+}
+
+}  // namespace
+
+void ReadBodies(ReadContext& ctx, const pugi::xml_node& model) {
+  const XmlDocument& doc = ctx.doc();
+  ModelSpec& spec = ctx.spec();
+  BodySpec ground;
+  ground.name = "ground";
+  ground.path = "/ground";
+  pugi::xml_node ground_node = model.child("Ground");
+  ground.where = doc.Where(ground_node ? ground_node : model);
+  spec.bodies.push_back(std::move(ground));
+  ctx.IndexBody("ground", kGroundIndex);
+  ctx.AddBodyFrame("/ground", kGroundIndex, ground_node ? ground_node : model);
+
+  // Bodies first (so every frame can be resolved), their geometry after the offset frames.
+  std::vector<std::pair<pugi::xml_node, int>> body_nodes;
+  if (ground_node) body_nodes.emplace_back(ground_node, kGroundIndex);
+  for (pugi::xml_node node : ObjectsOf(model.child("BodySet"))) {
+    const std::string name = NameOf(node);
+    std::string component = "/bodyset/" + name;
+    if (std::string_view(node.name()) != "Body") {
+      ctx.Warn(node, component, "<" + std::string(node.name()) + "> in BodySet read as a Body");
+    }
+    if (name.empty()) doc.Fail(node, "/bodyset", "a body has no name");
+    int index;
+    if (name == "ground" && !ground_node) {
+      // 3.x: ground is a body named "ground".
+      index = kGroundIndex;
+      spec.bodies[0].where = doc.Where(node);
+      if (ReadDoubleOr(doc, node, "mass", "/ground", 0.0) != 0.0) {
+        ctx.Warn(node, "/ground", "ground's mass is ignored");
+      }
+    } else {
+      if (int other = ctx.BodyIndex(name); other != kNone) {
+        doc.Fail(node, component,
+                 "duplicate body name '" + name + "' (also at line " +
+                     std::to_string(spec.bodies[other].where.line) + ")");
+      }
+      BodySpec body;
+      body.name = name;
+      body.path = component;
+      pugi::xml_node mass = node.child("mass");
+      if (!mass) ctx.Warn(node, component, "body has no <mass>; using 0");
+      body.mass = mass ? doc.ReadDouble(mass, component) : 0.0;
+      if (body.mass < 0) doc.Fail(mass, component, "negative mass");
+      body.mass_center = ReadVec3Or(doc, node, "mass_center", component, Vec3::Zero());
+      body.inertia = ReadInertia(doc, node, component);
+      body.where = doc.Where(node);
+      index = static_cast<int>(spec.bodies.size());
+      spec.bodies.push_back(std::move(body));
+      ctx.IndexBody(name, index);
+      ctx.AddBodyFrame(component, index, node);
+    }
+    for (pugi::xml_node child : node.children()) {
+      if (child.type() == pugi::node_element && !IsKnownBodyProperty(child.name())) {
+        ctx.Warn(child, component,
+                 "unknown body property <" + std::string(child.name()) + "> ignored",
+                 std::string("body:") + child.name());
+      }
+    }
+    body_nodes.emplace_back(node, index);
+  }
+
+  std::vector<std::pair<pugi::xml_node, std::string>> offset_frames;
+  CollectOffsetFrames(ctx, model, offset_frames);
+
+  for (const auto& [node, index] : body_nodes) {
+    const std::string& path = spec.bodies[index].path;
+    ReadAttachedGeometry(ctx, node, path, path);
+    if (pugi::xml_node visible = node.child("VisibleObject")) {
+      ReadVisibleObject(ctx, visible, index, path, path);
+    }
+    ReadWrapObjects(ctx, node, index, path);
+  }
+  for (const auto& [node, path] : offset_frames) {
+    ReadAttachedGeometry(ctx, node, path, path);
+    if (node.child("WrapObjectSet")) {
+      const FrameEntry* frame = nullptr;
+      ctx.ResolveFrame("", path, node, path, &frame);
+      const size_t first = spec.bodies[frame->body].wrap_objects.size();
+      ReadWrapObjects(ctx, node, frame->body, path);
+      auto& wraps = spec.bodies[frame->body].wrap_objects;
+      for (size_t i = first; i < wraps.size(); ++i) wraps[i].X_BW = frame->X_BF * wraps[i].X_BW;
+    }
+  }
+}
+
+}  // namespace sinew::osim

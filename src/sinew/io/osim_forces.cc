@@ -1,0 +1,208 @@
+// Forces, actuators and muscles with their geometry paths (path points, conditional and moving
+// path points, path wraps). Muscle parameters stay in ForceSpec::element.
+#include <cmath>
+#include <string_view>
+
+#include <sinew/functions/constant.h>
+#include <sinew/io/internal/osim_context.h>
+#include <sinew/io/internal/read_function.h>
+
+namespace sinew::osim {
+
+int ResolveCoordinateName(ReadContext& ctx, const pugi::xml_node& node, std::string_view text,
+                          const std::string& component) {
+  const auto& coords = ctx.spec().coordinates;
+  if (int by_path = ctx.CoordinateByPath(std::string(text)); by_path != kNone) return by_path;
+  const size_t slash = text.rfind('/');
+  const std::string_view name = slash == std::string_view::npos ? text : text.substr(slash + 1);
+  const std::vector<int>& named = ctx.CoordinatesNamed(std::string(name));
+  const int count = static_cast<int>(named.size());
+  const int found = named.empty() ? kNone : named.front();
+  const std::string tag = node.name();
+  if (count == 0) {
+    ctx.doc().Fail(node, component, "<" + tag + "> '" + std::string(text) + "' does not exist");
+  }
+  if (count > 1) {
+    // OpenSim 3 looks names up in its CoordinateSet, which returns the first match.
+    ctx.Warn(node, component,
+             "<" + tag + "> '" + std::string(text) + "' is ambiguous: " + std::to_string(count) +
+                 " coordinates have that name; using the first, '" + coords[found].path + "'");
+  }
+  return found;
+}
+
+namespace {
+
+// A coordinate named by a 4.x socket path or a 3.x name; fails when missing or ambiguous.
+int ResolveCoordinate(ReadContext& ctx, const pugi::xml_node& node, const std::string& component) {
+  return ResolveCoordinateName(ctx, node, XmlDocument::Text(node), component);
+}
+
+// The frame a path point, marker or contact geometry is fixed to: 4.x `socket_tag` (relative to
+// `own_path`) or the 3.x body name in `body_tag`.
+const FrameEntry* ResolveAttachment(ReadContext& ctx, const pugi::xml_node& node,
+                                    const std::string& own_path, const char* socket_tag,
+                                    const char* body_tag, std::string* frame_path) {
+  if (pugi::xml_node socket = node.child(socket_tag)) {
+    const FrameEntry* frame = nullptr;
+    *frame_path = ctx.ResolveFrame(own_path, XmlDocument::Text(socket), socket, own_path, &frame);
+    return frame;
+  }
+  if (pugi::xml_node body = node.child(body_tag)) {
+    std::string_view name = XmlDocument::Text(body);
+    const std::string path = name == "ground" ? "/ground" : "/bodyset/" + std::string(name);
+    if (name.empty() || !ctx.HasFrame(path)) {
+      ctx.doc().Fail(body, own_path,
+                     "<" + std::string(body_tag) + "> '" + std::string(name) + "' does not exist");
+    }
+    const FrameEntry* frame = nullptr;
+    *frame_path = ctx.ResolveFrame("", path, body, own_path, &frame);
+    return frame;
+  }
+  ctx.doc().Fail(node, own_path,
+                 "names no frame (<" + std::string(socket_tag) + "> or <" + body_tag + ">)");
+}
+
+PathPointSpec ReadPathPoint(ReadContext& ctx, const pugi::xml_node& node,
+                            const std::string& path_path) {
+  const XmlDocument& doc = ctx.doc();
+  PathPointSpec point;
+  point.name = NameOf(node);
+  point.type = node.name();
+  // 1.9 names: MusclePoint, MuscleViaPoint, MovingMusclePoint.
+  if (point.type == "MusclePoint") point.type = "PathPoint";
+  if (point.type == "MuscleViaPoint") point.type = "ConditionalPathPoint";
+  if (point.type == "MovingMusclePoint") point.type = "MovingPathPoint";
+  const std::string component = path_path + "/" + point.name;
+  const FrameEntry* frame =
+      ResolveAttachment(ctx, node, component, "socket_parent_frame", "body", &point.frame);
+  point.body = frame->body;
+  point.X_BF = frame->X_BF;
+  const Vec3 location = ReadVec3Or(doc, node, "location", component, Vec3::Zero());
+  point.location = frame->X_BF * location;
+  if (point.type == "ConditionalPathPoint") {
+    pugi::xml_node coordinate = node.child("socket_coordinate");
+    if (!coordinate) coordinate = node.child("coordinate");
+    if (!coordinate) doc.Fail(node, component, "ConditionalPathPoint names no coordinate");
+    point.coordinate = ResolveCoordinate(ctx, coordinate, component);
+    pugi::xml_node range = node.child("range");
+    if (!range) doc.Fail(node, component, "ConditionalPathPoint has no <range>");
+    std::vector<double> r = doc.ReadNumbers(range, component, 2);
+    point.range_min = r[0];
+    point.range_max = r[1];
+  } else if (point.type == "MovingPathPoint") {
+    static constexpr const char* kFunctions[3] = {"x_location", "y_location", "z_location"};
+    static constexpr const char* kSockets[3] = {"socket_x_coordinate", "socket_y_coordinate",
+                                                "socket_z_coordinate"};
+    static constexpr const char* kNames[3] = {"x_coordinate", "y_coordinate", "z_coordinate"};
+    for (int i = 0; i < 3; ++i) {
+      pugi::xml_node function = node.child(kFunctions[i]);
+      if (function) point.location_functions[i] = ReadFunctionProperty(doc, function, component);
+      pugi::xml_node coordinate = node.child(kSockets[i]);
+      if (!coordinate) coordinate = node.child(kNames[i]);
+      if (coordinate && !XmlDocument::Text(coordinate).empty()) {
+        point.location_coordinates[i] = ResolveCoordinate(ctx, coordinate, component);
+      }
+      if (!point.location_functions[i]) {
+        // No function: the coordinate of `location` stays fixed.
+        point.location_functions[i] = std::make_shared<Constant>(location[i]);
+      }
+    }
+  } else if (point.type != "PathPoint") {
+    ctx.Warn(node, component, "unknown path point type <" + point.type + "> read as a PathPoint",
+             "pathpoint:" + point.type);
+  }
+  return point;
+}
+
+GeometryPathSpec ReadGeometryPath(ReadContext& ctx, const pugi::xml_node& points_owner,
+                                  const std::string& path_path) {
+  const XmlDocument& doc = ctx.doc();
+  GeometryPathSpec path;
+  pugi::xml_node point_set = points_owner.child("PathPointSet");
+  if (!point_set) point_set = points_owner.child("MusclePointSet");
+  for (pugi::xml_node node : ObjectsOf(point_set)) {
+    path.points.push_back(ReadPathPoint(ctx, node, path_path));
+  }
+  pugi::xml_node wrap_set = points_owner.child("PathWrapSet");
+  if (!wrap_set) wrap_set = points_owner.child("MuscleWrapSet");
+  for (pugi::xml_node node : ObjectsOf(wrap_set)) {
+    PathWrapSpec wrap;
+    const std::string component = path_path + "/" + NameOf(node);
+    wrap.wrap_object = TextOf(node, "wrap_object");
+    wrap.method = TextOf(node, "method");
+    if (wrap.method.empty()) wrap.method = "hybrid";
+    if (pugi::xml_node range = node.child("range")) {
+      std::vector<double> r = doc.ReadNumbers(range, component, 2);
+      for (int i = 0; i < 2; ++i) {
+        // Path point numbers (1-based) or -1: whole numbers in int range (casting anything else
+        // would be undefined behaviour).
+        if (!(r[i] >= -1e9 && r[i] <= 1e9) || r[i] != std::floor(r[i])) {
+          doc.Fail(range, component, "<range> expects two whole numbers (path point indices)");
+        }
+        wrap.range[i] = static_cast<int>(r[i]);
+      }
+    }
+    if (!ctx.HasWrapObject(wrap.wrap_object)) {
+      doc.Fail(node.child("wrap_object") ? node.child("wrap_object") : node, component,
+               "wrap object '" + wrap.wrap_object + "' does not exist");
+    }
+    path.wraps.push_back(std::move(wrap));
+  }
+  return path;
+}
+
+// The element holding a force's path points: 4.x <GeometryPath> (directly or, 4.5+, inside
+// <path>), 1.9 the force itself (MusclePointSet).
+pugi::xml_node FindPathOwner(const pugi::xml_node& force) {
+  if (pugi::xml_node path = force.child("GeometryPath")) return path;
+  if (pugi::xml_node wrapper = force.child("path")) {
+    if (pugi::xml_node path = wrapper.child("GeometryPath")) return path;
+  }
+  for (pugi::xml_node child : force.children()) {
+    if (child.type() == pugi::node_element && std::string_view(child.name()) == "GeometryPath") {
+      return child;
+    }
+  }
+  if (force.child("MusclePointSet")) return force;
+  return {};
+}
+
+}  // namespace
+
+void ReadForces(ReadContext& ctx, const pugi::xml_node& model) {
+  const XmlDocument& doc = ctx.doc();
+  for (pugi::xml_node node : ObjectsOf(model.child("ForceSet"))) {
+    ForceSpec force;
+    force.name = NameOf(node);
+    force.type = node.name();
+    force.path = "/forceset/" + force.name;
+    force.applies_force =
+        ReadEnabledFlag(doc, node, "appliesForce", force.path, force.applies_force);
+    if (pugi::xml_node owner = FindPathOwner(node)) {
+      std::string name = owner == node ? "geometrypath" : NameOf(owner);
+      if (name.empty()) name = "geometrypath";
+      force.geometry_path = ReadGeometryPath(ctx, owner, force.path + "/" + name);
+    } else {
+      // Other path kinds (4.6 Scholz2015GeometryPath, FunctionBasedPath): kept, not read.
+      for (pugi::xml_node child : node.children()) {
+        const std::string_view tag = child.name();
+        if (child.type() == pugi::node_element && tag.size() >= 4 &&
+            (tag.substr(tag.size() - 4) == "Path")) {
+          ctx.Warn(child, force.path,
+                   "path of type <" + std::string(tag) + "> kept in the element, not read",
+                   "path:" + std::string(tag));
+        }
+      }
+    }
+    // CoordinateActuator, CoordinateLimitForce, ...: the coordinate must exist.
+    if (pugi::xml_node coordinate = node.child("coordinate")) {
+      if (!XmlDocument::Text(coordinate).empty()) ResolveCoordinate(ctx, coordinate, force.path);
+    }
+    force.element = ToElement(doc, node);
+    force.where = doc.Where(node);
+    ctx.spec().forces.push_back(std::move(force));
+  }
+}
+
+}  // namespace sinew::osim

@@ -1,0 +1,78 @@
+#include <sinew/io/read_controls.h>
+
+#include <memory>
+#include <vector>
+
+#include <sinew/functions/control_linear.h>
+#include <sinew/io/internal/xml_document.h>
+
+namespace sinew {
+namespace {
+
+constexpr std::string_view kExcitationSuffix = ".excitation";
+
+// The actuator a control drives: OpenSim names controls after the actuator, with ".excitation"
+// appended for muscles and most tools' output.
+std::string ActuatorOfControl(std::string name) {
+  if (name.size() > kExcitationSuffix.size() &&
+      name.compare(name.size() - kExcitationSuffix.size(), kExcitationSuffix.size(),
+                   kExcitationSuffix) == 0) {
+    name.resize(name.size() - kExcitationSuffix.size());
+  }
+  return name;
+}
+
+bool ReadOptionalBool(const XmlDocument& doc, const pugi::xml_node& parent, const char* tag,
+                      const std::string& component, bool fallback) {
+  const pugi::xml_node node = parent.child(tag);
+  return node ? doc.ReadBool(node, component) : fallback;
+}
+
+FunctionPtr ReadControlLinear(const XmlDocument& doc, const pugi::xml_node& control,
+                              const std::string& component) {
+  std::vector<double> times, values;
+  for (const pugi::xml_node& node : control.child("x_nodes").children("ControlLinearNode")) {
+    const pugi::xml_node t = node.child("t");
+    const pugi::xml_node v = node.child("value");
+    if (!t || !v) doc.Fail(node, component, "ControlLinearNode needs <t> and <value>");
+    times.push_back(doc.ReadDouble(t, component));
+    values.push_back(doc.ReadDouble(v, component));
+    if (times.size() > 1 && !(times.back() > times[times.size() - 2])) {
+      doc.Fail(node, component, "ControlLinearNode times must increase");
+    }
+  }
+  if (times.empty()) doc.Fail(control, component, "the control has no <x_nodes>");
+  return std::make_shared<ControlLinear>(
+      std::move(times), std::move(values),
+      ReadOptionalBool(doc, control, "use_steps", component, false),
+      ReadOptionalBool(doc, control, "extrapolate", component, true));
+}
+
+}  // namespace
+
+std::map<std::string, FunctionPtr> ReadControlSet(const std::string& file) {
+  const XmlDocument doc = XmlDocument::Load(file);
+  pugi::xml_node set = doc.root();
+  if (std::string_view(set.name()) == "OpenSimDocument") set = set.child("ControlSet");
+  if (!set || std::string_view(set.name()) != "ControlSet") {
+    doc.Fail(doc.root(), "",
+             "not a ControlSet file (root element <" + std::string(doc.root().name()) + ">)");
+  }
+  std::map<std::string, FunctionPtr> controls;
+  for (const pugi::xml_node& control : set.child("objects").children()) {
+    if (control.type() != pugi::node_element) continue;
+    const std::string name = control.attribute("name").value();
+    const std::string component = "/controlset/" + name;
+    if (std::string_view(control.name()) != "ControlLinear") {
+      doc.Fail(control, component,
+               "control type <" + std::string(control.name()) + "> is not supported");
+    }
+    const std::string actuator = ActuatorOfControl(name);
+    if (!controls.emplace(actuator, ReadControlLinear(doc, control, component)).second) {
+      doc.Fail(control, component, "a second control for actuator '" + actuator + "'");
+    }
+  }
+  return controls;
+}
+
+}  // namespace sinew

@@ -1,0 +1,16 @@
+// Reading OpenSim ControlSet files (`*_controls.xml`) into excitation functions.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include <sinew/functions/function.h>
+
+namespace sinew {
+
+/// The controls of a ControlSet file, by actuator name: a control named "X.excitation" (or
+/// "X") drives actuator X. ControlLinear controls become ControlLinear functions.
+/// Throws sinew::Error (file, line, control) for malformed files or unsupported control types.
+std::map<std::string, FunctionPtr> ReadControlSet(const std::string& file);
+
+}  // namespace sinew

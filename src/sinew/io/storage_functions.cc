@@ -1,0 +1,23 @@
+#include <sinew/io/storage_functions.h>
+
+#include <memory>
+
+#include <sinew/functions/gcv_spline.h>
+
+namespace sinew {
+
+std::vector<FunctionPtr> FitColumnSplines(const Storage& storage, int half_order) {
+  std::vector<FunctionPtr> functions;
+  functions.reserve(storage.labels.size());
+  for (int column = 0; column < storage.NumColumns(); ++column) {
+    try {
+      functions.push_back(
+          std::make_shared<GCVSpline>(half_order, storage.time, storage.Column(column)));
+    } catch (const Error& error) {
+      throw Error("column '" + storage.labels[column] + "': " + error.message());
+    }
+  }
+  return functions;
+}
+
+}  // namespace sinew

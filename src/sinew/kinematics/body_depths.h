@@ -1,0 +1,15 @@
+// Depth of each body in a model's joint tree: ground 0, its children 1, and so on.
+#pragma once
+
+#include <vector>
+
+#include <sinew/model/model_spec.h>
+
+namespace sinew {
+
+/// Number of joints between each body and ground (ground 0), joints taken in either
+/// direction; a body no chain of joints reaches gets -1. Used to colour primitives by depth and
+/// to assign collision families.
+std::vector<int> CalcBodyDepths(const ModelSpec& spec);
+
+}  // namespace sinew

@@ -1,0 +1,63 @@
+// The CustomJoint model (OpenSim SpatialTransform on Simbody's FunctionBased mobilizer), also
+// used for every joint that is a special case of it: Pin, Slider, Universal, Gimbal, Planar.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <sinew/kinematics/joint_model.h>
+
+namespace sinew {
+
+/// One of the six axes of a CustomJoint: s = f(q[args...]) along or about `axis` (unit, in F).
+struct TransformAxisTerm {
+  /// How s is computed: a constant, s = q[arg], a one-argument or a multi-argument function.
+  enum class Kind { kConstant, kIdentity, kFunction1, kFunctionN };
+  Kind kind = Kind::kConstant;
+  Vec3 axis = Vec3::UnitX();  ///< Unit axis in F.
+  double value = 0.0;         ///< For kConstant.
+  std::vector<int> args;      ///< Joint-local coordinate indices (kIdentity/kFunction1: one).
+  FunctionPtr function;       ///< For kFunction1 / kFunctionN.
+};
+
+/// X_FM(q) = [R(a1,s1) R(a2,s2) R(a3,s3), s4 a4 + s5 a5 + s6 a6] with s_i = f_i(q): rotations
+/// form a body-fixed sequence with axes given in F; the translation is in F and not rotated.
+/// Speeds are u = qdot.
+class CustomJointModel final : public JointModel {
+ public:
+  /// `axes` are rotation1..3 then translation1..3; `nq` is the number of joint coordinates.
+  CustomJointModel(std::array<TransformAxisTerm, 6> axes, int nq);
+
+  int nq() const override { return nq_; }
+  Transform CalcX_FM(std::span<const double> q) const override;
+  Mat6X CalcH_FM(std::span<const double> q) const override;
+  void CalcQDot(std::span<const double> q, std::span<const double> u,
+                std::span<double> qdot) const override;
+  void CalcU(std::span<const double> q, std::span<const double> qdot,
+             std::span<double> u) const override;
+  SpatialVec CalcHDotU(std::span<const double> q, std::span<const double> u) const override;
+  SpatialVec CalcV_FM(std::span<const double> q, std::span<const double> u) const override;
+
+  /// The six axes (for reports and tests).
+  const std::array<TransformAxisTerm, 6>& axes() const { return axes_; }
+
+ private:
+  // s_i for all six axes.
+  void CalcS(std::span<const double> q, double* s) const;
+  // ds_i/dq_k into J[i][k] (k < nq_), zeroed first.
+  void CalcJ(std::span<const double> q, double (*J)[6]) const;
+  // sum_{k,l} d2 s_i / dq_k dq_l u_k u_l.
+  double CalcSecondTerm(int i, std::span<const double> q, std::span<const double> u) const;
+  // The three rotation axes in F for the current s: a1, R1 a2, R1 R2 a3; and R_FM.
+  void CalcRotationAxesInF(const double* s, Vec3* e, Mat3* R_FM) const;
+
+  // R(a_i, s_i) for rotation axis i (0..2).
+  Mat3 CalcAxisRotation(int i, double s) const;
+
+  std::array<TransformAxisTerm, 6> axes_;
+  int nq_;
+  std::array<bool, 3> rotation_fixed_{};  // rotation axis i is constant: use fixed_rotation_[i]
+  std::array<Mat3, 3> fixed_rotation_;
+};
+
+}  // namespace sinew

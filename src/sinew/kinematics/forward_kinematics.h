@@ -1,0 +1,39 @@
+// Forward kinematics: body poses and velocities in ground from coordinates and speeds, and
+// the ground positions of stations, mass centres and markers.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include <sinew/kinematics/kinematic_tree.h>
+#include <sinew/math/transform.h>
+#include <sinew/model/model_spec.h>
+
+namespace sinew {
+
+/// X_GB for every body (ground included, identity) from q (ModelSpec::coordinates order, rad
+/// or m): X_GB = X_GP * X_PF * X_FM(q) * inverse(X_BM) (inverted across reversed joints).
+/// `X_GB` must hold tree.num_bodies() entries (sinew::Error if q or X_GB is too short). No heap
+/// allocation.
+void CalcBodyPoses(const KinematicTree& tree, std::span<const double> q, std::span<Transform> X_GB);
+
+/// Spatial velocities V_GB = [w_GB; v_GBo], both expressed in G (rad/s, m/s; v of the body
+/// frame's origin), from the poses of CalcBodyPoses and the speeds u (ModelSpec::coordinates
+/// order; Ball/Free/Ellipsoid rotations are w_FM in F). `V_GB` holds num_bodies() entries.
+void CalcBodyVelocities(const KinematicTree& tree, std::span<const double> q,
+                        std::span<const double> u, std::span<const Transform> X_GB,
+                        std::span<SpatialVec> V_GB);
+
+/// Ground position (m) of each body's mass centre.
+std::vector<Vec3> CalcMassCenterLocations(const ModelSpec& spec, std::span<const Transform> X_GB);
+
+/// Ground position (m) of each marker of the model.
+std::vector<Vec3> CalcMarkerLocations(const ModelSpec& spec, std::span<const Transform> X_GB);
+
+/// Ground position (m) of a station p_BS (in body B) and its velocity in G (m/s).
+inline Vec3 CalcStationLocation(const Transform& X_GB, const Vec3& p_BS) { return X_GB * p_BS; }
+inline Vec3 CalcStationVelocity(const Transform& X_GB, const SpatialVec& V_GB, const Vec3& p_BS) {
+  return V_GB.tail<3>() + V_GB.head<3>().cross(X_GB.R * p_BS);
+}
+
+}  // namespace sinew

@@ -1,0 +1,52 @@
+// The kinematics of one OpenSim joint, as the engine and forward kinematics use it:
+// the transform X_FM(q), the velocity map V_FM = H_FM(q) u, qdot = N(q) u, and the bias
+// acceleration Hdot u. Frames: F is the joint frame on the parent, M the one on the child.
+#pragma once
+
+#include <memory>
+#include <span>
+
+#include <sinew/math/transform.h>
+#include <sinew/math/types.h>
+#include <sinew/model/model_spec.h>
+
+namespace sinew {
+
+/// X_FM(q) and its derivatives for one joint. Coordinates q and speeds u are in the order of
+/// JointSpec::coordinates. For most joints u = qdot; for BallJoint (and FreeJoint's rotation)
+/// q are body-fixed X-Y-Z angles and u is the angular velocity w_FM expressed in F (and for
+/// FreeJoint's translation, u is v_FM expressed in F). Spatial vectors are [angular; linear],
+/// the linear part being the velocity of M's origin measured in F, expressed in F.
+class JointModel {
+ public:
+  virtual ~JointModel() = default;
+
+  /// Number of generalized coordinates and speeds (equal for every OpenSim joint).
+  virtual int nq() const = 0;
+  int nu() const { return nq(); }
+
+  /// X_FM(q).
+  virtual Transform CalcX_FM(std::span<const double> q) const = 0;
+  /// The 6 x nu matrix H_FM(q) with V_FM_F = H_FM(q) * u (spatial velocity of M in F, in F).
+  virtual Mat6X CalcH_FM(std::span<const double> q) const = 0;
+  /// qdot = N(q) * u, written into `qdot` (nq entries).
+  virtual void CalcQDot(std::span<const double> q, std::span<const double> u,
+                        std::span<double> qdot) const = 0;
+  /// u from qdot (the inverse of CalcQDot), written into `u`.
+  virtual void CalcU(std::span<const double> q, std::span<const double> qdot,
+                     std::span<double> u) const = 0;
+  /// The bias term Hdot(q, u) * u of the spatial acceleration A_FM_F = H * udot + Hdot * u.
+  virtual SpatialVec CalcHDotU(std::span<const double> q, std::span<const double> u) const = 0;
+  /// V_FM_F = H_FM(q) * u. Joint models override it to avoid allocating H (forward
+  /// kinematics calls it per joint and pose); the default forms H.
+  virtual SpatialVec CalcV_FM(std::span<const double> q, std::span<const double> u) const {
+    if (nq() == 0) return SpatialVec::Zero();
+    return CalcH_FM(q) * Eigen::Map<const VecX>(u.data(), nq());
+  }
+};
+
+/// Builds the JointModel of `spec.joints[joint_index]` (every JointType but kUnknown).
+/// Throws sinew::Error for a joint it cannot model.
+std::unique_ptr<JointModel> MakeJointModel(const ModelSpec& spec, int joint_index);
+
+}  // namespace sinew

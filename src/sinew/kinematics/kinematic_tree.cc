@@ -1,0 +1,84 @@
+#include <sinew/kinematics/kinematic_tree.h>
+
+#include <string>
+
+#include <sinew/common/error.h>
+
+namespace sinew {
+
+KinematicTree::KinematicTree(const ModelSpec& spec)
+    : num_bodies_(static_cast<int>(spec.bodies.size())),
+      num_coordinates_(static_cast<int>(spec.coordinates.size())) {
+  if (num_bodies_ == 0) throw Error(SourceLocation{spec.file, 0}, "", "model has no ground body");
+  for (const CoordinateSpec& c : spec.coordinates) {
+    default_q_.push_back(c.default_value);
+    default_u_.push_back(c.default_speed_value);
+  }
+  const int num_joints = static_cast<int>(spec.joints.size());
+  for (int j = 0; j < num_joints; ++j) {
+    const JointSpec& joint = spec.joints[j];
+    const std::string component = joint.path.empty() ? joint.name : joint.path;
+    for (int b : {joint.parent_body, joint.child_body}) {
+      if (b < 0 || b >= num_bodies_) throw Error(joint.where, component, "joint body out of range");
+    }
+    if (joint.parent_body == joint.child_body) {
+      throw Error(joint.where, component, "joint connects a body to itself");
+    }
+    for (int c : joint.coordinates) {
+      if (c < 0 || c >= num_coordinates_) {
+        throw Error(joint.where, component, "joint coordinate out of range");
+      }
+    }
+    if (joint.coordinates.size() > 6)
+      throw Error(joint.where, component, "more than 6 coordinates");
+  }
+
+  // Place bodies outward from ground: a joint with exactly one placed body places the other.
+  std::vector<bool> placed(num_bodies_, false), used(num_joints, false);
+  placed[kGroundIndex] = true;
+  bool progress = true;
+  while (progress) {
+    progress = false;
+    for (int j = 0; j < num_joints; ++j) {
+      if (used[j]) continue;
+      const JointSpec& joint = spec.joints[j];
+      const bool parent_placed = placed[joint.parent_body];
+      const bool child_placed = placed[joint.child_body];
+      if (parent_placed == child_placed) continue;
+      TreeJoint t;
+      t.joint = j;
+      t.reversed = child_placed;
+      t.inboard = t.reversed ? joint.child_body : joint.parent_body;
+      t.outboard = t.reversed ? joint.parent_body : joint.child_body;
+      t.X_IJ = t.reversed ? joint.X_BM : joint.X_PF;
+      t.X_JO = t.reversed ? joint.X_PF.Inverse() : joint.X_BM.Inverse();
+      t.nq = static_cast<int>(joint.coordinates.size());
+      for (int k = 0; k < t.nq; ++k) t.q_index[k] = joint.coordinates[k];
+      t.model = MakeJointModel(spec, j);
+      if (t.model->nq() != t.nq) {
+        throw Error(joint.where, joint.path, "joint model and spec disagree on coordinates");
+      }
+      placed[t.outboard] = true;
+      used[j] = true;
+      joints_.push_back(std::move(t));
+      progress = true;
+    }
+  }
+  for (int j = 0; j < num_joints; ++j) {
+    if (used[j]) continue;
+    const JointSpec& joint = spec.joints[j];
+    if (placed[joint.parent_body] && placed[joint.child_body]) {
+      MakeJointModel(spec, j);  // still a joint Sinew must be able to model
+      loop_joints_.push_back(j);
+    }
+  }
+  for (int b = 0; b < num_bodies_; ++b) {
+    if (!placed[b]) {
+      const BodySpec& body = spec.bodies[b];
+      throw Error(body.where, body.path.empty() ? body.name : body.path,
+                  "body is not connected to ground by any joint");
+    }
+  }
+}
+
+}  // namespace sinew

@@ -1,0 +1,97 @@
+#include <sinew/opensim/internal/actuator_builder.h>
+
+#include <limits>
+
+#include <sinew/model/element_values.h>
+
+namespace sinew {
+namespace {
+
+// Files older than 1.9.5 name actuator bodies and directions differently; OpenSim renames
+// them on load and flips the direction (see PointActuator / TorqueActuator updateFromXMLNode).
+constexpr int kRenamedActuatorVersion = 10905;
+
+// The last segment of a socket path ("/bodyset/rod1" -> "rod1"), or the name itself.
+std::string LastPathSegment(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+int MapBody(const ModelSpec& spec, const ElementValues& values, const std::string& name,
+            const std::vector<int>& body_map, const char* property) {
+  const int b = spec.FindBody(LastPathSegment(name));
+  if (b == kNone) values.Fail(std::string(property) + " '" + name + "' is not a body of the model");
+  return body_map[b];
+}
+
+std::shared_ptr<Actuator> MakePointActuator(const ModelSpec& spec, const ForceSpec& force,
+                                            const ElementValues& v,
+                                            const std::vector<int>& body_map) {
+  const bool renamed = spec.version < kRenamedActuatorVersion && v.Has("body_B");
+  const std::string body = renamed ? v.String("body_B") : v.String("body");
+  Vec3 direction = v.Vector3(renamed ? "direction_A" : "direction", Vec3::Zero());
+  if (renamed) direction = -direction;
+  return std::make_shared<PointActuator>(
+      force.name, v.Double("optimal_force", 1.0), MapBody(spec, v, body, body_map, "body"),
+      v.Vector3(renamed ? "point_B" : "point", Vec3::Zero()), v.Bool("point_is_global", false),
+      direction, renamed ? true : v.Bool("force_is_global", false));
+}
+
+std::shared_ptr<Actuator> MakeTorqueActuator(const ModelSpec& spec, const ForceSpec& force,
+                                             const ElementValues& v,
+                                             const std::vector<int>& body_map) {
+  const bool renamed = spec.version < kRenamedActuatorVersion && v.Has("body_A");
+  std::string body_a, body_b;
+  if (renamed) {
+    body_a = v.String("body_B");
+    body_b = v.String("body_A");
+  } else {
+    body_a = v.FirstString({"bodyA", "socket_bodyA"}).value_or("");
+    body_b = v.FirstString({"bodyB", "socket_bodyB"}).value_or("");
+  }
+  Vec3 axis = v.Vector3(renamed ? "direction_A" : "axis", Vec3(0, 0, 1));
+  if (renamed) axis = -axis;
+  return std::make_shared<TorqueActuator>(
+      force.name, v.Double("optimal_force", 1.0), MapBody(spec, v, body_a, body_map, "bodyA"),
+      MapBody(spec, v, body_b, body_map, "bodyB"), axis, v.Bool("torque_is_global", true));
+}
+
+std::shared_ptr<Actuator> MakeCoordinateActuator(const ModelSpec& spec, const ForceSpec& force,
+                                                 const ElementValues& v,
+                                                 const std::vector<int>& coordinate_map) {
+  const std::string name =
+      LastPathSegment(v.FirstString({"coordinate", "socket_coordinate"}).value_or(""));
+  const int c = spec.FindCoordinate(name);
+  if (c == kNone) v.Fail("coordinate '" + name + "' is not a coordinate of the model");
+  return std::make_shared<CoordinateActuator>(force.name, v.Double("optimal_force", 1.0),
+                                              coordinate_map[c]);
+}
+
+}  // namespace
+
+bool IsIdealActuator(const std::string& opensim_type) {
+  return opensim_type == "PointActuator" || opensim_type == "TorqueActuator" ||
+         opensim_type == "CoordinateActuator";
+}
+
+std::shared_ptr<Actuator> MakeActuator(const ModelSpec& spec, const ForceSpec& force,
+                                       const std::vector<int>& body_map,
+                                       const std::vector<int>& coordinate_map) {
+  const ElementValues values(force.element, spec.file, force.path);
+  std::shared_ptr<Actuator> actuator;
+  if (force.type == "PointActuator") {
+    actuator = MakePointActuator(spec, force, values, body_map);
+  } else if (force.type == "TorqueActuator") {
+    actuator = MakeTorqueActuator(spec, force, values, body_map);
+  } else if (force.type == "CoordinateActuator") {
+    actuator = MakeCoordinateActuator(spec, force, values, coordinate_map);
+  } else {
+    values.Fail("'" + force.type + "' is not an ideal actuator");
+  }
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  actuator->SetControlRange(values.Double("min_control", -kInf),
+                            values.Double("max_control", kInf));
+  return actuator;
+}
+
+}  // namespace sinew

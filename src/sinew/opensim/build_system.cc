@@ -1,0 +1,121 @@
+#include <sinew/opensim/build_system.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <sinew/kinematics/joint_model.h>
+
+namespace sinew {
+namespace {
+
+engine::JointForm DirectForm(JointType type) {
+  switch (type) {
+    case JointType::kPin:
+      return engine::JointForm::kPin;
+    case JointType::kBall:
+      return engine::JointForm::kBall;
+    case JointType::kUniversal:
+      return engine::JointForm::kUniversal;
+    case JointType::kWeld:
+      return engine::JointForm::kWeld;
+    default:
+      return engine::JointForm::kParameterized;
+  }
+}
+
+void Note(Diagnostics* notes, const SourceLocation& where, const std::string& component,
+          const std::string& message) {
+  if (notes) notes->push_back({where, component, message});
+}
+
+}  // namespace
+
+SpecToSystem BuildInto(const ModelSpec& spec, engine::System& system, const BuildOptions& options,
+                       Diagnostics* notes) {
+  if (spec.bodies.empty()) throw Error({spec.file, 0}, "/ground", "the model has no ground");
+  SpecToSystem map;
+  map.bodies.assign(spec.bodies.size(), 0);
+  map.coordinates.assign(spec.coordinates.size(), kNone);
+  for (size_t b = 1; b < spec.bodies.size(); ++b) {
+    const BodySpec& body = spec.bodies[b];
+    if (!(body.mass >= 0.0) || !std::isfinite(body.mass)) {
+      throw Error(body.where, body.path, "body mass must be finite and >= 0");
+    }
+    engine::Body e;
+    e.name = body.name;
+    e.mass = body.mass;
+    e.p_BCm = body.mass_center;
+    e.I_Bcm_B = body.inertia;
+    try {
+      map.bodies[b] = system.AddBody(e);
+    } catch (const Error& error) {
+      throw Error(body.where, body.path, error.message());
+    }
+  }
+  for (size_t j = 0; j < spec.joints.size(); ++j) {
+    const JointSpec& joint = spec.joints[j];
+    std::vector<engine::CoordinateDesc> coordinates;
+    bool constrained_coordinate = false;
+    for (int c : joint.coordinates) {
+      const CoordinateSpec& cs = spec.coordinates[c];
+      engine::CoordinateDesc d;
+      d.name = cs.name;
+      d.default_value = cs.default_value;
+      d.default_speed = cs.default_speed_value;
+      if (cs.prescribed && cs.prescribed_function) {
+        d.motion = engine::CoordinateMotion::kPrescribed;
+        d.prescribed = cs.prescribed_function;
+      } else if (cs.locked) {
+        d.motion = engine::CoordinateMotion::kLocked;
+      }
+      if (cs.prescribed && !cs.prescribed_function) {
+        Note(notes, cs.where, cs.path, "prescribed without a prescribed_function: left free");
+      }
+      constrained_coordinate =
+          constrained_coordinate || d.motion != engine::CoordinateMotion::kFree;
+      coordinates.push_back(std::move(d));
+    }
+    engine::JointForm form = DirectForm(joint.kind);
+    if (!options.direct_joints || constrained_coordinate) form = engine::JointForm::kParameterized;
+    try {
+      std::shared_ptr<const JointModel> model = MakeJointModel(spec, static_cast<int>(j));
+      const int engine_joint = system.AddJoint(joint.name, map.bodies[joint.parent_body],
+                                               joint.X_PF, map.bodies[joint.child_body], joint.X_BM,
+                                               form, std::move(model), coordinates);
+      map.joints.push_back(engine_joint);
+      for (size_t k = 0; k < joint.coordinates.size(); ++k) {
+        map.coordinates[joint.coordinates[k]] = system.joints()[engine_joint].coordinates[k];
+      }
+    } catch (const Error& error) {
+      if (!error.where().file.empty()) throw;
+      throw Error(joint.where, joint.path, error.message());
+    }
+  }
+  return map;
+}
+
+std::unique_ptr<engine::System> BuildSystem(const ModelSpec& spec, const BuildOptions& options,
+                                            Diagnostics* notes) {
+  auto system = std::make_unique<engine::System>(spec.gravity);
+  BuildInto(spec, *system, options, notes);
+  for (const ConstraintSpec& c : spec.constraints) {
+    if (c.enabled) Note(notes, c.where, c.path, c.type + " is not simulated by the skeleton build");
+  }
+  for (const ForceSpec& f : spec.forces) {
+    if (f.applies_force)
+      Note(notes, f.where, f.path, f.type + " is not simulated by the skeleton build");
+  }
+  for (const ContactGeometrySpec& g : spec.contact_geometry) {
+    Note(notes, g.where, g.name,
+         g.type + " contact geometry is not simulated by the skeleton build");
+  }
+  try {
+    system->Finalize();
+  } catch (const Error& error) {
+    throw Error({spec.file, error.where().line}, error.component(), error.message());
+  }
+  return system;
+}
+
+}  // namespace sinew

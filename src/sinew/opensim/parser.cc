@@ -1,0 +1,199 @@
+#include <sinew/opensim/parser.h>
+
+#include <iostream>
+
+#include <sinew/opensim/internal/actuator_builder.h>
+#include <sinew/opensim/build_system.h>
+#include <sinew/opensim/support.h>
+#include <sinew/functions/constant.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/read_controls.h>
+#include <sinew/kinematics/body_depths.h>
+
+namespace sinew {
+namespace {
+
+// The name a component is reported under: the last segment of its path, which the reader has
+// already made unique (a repeated joint name `sph1` becomes `/jointset/sph1_2`, with a warning).
+std::string ReportName(const std::string& path, const std::string& name) {
+  const size_t slash = path.find_last_of('/');
+  return path.empty() || slash == std::string::npos ? name : path.substr(slash + 1);
+}
+
+// Replaces every joint of unknown type by a ball joint with three new coordinates, F and M
+// coincident at the start (the seed's stand-in). Returns which joints were replaced.
+std::vector<bool> ReplaceUnknownJoints(ModelSpec& spec, Report& report) {
+  std::vector<bool> replaced(spec.joints.size(), false);
+  for (size_t j = 0; j < spec.joints.size(); ++j) {
+    JointSpec& joint = spec.joints[j];
+    if (joint.kind != JointType::kUnknown) continue;
+    replaced[j] = true;
+    report.AddWarning({joint.where, joint.path,
+                       "joint type '" + joint.type +
+                           "' is unknown: replaced by a spherical stand-in at its frames"});
+    for (int c : joint.coordinates) {
+      report.AddNotSimulated(spec.coordinates[c].path + ": coordinate of stand-in joint");
+      spec.coordinates[c].joint = kNone;
+    }
+    joint.kind = JointType::kBall;
+    joint.coordinates.clear();
+    for (const char* axis : {"x", "y", "z"}) {
+      CoordinateSpec c;
+      c.name = joint.name + "_standin_r" + axis;
+      c.path = joint.path + "/" + c.name;
+      c.joint = static_cast<int>(j);
+      c.where = joint.where;
+      joint.coordinates.push_back(static_cast<int>(spec.coordinates.size()));
+      spec.coordinates.push_back(std::move(c));
+    }
+  }
+  return replaced;
+}
+
+}  // namespace
+
+void OpenSimParser::EnableCollision(int family_1, int family_2) {
+  collision_enabled_ = true;
+  family_1_ = family_1;
+  family_2_ = family_2;
+}
+
+std::unique_ptr<engine::System> OpenSimParser::Parse(const std::string& filename,
+                                                     ContactMethod method) {
+  auto system = std::make_unique<engine::System>();
+  Parse(*system, filename);
+  contact_method_ = method;
+  system->Finalize();
+  return system;
+}
+
+void OpenSimParser::Parse(engine::System& system, const std::string& filename) {
+  ParseSpec(system, ReadOsim(filename));
+}
+
+void OpenSimParser::ParseSpec(engine::System& system, ModelSpec spec) {
+  spec_ = std::move(spec);
+  report_ = Report();
+  collision_ = CollisionModel();
+  contact_method_ = ContactMethod::NSC;
+  for (const Diagnostic& w : spec_.warnings) report_.AddWarning(w);
+
+  if (system.num_bodies() > 1 && !system.gravity().isApprox(spec_.gravity)) {
+    report_.AddWarning({SourceLocation{spec_.file, 0}, "/gravity",
+                        "the system already had another gravity; the file's replaces it"});
+  }
+  system.SetGravity(spec_.gravity);
+
+  ModelSpec built = spec_;
+  const std::vector<bool> standin = ReplaceUnknownJoints(built, report_);
+  Diagnostics notes;
+  const SpecToSystem map = BuildInto(built, system, BuildOptions{}, &notes);
+  for (Diagnostic& note : notes) report_.AddWarning(std::move(note));
+
+  for (size_t b = 1; b < built.bodies.size(); ++b) {
+    report_.AddBody({built.bodies[b].name, map.bodies[b]});
+  }
+  for (size_t j = 0; j < built.joints.size(); ++j) {
+    const int engine_joint = map.joints[j];
+    report_.AddJoint({ReportName(built.joints[j].path, built.joints[j].name), built.joints[j].type,
+                      engine_joint, system.joints()[engine_joint].form, standin[j]});
+  }
+  BuildActuators(system, map.bodies, map.coordinates);
+  AssignExcitations();
+  for (std::string& line : ListNotSimulated(spec_)) report_.AddNotSimulated(std::move(line));
+  if (collision_enabled_) {
+    collision_ = BuildCollisionModel(spec_, CalcBodyDepths(spec_), family_1_, family_2_);
+  }
+  scene_ = viz::VisualScene();
+  if (vis_type_ != VisType::NONE) {
+    viz::VisualOptions options;
+    options.mode = vis_type_ == VisType::MESH ? viz::VisMode::kMesh : viz::VisMode::kPrimitives;
+    options.geometry_dirs = geometry_dirs_;
+    scene_ = viz::BuildVisualScene(spec_, options);
+    for (const Diagnostic& w : scene_.warnings) report_.AddWarning(w);
+  }
+  if (verbose_) report_.Print(std::cerr);
+  CheckStrict();
+}
+
+void OpenSimParser::BuildActuators(engine::System& system, const std::vector<int>& body_map,
+                                   const std::vector<int>& coordinate_map) {
+  for (const ForceSpec& force : spec_.forces) {
+    ForceInfo info{ReportName(force.path, force.name), force.type, nullptr, nullptr, ""};
+    if (IsForceSimulated(force)) {
+      info.actuator = MakeActuator(spec_, force, body_map, coordinate_map);
+      info.load = info.actuator;
+      system.AddForceElement(info.actuator);
+      info.excitation_source = "default 0";
+    }
+    report_.AddForce(std::move(info));
+  }
+}
+
+void OpenSimParser::AssignExcitations() {
+  // Lowest precedence first; each source overrides the previous ones.
+  for (const ControllerSpec& controller : spec_.controllers) {
+    if (!IsControllerSimulated(controller)) continue;
+    for (size_t i = 0; i < controller.actuators.size(); ++i) {
+      ForceInfo* info = report_.MutableForce(controller.actuators[i]);
+      if (!info || !info->actuator) {
+        report_.AddWarning({controller.where, "/controllerset/" + controller.name,
+                            "controls '" + controller.actuators[i] +
+                                "', which is not a simulated actuator: ignored"});
+        continue;
+      }
+      info->actuator->SetExcitation(controller.functions[i]);
+      info->excitation_source = "PrescribedController " + controller.name;
+    }
+  }
+  if (activate_actuators_) {
+    auto one = std::make_shared<Constant>(1.0);
+    for (const auto& [key, info] : report_.forces()) {
+      if (!info.actuator) continue;
+      info.actuator->SetExcitation(one);
+      report_.MutableForce(key)->excitation_source = "ActivateActuators";
+    }
+  }
+  if (!controls_file_.empty()) {
+    for (auto& [name, function] : ReadControlSet(controls_file_)) {
+      ForceInfo* info = report_.MutableForce(name);
+      if (!info || !info->actuator) {
+        report_.AddWarning({SourceLocation{controls_file_, 0}, name,
+                            "the controls file drives '" + name +
+                                "', which is not a simulated actuator: ignored"});
+        continue;
+      }
+      info->actuator->SetExcitation(function);
+      info->excitation_source = "controls file";
+    }
+  }
+}
+
+void OpenSimParser::SetExcitationFunction(const std::string& actuator_name,
+                                          FunctionPtr excitation) {
+  ForceInfo* info = report_.MutableForce(actuator_name);
+  if (!info || !info->actuator) {
+    throw Error(SourceLocation{spec_.file, 0}, actuator_name,
+                info ? "is not a simulated actuator (" + info->type + ")"
+                     : "no actuator of this name was parsed");
+  }
+  info->actuator->SetExcitation(std::move(excitation));
+  info->excitation_source = "set by user";
+}
+
+void OpenSimParser::CheckStrict() const {
+  if (!strict_) return;
+  if (!report_.warnings().empty()) {
+    const Diagnostic& w = report_.warnings().front();
+    throw Error(w.where, w.component,
+                w.message + " (--strict: " + std::to_string(report_.warnings().size()) +
+                    " approximation(s) or warning(s) in all)");
+  }
+  if (!report_.not_simulated().empty()) {
+    throw Error(SourceLocation{spec_.file, 0}, "",
+                "--strict: " + std::to_string(report_.not_simulated().size()) +
+                    " element(s) not simulated, first: " + report_.not_simulated().front());
+  }
+}
+
+}  // namespace sinew

@@ -1,0 +1,109 @@
+// sinew::OpenSimParser: the API of the seed report (Chrono's ChParserOpenSim, TR-2017-08),
+// on top of the reader (io/) and the engine: parse an .osim file into an engine::System,
+// with a Report of everything built, actuators driven by excitation functions, and options for
+// visualization and collision.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include <sinew/opensim/report.h>
+#include <sinew/contact/collision_model.h>
+#include <sinew/engine/system.h>
+#include <sinew/functions/function.h>
+#include <sinew/model/model_spec.h>
+#include <sinew/viz/visual_scene.h>
+
+namespace sinew {
+
+/// Which visual assets a parsed model gets (the seed's three modes).
+enum class VisType {
+  NONE,        ///< no visual assets (the default)
+  PRIMITIVES,  ///< a sphere at each body frame, cylinders to its joints, coloured by tree depth
+  MESH,        ///< the geometry files attached in the model
+};
+
+/// How contact is to be treated in a system created by Parse(filename, method):
+/// NSC non-smooth (complementarity), SMC smooth (penalty).
+enum class ContactMethod { NSC, SMC };
+
+/// Parses OpenSim models into engine systems. Options are set before Parse; excitations after.
+/// A parser holds no global state: parse as many files, as often, into as many systems as you
+/// like; each Parse replaces the Report with that of the new file.
+class OpenSimParser {
+ public:
+  OpenSimParser() = default;
+
+  /// Visual assets to make for the parsed bodies (default NONE): see GetVisualScene().
+  void SetVisualizationType(VisType type) { vis_type_ = type; }
+  VisType GetVisualizationType() const { return vis_type_; }
+  /// A folder searched for mesh files after the model's folder and its Geometry/ subfolder
+  /// (then $SINEW_GEOMETRY_PATH). May be called several times.
+  void AddGeometryDir(const std::string& dir) { geometry_dirs_.push_back(dir); }
+  /// Creates collision shapes (cylinders along each body's segments, as in PRIMITIVES) with
+  /// bodies in two alternating families by tree depth, so a body never collides with its
+  /// parent or children (default: off).
+  void EnableCollision(int family_1 = 1, int family_2 = 2);
+  /// Prints what is built, and every warning, to stderr while parsing (default: off).
+  void SetVerbose(bool verbose) { verbose_ = verbose; }
+  /// With true, every actuator starts with the constant excitation 1 (default: 0, OpenSim's
+  /// philosophy), overriding the model's own controllers.
+  void ActivateActuators(bool activate) { activate_actuators_ = activate; }
+  /// With true, anything approximated, substituted or not simulated is an error.
+  void SetStrict(bool strict) { strict_ = strict; }
+  /// A ControlSet file (OpenSim's `*_controls.xml`) whose controls drive the actuators they
+  /// name; it overrides ActivateActuators and the model's controllers. "" for none.
+  void SetControlsFile(const std::string& file) { controls_file_ = file; }
+
+  /// Reads `filename` and adds its bodies, joints and actuators to `system` (which must not be
+  /// finalized yet; call system.Finalize() before simulating). Throws sinew::Error.
+  void Parse(engine::System& system, const std::string& filename);
+  /// As Parse(system, filename), from a spec already read (e.g. one whose defaults were set
+  /// from an initial-states file).
+  void ParseSpec(engine::System& system, ModelSpec spec);
+  /// Creates a system (gravity from the file), parses `filename` into it, finalizes it and
+  /// returns it; the caller owns it.
+  std::unique_ptr<engine::System> Parse(const std::string& filename,
+                                        ContactMethod method = ContactMethod::NSC);
+
+  /// Sets the excitation of the actuator named `actuator_name` (its name in the file, or its
+  /// Report key for a repeated name). Call after Parse. Throws sinew::Error for an unknown name.
+  void SetExcitationFunction(const std::string& actuator_name, FunctionPtr excitation);
+
+  /// What the last Parse built.
+  const Report& GetReport() const { return report_; }
+  /// The model description of the last parsed file.
+  const ModelSpec& GetSpec() const { return spec_; }
+  /// The collision shapes of the last Parse (empty unless EnableCollision was called).
+  const CollisionModel& GetCollisionModel() const { return collision_; }
+  /// The visual assets of the last Parse, one entry per spec body (no parts with NONE).
+  /// A mesh that cannot be found is a Report warning and its body gets primitives.
+  const viz::VisualScene& GetVisualScene() const { return scene_; }
+  /// The contact method chosen in Parse(filename, method) (NSC otherwise).
+  ContactMethod GetContactMethod() const { return contact_method_; }
+
+ private:
+  void BuildActuators(engine::System& system, const std::vector<int>& body_map,
+                      const std::vector<int>& coordinate_map);
+  void AssignExcitations();
+  void CheckStrict() const;
+
+  VisType vis_type_ = VisType::NONE;
+  bool collision_enabled_ = false;
+  int family_1_ = 1;
+  int family_2_ = 2;
+  bool verbose_ = false;
+  bool activate_actuators_ = false;
+  bool strict_ = false;
+  std::string controls_file_;
+  std::vector<std::string> geometry_dirs_;
+  ContactMethod contact_method_ = ContactMethod::NSC;
+
+  ModelSpec spec_;
+  Report report_;
+  CollisionModel collision_;
+  viz::VisualScene scene_;
+};
+
+}  // namespace sinew

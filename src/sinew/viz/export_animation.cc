@@ -1,0 +1,64 @@
+#include <sinew/viz/export_animation.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include <sinew/viz/gltf_writer.h>
+#include <sinew/viz/html_viewer.h>
+
+namespace sinew::viz {
+
+BodyMotion ThinMotion(const BodyMotion& motion, double max_fps) {
+  if (max_fps <= 0 || motion.times.size() < 3) return motion;
+  const double spacing = 1.0 / max_fps;
+  BodyMotion out;
+  const size_t n = motion.times.size();
+  for (size_t k = 0; k < n; ++k) {
+    // Keep the first frame, every frame at least `spacing` after the last kept one (with a
+    // small tolerance for rounding in the file's times), and the last frame.
+    const bool keep =
+        k == 0 || k + 1 == n || motion.times[k] - out.times.back() >= spacing * (1 - 1e-9);
+    if (!keep) continue;
+    out.times.push_back(motion.times[k]);
+    out.X_GB.push_back(motion.X_GB[k]);
+  }
+  return out;
+}
+
+Diagnostics ExportAnimation(const ModelSpec& spec, const BodyMotion& motion,
+                            const std::string& path, const ExportOptions& options) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const bool html = ext == ".html" || ext == ".htm";
+  if (!html && ext != ".glb") {
+    throw Error(SourceLocation{path, 0}, "",
+                "cannot tell the export format from '" + ext + "' (use .glb or .html)");
+  }
+  if (motion.X_GB.size() != motion.times.size()) {
+    throw Error("export: the motion has " + std::to_string(motion.times.size()) + " times but " +
+                std::to_string(motion.X_GB.size()) + " frames of poses");
+  }
+  for (size_t k = 0; k < motion.X_GB.size(); ++k) {
+    if (motion.X_GB[k].size() != spec.bodies.size()) {
+      throw Error("export: frame " + std::to_string(k) + " has " +
+                  std::to_string(motion.X_GB[k].size()) + " body poses, the model has " +
+                  std::to_string(spec.bodies.size()) + " bodies");
+    }
+    if (k > 0 && !(motion.times[k] > motion.times[k - 1])) {
+      throw Error("export: motion times must increase (frame " + std::to_string(k) + ")");
+    }
+  }
+  VisualScene scene = BuildVisualScene(spec, options.visual);
+  const std::string title = options.title.empty() ? spec.name : options.title;
+  std::vector<uint8_t> glb = WriteGlb(scene, ThinMotion(motion, options.max_fps), title);
+  if (html) {
+    const std::string page = MakeViewerHtml(glb, title);
+    WriteFileBytes(path, std::vector<uint8_t>(page.begin(), page.end()));
+  } else {
+    WriteFileBytes(path, glb);
+  }
+  return scene.warnings;
+}
+
+}  // namespace sinew::viz

@@ -1,0 +1,33 @@
+// One call to export a model and its motion for viewing: the entry point for `sinew export`
+// and `sinew simulate --export`.
+#pragma once
+
+#include <string>
+
+#include <sinew/common/error.h>
+#include <sinew/model/model_spec.h>
+#include <sinew/viz/body_motion.h>
+#include <sinew/viz/visual_scene.h>
+
+namespace sinew::viz {
+
+/// Options of ExportAnimation.
+struct ExportOptions {
+  VisualOptions visual;  ///< Mode (primitives/mesh/none) and extra mesh folders.
+  std::string title;     ///< Page/scene title; the model's name when empty.
+  /// When > 0, frames closer than 1/max_fps s to the previously kept one are dropped (the
+  /// first and last frames are always kept), so long fine-step simulations stay small.
+  double max_fps = 0;
+};
+
+/// The frames of `motion` kept for a frame rate of at most `max_fps` (all when <= 0).
+BodyMotion ThinMotion(const BodyMotion& motion, double max_fps);
+
+/// Writes `spec` moving along `motion` (body poses X_GB per frame; one frame for a still pose)
+/// to `path`: a binary glTF 2.0 file when it ends in .glb, a self-contained HTML viewer when it
+/// ends in .html/.htm. Returns the warnings (missing meshes, ...). Throws sinew::Error for
+/// another extension, a motion whose frames do not cover every body, or an unwritable file.
+Diagnostics ExportAnimation(const ModelSpec& spec, const BodyMotion& motion,
+                            const std::string& path, const ExportOptions& options);
+
+}  // namespace sinew::viz

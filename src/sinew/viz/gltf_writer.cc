@@ -1,0 +1,257 @@
+#include <sinew/viz/gltf_writer.h>
+
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include <sinew/common/error.h>
+
+namespace sinew::viz {
+namespace {
+
+using nlohmann::json;
+
+// glTF constants.
+constexpr int kFloat = 5126;
+constexpr int kUnsignedInt = 5125;
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
+
+// Accumulates the BIN chunk and the buffer views / accessors that point into it.
+class BinaryBuilder {
+ public:
+  explicit BinaryBuilder(json& doc) : doc_(doc) {
+    doc_["bufferViews"] = json::array();
+    doc_["accessors"] = json::array();
+  }
+
+  // Appends floats as a buffer view + accessor; returns the accessor index.
+  int AddFloats(const std::vector<float>& values, const char* type, int components, int target,
+                bool with_min_max) {
+    const int view = AddView(values.data(), values.size() * sizeof(float), target);
+    json accessor = {{"bufferView", view},
+                     {"componentType", kFloat},
+                     {"count", values.size() / components},
+                     {"type", type}};
+    if (with_min_max) {
+      std::vector<float> lo(components, 0), hi(components, 0);
+      for (size_t i = 0; i < values.size(); ++i) {
+        const size_t c = i % components;
+        if (i < static_cast<size_t>(components) || values[i] < lo[c]) lo[c] = values[i];
+        if (i < static_cast<size_t>(components) || values[i] > hi[c]) hi[c] = values[i];
+      }
+      accessor["min"] = lo;
+      accessor["max"] = hi;
+    }
+    doc_["accessors"].push_back(accessor);
+    return static_cast<int>(doc_["accessors"].size() - 1);
+  }
+
+  int AddIndices(const std::vector<uint32_t>& indices) {
+    const int view =
+        AddView(indices.data(), indices.size() * sizeof(uint32_t), kElementArrayBuffer);
+    doc_["accessors"].push_back({{"bufferView", view},
+                                 {"componentType", kUnsignedInt},
+                                 {"count", indices.size()},
+                                 {"type", "SCALAR"}});
+    return static_cast<int>(doc_["accessors"].size() - 1);
+  }
+
+  std::vector<uint8_t>& bytes() { return bin_; }
+
+ private:
+  int AddView(const void* data, size_t size, int target) {
+    while (bin_.size() % 4 != 0) bin_.push_back(0);  // accessors need 4-byte alignment
+    json view = {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", size}};
+    if (target != 0) view["target"] = target;
+    const uint8_t* p = static_cast<const uint8_t*>(data);
+    bin_.insert(bin_.end(), p, p + size);
+    doc_["bufferViews"].push_back(view);
+    return static_cast<int>(doc_["bufferViews"].size() - 1);
+  }
+
+  json& doc_;
+  std::vector<uint8_t> bin_;
+};
+
+std::vector<float> Flatten(const std::vector<Vec3f>& v) {
+  std::vector<float> out;
+  out.reserve(3 * v.size());
+  for (const Vec3f& p : v) out.insert(out.end(), {p.x(), p.y(), p.z()});
+  return out;
+}
+
+json TranslationOf(const Transform& X) { return {X.p.x(), X.p.y(), X.p.z()}; }
+
+// glTF quaternion order is x, y, z, w.
+json RotationOf(const Mat3& R) {
+  Quat q(R);
+  q.normalize();
+  return {q.x(), q.y(), q.z(), q.w()};
+}
+
+void AppendUint32(std::vector<uint8_t>& out, uint32_t v) {
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<uint8_t>(v >> (8 * i)));
+}
+
+}  // namespace
+
+std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion,
+                              const std::string& model_name) {
+  json doc;
+  doc["asset"] = {{"version", "2.0"}, {"generator", "Sinew"}};
+  doc["scene"] = 0;
+  doc["nodes"] = json::array();
+  doc["meshes"] = json::array();
+  doc["materials"] = json::array();
+  BinaryBuilder bin(doc);
+
+  // Geometry shared by parts (the same shared_ptr) is stored once.
+  std::map<const TriangleMesh*, json> primitive_of;
+  auto primitive = [&](const TriangleMesh& mesh) -> json {
+    auto it = primitive_of.find(&mesh);
+    if (it != primitive_of.end()) return it->second;
+    TriangleMesh copy;
+    const TriangleMesh* m = &mesh;
+    if (mesh.normals.size() != mesh.positions.size()) {
+      copy = mesh;
+      ComputeVertexNormals(copy);
+      m = &copy;
+    }
+    std::vector<uint32_t> indices;
+    indices.reserve(3 * m->triangles.size());
+    for (const auto& t : m->triangles) indices.insert(indices.end(), t.begin(), t.end());
+    json p = {{"attributes",
+               {{"POSITION", bin.AddFloats(Flatten(m->positions), "VEC3", 3, kArrayBuffer, true)},
+                {"NORMAL", bin.AddFloats(Flatten(m->normals), "VEC3", 3, kArrayBuffer, false)}}},
+              {"indices", bin.AddIndices(indices)},
+              {"mode", 4}};
+    primitive_of[&mesh] = p;
+    return p;
+  };
+
+  json root_children = json::array();
+  std::vector<int> body_nodes;
+  for (const VisualBody& body : scene.bodies) {
+    json node = {{"name", body.name}, {"extras", {{"body_index", body.body}}}};
+    if (!motion.X_GB.empty() && body.body < static_cast<int>(motion.X_GB[0].size())) {
+      const Transform& X = motion.X_GB[0][body.body];
+      node["translation"] = TranslationOf(X);
+      node["rotation"] = RotationOf(X.R);
+    }
+    json children = json::array();
+    for (const VisualPart& part : body.parts) {
+      if (!part.mesh || part.mesh->empty()) continue;
+      json material = {
+          {"name", part.name},
+          {"pbrMetallicRoughness",
+           {{"baseColorFactor", {part.color.x(), part.color.y(), part.color.z(), part.opacity}},
+            {"metallicFactor", 0.0},
+            {"roughnessFactor", 0.7}}},
+          {"doubleSided", true}};
+      if (part.opacity < 1.0) material["alphaMode"] = "BLEND";
+      doc["materials"].push_back(material);
+      json p = primitive(*part.mesh);
+      p["material"] = doc["materials"].size() - 1;
+      doc["meshes"].push_back({{"name", part.name}, {"primitives", json::array({p})}});
+      json child = {{"name", part.name},
+                    {"mesh", doc["meshes"].size() - 1},
+                    {"translation", TranslationOf(part.X_BG)},
+                    {"rotation", RotationOf(part.X_BG.R)},
+                    {"scale", {part.scale.x(), part.scale.y(), part.scale.z()}},
+                    {"extras", {{"source", part.source}}}};
+      doc["nodes"].push_back(child);
+      children.push_back(doc["nodes"].size() - 1);
+    }
+    if (!children.empty()) node["children"] = children;
+    doc["nodes"].push_back(node);
+    body_nodes.push_back(static_cast<int>(doc["nodes"].size() - 1));
+    root_children.push_back(body_nodes.back());
+  }
+  doc["nodes"].push_back({{"name", model_name}, {"children", root_children}});
+  doc["scenes"] = json::array({{{"name", model_name}, {"nodes", {doc["nodes"].size() - 1}}}});
+
+  // The animation: one time input shared by every channel.
+  const size_t n_frames = motion.times.size();
+  if (n_frames >= 2 && motion.X_GB.size() == n_frames) {
+    std::vector<float> times(n_frames);
+    for (size_t k = 0; k < n_frames; ++k) {
+      times[k] = static_cast<float>(motion.times[k] - motion.times[0]);
+    }
+    const int input = bin.AddFloats(times, "SCALAR", 1, 0, true);
+    json samplers = json::array(), channels = json::array();
+    for (size_t i = 0; i < scene.bodies.size(); ++i) {
+      const int b = scene.bodies[i].body;
+      if (b >= static_cast<int>(motion.X_GB[0].size())) continue;
+      std::vector<float> translation, rotation;
+      Quat previous = Quat::Identity();
+      for (size_t k = 0; k < n_frames; ++k) {
+        const Transform& X = motion.X_GB[k][b];
+        translation.insert(translation.end(),
+                           {static_cast<float>(X.p.x()), static_cast<float>(X.p.y()),
+                            static_cast<float>(X.p.z())});
+        Quat q(X.R);
+        q.normalize();
+        // q and -q are the same rotation; keep neighbours in one hemisphere so that
+        // interpolation takes the short way.
+        if (k > 0 && q.dot(previous) < 0) q.coeffs() = -q.coeffs();
+        previous = q;
+        rotation.insert(rotation.end(), {static_cast<float>(q.x()), static_cast<float>(q.y()),
+                                         static_cast<float>(q.z()), static_cast<float>(q.w())});
+      }
+      const int t_out = bin.AddFloats(translation, "VEC3", 3, 0, false);
+      const int r_out = bin.AddFloats(rotation, "VEC4", 4, 0, false);
+      samplers.push_back({{"input", input}, {"output", t_out}, {"interpolation", "LINEAR"}});
+      channels.push_back({{"sampler", samplers.size() - 1},
+                          {"target", {{"node", body_nodes[i]}, {"path", "translation"}}}});
+      samplers.push_back({{"input", input}, {"output", r_out}, {"interpolation", "LINEAR"}});
+      channels.push_back({{"sampler", samplers.size() - 1},
+                          {"target", {{"node", body_nodes[i]}, {"path", "rotation"}}}});
+    }
+    doc["animations"] = json::array({{{"name", "motion"},
+                                      {"samplers", samplers},
+                                      {"channels", channels},
+                                      {"extras", {{"start_time", motion.times[0]}}}}});
+  }
+  if (doc["meshes"].empty()) {
+    doc.erase("meshes");
+    doc.erase("materials");
+  }
+  std::vector<uint8_t>& data = bin.bytes();
+  while (data.size() % 4 != 0) data.push_back(0);
+  if (!data.empty()) doc["buffers"] = json::array({{{"byteLength", data.size()}}});
+  if (doc["accessors"].empty()) {
+    doc.erase("accessors");
+    doc.erase("bufferViews");
+  }
+
+  // GLB: header, JSON chunk padded with spaces, BIN chunk padded with zeros.
+  std::string text = doc.dump();
+  while (text.size() % 4 != 0) text.push_back(' ');
+  const size_t total = 12 + 8 + text.size() + (data.empty() ? 0 : 8 + data.size());
+  std::vector<uint8_t> out;
+  out.reserve(total);
+  AppendUint32(out, 0x46546C67);  // "glTF"
+  AppendUint32(out, 2);
+  AppendUint32(out, static_cast<uint32_t>(total));
+  AppendUint32(out, static_cast<uint32_t>(text.size()));
+  AppendUint32(out, 0x4E4F534A);  // "JSON"
+  out.insert(out.end(), text.begin(), text.end());
+  if (!data.empty()) {
+    AppendUint32(out, static_cast<uint32_t>(data.size()));
+    AppendUint32(out, 0x004E4942);  // "BIN\0"
+    out.insert(out.end(), data.begin(), data.end());
+  }
+  return out;
+}
+
+void WriteFileBytes(const std::string& path, const std::vector<uint8_t>& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) throw Error(SourceLocation{path, 0}, "", "cannot write file");
+}
+
+}  // namespace sinew::viz

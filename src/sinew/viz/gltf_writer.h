@@ -1,0 +1,24 @@
+// Binary glTF 2.0 (.glb) export of a visual scene, with body motion as an animation.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <sinew/viz/body_motion.h>
+#include <sinew/viz/visual_scene.h>
+
+namespace sinew::viz {
+
+/// Builds a .glb: one node per body (named after it, posed at the first frame), one child
+/// node per part carrying the part's X_BG and scale and a mesh with its material. When the
+/// motion has two or more frames, one animation samples every body's translation and rotation
+/// (quaternion xyzw) at the motion's times, shifted to start at 0 (the first time is kept in
+/// the animation's extras as "start_time"). Units are metres, y up, as in OpenSim.
+std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion,
+                              const std::string& model_name);
+
+/// Writes bytes to a file; throws sinew::Error when the file cannot be written.
+void WriteFileBytes(const std::string& path, const std::vector<uint8_t>& bytes);
+
+}  // namespace sinew::viz

@@ -1,0 +1,94 @@
+#include <sinew/viz/motion_poses.h>
+
+#include <algorithm>
+
+#include <sinew/kinematics/coordinate_motion.h>
+#include <sinew/kinematics/forward_kinematics.h>
+#include <sinew/kinematics/kinematic_tree.h>
+
+namespace sinew::viz {
+namespace {
+
+// The coordinates a table row drives, over the model's defaults.
+std::vector<double> RowCoordinates(const ModelSpec& spec, const KinematicTree& tree,
+                                   const MotionColumnMap& map, const Storage& table, int row) {
+  std::vector<double> q = tree.default_q();
+  const auto first = table.values.begin() + static_cast<ptrdiff_t>(row) * table.NumColumns();
+  const std::vector<double> values(first, first + table.NumColumns());
+  ApplyMotionRow(spec, map, values, table.in_degrees, q);
+  return q;
+}
+
+std::vector<Transform> Poses(const KinematicTree& tree, const std::vector<double>& q) {
+  std::vector<Transform> X_GB(tree.num_bodies());
+  CalcBodyPoses(tree, q, X_GB);
+  return X_GB;
+}
+
+MotionColumnMap CheckedMap(const ModelSpec& spec, const Storage& table) {
+  MotionColumnMap map = MapMotionColumns(spec, table.labels);
+  if (std::none_of(map.coordinate.begin(), map.coordinate.end(),
+                   [](int c) { return c != kNone; })) {
+    throw Error("no column of the motion table names a coordinate of model '" + spec.name + "'");
+  }
+  return map;
+}
+
+}  // namespace
+
+BodyMotion DefaultPoseMotion(const ModelSpec& spec) {
+  KinematicTree tree(spec);
+  BodyMotion motion;
+  motion.times = {0.0};
+  motion.X_GB = {Poses(tree, tree.default_q())};
+  return motion;
+}
+
+BodyMotion MotionFromTable(const ModelSpec& spec, const Storage& table, Diagnostics* notes) {
+  KinematicTree tree(spec);
+  const MotionColumnMap map = CheckedMap(spec, table);
+  if (notes) {
+    auto note = [notes](const std::string& component, const std::string& message) {
+      Diagnostic d;
+      d.component = component;
+      d.message = message;
+      notes->push_back(std::move(d));
+    };
+    for (const std::string& label : map.unknown) {
+      note("", "column '" + label + "' names no coordinate; ignored");
+    }
+    for (int c : map.missing) {
+      note(spec.coordinates[c].path, "not in the motion table; held at its default value");
+    }
+  }
+  BodyMotion motion;
+  for (int row = 0; row < table.NumRows(); ++row) {
+    if (row > 0 && !(table.time[row] > table.time[row - 1])) {
+      throw Error("motion table times must increase (row " + std::to_string(row + 1) + ")");
+    }
+    motion.times.push_back(table.time[row]);
+    motion.X_GB.push_back(Poses(tree, RowCoordinates(spec, tree, map, table, row)));
+  }
+  return motion;
+}
+
+std::vector<Transform> PosesAtTime(const ModelSpec& spec, const Storage& table, double t) {
+  KinematicTree tree(spec);
+  const MotionColumnMap map = CheckedMap(spec, table);
+  if (table.NumRows() == 0 || t < table.time.front() || t > table.time.back()) {
+    throw Error("time " + std::to_string(t) + " s is outside the table's range");
+  }
+  // The row pair around t; coordinates blend linearly between them.
+  const auto it = std::lower_bound(table.time.begin(), table.time.end(), t);
+  const int hi = static_cast<int>(it - table.time.begin());
+  const int lo = std::max(0, hi - 1);
+  std::vector<double> q = RowCoordinates(spec, tree, map, table, hi);
+  if (hi != lo && table.time[hi] > table.time[lo]) {
+    const double s = (t - table.time[lo]) / (table.time[hi] - table.time[lo]);
+    const std::vector<double> q0 = RowCoordinates(spec, tree, map, table, lo);
+    for (size_t i = 0; i < q.size(); ++i) q[i] = q0[i] + s * (q[i] - q0[i]);
+  }
+  return Poses(tree, q);
+}
+
+}  // namespace sinew::viz

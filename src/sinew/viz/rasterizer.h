@@ -1,0 +1,49 @@
+// A small software renderer (z-buffer, per-pixel Lambert shading, 2x2 supersampling), so
+// `sinew render` makes pictures without a display, a GPU or a browser.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <sinew/math/transform.h>
+#include <sinew/viz/image.h>
+#include <sinew/viz/visual_scene.h>
+
+namespace sinew::viz {
+
+/// A perspective camera in ground coordinates.
+struct Camera {
+  Vec3 eye = Vec3(3, 1, 3);    ///< Eye position (m).
+  Vec3 target = Vec3::Zero();  ///< Point looked at (m).
+  Vec3 up = Vec3::UnitY();     ///< Approximate up direction.
+  double fov_y = 0.6;          ///< Vertical field of view (rad).
+};
+
+/// Options of RenderScene.
+struct RenderOptions {
+  int width = 800;
+  int height = 600;
+  /// Direction from the model to the eye when the camera is framed automatically, in ground:
+  /// OpenSim's x points forward, y up, z to the model's right.
+  Vec3 view_direction = Vec3(1.0, 0.35, 0.8);
+  Vec3 background = Vec3(0.96, 0.96, 0.96);  ///< RGB in [0, 1].
+  /// A floor under the model (at its lowest point) with the model's shadow from the key light.
+  bool floor = false;
+};
+
+/// Parses a view name: "front" (from +x), "back", "right" (from +z), "left", "top" or "iso".
+/// Throws sinew::Error otherwise.
+Vec3 ParseViewDirection(const std::string& view);
+
+/// World-space bounds of the posed scene (min, max); an empty scene gives a unit box.
+std::pair<Vec3, Vec3> SceneBounds(const VisualScene& scene, const std::vector<Transform>& X_GB);
+
+/// A camera looking at the bounds' centre from `direction`, far enough that the bounding
+/// sphere fits the view at the given aspect ratio (width / height).
+Camera FrameCamera(const std::pair<Vec3, Vec3>& bounds, const Vec3& direction, double aspect);
+
+/// Renders the scene with bodies posed at X_GB (one transform per spec body).
+Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
+                  const Camera& camera, const RenderOptions& options);
+
+}  // namespace sinew::viz

@@ -1,0 +1,62 @@
+// What a model looks like: per body, a list of triangle-mesh parts posed in the body frame.
+// Built once from the spec; exporters and the renderer then only need body poses X_GB.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <sinew/common/error.h>
+#include <sinew/io/mesh_data.h>
+#include <sinew/math/transform.h>
+#include <sinew/model/model_spec.h>
+
+namespace sinew::viz {
+
+/// How bodies are drawn (the seed's three modes).
+enum class VisMode {
+  kNone,        ///< Nothing: bodies carry no geometry.
+  kPrimitives,  ///< A sphere at each body frame, cylinders to its joints, coloured by depth.
+  kMesh,        ///< The model's attached geometry (mesh files and analytic shapes).
+};
+
+/// Parses "none", "primitives" or "mesh"; throws sinew::Error otherwise.
+VisMode ParseVisMode(const std::string& text);
+
+/// One drawable piece fixed to a body: vertex v of `mesh` is at X_BG * (scale .* v) in B.
+struct VisualPart {
+  std::string name;
+  std::shared_ptr<const TriangleMesh> mesh;
+  Transform X_BG;                    ///< Pose of the part in the body frame.
+  Vec3 scale = Vec3::Ones();         ///< Per-axis scale applied before X_BG.
+  Vec3 color = Vec3(0.9, 0.9, 0.9);  ///< RGB in [0, 1].
+  double opacity = 1.0;
+  std::string source;  ///< Mesh file read, or the shape's kind ("Sphere").
+};
+
+/// The parts of one body (index into ModelSpec::bodies).
+struct VisualBody {
+  std::string name;
+  int body = kGroundIndex;
+  std::vector<VisualPart> parts;
+};
+
+/// Everything drawable in a model, one entry per spec body in the same order.
+struct VisualScene {
+  std::vector<VisualBody> bodies;
+  Diagnostics warnings;  ///< Missing meshes, unsupported shapes, fallbacks.
+};
+
+/// Options for BuildVisualScene.
+struct VisualOptions {
+  VisMode mode = VisMode::kMesh;
+  std::vector<std::string> geometry_dirs;  ///< Searched after the model's folders.
+};
+
+/// Builds the scene of `spec` in `options.mode`. In kMesh mode a mesh file is searched in the
+/// model's folder, its Geometry/ subfolder, `geometry_dirs`, then $SINEW_GEOMETRY_PATH; a body
+/// whose mesh is missing or unreadable gets a warning naming the file and the folders searched,
+/// and is drawn with primitives instead. Mesh files shared by several bodies are read once.
+VisualScene BuildVisualScene(const ModelSpec& spec, const VisualOptions& options);
+
+}  // namespace sinew::viz

@@ -1,0 +1,54 @@
+// Every model of the shared corpus (files under 3 MB) either builds and simulates a few
+// milliseconds with satisfied constraints and finite states, or is refused with a sinew::Error
+// (never a crash or NaNs). Skipped when the corpus is absent.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <sinew/opensim/build_system.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/engine/projection.h>
+#include <sinew/io/osim_reader.h>
+
+namespace sinew {
+namespace {
+
+TEST(CorpusSimulateTest, EveryModelSimulatesOrIsRefusedClearly) {
+  const std::filesystem::path root = SINEW_SHARED_DATA_DIR;
+  if (!std::filesystem::exists(root)) GTEST_SKIP() << "no corpus at " << root;
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+    if (entry.path().extension() == ".osim" && entry.file_size() < 3'000'000) {
+      files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  int simulated = 0, refused = 0;
+  for (const auto& file : files) {
+    try {
+      const ModelSpec spec = ReadOsim(file.string());
+      const auto system = BuildSystem(spec);
+      engine::State state = engine::MakeDefaultState(*system);
+      engine::IntegratorSettings settings;
+      settings.accuracy = 1e-5;
+      auto integrator = engine::MakeIntegrator("rk45", *system, settings);
+      integrator->StepTo(state, 0.005);
+      EXPECT_TRUE(state.q.allFinite()) << file;
+      EXPECT_LT(engine::CalcPositionErrors(*system, state).lpNorm<Eigen::Infinity>(), 1e-8) << file;
+      ++simulated;
+    } catch (const Error& e) {
+      EXPECT_FALSE(std::string(e.what()).empty());
+      ++refused;
+    }
+  }
+  std::printf("corpus: %d models simulated, %d refused with an error\n", simulated, refused);
+  EXPECT_GT(simulated, 100);
+}
+
+}  // namespace
+}  // namespace sinew

@@ -1,0 +1,50 @@
+// ListNotSimulated: one line per element the engine does not handle yet, in model order.
+#include <sinew/opensim/support.h>
+
+#include <gtest/gtest.h>
+
+#include <sinew/io/osim_reader.h>
+
+namespace sinew {
+namespace {
+
+TEST(Support, ListsEverythingNotSimulatedYet) {
+  // Ideal actuators and PrescribedControllers are simulated; muscles, other controllers,
+  // constraints, contact geometry, wrap objects and unknown joints are not yet.
+  const std::string text = R"(<OpenSimDocument Version="40000"><Model name="m">
+<Ground name="ground"/>
+<BodySet><objects><Body name="b"><mass>1</mass>
+  <WrapObjectSet><objects><WrapSphere name="ws"><radius>0.1</radius></WrapSphere></objects></WrapObjectSet>
+</Body><Body name="c"><mass>1</mass></Body></objects></BodySet>
+<JointSet><objects>
+  <SliderJoint name="s"><socket_parent_frame>/ground</socket_parent_frame>
+    <socket_child_frame>/bodyset/b</socket_child_frame><coordinates><Coordinate name="x"/></coordinates></SliderJoint>
+  <MyPluginJoint name="plugin"><socket_parent_frame>/bodyset/b</socket_parent_frame>
+    <socket_child_frame>/bodyset/c</socket_child_frame></MyPluginJoint>
+</objects></JointSet>
+<ForceSet><objects><CoordinateActuator name="act"><coordinate>x</coordinate></CoordinateActuator>
+  <Thelen2003Muscle name="musc"/></objects></ForceSet>
+<ConstraintSet><objects><WeldConstraint name="weld"/></objects></ConstraintSet>
+<ContactGeometrySet><objects><ContactSphere name="cs"><socket_frame>/bodyset/c</socket_frame>
+  <radius>0.2</radius></ContactSphere></objects></ContactGeometrySet>
+<ControllerSet><objects><PrescribedController name="ctl"/><ToyReflexController name="reflex"/>
+</objects></ControllerSet>
+<ProbeSet><objects><JointInternalPowerProbe name="probe"/></objects></ProbeSet>
+</Model></OpenSimDocument>)";
+  const ModelSpec spec = ReadOsimString(text, "support.osim");
+  // The plugin joint is read, with its frames resolved.
+  const JointSpec& plugin = spec.joints[spec.FindJoint("plugin")];
+  EXPECT_EQ(plugin.kind, JointType::kUnknown);
+  EXPECT_EQ(plugin.parent_body, spec.FindBody("b"));
+  EXPECT_EQ(plugin.child_body, spec.FindBody("c"));
+  const std::vector<std::string> expected = {
+      "/jointset/plugin: MyPluginJoint",       "/forceset/musc: Thelen2003Muscle",
+      "/constraintset/weld: WeldConstraint",   "/controllerset/reflex: ToyReflexController",
+      "/contactgeometryset/cs: ContactSphere", "/bodyset/b/wrapobjectset/ws: WrapSphere",
+      "/probe: JointInternalPowerProbe",
+  };
+  EXPECT_EQ(ListNotSimulated(spec), expected);
+}
+
+}  // namespace
+}  // namespace sinew
