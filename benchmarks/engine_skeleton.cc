@@ -23,8 +23,8 @@ void RunSkeleton(benchmark::State& bench, const std::string& file) {
     bench.SkipWithError(("missing " + file).c_str());
     return;
   }
-  const sinew::ModelSpec spec = sinew::ReadOsim(file);
-  const auto system = sinew::BuildSystem(spec);
+  const sinew::model::ModelSpec spec = sinew::io::ReadOsim(file);
+  const auto system = sinew::opensim::BuildSystem(spec);
   double steps = 0.0, simulated = 0.0, evaluations = 0.0, rejected = 0.0, failures = 0.0;
   for (auto _ : bench) {
     sinew::engine::State state = sinew::engine::MakeDefaultState(*system);

@@ -13,26 +13,26 @@
 
 namespace {
 
-const sinew::ModelSpec& Hamner() {
-  static const sinew::ModelSpec spec = sinew::ReadOsim(
+const sinew::model::ModelSpec& Hamner() {
+  static const sinew::model::ModelSpec spec = sinew::io::ReadOsim(
       std::string(SINEW_TEST_DATA_DIR) + "/kinematics/hamner/subject02_registered.osim");
   return spec;
 }
 
 // A pose away from the defaults so every spline is evaluated between knots.
-std::vector<double> SomePose(const sinew::KinematicTree& tree) {
+std::vector<double> SomePose(const sinew::kinematics::KinematicTree& tree) {
   std::vector<double> q = tree.default_q();
   for (size_t i = 0; i < q.size(); ++i) q[i] += 0.2 * std::sin(1.3 * static_cast<double>(i));
   return q;
 }
 
 void BM_HamnerBodyPoses(benchmark::State& state) {
-  const sinew::KinematicTree tree(Hamner());
+  const sinew::kinematics::KinematicTree tree(Hamner());
   std::vector<double> q = SomePose(tree);
   std::vector<sinew::Transform> X(tree.num_bodies());
   for (auto _ : state) {
     q[0] += 1e-9;  // keep the compiler from hoisting the work
-    sinew::CalcBodyPoses(tree, q, X);
+    sinew::kinematics::CalcBodyPoses(tree, q, X);
     benchmark::DoNotOptimize(X.data());
   }
   state.counters["coordinates"] = tree.num_coordinates();
@@ -41,14 +41,14 @@ void BM_HamnerBodyPoses(benchmark::State& state) {
 BENCHMARK(BM_HamnerBodyPoses);
 
 void BM_HamnerBodyPosesAndMarkers(benchmark::State& state) {
-  const sinew::ModelSpec& spec = Hamner();
-  const sinew::KinematicTree tree(spec);
+  const sinew::model::ModelSpec& spec = Hamner();
+  const sinew::kinematics::KinematicTree tree(spec);
   std::vector<double> q = SomePose(tree);
   std::vector<sinew::Transform> X(tree.num_bodies());
   std::vector<sinew::Vec3> markers(spec.markers.size());
   for (auto _ : state) {
     q[0] += 1e-9;
-    sinew::CalcBodyPoses(tree, q, X);
+    sinew::kinematics::CalcBodyPoses(tree, q, X);
     for (size_t m = 0; m < spec.markers.size(); ++m) {
       markers[m] = X[spec.markers[m].body] * spec.markers[m].location;
     }
@@ -58,15 +58,15 @@ void BM_HamnerBodyPosesAndMarkers(benchmark::State& state) {
 BENCHMARK(BM_HamnerBodyPosesAndMarkers);
 
 void BM_HamnerBodyVelocities(benchmark::State& state) {
-  const sinew::KinematicTree tree(Hamner());
+  const sinew::kinematics::KinematicTree tree(Hamner());
   const std::vector<double> q = SomePose(tree);
   std::vector<double> u(q.size(), 0.5);
   std::vector<sinew::Transform> X(tree.num_bodies());
   std::vector<sinew::SpatialVec> V(tree.num_bodies());
-  sinew::CalcBodyPoses(tree, q, X);
+  sinew::kinematics::CalcBodyPoses(tree, q, X);
   for (auto _ : state) {
     u[0] += 1e-9;
-    sinew::CalcBodyVelocities(tree, q, u, X, V);
+    sinew::kinematics::CalcBodyVelocities(tree, q, u, X, V);
     benchmark::DoNotOptimize(V.data());
   }
 }

@@ -22,7 +22,7 @@ const std::vector<double> kKneeY = {0.0082733,  0.01068662, 0.02020416, 0.022352
                                     0.03583779, 0.03625744, 0.03616478, 0.03549306};
 
 void BM_SimmSplineCalc(benchmark::State& state) {
-  sinew::SimmSpline spline(kKneeX, kKneeY);
+  sinew::functions::SimmSpline spline(kKneeX, kKneeY);
   double x = -2.0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(spline.Calc(x));
@@ -33,7 +33,7 @@ void BM_SimmSplineCalc(benchmark::State& state) {
 BENCHMARK(BM_SimmSplineCalc);
 
 void BM_SimmSplineValueAndDerivatives(benchmark::State& state) {
-  sinew::SimmSpline spline(kKneeX, kKneeY);
+  sinew::functions::SimmSpline spline(kKneeX, kKneeY);
   double x = -2.0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(spline.Calc(x));
@@ -49,15 +49,15 @@ BENCHMARK(BM_SimmSplineValueAndDerivatives);
 // around a SimmSpline, as in scaled models), value + first + second derivative each, through
 // the virtual Function interface.
 void BM_FullBodyPoseSplines(benchmark::State& state) {
-  std::vector<sinew::FunctionPtr> functions;
+  std::vector<sinew::functions::FunctionPtr> functions;
   for (int i = 0; i < 37 * 3; ++i) {
-    functions.push_back(std::make_shared<sinew::MultiplierFunction>(
-        std::make_shared<sinew::SimmSpline>(kKneeX, kKneeY), 1.0 + 0.001 * i));
+    functions.push_back(std::make_shared<sinew::functions::MultiplierFunction>(
+        std::make_shared<sinew::functions::SimmSpline>(kKneeX, kKneeY), 1.0 + 0.001 * i));
   }
   double x = -2.0;
   for (auto _ : state) {
     double sum = 0.0;
-    for (const sinew::FunctionPtr& f : functions) {
+    for (const sinew::functions::FunctionPtr& f : functions) {
       sum += f->Calc(x) + f->CalcDerivative(x, 1) + f->CalcDerivative(x, 2);
     }
     benchmark::DoNotOptimize(sum);
@@ -69,7 +69,7 @@ BENCHMARK(BM_FullBodyPoseSplines);
 
 void BM_SimmSplineConstruct(benchmark::State& state) {
   for (auto _ : state) {
-    sinew::SimmSpline spline(kKneeX, kKneeY);
+    sinew::functions::SimmSpline spline(kKneeX, kKneeY);
     benchmark::DoNotOptimize(spline.b().data());
   }
 }
@@ -84,7 +84,7 @@ void BM_GCVSplineFit(benchmark::State& state) {
     y[i] = 0.5 + 0.4 * std::sin(3.0 * x[i]);
   }
   for (auto _ : state) {
-    sinew::GCVSpline spline(3, x, y);
+    sinew::functions::GCVSpline spline(3, x, y);
     benchmark::DoNotOptimize(spline.Calc(0.5));
   }
 }
@@ -100,7 +100,7 @@ void BM_GCVSplineSmoothingFit(benchmark::State& state) {
     y[i] = 0.5 + 0.4 * std::sin(3.0 * x[i]) + 0.01 * std::sin(97.0 * i);
   }
   for (auto _ : state) {
-    sinew::GCVSpline spline(3, x, y, 0.0001);
+    sinew::functions::GCVSpline spline(3, x, y, 0.0001);
     benchmark::DoNotOptimize(spline.Calc(0.5));
   }
 }
@@ -112,7 +112,7 @@ void BM_GCVSplineCalc(benchmark::State& state) {
     x[i] = 0.01 * i;
     y[i] = 0.5 + 0.4 * std::sin(3.0 * x[i]);
   }
-  sinew::GCVSpline spline(3, x, y);
+  sinew::functions::GCVSpline spline(3, x, y);
   double t = 0.0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(spline.Calc(t));
@@ -126,7 +126,7 @@ BENCHMARK(BM_GCVSplineCalc);
 void BM_ReadStorage(benchmark::State& state) {
   const std::string file = std::string(SINEW_TEST_DATA_DIR) + "/storage/SinglePin_states.sto";
   for (auto _ : state) {
-    sinew::Storage s = sinew::ReadStorage(file);
+    sinew::io::Storage s = sinew::io::ReadStorage(file);
     benchmark::DoNotOptimize(s.values.data());
   }
 }

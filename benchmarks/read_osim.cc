@@ -26,7 +26,7 @@ std::string Slurp(const std::string& file) {
 void BM_ReadOsimRajagopal2016(benchmark::State& state) {
   const size_t bytes = Slurp(kRajagopal).size();
   for (auto _ : state) {
-    sinew::ModelSpec spec = sinew::ReadOsim(kRajagopal);
+    sinew::model::ModelSpec spec = sinew::io::ReadOsim(kRajagopal);
     benchmark::DoNotOptimize(spec);
   }
   state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * bytes));
@@ -37,7 +37,8 @@ BENCHMARK(BM_ReadOsimRajagopal2016)->Unit(benchmark::kMillisecond)->MinTime(2.0)
 void BM_ParseXmlRajagopal2016(benchmark::State& state) {
   const std::string text = Slurp(kRajagopal);
   for (auto _ : state) {
-    sinew::XmlDocument doc = sinew::XmlDocument::Parse(text, kRajagopal);
+    sinew::io::internal::XmlDocument doc =
+        sinew::io::internal::XmlDocument::Parse(text, kRajagopal);
     benchmark::DoNotOptimize(doc);
   }
   state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * text.size()));

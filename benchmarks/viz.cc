@@ -18,33 +18,33 @@ const std::string kModel = kData + "/opensim-models/Models/Rajagopal/Rajagopal20
 const std::string kGeometry = kData + "/opensim-models/Geometry";
 const std::string kMotion = kData + "/kinematics/hamner/subject02_running_ik.mot";
 
-VisualScene MeshScene(const ModelSpec& spec) {
+VisualScene MeshScene(const model::ModelSpec& spec) {
   VisualOptions options;
-  options.mode = VisMode::kMesh;
+  options.mode = VisType::kMesh;
   options.geometry_dirs = {kGeometry};
   return BuildVisualScene(spec, options);
 }
 
 // Finding and reading all 81 meshes of the model (ascii .vtp).
 void BM_BuildMeshScene(benchmark::State& state) {
-  const ModelSpec spec = ReadOsim(kModel);
+  const model::ModelSpec spec = io::ReadOsim(kModel);
   for (auto _ : state) benchmark::DoNotOptimize(MeshScene(spec));
 }
 BENCHMARK(BM_BuildMeshScene)->Unit(benchmark::kMillisecond);
 
 // Forward kinematics of every motion row into body poses.
 void BM_MotionFromTable(benchmark::State& state) {
-  const ModelSpec spec = ReadOsim(kModel);
-  const Storage table = ReadStorage(kMotion);
+  const model::ModelSpec spec = io::ReadOsim(kModel);
+  const io::Storage table = io::ReadStorage(kMotion);
   for (auto _ : state) benchmark::DoNotOptimize(MotionFromTable(spec, table, nullptr));
 }
 BENCHMARK(BM_MotionFromTable)->Unit(benchmark::kMillisecond);
 
 // The .glb with 81 meshes and 599 frames x 23 bodies of animation.
 void BM_WriteGlb(benchmark::State& state) {
-  const ModelSpec spec = ReadOsim(kModel);
+  const model::ModelSpec spec = io::ReadOsim(kModel);
   const VisualScene scene = MeshScene(spec);
-  const BodyMotion motion = MotionFromTable(spec, ReadStorage(kMotion), nullptr);
+  const BodyMotion motion = MotionFromTable(spec, io::ReadStorage(kMotion), nullptr);
   size_t bytes = 0;
   for (auto _ : state) {
     std::vector<uint8_t> glb = WriteGlb(scene, motion, spec.name);
@@ -57,16 +57,16 @@ BENCHMARK(BM_WriteGlb)->Unit(benchmark::kMillisecond);
 
 // The HTML page around that .glb (base64 of the model and of three.js).
 void BM_MakeViewerHtml(benchmark::State& state) {
-  const ModelSpec spec = ReadOsim(kModel);
-  const std::vector<uint8_t> glb =
-      WriteGlb(MeshScene(spec), MotionFromTable(spec, ReadStorage(kMotion), nullptr), spec.name);
+  const model::ModelSpec spec = io::ReadOsim(kModel);
+  const std::vector<uint8_t> glb = WriteGlb(
+      MeshScene(spec), MotionFromTable(spec, io::ReadStorage(kMotion), nullptr), spec.name);
   for (auto _ : state) benchmark::DoNotOptimize(MakeViewerHtml(glb, spec.name));
 }
 BENCHMARK(BM_MakeViewerHtml)->Unit(benchmark::kMillisecond);
 
 // One 800x800 software-rendered picture of the meshed model (2x2 supersampled).
 void BM_RenderScene(benchmark::State& state) {
-  const ModelSpec spec = ReadOsim(kModel);
+  const model::ModelSpec spec = io::ReadOsim(kModel);
   const VisualScene scene = MeshScene(spec);
   const std::vector<Transform> X_GB = DefaultPoseMotion(spec).X_GB[0];
   RenderOptions options;

@@ -8,8 +8,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
-    sinew::ModelSpec spec =
-        sinew::ReadOsimString(std::string(reinterpret_cast<const char*>(data), size), "fuzz.osim");
+    sinew::model::ModelSpec spec = sinew::io::ReadOsimString(
+        std::string(reinterpret_cast<const char*>(data), size), "fuzz.osim");
     (void)spec;
   } catch (const sinew::Error&) {
     // Rejected with a message: fine.

@@ -29,9 +29,9 @@ void PrintWarnings(const Diagnostics& warnings) {
 }
 
 void RunExport(const ExportArgs& args) {
-  const ModelSpec spec = ReadOsim(args.model);
+  const model::ModelSpec spec = io::ReadOsim(args.model);
   viz::ExportOptions options;
-  options.visual.mode = viz::ParseVisMode(args.vis);
+  options.visual.mode = viz::ParseVisType(args.vis);
   options.visual.geometry_dirs = args.geometry_dirs;
   options.max_fps = args.fps;
   viz::BodyMotion motion;
@@ -40,7 +40,7 @@ void RunExport(const ExportArgs& args) {
     motion = viz::DefaultPoseMotion(spec);
   } else {
     Diagnostics notes;
-    motion = viz::MotionFromTable(spec, ReadStorage(table_file), &notes);
+    motion = viz::MotionFromTable(spec, io::ReadStorage(table_file), &notes);
     if (!notes.empty()) {
       std::cerr << "sinew: note: " << notes.size()
                 << " coordinates or columns not matched between model and table; first: "

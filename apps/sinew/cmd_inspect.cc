@@ -15,21 +15,23 @@ namespace sinew::cli {
 namespace {
 
 // The name of a body for display: "ground" for ground.
-const std::string& BodyName(const ModelSpec& spec, int body) { return spec.bodies[body].name; }
+const std::string& BodyName(const model::ModelSpec& spec, int body) {
+  return spec.bodies[body].name;
+}
 
-const char* MotionName(MotionType type) {
+const char* MotionName(model::MotionType type) {
   switch (type) {
-    case MotionType::kRotational:
+    case model::MotionType::kRotational:
       return "rotational";
-    case MotionType::kTranslational:
+    case model::MotionType::kTranslational:
       return "translational";
-    case MotionType::kCoupled:
+    case model::MotionType::kCoupled:
       return "coupled";
   }
   return "?";
 }
 
-nlohmann::json ToJson(const ModelSpec& spec) {
+nlohmann::json ToJson(const model::ModelSpec& spec) {
   using nlohmann::json;
   json out;
   out["name"] = spec.name;
@@ -38,7 +40,7 @@ nlohmann::json ToJson(const ModelSpec& spec) {
   out["gravity"] = {spec.gravity.x(), spec.gravity.y(), spec.gravity.z()};
   json bodies = json::array();
   for (size_t i = 1; i < spec.bodies.size(); ++i) {
-    const BodySpec& b = spec.bodies[i];
+    const model::BodySpec& b = spec.bodies[i];
     bodies.push_back({{"name", b.name},
                       {"mass", b.mass},
                       {"mass_center", {b.mass_center.x(), b.mass_center.y(), b.mass_center.z()}},
@@ -47,7 +49,7 @@ nlohmann::json ToJson(const ModelSpec& spec) {
   }
   out["bodies"] = bodies;
   json joints = json::array();
-  for (const JointSpec& j : spec.joints) {
+  for (const model::JointSpec& j : spec.joints) {
     json coordinates = json::array();
     for (int c : j.coordinates) coordinates.push_back(spec.coordinates[c].name);
     joints.push_back({{"name", j.name},
@@ -61,7 +63,7 @@ nlohmann::json ToJson(const ModelSpec& spec) {
   }
   out["joints"] = joints;
   json coordinates = json::array();
-  for (const CoordinateSpec& c : spec.coordinates) {
+  for (const model::CoordinateSpec& c : spec.coordinates) {
     coordinates.push_back({{"name", c.name},
                            {"joint", c.joint >= 0 ? spec.joints[c.joint].name : ""},
                            {"motion_type", MotionName(c.motion_type)},
@@ -74,40 +76,40 @@ nlohmann::json ToJson(const ModelSpec& spec) {
   }
   out["coordinates"] = coordinates;
   json forces = json::array();
-  for (const ForceSpec& f : spec.forces) {
+  for (const model::ForceSpec& f : spec.forces) {
     json force = {{"name", f.name}, {"type", f.type}, {"applies_force", f.applies_force}};
     if (f.geometry_path) force["path_points"] = f.geometry_path->points.size();
     forces.push_back(force);
   }
   out["forces"] = forces;
   json constraints = json::array();
-  for (const ConstraintSpec& c : spec.constraints) {
+  for (const model::ConstraintSpec& c : spec.constraints) {
     constraints.push_back({{"name", c.name}, {"type", c.type}, {"enabled", c.enabled}});
   }
   out["constraints"] = constraints;
   json markers = json::array();
-  for (const MarkerSpec& m : spec.markers) {
+  for (const model::MarkerSpec& m : spec.markers) {
     markers.push_back({{"name", m.name}, {"body", BodyName(spec, m.body)}});
   }
   out["markers"] = markers;
   json contacts = json::array();
-  for (const ContactGeometrySpec& c : spec.contact_geometry) {
+  for (const model::ContactGeometrySpec& c : spec.contact_geometry) {
     contacts.push_back({{"name", c.name}, {"type", c.type}, {"body", BodyName(spec, c.body)}});
   }
   out["contact_geometry"] = contacts;
   json controllers = json::array();
-  for (const ControllerSpec& c : spec.controllers) {
+  for (const model::ControllerSpec& c : spec.controllers) {
     controllers.push_back({{"name", c.name}, {"type", c.type}});
   }
   out["controllers"] = controllers;
   json warnings = json::array();
   for (const Diagnostic& d : spec.warnings) warnings.push_back(d.Format());
   out["warnings"] = warnings;
-  out["not_simulated"] = ListNotSimulated(spec);
+  out["not_simulated"] = opensim::ListNotSimulated(spec);
   return out;
 }
 
-void PrintText(const ModelSpec& spec, std::ostream& os) {
+void PrintText(const model::ModelSpec& spec, std::ostream& os) {
   os << "model: " << spec.name << "\nfile: " << spec.file << "\nformat version: " << spec.version
      << "\ngravity: " << spec.gravity.x() << " " << spec.gravity.y() << " " << spec.gravity.z()
      << "\ncounts: " << spec.bodies.size() - 1 << " bodies, " << spec.joints.size() << " joints, "
@@ -120,7 +122,7 @@ void PrintText(const ModelSpec& spec, std::ostream& os) {
     os << "  " << spec.bodies[i].name << "  mass " << spec.bodies[i].mass << " kg\n";
   }
   os << "\njoints:\n";
-  for (const JointSpec& j : spec.joints) {
+  for (const model::JointSpec& j : spec.joints) {
     os << "  " << j.name << "  " << j.type << "  " << BodyName(spec, j.parent_body) << " -> "
        << BodyName(spec, j.child_body);
     if (!j.coordinates.empty()) {
@@ -133,29 +135,30 @@ void PrintText(const ModelSpec& spec, std::ostream& os) {
     os << "\n";
   }
   std::map<std::string, int> by_type;
-  for (const ForceSpec& f : spec.forces) ++by_type[f.type];
+  for (const model::ForceSpec& f : spec.forces) ++by_type[f.type];
   os << "\nforces by type:\n";
   for (const auto& [type, count] : by_type) os << "  " << type << ": " << count << "\n";
   os << "\nconstraints:\n";
-  for (const ConstraintSpec& c : spec.constraints) os << "  " << c.name << "  " << c.type << "\n";
+  for (const model::ConstraintSpec& c : spec.constraints)
+    os << "  " << c.name << "  " << c.type << "\n";
   os << "\nmarkers:\n";
-  for (const MarkerSpec& m : spec.markers) {
+  for (const model::MarkerSpec& m : spec.markers) {
     os << "  " << m.name << "  on " << BodyName(spec, m.body) << "\n";
   }
   os << "\nwarnings (" << spec.warnings.size() << "):\n";
   for (const Diagnostic& d : spec.warnings) os << "  " << d.Format() << "\n";
-  const std::vector<std::string> not_simulated = ListNotSimulated(spec);
+  const std::vector<std::string> not_simulated = opensim::ListNotSimulated(spec);
   os << "\nnot simulated (" << not_simulated.size() << "):\n";
   for (const std::string& line : not_simulated) os << "  " << line << "\n";
 }
 
 // What the parser builds from `spec`: its Report, or why the model cannot be simulated.
 struct BuildOutcome {
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   std::string error;  // empty when the build succeeded
 };
 
-std::unique_ptr<BuildOutcome> BuildForReport(const ModelSpec& spec) {
+std::unique_ptr<BuildOutcome> BuildForReport(const model::ModelSpec& spec) {
   auto outcome = std::make_unique<BuildOutcome>();
   try {
     engine::System system;
@@ -175,12 +178,12 @@ nlohmann::json ReportToJson(const BuildOutcome& outcome) {
     out["error"] = outcome.error;
     return out;
   }
-  const Report& report = outcome.parser.GetReport();
+  const opensim::Report& report = outcome.parser.GetReport();
   json joints = json::array();
   for (const auto& [key, info] : report.joints()) {
     joints.push_back({{"name", key},
                       {"type", info.type},
-                      {"engine_joint", JointFormName(info.form)},
+                      {"engine_joint", opensim::JointFormName(info.form)},
                       {"standin", info.standin}});
   }
   out["joints"] = joints;
@@ -218,7 +221,7 @@ void AddInspectCommand(CLI::App& app) {
   cmd->add_option("model", options->model, "The .osim file")->required();
   cmd->add_flag("--json", options->json, "Print one JSON object instead of text");
   cmd->callback([options]() {
-    const ModelSpec spec = ReadOsim(options->model);
+    const model::ModelSpec spec = io::ReadOsim(options->model);
     const std::unique_ptr<BuildOutcome> build = BuildForReport(spec);
     if (options->json) {
       nlohmann::json out = ToJson(spec);

@@ -26,8 +26,8 @@ struct Options {
 };
 
 void Run(const Options& options) {
-  const ModelSpec spec = ReadOsim(options.model);
-  const KinematicTree tree(spec);
+  const model::ModelSpec spec = io::ReadOsim(options.model);
+  const kinematics::KinematicTree tree(spec);
   for (int j : tree.loop_joints()) {
     std::cerr << "sinew: note: joint '" << spec.joints[j].name
               << "' closes a kinematic loop; it is not enforced by forward kinematics\n";
@@ -35,13 +35,13 @@ void Run(const Options& options) {
   std::vector<double> q = tree.default_q();
   std::vector<Transform> X_GB(tree.num_bodies());
 
-  Storage motion;
-  MotionColumnMap map;
+  io::Storage motion;
+  kinematics::MotionColumnMap map;
   if (!options.motion.empty()) {
-    motion = ReadStorage(options.motion);
+    motion = io::ReadStorage(options.motion);
     for (const Diagnostic& note : motion.notes)
       std::cerr << "sinew: note: " << note.Format() << "\n";
-    map = MapMotionColumns(spec, motion.labels);
+    map = kinematics::MapMotionColumns(spec, motion.labels);
     for (const std::string& label : map.unknown) {
       std::cerr << "sinew: warning: " << options.motion << ": column '" << label
                 << "' names no coordinate of the model; ignored\n";
@@ -54,23 +54,23 @@ void Run(const Options& options) {
     motion.time = {0.0};  // one row at the default pose
   }
 
-  Storage bodies, markers;
+  io::Storage bodies, markers;
   bodies.name = "Positions";
-  bodies.labels = BodyKinematicsLabels(spec);
+  bodies.labels = kinematics::BodyKinematicsLabels(spec);
   // OpenSim writes these angles in degrees under inDegrees=no; we write what they are.
   bodies.in_degrees = true;
   markers.name = "Model Marker Locations";
-  markers.labels = MarkerLocationLabels(spec);
+  markers.labels = kinematics::MarkerLocationLabels(spec);
   const size_t num_columns = motion.labels.size();
   for (int r = 0; r < motion.NumRows(); ++r) {
     if (num_columns > 0) {
-      ApplyMotionRow(spec, map,
-                     std::span<const double>(motion.values.data() + r * num_columns, num_columns),
-                     motion.in_degrees, q);
+      kinematics::ApplyMotionRow(
+          spec, map, std::span<const double>(motion.values.data() + r * num_columns, num_columns),
+          motion.in_degrees, q);
     }
-    CalcBodyPoses(tree, q, X_GB);
-    bodies.AppendRow(motion.time[r], CalcBodyKinematicsRow(spec, X_GB));
-    markers.AppendRow(motion.time[r], CalcMarkerLocationRow(spec, X_GB));
+    kinematics::CalcBodyPoses(tree, q, X_GB);
+    bodies.AppendRow(motion.time[r], kinematics::CalcBodyKinematicsRow(spec, X_GB));
+    markers.AppendRow(motion.time[r], kinematics::CalcMarkerLocationRow(spec, X_GB));
   }
 
   std::error_code ec;
@@ -79,8 +79,8 @@ void Run(const Options& options) {
     throw Error(SourceLocation{options.out, 0}, "", "cannot create directory: " + ec.message());
   }
   const std::filesystem::path dir(options.out);
-  WriteStorage(bodies, (dir / "bodies.sto").string());
-  if (!spec.markers.empty()) WriteStorage(markers, (dir / "markers.sto").string());
+  io::WriteStorage(bodies, (dir / "bodies.sto").string());
+  if (!spec.markers.empty()) io::WriteStorage(markers, (dir / "markers.sto").string());
 }
 
 }  // namespace

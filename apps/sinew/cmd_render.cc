@@ -31,9 +31,9 @@ struct RenderArgs {
 };
 
 void RunRender(const RenderArgs& args) {
-  const ModelSpec spec = ReadOsim(args.model);
+  const model::ModelSpec spec = io::ReadOsim(args.model);
   viz::VisualOptions visual;
-  visual.mode = viz::ParseVisMode(args.vis);
+  visual.mode = viz::ParseVisType(args.vis);
   visual.geometry_dirs = args.geometry_dirs;
   std::vector<Transform> X_GB;
   const std::string& table_file = args.motion.empty() ? args.states : args.motion;
@@ -41,7 +41,7 @@ void RunRender(const RenderArgs& args) {
     if (args.has_time) throw Error("--time needs --states or --motion");
     X_GB = viz::DefaultPoseMotion(spec).X_GB[0];
   } else {
-    const Storage table = ReadStorage(table_file);
+    const io::Storage table = io::ReadStorage(table_file);
     const double t = args.has_time || table.time.empty() ? args.time : table.time.front();
     X_GB = viz::PosesAtTime(spec, table, t);
   }

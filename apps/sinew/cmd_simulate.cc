@@ -53,20 +53,20 @@ struct SimulateOptions {
 // columns converted when the file is in degrees) as the coordinates' default values and speeds,
 // so that locked coordinates are held at the file's value, as OpenSim's Forward tool does.
 // Coordinates the file does not name keep their defaults. Returns the row's time.
-double ApplyInitialStates(const std::string& path, ModelSpec& spec) {
-  Storage storage = ReadStorage(path);
+double ApplyInitialStates(const std::string& path, model::ModelSpec& spec) {
+  io::Storage storage = io::ReadStorage(path);
   for (const Diagnostic& note : storage.notes) {
     std::cerr << "sinew: note: " << note.Format() << "\n";
   }
   if (storage.NumRows() == 0) throw Error({path, 0}, "", "the initial-states file has no rows");
   std::vector<std::string> rotational;
-  for (const CoordinateSpec& c : spec.coordinates) {
-    if (c.motion_type == MotionType::kRotational) rotational.push_back(c.name);
+  for (const model::CoordinateSpec& c : spec.coordinates) {
+    if (c.motion_type == model::MotionType::kRotational) rotational.push_back(c.name);
   }
-  ConvertDegreesToRadians(storage, rotational);
-  for (CoordinateSpec& c : spec.coordinates) {
-    const int value = FindCoordinateColumn(storage, c.name, CoordinateColumnKind::kValue);
-    const int speed = FindCoordinateColumn(storage, c.name, CoordinateColumnKind::kSpeed);
+  io::ConvertDegreesToRadians(storage, rotational);
+  for (model::CoordinateSpec& c : spec.coordinates) {
+    const int value = io::FindCoordinateColumn(storage, c.name, io::CoordinateColumnKind::kValue);
+    const int speed = io::FindCoordinateColumn(storage, c.name, io::CoordinateColumnKind::kSpeed);
     if (value >= 0) c.default_value = storage.Value(0, value);
     if (speed >= 0) c.default_speed_value = storage.Value(0, speed);
   }
@@ -84,10 +84,10 @@ void ShowProgress(double fraction, double t) {
 void RunSimulate(const SimulateOptions& options) {
   if (!(options.duration >= 0.0)) throw Error("--duration must be >= 0");
   if (!(options.report_interval > 0.0)) throw Error("--report-interval must be > 0");
-  ModelSpec spec = ReadOsim(options.model);
+  model::ModelSpec spec = io::ReadOsim(options.model);
   double t0 = 0.0;
   if (!options.initial_states.empty()) t0 = ApplyInitialStates(options.initial_states, spec);
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   parser.ActivateActuators(options.activate_actuators);
   parser.SetControlsFile(options.controls);
   parser.SetStrict(options.strict);
@@ -98,7 +98,7 @@ void RunSimulate(const SimulateOptions& options) {
     auto [name, function] = ParseExcitationOption(option);
     parser.SetExcitationFunction(name, std::move(function));
   }
-  const Report& report = parser.GetReport();
+  const opensim::Report& report = parser.GetReport();
   if (!options.quiet && (!report.not_simulated().empty() || !report.warnings().empty())) {
     std::cerr << "sinew: note: " << report.not_simulated().size() << " element(s) not simulated, "
               << report.warnings().size() << " warning(s); `sinew inspect` lists them\n";
@@ -110,9 +110,9 @@ void RunSimulate(const SimulateOptions& options) {
   const auto integrator = engine::MakeIntegrator(options.integrator, *system, settings);
   std::filesystem::create_directories(options.out);
 
-  Storage states, bodies;
+  io::Storage states, bodies;
   states.name = "states";
-  for (const CoordinateSpec& c : spec.coordinates) {
+  for (const model::CoordinateSpec& c : spec.coordinates) {
     const std::string base = "/jointset/" + spec.joints[c.joint].name + "/" + c.name;
     states.labels.push_back(base + "/value");
     states.labels.push_back(base + "/speed");
@@ -120,7 +120,7 @@ void RunSimulate(const SimulateOptions& options) {
   // bodies.sto as `sinew kinematics` writes it (OpenSim BodyKinematics positions; the angles
   // are degrees, and the header says so).
   bodies.name = "Positions";
-  bodies.labels = BodyKinematicsLabels(spec);
+  bodies.labels = kinematics::BodyKinematicsLabels(spec);
   bodies.in_degrees = true;
   // A fresh system holds the spec's bodies in spec order (stand-ins add none).
   std::vector<Transform> X_GB(system->num_bodies());
@@ -133,7 +133,7 @@ void RunSimulate(const SimulateOptions& options) {
     }
     states.AppendRow(state.t, row);
     for (int b = 0; b < system->num_bodies(); ++b) X_GB[b] = engine::PoseOf(state.bodies[b]);
-    bodies.AppendRow(state.t, CalcBodyKinematicsRow(spec, X_GB));
+    bodies.AppendRow(state.t, kinematics::CalcBodyKinematicsRow(spec, X_GB));
     if (!options.export_file.empty()) {
       motion.times.push_back(state.t);
       motion.X_GB.push_back(X_GB);
@@ -151,11 +151,11 @@ void RunSimulate(const SimulateOptions& options) {
     if (progress) ShowProgress(static_cast<double>(i) / n, state.t);
   }
   if (progress) std::fprintf(stderr, "\n");
-  WriteStorage(states, options.out + "/states.sto");
-  WriteStorage(bodies, options.out + "/bodies.sto");
+  io::WriteStorage(states, options.out + "/states.sto");
+  io::WriteStorage(bodies, options.out + "/bodies.sto");
   if (!options.export_file.empty()) {
     viz::ExportOptions export_options;
-    export_options.visual.mode = viz::ParseVisMode(options.vis);
+    export_options.visual.mode = viz::ParseVisType(options.vis);
     export_options.visual.geometry_dirs = options.geometry_dirs;
     for (const Diagnostic& w :
          viz::ExportAnimation(spec, motion, options.export_file, export_options)) {

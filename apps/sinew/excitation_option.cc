@@ -36,7 +36,7 @@ std::vector<double> Numbers(const std::string& option, const std::string& args, 
 
 }  // namespace
 
-std::pair<std::string, FunctionPtr> ParseExcitationOption(const std::string& option) {
+std::pair<std::string, functions::FunctionPtr> ParseExcitationOption(const std::string& option) {
   const size_t equals = option.find('=');
   const size_t colon = option.find(':', equals == std::string::npos ? 0 : equals);
   if (equals == std::string::npos || equals == 0 || colon == std::string::npos) {
@@ -48,15 +48,15 @@ std::pair<std::string, FunctionPtr> ParseExcitationOption(const std::string& opt
   const std::string kind = option.substr(equals + 1, colon - equals - 1);
   const std::string args = option.substr(colon + 1);
   if (kind == "constant") {
-    return {name, std::make_shared<Constant>(Numbers(option, args, 1)[0])};
+    return {name, std::make_shared<functions::Constant>(Numbers(option, args, 1)[0])};
   }
   if (kind == "ramp") {
     const std::vector<double> v = Numbers(option, args, 2);
-    return {name, std::make_shared<Ramp>(v[0], v[1])};
+    return {name, std::make_shared<functions::Ramp>(v[0], v[1])};
   }
   if (kind == "sine") {
     const std::vector<double> v = Numbers(option, args, 3);
-    return {name, std::make_shared<SineExcitation>(v[0], v[1], v[2])};
+    return {name, std::make_shared<functions::SineExcitation>(v[0], v[1], v[2])};
   }
   throw Error("--excitation " + option + ": unknown kind '" + kind + "' (constant, ramp or sine)");
 }

@@ -93,22 +93,22 @@ TEST_F(ExportTest, RajagopalGlbHasEveryMeshAndTheMotion) {
   EXPECT_EQ(static_cast<int>(doc["meshes"].size()), n_meshes);
   EXPECT_EQ(static_cast<int>(doc["nodes"].size()), 1 + n_bodies + n_meshes);
   // Every mesh node names the .vtp it came from, and the triangles match that file's.
-  const std::vector<std::string> dirs = MeshSearchDirs(kModel, {kGeometry});
+  const std::vector<std::string> dirs = io::MeshSearchDirs(kModel, {kGeometry});
   int mesh_nodes = 0;
   for (const auto& node : doc["nodes"]) {
     if (!node.contains("mesh")) continue;
     ++mesh_nodes;
     const std::string source = node["extras"]["source"];
     ASSERT_EQ(fs::path(source).extension(), ".vtp") << source;
-    std::optional<std::string> path = FindMeshFile(source, dirs);
+    std::optional<std::string> path = io::FindMeshFile(source, dirs);
     ASSERT_TRUE(path) << source;
     const auto& primitive = doc["meshes"][node["mesh"].get<int>()]["primitives"][0];
     const int indices = doc["accessors"][primitive["indices"].get<int>()]["count"];
-    EXPECT_EQ(static_cast<size_t>(indices), 3 * ReadMesh(*path).triangles.size()) << source;
+    EXPECT_EQ(static_cast<size_t>(indices), 3 * io::ReadMesh(*path).triangles.size()) << source;
   }
   EXPECT_EQ(mesh_nodes, n_meshes);
   // The animation has one key per motion row, times from 0.
-  const Storage motion = ReadStorage(kMotion);
+  const io::Storage motion = io::ReadStorage(kMotion);
   ASSERT_EQ(doc["animations"].size(), 1u);
   const auto& anim = doc["animations"][0];
   EXPECT_EQ(static_cast<int>(anim["channels"].size()), 2 * n_bodies);
@@ -203,12 +203,12 @@ TEST_P(StatesExportTest, StatesFileDrivesThePendulumAsHandComputed) {
                        "/opensim-org/opensim-core/Applications/Analyze/tests/resources/"
                        "SinglePin_states.sto";
   if (opensim4_labels) {
-    Storage relabelled = ReadStorage(states);
+    io::Storage relabelled = io::ReadStorage(states);
     for (std::string& label : relabelled.labels) {
       label = "/jointset/pin1/r1_z/" + std::string(label == "r1_z" ? "value" : "speed");
     }
     states = (dir_ / "states.sto").string();
-    WriteStorage(relabelled, states);
+    io::WriteStorage(relabelled, states);
   }
   const fs::path glb_file = dir_ / "pin.glb";
   CliRun run = Sinew(
@@ -216,7 +216,7 @@ TEST_P(StatesExportTest, StatesFileDrivesThePendulumAsHandComputed) {
       dir_);
   ASSERT_EQ(run.code, 0) << run.err;
   viz::testing::ParsedGlb glb = viz::testing::ParseGlb(viz::ReadFileBytes(glb_file.string()));
-  const Storage table = ReadStorage(states);
+  const io::Storage table = io::ReadStorage(states);
   const int q_column = table.FindColumn(opensim4_labels ? "/jointset/pin1/r1_z/value" : "r1_z");
   ASSERT_GE(q_column, 0);
   const auto& doc = glb.doc;

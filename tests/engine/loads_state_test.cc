@@ -177,7 +177,7 @@ TEST(LoadsTest, GeneralizedForcesOnDirectAndParameterizedJointsAgree) {
     for (int k = 0; k < 2; ++k) {
       System system(Vec3(0, -9.81, 0));
       const int b = system.AddBody(body);
-      std::shared_ptr<const JointModel> model;
+      std::shared_ptr<const kinematics::JointModel> model;
       std::vector<CoordinateDesc> coordinates{testing::Coord("a", 0.3, 0.5),
                                               testing::Coord("b", -0.2, 0.7)};
       if (form == JointForm::kBall) {

@@ -25,7 +25,7 @@ using testing::RevoluteModel;
 using testing::RollingModel;
 
 // f(t) = a sin(w t) with derivatives.
-class SineFunction final : public Function {
+class SineFunction final : public functions::Function {
  public:
   SineFunction(double a, double w) : a_(a), w_(w) {}
   std::string TypeName() const override { return "Sine"; }

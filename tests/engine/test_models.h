@@ -17,7 +17,7 @@
 namespace sinew::engine::testing {
 
 /// Rotation q about a fixed unit axis of F (a pin about `axis`).
-class RevoluteModel final : public JointModel {
+class RevoluteModel final : public kinematics::JointModel {
  public:
   explicit RevoluteModel(const Vec3& axis) : axis_(axis.normalized()) {}
   int nq() const override { return 1; }
@@ -47,7 +47,7 @@ class RevoluteModel final : public JointModel {
 
 /// Rotation q about F's z axis with M's origin translated by a*q along F's x (a wheel that
 /// rolls: a coupled rotation and translation, like a CustomJoint with a linear coupling).
-class RollingModel final : public JointModel {
+class RollingModel final : public kinematics::JointModel {
  public:
   explicit RollingModel(double a) : a_(a) {}
   int nq() const override { return 1; }
@@ -77,7 +77,7 @@ class RollingModel final : public JointModel {
 };
 
 /// Translation q along F's x axis.
-class SliderModel final : public JointModel {
+class SliderModel final : public kinematics::JointModel {
  public:
   int nq() const override { return 1; }
   Transform CalcX_FM(std::span<const double> q) const override {
@@ -102,7 +102,7 @@ class SliderModel final : public JointModel {
 };
 
 /// OpenSim's BallJoint: q are body-fixed X-Y-Z angles, u = w_FM expressed in F.
-class BallModel final : public JointModel {
+class BallModel final : public kinematics::JointModel {
  public:
   int nq() const override { return 3; }
   Transform CalcX_FM(std::span<const double> q) const override {
@@ -141,7 +141,7 @@ class BallModel final : public JointModel {
 };
 
 /// OpenSim's UniversalJoint: rotation q0 about F's x, then q1 about the new y (qdot = u).
-class UniversalModel final : public JointModel {
+class UniversalModel final : public kinematics::JointModel {
  public:
   int nq() const override { return 2; }
   Transform CalcX_FM(std::span<const double> q) const override {
@@ -177,7 +177,7 @@ class UniversalModel final : public JointModel {
 
 /// OpenSim's FreeJoint: body-fixed X-Y-Z angles and a translation along F's axes; speeds are
 /// w_FM and v_FM, both in F.
-class FreeModel final : public JointModel {
+class FreeModel final : public kinematics::JointModel {
  public:
   int nq() const override { return 6; }
   Transform CalcX_FM(std::span<const double> q) const override {

@@ -12,7 +12,7 @@ namespace sinew {
 namespace {
 
 TEST(ExcitationsTest, RampIsZeroBeforeStartThenLinear) {
-  Ramp ramp(0.5, 2.0);
+  functions::Ramp ramp(0.5, 2.0);
   EXPECT_EQ(ramp.Calc(0.0), 0.0);
   EXPECT_EQ(ramp.Calc(0.5), 0.0);
   EXPECT_EQ(ramp.Calc(0.75), 0.5);
@@ -22,7 +22,7 @@ TEST(ExcitationsTest, RampIsZeroBeforeStartThenLinear) {
 }
 
 TEST(ExcitationsTest, SineExcitationUsesHertz) {
-  SineExcitation u(0.5, 2.0, 0.25, 0.5);
+  functions::SineExcitation u(0.5, 2.0, 0.25, 0.5);
   const double omega = 4.0 * std::numbers::pi;
   EXPECT_DOUBLE_EQ(u.Calc(0.1), 0.5 * std::sin(omega * 0.1 + 0.25) + 0.5);
   EXPECT_DOUBLE_EQ(u.CalcDerivative(0.1, 1), 0.5 * omega * std::cos(omega * 0.1 + 0.25));
@@ -32,7 +32,7 @@ TEST(ExcitationsTest, SineExcitationUsesHertz) {
 }
 
 TEST(ExcitationsTest, CallableFunctionDifferentiatesNumerically) {
-  CallableFunction f([](double x) { return std::exp(0.5 * x) * std::sin(x); });
+  functions::CallableFunction f([](double x) { return std::exp(0.5 * x) * std::sin(x); });
   for (double x : {-2.0, 0.0, 0.7, 5.0}) {
     const double e = std::exp(0.5 * x);
     const double d1 = e * (0.5 * std::sin(x) + std::cos(x));
@@ -42,12 +42,12 @@ TEST(ExcitationsTest, CallableFunctionDifferentiatesNumerically) {
     EXPECT_NEAR(f.CalcDerivative(x, 1), d1, 1e-9 * std::max(1.0, e));
     EXPECT_NEAR(f.CalcDerivative(x, 2), d2, 1e-6 * std::max(1.0, e));
   }
-  EXPECT_THROW(CallableFunction(nullptr), Error);
+  EXPECT_THROW(functions::CallableFunction(nullptr), Error);
 }
 
 TEST(ExcitationsTest, OpenSimTypesAreBuiltFromCpp) {
-  FunctionPtr u = std::make_shared<SimmSpline>(std::vector<double>{0.0, 0.5, 1.0},
-                                               std::vector<double>{0.0, 1.0, 0.0});
+  functions::FunctionPtr u = std::make_shared<functions::SimmSpline>(
+      std::vector<double>{0.0, 0.5, 1.0}, std::vector<double>{0.0, 1.0, 0.0});
   EXPECT_DOUBLE_EQ(u->Calc(0.5), 1.0);
 }
 

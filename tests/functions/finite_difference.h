@@ -10,7 +10,8 @@
 namespace sinew::testing {
 
 /// d/dx of f's derivative of `order` - 1 at x, by a central difference with step h.
-inline double CentralDifference(const Function& f, double x, int order, double h = 1e-6) {
+inline double CentralDifference(const functions::Function& f, double x, int order,
+                                double h = 1e-6) {
   return (f.CalcDerivative(x + h, order - 1) - f.CalcDerivative(x - h, order - 1)) / (2.0 * h);
 }
 

@@ -26,7 +26,7 @@ namespace {
 using testing::CentralDifference;
 
 // Checks first and second derivatives of a smooth f against central differences at `points`.
-void ExpectDerivativesMatchFiniteDifferences(const Function& f,
+void ExpectDerivativesMatchFiniteDifferences(const functions::Function& f,
                                              std::initializer_list<double> points,
                                              double tolerance) {
   for (double x : points) {
@@ -37,7 +37,7 @@ void ExpectDerivativesMatchFiniteDifferences(const Function& f,
 }
 
 TEST(FunctionTypesTest, Constant) {
-  Constant f(0.0027499999999999998);
+  functions::Constant f(0.0027499999999999998);
   EXPECT_EQ(f.Calc(-3.0), 0.0027499999999999998);
   EXPECT_EQ(f.CalcDerivative(1.0, 1), 0.0);
   EXPECT_EQ(f.CalcDerivative(1.0, 2), 0.0);
@@ -45,16 +45,16 @@ TEST(FunctionTypesTest, Constant) {
 }
 
 TEST(FunctionTypesTest, LinearFunctionIsSlopeThenIntercept) {
-  LinearFunction f(-0.333333, 1.0);
+  functions::LinearFunction f(-0.333333, 1.0);
   EXPECT_DOUBLE_EQ(f.Calc(3.0), 1.0 - 0.999999);
   EXPECT_EQ(f.CalcDerivative(3.0, 1), -0.333333);
   EXPECT_EQ(f.CalcDerivative(3.0, 2), 0.0);
-  EXPECT_EQ(LinearFunction().Calc(0.7), 0.7);  // default: identity
+  EXPECT_EQ(functions::LinearFunction().Calc(0.7), 0.7);  // default: identity
 }
 
 TEST(FunctionTypesTest, PolynomialCoefficientsAreInDecreasingPowers) {
   // From RajagopalLaiUhlrich2023.osim: 0.0252 x^3 - 0.1695 x^2 + 0.3695 x - 4.43e-8.
-  PolynomialFunction f(
+  functions::PolynomialFunction f(
       {0.025165762727423002, -0.16948005139054001, 0.36949934868824902, -4.4303583088363053e-08});
   const double x = 1.2;
   const double a = 0.025165762727423002, b = -0.16948005139054001, c = 0.36949934868824902,
@@ -64,22 +64,22 @@ TEST(FunctionTypesTest, PolynomialCoefficientsAreInDecreasingPowers) {
   EXPECT_NEAR(f.CalcDerivative(x, 2), 6 * a * x + 2 * b, 1e-16);
   EXPECT_NEAR(f.CalcDerivative(x, 3), 6 * a, 1e-16);
   EXPECT_EQ(f.CalcDerivative(x, 4), 0.0);
-  EXPECT_EQ(PolynomialFunction({}).Calc(2.0), 0.0);
+  EXPECT_EQ(functions::PolynomialFunction({}).Calc(2.0), 0.0);
   ExpectDerivativesMatchFiniteDifferences(f, {-1.0, 0.0, 0.5, 2.0}, 1e-8);
 }
 
 TEST(FunctionTypesTest, MultiplierScalesValueAndDerivatives) {
-  auto inner = std::make_shared<PolynomialFunction>(std::vector<double>{1.0, -2.0, 0.5});
-  MultiplierFunction f(inner, 0.99999644921000319);
+  auto inner = std::make_shared<functions::PolynomialFunction>(std::vector<double>{1.0, -2.0, 0.5});
+  functions::MultiplierFunction f(inner, 0.99999644921000319);
   for (int order = 0; order <= 2; ++order) {
     EXPECT_EQ(f.CalcDerivative(0.3, order),
               0.99999644921000319 * inner->CalcDerivative(0.3, order));
   }
-  EXPECT_THROW(MultiplierFunction(nullptr, 1.0), Error);
+  EXPECT_THROW(functions::MultiplierFunction(nullptr, 1.0), Error);
 }
 
 TEST(FunctionTypesTest, PiecewiseLinearExtrapolatesWithTheEndSlopes) {
-  PiecewiseLinearFunction f({-1.0, 0.0, 2.0}, {0.0, 1.0, 0.0});
+  functions::PiecewiseLinearFunction f({-1.0, 0.0, 2.0}, {0.0, 1.0, 0.0});
   EXPECT_EQ(f.Calc(-1.0), 0.0);
   EXPECT_EQ(f.Calc(-0.5), 0.5);
   EXPECT_EQ(f.Calc(1.0), 0.5);
@@ -91,7 +91,7 @@ TEST(FunctionTypesTest, PiecewiseLinearExtrapolatesWithTheEndSlopes) {
   EXPECT_EQ(f.CalcDerivative(0.5, 2), 0.0);
   // Exactly on an interior knot the slope is that of the segment OpenSim's bisection lands on:
   // for five knots and x = x[3] the first probe k = 2 stops, giving the LEFT segment's slope.
-  PiecewiseLinearFunction g({0.0, 1.0, 2.0, 3.0, 4.0}, {0.0, 1.0, 3.0, 6.0, 10.0});
+  functions::PiecewiseLinearFunction g({0.0, 1.0, 2.0, 3.0, 4.0}, {0.0, 1.0, 3.0, 6.0, 10.0});
   EXPECT_EQ(g.CalcDerivative(3.0, 1), 3.0);
   EXPECT_EQ(g.CalcDerivative(3.0 + 1e-12, 1), 4.0);
   EXPECT_EQ(g.Calc(3.0), 6.0);
@@ -99,7 +99,7 @@ TEST(FunctionTypesTest, PiecewiseLinearExtrapolatesWithTheEndSlopes) {
 }
 
 TEST(FunctionTypesTest, PiecewiseConstantHoldsEachValueUntilTheNextKnot) {
-  PiecewiseConstantFunction f({0.0, 1.0, 2.0, 3.0}, {10.0, 20.0, 30.0, 40.0});
+  functions::PiecewiseConstantFunction f({0.0, 1.0, 2.0, 3.0}, {10.0, 20.0, 30.0, 40.0});
   EXPECT_EQ(f.Calc(-1.0), 10.0);
   EXPECT_EQ(f.Calc(0.0), 10.0);
   EXPECT_EQ(f.Calc(0.5), 10.0);
@@ -114,15 +114,16 @@ TEST(FunctionTypesTest, PiecewiseConstantHoldsEachValueUntilTheNextKnot) {
   EXPECT_EQ(f.Calc(2.0), 30.0);
   // With five knots, v = x[3] = 3: the first probe k = 2 already has x[2] <= 3 <= x[3], so the
   // value is y[2], the LEFT side of the knot.
-  PiecewiseConstantFunction five({0.0, 1.0, 2.0, 3.0, 4.0}, {10.0, 20.0, 30.0, 40.0, 50.0});
+  functions::PiecewiseConstantFunction five({0.0, 1.0, 2.0, 3.0, 4.0},
+                                            {10.0, 20.0, 30.0, 40.0, 50.0});
   EXPECT_EQ(five.Calc(3.0), 30.0);
   EXPECT_EQ(five.Calc(3.0 + 1e-12), 40.0);
   EXPECT_EQ(f.CalcDerivative(0.5, 1), 0.0);
-  EXPECT_EQ(PiecewiseConstantFunction({1.0}, {5.0}).Calc(0.0), 5.0);
+  EXPECT_EQ(functions::PiecewiseConstantFunction({1.0}, {5.0}).Calc(0.0), 5.0);
 }
 
 TEST(FunctionTypesTest, StepFunctionIsSimbodysQuinticStep) {
-  StepFunction f(1.0, 3.0, 2.0, 6.0);
+  functions::StepFunction f(1.0, 3.0, 2.0, 6.0);
   EXPECT_EQ(f.Calc(0.0), 2.0);
   EXPECT_EQ(f.Calc(1.0), 2.0);
   EXPECT_EQ(f.Calc(3.0), 6.0);
@@ -137,15 +138,15 @@ TEST(FunctionTypesTest, StepFunctionIsSimbodysQuinticStep) {
   EXPECT_EQ(f.CalcDerivative(0.5, 1), 0.0);
   ExpectDerivativesMatchFiniteDifferences(f, {1.1, 1.5, 2.2, 2.9}, 1e-7);
   // Backwards transition and the OpenSim defaults 0.99 -> 1.01, 0 -> 1.
-  StepFunction backwards(3.0, 1.0, 2.0, 6.0);
+  functions::StepFunction backwards(3.0, 1.0, 2.0, 6.0);
   EXPECT_EQ(backwards.Calc(3.5), 2.0);
   EXPECT_EQ(backwards.Calc(0.5), 6.0);
   EXPECT_DOUBLE_EQ(backwards.Calc(2.5), 2.0 + 4.0 * 106.0 / 1024.0);
-  EXPECT_THROW(StepFunction(1.0, 1.0, 0.0, 1.0), Error);
+  EXPECT_THROW(functions::StepFunction(1.0, 1.0, 0.0, 1.0), Error);
 }
 
 TEST(FunctionTypesTest, Sine) {
-  Sine f(2.0, 3.0, 0.5, 1.0);
+  functions::Sine f(2.0, 3.0, 0.5, 1.0);
   EXPECT_DOUBLE_EQ(f.Calc(0.2), 2.0 * std::sin(0.6 + 0.5) + 1.0);
   EXPECT_DOUBLE_EQ(f.CalcDerivative(0.2, 1), 6.0 * std::cos(1.1));
   EXPECT_DOUBLE_EQ(f.CalcDerivative(0.2, 2), -18.0 * std::sin(1.1));
@@ -156,7 +157,7 @@ TEST(FunctionTypesTest, MultivariatePolynomialUsesOpenSimsCoefficientOrder) {
   // dimension 3, order 2: terms (0,0,0) (0,0,1) (0,0,2) (0,1,0) (0,1,1) (0,2,0) (1,0,0) (1,0,1)
   // (1,1,0) (2,0,0) over (X, Y, Z).
   std::vector<double> c = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
-  MultivariatePolynomialFunction f(c, 3, 2);
+  functions::MultivariatePolynomialFunction f(c, 3, 2);
   ASSERT_EQ(f.NumArguments(), 3);
   const std::array<double, 3> p = {0.5, -1.5, 2.0};
   const double X = p[0], Y = p[1], Z = p[2];
@@ -170,9 +171,9 @@ TEST(FunctionTypesTest, MultivariatePolynomialUsesOpenSimsCoefficientOrder) {
   const std::array<int, 2> d_zz = {2, 2};
   EXPECT_NEAR(f.CalcPartialN(p, d_zz), 6.0, 1e-13);
   // The corpus example: dimension 3, order 1, all ones -> 1 + Z + Y + X.
-  MultivariatePolynomialFunction linear({1, 1, 1, 1}, 3, 1);
+  functions::MultivariatePolynomialFunction linear({1, 1, 1, 1}, 3, 1);
   EXPECT_NEAR(linear.CalcN(p), 1 + X + Y + Z, 1e-15);
-  EXPECT_THROW(MultivariatePolynomialFunction({1, 2, 3}, 3, 1), Error);
+  EXPECT_THROW(functions::MultivariatePolynomialFunction({1, 2, 3}, 3, 1), Error);
   EXPECT_THROW(f.Calc(1.0), Error);  // three arguments needed
 }
 

@@ -49,7 +49,7 @@ const std::vector<double> kY = {0.573621,   0.44629,   0.319214,   0.183898,  0.
                                 -0.0085371, -0.040781, -0.0774591, -0.133466, -0.219896};
 
 TEST(GCVSplineTest, QuinticInterpolatesAndMatchesAnIndependentForm) {
-  GCVSpline spline(3, kX, kY);
+  functions::GCVSpline spline(3, kX, kY);
   RadialReference reference(3, kX, kY);
   for (size_t i = 0; i < kX.size(); ++i) EXPECT_NEAR(spline.Calc(kX[i]), kY[i], 1e-14);
   // Inside and outside the knots (outside: the natural quadratic continuation).
@@ -60,10 +60,10 @@ TEST(GCVSplineTest, QuinticInterpolatesAndMatchesAnIndependentForm) {
 
 TEST(GCVSplineTest, CubicCaseIsTheNaturalCubicSpline) {
   // half_order 2: the natural cubic spline, linear outside the knots.
-  GCVSpline spline(2, {0.0, 1.0, 2.0, 3.0}, {0.0, 1.0, 0.0, 0.0});
+  functions::GCVSpline spline(2, {0.0, 1.0, 2.0, 3.0}, {0.0, 1.0, 0.0, 0.0});
   RadialReference reference(2, {0.0, 1.0, 2.0, 3.0}, {0.0, 1.0, 0.0, 0.0});
   for (double t = -1.0; t <= 4.0; t += 0.05) EXPECT_NEAR(spline.Calc(t), reference.Calc(t), 1e-13);
-  GCVSpline three(2, {0.0, 1.0, 2.0, 3.0}, {0.0, 1.0, 2.0, 3.0});
+  functions::GCVSpline three(2, {0.0, 1.0, 2.0, 3.0}, {0.0, 1.0, 2.0, 3.0});
   EXPECT_NEAR(three.Calc(5.0), 5.0, 1e-13);  // reproduces lines, extrapolates linearly
   EXPECT_NEAR(three.CalcDerivative(-1.0, 1), 1.0, 1e-13);
   EXPECT_EQ(three.CalcDerivative(-1.0, 2), 0.0);
@@ -73,14 +73,14 @@ TEST(GCVSplineTest, HandComputedNaturalCubic) {
   // Natural cubic through (0,0) (1,1) (2,0) (3,1): by symmetry-free hand solve of
   // 4 M1 + M2 = 6 (0 - 1 - 1) = -12, M1 + 4 M2 = 6 (1 + 1) = 12 -> M1 = -4, M2 = 4.
   // On [0, 1]: s = t + (M1 / 6)(t^3 - t) -> s(0.5) = 0.5 - (2/3)(0.125 - 0.5) = 0.75.
-  GCVSpline spline(2, {0.0, 1.0, 2.0, 3.0}, {0.0, 1.0, 0.0, 1.0});
+  functions::GCVSpline spline(2, {0.0, 1.0, 2.0, 3.0}, {0.0, 1.0, 0.0, 1.0});
   EXPECT_NEAR(spline.Calc(0.5), 0.75, 1e-14);
   EXPECT_NEAR(spline.CalcDerivative(1.0, 2), -4.0, 1e-12);
   EXPECT_NEAR(spline.CalcDerivative(2.0, 2), 4.0, 1e-12);
 }
 
 TEST(GCVSplineTest, QuinticIsSmoothNaturalAndReproducesQuadratics) {
-  GCVSpline spline(3, kX, kY);
+  functions::GCVSpline spline(3, kX, kY);
   for (double t = 0.013; t < 1.0; t += 0.0487) {
     EXPECT_NEAR(spline.CalcDerivative(t, 1), testing::CentralDifference(spline, t, 1), 1e-8 * 10);
     EXPECT_NEAR(spline.CalcDerivative(t, 2), testing::CentralDifference(spline, t, 2), 1e-5);
@@ -93,7 +93,7 @@ TEST(GCVSplineTest, QuinticIsSmoothNaturalAndReproducesQuadratics) {
   // Quadratics are in the natural quintic space: reproduced everywhere.
   std::vector<double> y;
   for (double t : kX) y.push_back(2.0 * t * t - t + 0.5);
-  GCVSpline quadratic(3, kX, y);
+  functions::GCVSpline quadratic(3, kX, y);
   for (double t = -0.5; t <= 1.5; t += 0.1) {
     EXPECT_NEAR(quadratic.Calc(t), 2.0 * t * t - t + 0.5, 1e-12) << t;
   }
@@ -101,7 +101,7 @@ TEST(GCVSplineTest, QuinticIsSmoothNaturalAndReproducesQuadratics) {
 
 // Penalized least squares of a spline: sum (y - s(x_i))^2 + p * integral (s^(m))^2 for m = 1, 2
 // (s' or s'' from the spline; exact 2-point Gauss per interval; zero outside the knots).
-double SmoothingObjective(const GCVSpline& s, const std::vector<double>& x,
+double SmoothingObjective(const functions::GCVSpline& s, const std::vector<double>& x,
                           const std::vector<double>& y, double p) {
   const int m = s.half_order();
   double sum = 0.0;
@@ -140,21 +140,23 @@ TEST(GCVSplineTest, SmoothingSplineMinimizesThePenalizedLeastSquares) {
   NoisyData d = MakeNoisyData(30);
   for (int m : {1, 2}) {
     const double p = m == 1 ? 1e-3 : 1e-5;
-    GCVSpline best = GCVSpline::WithSmoothingParameter(m, d.x, d.y, p);
+    functions::GCVSpline best = functions::GCVSpline::WithSmoothingParameter(m, d.x, d.y, p);
     const double objective = SmoothingObjective(best, d.x, d.y, p);
     std::vector<double> perturbed = d.y;
     perturbed[7] += 0.01;
-    for (const GCVSpline& other :
-         {GCVSpline::WithSmoothingParameter(m, d.x, d.y, 0.5 * p),
-          GCVSpline::WithSmoothingParameter(m, d.x, d.y, 2.0 * p), GCVSpline(m, d.x, d.y),
-          GCVSpline::WithSmoothingParameter(m, d.x, perturbed, p)}) {
+    for (const functions::GCVSpline& other :
+         {functions::GCVSpline::WithSmoothingParameter(m, d.x, d.y, 0.5 * p),
+          functions::GCVSpline::WithSmoothingParameter(m, d.x, d.y, 2.0 * p),
+          functions::GCVSpline(m, d.x, d.y),
+          functions::GCVSpline::WithSmoothingParameter(m, d.x, perturbed, p)}) {
       EXPECT_LT(objective, SmoothingObjective(other, d.x, d.y, p)) << m;
     }
     // Stationarity: a small change of the fit changes the objective only to second order.
-    EXPECT_NEAR(objective,
-                SmoothingObjective(GCVSpline::WithSmoothingParameter(m, d.x, d.y, p * (1 + 1e-6)),
-                                   d.x, d.y, p),
-                1e-9 * objective);
+    EXPECT_NEAR(
+        objective,
+        SmoothingObjective(
+            functions::GCVSpline::WithSmoothingParameter(m, d.x, d.y, p * (1 + 1e-6)), d.x, d.y, p),
+        1e-9 * objective);
   }
 }
 
@@ -174,7 +176,7 @@ TEST(GCVSplineTest, SmoothingMatchesTheRadialFormAndLimits) {
     rhs(i) = d.y[i];
   }
   Eigen::VectorXd c = a.fullPivLu().solve(rhs);
-  GCVSpline spline = GCVSpline::WithSmoothingParameter(m, d.x, d.y, p);
+  functions::GCVSpline spline = functions::GCVSpline::WithSmoothingParameter(m, d.x, d.y, p);
   for (double t = -0.1; t <= 0.4; t += 0.013) {
     double expected = 0.0;
     for (int j = 0; j < n; ++j) expected += c(j) * std::pow(std::abs(t - d.x[j]), 5);
@@ -182,7 +184,7 @@ TEST(GCVSplineTest, SmoothingMatchesTheRadialFormAndLimits) {
     EXPECT_NEAR(spline.Calc(t), expected, 1e-9) << t;
   }
   // A very stiff cubic smoothing spline is the least-squares line.
-  GCVSpline stiff = GCVSpline::WithSmoothingParameter(2, d.x, d.y, 1e6);
+  functions::GCVSpline stiff = functions::GCVSpline::WithSmoothingParameter(2, d.x, d.y, 1e6);
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (int i = 0; i < n; ++i) {
     sx += d.x[i], sy += d.y[i], sxx += d.x[i] * d.x[i], sxy += d.x[i] * d.y[i];
@@ -195,13 +197,15 @@ TEST(GCVSplineTest, SmoothingMatchesTheRadialFormAndLimits) {
 TEST(GCVSplineTest, ErrorVarianceAndGcvChooseTheCriterionMinimum) {
   NoisyData d = MakeNoisyData(40);
   for (double error_variance : {d.variance, -1.0}) {
-    GCVSpline fit(3, d.x, d.y, error_variance);
+    functions::GCVSpline fit(3, d.x, d.y, error_variance);
     const double p = fit.smoothing_parameter();
     ASSERT_GT(p, 0.0);
-    const double at_p = GCVSpline::CalcSmoothingCriterion(3, d.x, d.y, error_variance, p);
+    const double at_p =
+        functions::GCVSpline::CalcSmoothingCriterion(3, d.x, d.y, error_variance, p);
     for (double factor : {0.9, 1.1, 0.5, 2.0}) {
-      EXPECT_LE(at_p,
-                GCVSpline::CalcSmoothingCriterion(3, d.x, d.y, error_variance, p * factor) + 1e-15)
+      EXPECT_LE(at_p, functions::GCVSpline::CalcSmoothingCriterion(3, d.x, d.y, error_variance,
+                                                                   p * factor) +
+                          1e-15)
           << error_variance << " " << factor;
     }
     // The smoothed curve is closer to the truth than the noisy samples are.
@@ -212,15 +216,15 @@ TEST(GCVSplineTest, ErrorVarianceAndGcvChooseTheCriterionMinimum) {
     }
     EXPECT_LT(fit_error, 0.5 * data_error) << error_variance;
   }
-  EXPECT_EQ(GCVSpline(3, d.x, d.y, 0.0).smoothing_parameter(), 0.0);
+  EXPECT_EQ(functions::GCVSpline(3, d.x, d.y, 0.0).smoothing_parameter(), 0.0);
 }
 
 TEST(GCVSplineTest, RejectsInvalidInput) {
-  EXPECT_THROW(GCVSpline(0, kX, kY), Error);
-  EXPECT_THROW(GCVSpline(5, kX, kY), Error);
-  EXPECT_THROW(GCVSpline(3, {0, 1, 2, 3, 4}, {0, 1, 2, 3, 4}), Error);  // needs 6 points
-  EXPECT_THROW(GCVSpline(1, {0, 1, 1}, {0, 1, 2}), Error);              // not increasing
-  EXPECT_THROW(GCVSpline::WithSmoothingParameter(3, kX, kY, -1.0), Error);
+  EXPECT_THROW(functions::GCVSpline(0, kX, kY), Error);
+  EXPECT_THROW(functions::GCVSpline(5, kX, kY), Error);
+  EXPECT_THROW(functions::GCVSpline(3, {0, 1, 2, 3, 4}, {0, 1, 2, 3, 4}), Error);  // needs 6 points
+  EXPECT_THROW(functions::GCVSpline(1, {0, 1, 1}, {0, 1, 2}), Error);              // not increasing
+  EXPECT_THROW(functions::GCVSpline::WithSmoothingParameter(3, kX, kY, -1.0), Error);
 }
 
 }  // namespace

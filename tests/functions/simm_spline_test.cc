@@ -99,7 +99,7 @@ const std::vector<double> kKneeY = {0.0082733,  0.01068662, 0.02020416, 0.022352
                                     0.03583779, 0.03625744, 0.03616478, 0.03549306};
 
 TEST(SimmSplineTest, MatchesAnIndependentFmmSolution) {
-  SimmSpline spline(kKneeX, kKneeY);
+  functions::SimmSpline spline(kKneeX, kKneeY);
   FmmReference reference(kKneeX, kKneeY);
   double max_difference_from_natural = 0.0;
   for (int i = 0; i <= 400; ++i) {
@@ -121,7 +121,7 @@ TEST(SimmSplineTest, HandComputedFiveKnotCase) {
   //   interior rows sigma_{i-1} + 4 sigma_i + sigma_{i+1} = delta_i - delta_{i-1} = 1, -2, 1.
   // By symmetry sigma = (a, b, c, b, a): b - a = -1/2, a + 4b + c = 1, 2b + 4c = -2
   //   -> b = 2/9, a = 13/18, c = -11/18.
-  SimmSpline spline({0, 1, 2, 3, 4}, {0, 0, 1, 0, 0});
+  functions::SimmSpline spline({0, 1, 2, 3, 4}, {0, 0, 1, 0, 0});
   const double sigma[5] = {13.0 / 18.0, 2.0 / 9.0, -11.0 / 18.0, 2.0 / 9.0, 13.0 / 18.0};
   for (int i = 0; i < 5; ++i) {
     EXPECT_NEAR(spline.CalcDerivative(i, 2), 6.0 * sigma[i], 1e-14) << i;
@@ -140,24 +140,25 @@ TEST(SimmSplineTest, ReproducesCubicsExactly) {
   std::vector<double> x = {-1.0, -0.2, 0.5, 0.6, 1.7, 2.0, 3.1};
   std::vector<double> y;
   for (double t : x) y.push_back(cubic(t));
-  SimmSpline spline(x, y);
+  functions::SimmSpline spline(x, y);
   for (double t = -1.0; t <= 3.1; t += 0.01) {
     EXPECT_NEAR(spline.Calc(t), cubic(t), 1e-13) << t;
     EXPECT_NEAR(spline.CalcDerivative(t, 1), 0.9 * t * t - 2.4 * t + 0.5, 1e-12) << t;
     EXPECT_NEAR(spline.CalcDerivative(t, 2), 1.8 * t - 2.4, 1e-11) << t;
   }
   // With exactly four knots the spline is the cubic through them.
-  SimmSpline four({0.0, 1.0, 2.5, 3.0}, {cubic(0.0), cubic(1.0), cubic(2.5), cubic(3.0)});
+  functions::SimmSpline four({0.0, 1.0, 2.5, 3.0},
+                             {cubic(0.0), cubic(1.0), cubic(2.5), cubic(3.0)});
   EXPECT_NEAR(four.Calc(1.7), cubic(1.7), 1e-13);
 }
 
 TEST(SimmSplineTest, ThreeKnotsGiveTheParabolaAndTwoKnotsTheLine) {
-  SimmSpline three({-1.0, 0.5, 2.0}, {1.0, 0.25, 4.0});  // y = x^2, unequal spacing
+  functions::SimmSpline three({-1.0, 0.5, 2.0}, {1.0, 0.25, 4.0});  // y = x^2, unequal spacing
   for (double t = -1.0; t <= 2.0; t += 0.125) {
     EXPECT_NEAR(three.Calc(t), t * t, 1e-14) << t;
     EXPECT_NEAR(three.CalcDerivative(t, 2), 2.0, 1e-13) << t;
   }
-  SimmSpline two({0.0, 3.14159}, {-0.122564, -0.123775});
+  functions::SimmSpline two({0.0, 3.14159}, {-0.122564, -0.123775});
   const double slope = (-0.123775 + 0.122564) / 3.14159;
   EXPECT_NEAR(two.Calc(1.0), -0.122564 + slope, 1e-16);
   EXPECT_EQ(two.CalcDerivative(1.0, 1), slope);
@@ -165,7 +166,7 @@ TEST(SimmSplineTest, ThreeKnotsGiveTheParabolaAndTwoKnotsTheLine) {
 }
 
 TEST(SimmSplineTest, ExtrapolatesLinearlyWithTheEndSlopes) {
-  SimmSpline spline(kKneeX, kKneeY);
+  functions::SimmSpline spline(kKneeX, kKneeY);
   const double slope0 = spline.CalcDerivative(kKneeX.front(), 1);
   const double slope1 = spline.CalcDerivative(kKneeX.back(), 1);
   EXPECT_NEAR(spline.Calc(-2.5), kKneeY.front() + (-2.5 - kKneeX.front()) * slope0, 1e-16);
@@ -177,7 +178,7 @@ TEST(SimmSplineTest, ExtrapolatesLinearlyWithTheEndSlopes) {
 }
 
 TEST(SimmSplineTest, ContinuousValueSlopeAndCurvatureAtKnots) {
-  SimmSpline spline(kKneeX, kKneeY);
+  functions::SimmSpline spline(kKneeX, kKneeY);
   const auto& x = spline.x();
   for (size_t k = 1; k + 1 < x.size(); ++k) {
     // The polynomial of interval k-1 evaluated at its right end vs interval k at its left end.
@@ -190,7 +191,7 @@ TEST(SimmSplineTest, ContinuousValueSlopeAndCurvatureAtKnots) {
 }
 
 TEST(SimmSplineTest, DerivativesMatchFiniteDifferences) {
-  SimmSpline spline(kKneeX, kKneeY);
+  functions::SimmSpline spline(kKneeX, kKneeY);
   for (double t = -2.05; t < 0.15; t += 0.0371) {
     // h = 1e-6: truncation ~h^2 * f''' ~ 1e-12, rounding ~1e-16 / 1e-6 ~ 1e-10 of the slope scale.
     EXPECT_NEAR(spline.CalcDerivative(t, 1), testing::CentralDifference(spline, t, 1), 1e-9);
@@ -199,13 +200,13 @@ TEST(SimmSplineTest, DerivativesMatchFiniteDifferences) {
 }
 
 TEST(SimmSplineTest, RejectsBadKnots) {
-  EXPECT_THROW(SimmSpline({0.0}, {1.0}), Error);
-  EXPECT_THROW(SimmSpline({0.0, 1.0}, {1.0}), Error);
-  EXPECT_THROW(SimmSpline({0.0, 2.0, 1.0}, {1.0, 2.0, 3.0}), Error);
-  EXPECT_THROW(SimmSpline({0.0, NAN}, {1.0, 2.0}), Error);
-  EXPECT_THROW(SimmSpline({0.0, 1.0}, {1.0, 2.0}).CalcDerivative(0.5, 3), Error);
+  EXPECT_THROW(functions::SimmSpline({0.0}, {1.0}), Error);
+  EXPECT_THROW(functions::SimmSpline({0.0, 1.0}, {1.0}), Error);
+  EXPECT_THROW(functions::SimmSpline({0.0, 2.0, 1.0}, {1.0, 2.0, 3.0}), Error);
+  EXPECT_THROW(functions::SimmSpline({0.0, NAN}, {1.0, 2.0}), Error);
+  EXPECT_THROW(functions::SimmSpline({0.0, 1.0}, {1.0, 2.0}).CalcDerivative(0.5, 3), Error);
   // Duplicate knots do not divide by zero (OpenSim raises spacings to 1e-7).
-  SimmSpline duplicate({0.0, 1.0, 1.0, 2.0}, {0.0, 1.0, 1.0, 0.0});
+  functions::SimmSpline duplicate({0.0, 1.0, 1.0, 2.0}, {0.0, 1.0, 1.0, 0.0});
   EXPECT_TRUE(std::isfinite(duplicate.Calc(0.5)));
 }
 

@@ -21,24 +21,24 @@ TEST(ObjTest, ReadsQuadsNormalsAndNegativeIndices) {
   const std::string obj =
       "# a unit square\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 2\nvt 0 0\n"
       "f 1//1 2//1 3//1 4//1\nf -4/1/1 -2/1/1 -1/1/1\n";
-  TriangleMesh mesh = ParseObj(obj, "square.obj");
+  io::TriangleMesh mesh = io::ParseObj(obj, "square.obj");
   ASSERT_EQ(mesh.triangles.size(), 3u);
   EXPECT_EQ(mesh.positions.size(), 4u);  // corners shared by (position, normal)
-  for (const Vec3f& n : mesh.normals) EXPECT_TRUE(n.isApprox(Vec3f(0, 0, 1)));
+  for (const io::Vec3f& n : mesh.normals) EXPECT_TRUE(n.isApprox(io::Vec3f(0, 0, 1)));
 }
 
 TEST(ObjTest, ComputesNormalsWhenAbsentAndReportsBadLines) {
-  TriangleMesh mesh = ParseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "t.obj");
+  io::TriangleMesh mesh = io::ParseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "t.obj");
   ASSERT_EQ(mesh.normals.size(), 3u);
-  EXPECT_TRUE(mesh.normals[0].isApprox(Vec3f(0, 0, 1)));
+  EXPECT_TRUE(mesh.normals[0].isApprox(io::Vec3f(0, 0, 1)));
   try {
-    ParseObj("v 0 0 0\nv 1 0 0\n\nf 1 2 9\n", "bad.obj");
+    io::ParseObj("v 0 0 0\nv 1 0 0\n\nf 1 2 9\n", "bad.obj");
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_EQ(e.where().line, 4);
     EXPECT_NE(std::string(e.what()).find("bad.obj:4:"), std::string::npos);
   }
-  EXPECT_THROW(ParseObj("v 0 zero 0\n", "bad.obj"), Error);
+  EXPECT_THROW(io::ParseObj("v 0 zero 0\n", "bad.obj"), Error);
 }
 
 std::string BinaryStl(const std::vector<std::array<float, 9>>& triangles) {
@@ -58,16 +58,16 @@ std::string BinaryStl(const std::vector<std::array<float, 9>>& triangles) {
 TEST(StlTest, BinaryAndAsciiGiveTheSameWeldedMesh) {
   const std::vector<std::array<float, 9>> tris = {{0, 0, 0, 1, 0, 0, 1, 1, 0},
                                                   {0, 0, 0, 1, 1, 0, 0, 1, 0}};
-  TriangleMesh binary = ParseStl(BinaryStl(tris), "square.stl");
+  io::TriangleMesh binary = io::ParseStl(BinaryStl(tris), "square.stl");
   const std::string ascii =
       "solid square\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n"
       "   vertex 1 1 0\n  endloop\n endfacet\n facet normal 0 0 1\n  outer loop\n"
       "   vertex 0 0 0\n   vertex 1 1 0\n   vertex 0 1 0\n  endloop\n endfacet\nendsolid square\n";
-  TriangleMesh text = ParseStl(ascii, "square.stl");
-  for (const TriangleMesh* mesh : {&binary, &text}) {
+  io::TriangleMesh text = io::ParseStl(ascii, "square.stl");
+  for (const io::TriangleMesh* mesh : {&binary, &text}) {
     EXPECT_EQ(mesh->positions.size(), 4u);  // the shared diagonal is welded
     EXPECT_EQ(mesh->triangles.size(), 2u);
-    for (const Vec3f& n : mesh->normals) EXPECT_TRUE(n.isApprox(Vec3f(0, 0, 1)));
+    for (const io::Vec3f& n : mesh->normals) EXPECT_TRUE(n.isApprox(io::Vec3f(0, 0, 1)));
   }
   EXPECT_EQ(binary.triangles, text.triangles);
 }
@@ -75,9 +75,9 @@ TEST(StlTest, BinaryAndAsciiGiveTheSameWeldedMesh) {
 TEST(StlTest, TruncatedOrMalformedFilesThrow) {
   std::string bytes = BinaryStl({{0, 0, 0, 1, 0, 0, 1, 1, 0}});
   bytes[0] = 'x';  // not "solid": must be binary
-  EXPECT_THROW(ParseStl(bytes.substr(0, bytes.size() - 10), "cut.stl"), Error);
+  EXPECT_THROW(io::ParseStl(bytes.substr(0, bytes.size() - 10), "cut.stl"), Error);
   try {
-    ParseStl("solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 x 0\n", "a.stl");
+    io::ParseStl("solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 x 0\n", "a.stl");
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_EQ(e.where().line, 5);
@@ -88,24 +88,24 @@ TEST(MeshFileTest, SearchesModelFolderThenGeometryThenExtraDirs) {
   namespace fs = std::filesystem;
   const std::string model = kDataDir + "/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
   const std::string extra = kDataDir + "/opensim-models/Geometry";
-  std::vector<std::string> dirs = MeshSearchDirs(model, {extra});
+  std::vector<std::string> dirs = io::MeshSearchDirs(model, {extra});
   ASSERT_GE(dirs.size(), 3u);
   EXPECT_EQ(fs::path(dirs[1]).filename(), "Geometry");
   // r_pelvis.vtp exists in both the model's Geometry folder and the extra folder (with
   // different contents): the model's own copy wins, as in OpenSim.
-  auto found = FindMeshFile("r_pelvis.vtp", dirs);
+  auto found = io::FindMeshFile("r_pelvis.vtp", dirs);
   ASSERT_TRUE(found);
   EXPECT_EQ(fs::path(*found).parent_path(), fs::path(dirs[1]));
-  auto patella = FindMeshFile("r_patella.vtp", dirs);
+  auto patella = io::FindMeshFile("r_patella.vtp", dirs);
   ASSERT_TRUE(patella);
   EXPECT_EQ(fs::path(*patella).parent_path(), fs::path(extra));
-  EXPECT_FALSE(FindMeshFile("nowhere.vtp", dirs));
-  EXPECT_EQ(ReadMesh(*patella).triangles.size(), 140u);
-  EXPECT_THROW(ReadMesh(kDataDir + "/ATTRIBUTION.md"), Error);
+  EXPECT_FALSE(io::FindMeshFile("nowhere.vtp", dirs));
+  EXPECT_EQ(io::ReadMesh(*patella).triangles.size(), 140u);
+  EXPECT_THROW(io::ReadMesh(kDataDir + "/ATTRIBUTION.md"), Error);
   // The environment variable adds folders after the ones given.
-  setenv(kGeometryPathVariable, "/a:/b", 1);
-  dirs = MeshSearchDirs(model, {extra});
-  unsetenv(kGeometryPathVariable);
+  setenv(io::kGeometryPathVariable, "/a:/b", 1);
+  dirs = io::MeshSearchDirs(model, {extra});
+  unsetenv(io::kGeometryPathVariable);
   ASSERT_EQ(dirs.size(), 5u);
   EXPECT_EQ(dirs[3], "/a");
   EXPECT_EQ(dirs[4], "/b");

@@ -21,15 +21,16 @@ TEST(Base64Test, MatchesRfc4648Vectors) {
   const std::pair<std::string, std::string> cases[] = {
       {"", ""}, {"f", "Zg=="}, {"fo", "Zm8="}, {"foo", "Zm9v"}, {"foobar", "Zm9vYmFy"}};
   for (const auto& [plain, coded] : cases) {
-    EXPECT_EQ(EncodeBase64(reinterpret_cast<const uint8_t*>(plain.data()), plain.size()), coded);
-    auto back = DecodeBase64(coded);
+    EXPECT_EQ(io::EncodeBase64(reinterpret_cast<const uint8_t*>(plain.data()), plain.size()),
+              coded);
+    auto back = io::DecodeBase64(coded);
     ASSERT_TRUE(back);
     EXPECT_EQ(std::string(back->begin(), back->end()), plain);
   }
-  EXPECT_FALSE(DecodeBase64("Zm9v!"));
-  EXPECT_FALSE(DecodeBase64("Zm9"));
+  EXPECT_FALSE(io::DecodeBase64("Zm9v!"));
+  EXPECT_FALSE(io::DecodeBase64("Zm9"));
   // Two padded blocks back to back (VTK's separate header and data encodings).
-  auto joined = DecodeBase64("Zg==Zm8=");
+  auto joined = io::DecodeBase64("Zg==Zm8=");
   ASSERT_TRUE(joined);
   EXPECT_EQ(std::string(joined->begin(), joined->end()), "ffo");
 }
@@ -38,14 +39,14 @@ TEST(VtpTest, ReadsRealOpenSimMesh) {
   // r_patella.vtp: 72 points, 80 polygons that fan into 140 triangles (counted with a Python
   // script).
   const std::string file = kDataDir + "/opensim-models/Geometry/r_patella.vtp";
-  TriangleMesh mesh = ReadVtp(file);
+  io::TriangleMesh mesh = io::ReadVtp(file);
   EXPECT_EQ(mesh.positions.size(), 72u);
   EXPECT_EQ(mesh.triangles.size(), 140u);
   ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
-  for (const Vec3f& n : mesh.normals) EXPECT_NEAR(n.norm(), 1.0f, 1e-5f);
+  for (const io::Vec3f& n : mesh.normals) EXPECT_NEAR(n.norm(), 1.0f, 1e-5f);
   // A patella is a few centimetres across: the file is in metres.
-  Vec3f lo = mesh.positions[0], hi = mesh.positions[0];
-  for (const Vec3f& p : mesh.positions) {
+  io::Vec3f lo = mesh.positions[0], hi = mesh.positions[0];
+  for (const io::Vec3f& p : mesh.positions) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
@@ -107,7 +108,8 @@ std::string EncodeArray(const std::vector<uint8_t>& data, const Variant& v) {
     AppendHeader(header, data.size() - (n_blocks - 1) * v.block_size, v);
     for (uint64_t s : sizes) AppendHeader(header, s, v);
   }
-  return EncodeBase64(header.data(), header.size()) + EncodeBase64(body.data(), body.size());
+  return io::EncodeBase64(header.data(), header.size()) +
+         io::EncodeBase64(body.data(), body.size());
 }
 
 std::string MakeVtp(const Variant& v) {
@@ -133,20 +135,20 @@ std::string MakeVtp(const Variant& v) {
   return xml;
 }
 
-void ExpectUnitSquare(const TriangleMesh& mesh) {
+void ExpectUnitSquare(const io::TriangleMesh& mesh) {
   ASSERT_EQ(mesh.positions.size(), 4u);
-  EXPECT_EQ(mesh.positions[2], Vec3f(1, 1, 0));
+  EXPECT_EQ(mesh.positions[2], io::Vec3f(1, 1, 0));
   // Quad fan (0,1,2),(0,2,3); strip (0,1,3),(3,1,2) with alternating winding fixed.
   const std::vector<std::array<uint32_t, 3>> expected = {
       {0, 1, 2}, {0, 2, 3}, {0, 1, 3}, {3, 1, 2}};
   EXPECT_EQ(mesh.triangles, expected);
   for (const auto& t : mesh.triangles) {
-    const Vec3f n = (mesh.positions[t[1]] - mesh.positions[t[0]])
-                        .cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
+    const io::Vec3f n = (mesh.positions[t[1]] - mesh.positions[t[0]])
+                            .cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
     EXPECT_GT(n.z(), 0) << "every triangle faces +z";
   }
   ASSERT_EQ(mesh.normals.size(), 4u);
-  EXPECT_TRUE(mesh.normals[0].isApprox(Vec3f(0, 0, 1)));
+  EXPECT_TRUE(mesh.normals[0].isApprox(io::Vec3f(0, 0, 1)));
 }
 
 TEST(VtpTest, ReadsEveryBinaryVariantAlike) {
@@ -155,12 +157,12 @@ TEST(VtpTest, ReadsEveryBinaryVariantAlike) {
       for (bool big_endian : {false, true}) {
         Variant v{zlib, header64, big_endian};
         SCOPED_TRACE(MakeVtp(v));
-        ExpectUnitSquare(ParseVtp(MakeVtp(v), "square.vtp"));
+        ExpectUnitSquare(io::ParseVtp(MakeVtp(v), "square.vtp"));
       }
     }
   }
   // Several zlib blocks, the last one shorter.
-  ExpectUnitSquare(ParseVtp(MakeVtp({true, false, false, 20}), "square.vtp"));
+  ExpectUnitSquare(io::ParseVtp(MakeVtp({true, false, false, 20}), "square.vtp"));
 }
 
 TEST(VtpTest, AsciiWithoutNormalsGetsComputedNormals) {
@@ -171,16 +173,16 @@ TEST(VtpTest, AsciiWithoutNormalsGetsComputedNormals) {
 <DataArray type="Int32" Name="connectivity" format="ascii">0 1 2</DataArray>
 <DataArray type="Int32" Name="offsets" format="ascii">3</DataArray>
 </Polys></Piece></PolyData></VTKFile>)";
-  TriangleMesh mesh = ParseVtp(xml, "tri.vtp");
+  io::TriangleMesh mesh = io::ParseVtp(xml, "tri.vtp");
   ASSERT_EQ(mesh.triangles.size(), 1u);
   ASSERT_EQ(mesh.normals.size(), 3u);
-  EXPECT_TRUE(mesh.normals[1].isApprox(Vec3f(0, 0, 1)));
+  EXPECT_TRUE(mesh.normals[1].isApprox(io::Vec3f(0, 0, 1)));
 }
 
 // Parses `xml` and returns the error message (empty when none was thrown).
 std::string ErrorOf(const std::string& xml) {
   try {
-    ParseVtp(xml, "bad.vtp");
+    io::ParseVtp(xml, "bad.vtp");
   } catch (const Error& e) {
     return e.what();
   }
@@ -220,7 +222,8 @@ TEST(VtpTest, BadInputGivesErrorsWithFileAndLine) {
                               head.substr(head.find('\n')) +
                               "<DataArray type=\"Float32\" NumberOfComponents=\"3\" "
                               "format=\"binary\">" +
-                              EncodeBase64(header.data(), header.size()) + "</DataArray>\n" + tail;
+                              io::EncodeBase64(header.data(), header.size()) + "</DataArray>\n" +
+                              tail;
   EXPECT_NE(ErrorOf(corrupt).find("does not inflate"), std::string::npos) << ErrorOf(corrupt);
   // A header that claims a block far larger than zlib can expand its bytes to.
   std::vector<uint8_t> huge;
@@ -230,7 +233,7 @@ TEST(VtpTest, BadInputGivesErrorsWithFileAndLine) {
   AppendHeader(huge, 4, v);
   huge.insert(huge.end(), {1, 2, 3, 4});
   const std::string claim = corrupt.substr(0, corrupt.find("format=\"binary\">") + 16) +
-                            EncodeBase64(huge.data(), huge.size()) + "</DataArray>\n" + tail;
+                            io::EncodeBase64(huge.data(), huge.size()) + "</DataArray>\n" + tail;
   EXPECT_NE(ErrorOf(claim).find("impossible block size"), std::string::npos) << ErrorOf(claim);
   // NaN is not a cell offset.
   const std::string nan_offsets =
@@ -239,7 +242,7 @@ TEST(VtpTest, BadInputGivesErrorsWithFileAndLine) {
       "2</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">nan"
       "</DataArray></Polys>\n</Piece></PolyData></VTKFile>";
   EXPECT_NE(ErrorOf(nan_offsets).find("offsets"), std::string::npos) << ErrorOf(nan_offsets);
-  EXPECT_THROW(ReadVtp(kDataDir + "/no_such_mesh.vtp"), Error);
+  EXPECT_THROW(io::ReadVtp(kDataDir + "/no_such_mesh.vtp"), Error);
 }
 
 }  // namespace

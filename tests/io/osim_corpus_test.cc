@@ -31,7 +31,7 @@ TEST(OsimCorpus, EveryFileLoadsOrFailsPrecisely) {
     const std::string name = entry.path().filename().string();
     const auto broken = kBroken.find(name);
     try {
-      const ModelSpec spec = ReadOsim(entry.path().string());
+      const model::ModelSpec spec = io::ReadOsim(entry.path().string());
       EXPECT_TRUE(broken == kBroken.end()) << name << " loaded but is listed as broken";
       EXPECT_GE(spec.bodies.size(), 1u) << name;
       ++loaded;
@@ -75,7 +75,7 @@ TEST(OsimCorpus, DerivedMotionTypesMatchTheOnesOpenSimWrote) {
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (text.find("<motion_type>") == std::string::npos) continue;
     if (kBroken.count(entry.path().filename().string())) continue;
-    const ModelSpec written = ReadOsimString(text, entry.path().string());
+    const model::ModelSpec written = io::ReadOsimString(text, entry.path().string());
     // Blank out every <motion_type>...</motion_type> (same length: lines do not move).
     for (size_t at = text.find("<motion_type>"); at != std::string::npos;
          at = text.find("<motion_type>", at)) {
@@ -84,11 +84,11 @@ TEST(OsimCorpus, DerivedMotionTypesMatchTheOnesOpenSimWrote) {
         if (text[i] != '\n') text[i] = ' ';
       }
     }
-    const ModelSpec derived = ReadOsimString(text, entry.path().string());
+    const model::ModelSpec derived = io::ReadOsimString(text, entry.path().string());
     ASSERT_EQ(written.coordinates.size(), derived.coordinates.size());
     for (size_t i = 0; i < written.coordinates.size(); ++i) {
-      if (derived.coordinates[i].motion_type == MotionType::kCoupled &&
-          written.coordinates[i].motion_type == MotionType::kRotational) {
+      if (derived.coordinates[i].motion_type == model::MotionType::kCoupled &&
+          written.coordinates[i].motion_type == model::MotionType::kRotational) {
         ++spline_rotations;
         continue;
       }

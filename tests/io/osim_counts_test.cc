@@ -63,7 +63,7 @@ class OsimCounts : public ::testing::TestWithParam<Expected> {};
 
 TEST_P(OsimCounts, MatchIndependentCount) {
   const Expected& e = GetParam();
-  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) + "/" + e.file);
+  const model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) + "/" + e.file);
   EXPECT_EQ(spec.version, e.version);
   EXPECT_EQ(static_cast<int>(spec.bodies.size()) - 1, e.bodies);  // ground is bodies[0]
   EXPECT_EQ(static_cast<int>(spec.joints.size()), e.joints);
@@ -114,10 +114,10 @@ TEST(OsimJointBodies, MatchIndependentResolution) {
   ASSERT_EQ(by_file.size(), std::size(kExpected));
   int compared = 0;
   for (const auto& [file, rows] : by_file) {
-    const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) + "/" + file);
+    const model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) + "/" + file);
     ASSERT_EQ(spec.joints.size(), rows.size()) << file;
     for (size_t i = 0; i < rows.size(); ++i) {
-      const JointSpec& j = spec.joints[i];
+      const model::JointSpec& j = spec.joints[i];
       if (rows[i].joint != "-") {  // "-": an unnamed 3.x joint
         EXPECT_EQ(j.name, rows[i].joint) << file;
       }
@@ -150,9 +150,9 @@ TEST(OsimJointFrames, MatchIndependentComputation) {
   }
   int compared = 0;
   for (const auto& [file, joints] : expected) {
-    const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) + "/" + file);
+    const model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) + "/" + file);
     std::map<std::string, size_t> seen;
-    for (const JointSpec& j : spec.joints) {
+    for (const model::JointSpec& j : spec.joints) {
       const std::string key = j.element.name.empty() ? "-" : j.name;
       const auto it = joints.find(key);
       if (it == joints.end()) continue;  // on a station-defined frame

@@ -65,7 +65,7 @@ const std::string kGoodJoints = Pin("j1", "/ground", "/bodyset/upper", "q1") +
 Error ExpectError(const std::string& text, int line, const std::string& component,
                   const std::string& fragment) {
   try {
-    ReadOsimString(text, "bad.osim");
+    io::ReadOsimString(text, "bad.osim");
   } catch (const Error& e) {
     EXPECT_EQ(e.where().file, "bad.osim") << e.what();
     if (line > 0) {
@@ -88,7 +88,7 @@ int LineOf(const std::string& text, const std::string& needle) {
 }
 
 TEST(OsimErrors, GoodModelLoads) {
-  const ModelSpec spec = ReadOsimString(Model40(kGoodJoints), "good.osim");
+  const model::ModelSpec spec = io::ReadOsimString(Model40(kGoodJoints), "good.osim");
   ASSERT_EQ(spec.bodies.size(), 3u);
   ASSERT_EQ(spec.joints.size(), 2u);
   EXPECT_EQ(spec.joints[1].parent_body, 1);
@@ -149,7 +149,7 @@ TEST(OsimErrors, AmbiguousCoordinateReferenceWarnsAndTakesTheFirst) {
 <socket_coordinate>q</socket_coordinate><range>0 1</range></ConditionalPathPoint>
 </objects></PathPointSet></GeometryPath></PathSpring></objects></ForceSet>)";
   text.insert(text.find("  </Model>"), forces);
-  const ModelSpec spec = ReadOsimString(text, "ambiguous.osim");
+  const model::ModelSpec spec = io::ReadOsimString(text, "ambiguous.osim");
   EXPECT_EQ(spec.forces[0].geometry_path->points[0].coordinate, 0);
   bool warned = false;
   for (const Diagnostic& d : spec.warnings) {
@@ -262,8 +262,8 @@ TEST(OsimErrors, LongChainOfOffsetFramesFailsWithoutExhaustingTheStack) {
   short_text.replace(short_text.find("/f5000"), 6, "/f100");
   const size_t from = short_text.find("<PhysicalOffsetFrame name=\"f101\"");
   short_text.erase(from, short_text.find("</components>") - from);
-  const ModelSpec spec = ReadOsimString(short_text, "chain.osim");
-  EXPECT_EQ(spec.joints[0].parent_body, kGroundIndex);
+  const model::ModelSpec spec = io::ReadOsimString(short_text, "chain.osim");
+  EXPECT_EQ(spec.joints[0].parent_body, model::kGroundIndex);
   EXPECT_EQ(spec.frames.size(), 100u);
 }
 
@@ -285,7 +285,7 @@ TEST(OsimErrors, ManyElementsReadInLinearTime) {
                                  Pin("j_lower", "/bodyset/upper", "/bodyset/lower", "ql") + joints,
                              bodies);
   text.insert(text.find("  </Model>"), "<MarkerSet><objects>" + markers + "</objects></MarkerSet>");
-  const ModelSpec spec = ReadOsimString(text, "long.osim");
+  const model::ModelSpec spec = io::ReadOsimString(text, "long.osim");
   EXPECT_EQ(spec.bodies.size(), static_cast<size_t>(n + 3));
   EXPECT_EQ(spec.markers.back().body, n + 2);
 }
@@ -307,14 +307,14 @@ TEST(OsimErrors, PathWrapRangeMustBeWholeNumbers) {
   ExpectError(text, LineOf(text, "<range>1 1e300"), "/forceset/s/geometrypath/w",
               "<range> expects two whole numbers");
   text.replace(text.find("1 1e300"), 7, "1 2");
-  const ModelSpec spec = ReadOsimString(text, "wrap.osim");
+  const model::ModelSpec spec = io::ReadOsimString(text, "wrap.osim");
   EXPECT_EQ(spec.forces[0].geometry_path->wraps[0].range, (std::array<int, 2>{1, 2}));
   EXPECT_EQ(spec.bodies[1].wrap_objects[0].name, "cyl");
 }
 
 TEST(OsimErrors, MissingFileOrDirectory) {
-  EXPECT_THROW(ReadOsim("/nonexistent/model.osim"), Error);
-  EXPECT_THROW(ReadOsim(testing::TempDir()), Error);
+  EXPECT_THROW(io::ReadOsim("/nonexistent/model.osim"), Error);
+  EXPECT_THROW(io::ReadOsim(testing::TempDir()), Error);
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ std::string Model(const std::string& before_body, const std::string& mass_text) 
 }
 
 TEST(OsimLenient, DoubleColonInElementNames) {
-  const ModelSpec spec = ReadOsimString(
+  const model::ModelSpec spec = io::ReadOsimString(
       Model("<ForceSet><objects><HuntCrossleyForce name=\"c\"><HuntCrossleyForce::"
             "ContactParametersSet><objects/></HuntCrossleyForce::ContactParametersSet>"
             "</HuntCrossleyForce></objects></ForceSet>",
@@ -44,14 +44,15 @@ TEST(OsimLenient, DoubleColonInElementNames) {
 }
 
 TEST(OsimLenient, BareAmpersand) {
-  const ModelSpec spec = ReadOsimString(Model("<credits>Smith & Jones</credits>", "3"), "amp.osim");
+  const model::ModelSpec spec =
+      io::ReadOsimString(Model("<credits>Smith & Jones</credits>", "3"), "amp.osim");
   EXPECT_EQ(spec.bodies[1].mass, 3.0);
   EXPECT_EQ(spec.bodies[1].where.line, 6);
 }
 
 TEST(OsimLenient, NonUtf8Byte) {
-  const ModelSpec spec =
-      ReadOsimString(Model("<credits>M\xFCller \xE9t\xE9</credits>", "4"), "latin1.osim");
+  const model::ModelSpec spec =
+      io::ReadOsimString(Model("<credits>M\xFCller \xE9t\xE9</credits>", "4"), "latin1.osim");
   EXPECT_EQ(spec.bodies[1].mass, 4.0);
 }
 
@@ -60,21 +61,22 @@ TEST(OsimLenient, NestedCommentsKeepLinesAndValues) {
   // and a nested comment inside a value leaves only the number.
   const std::string text =
       Model("<!-- outer <!-- inner --> still outer -->", "<!-- a <!-- b --> c --> 5.5");
-  const ModelSpec spec = ReadOsimString(text, "nested.osim");
+  const model::ModelSpec spec = io::ReadOsimString(text, "nested.osim");
   EXPECT_EQ(spec.bodies[1].mass, 5.5);
   EXPECT_EQ(spec.bodies[1].where.line, 6);
 }
 
 TEST(OsimLenient, UnbalancedNestedCommentEndsAtFirstClose) {
   // Never balanced: the comment ends at its first "-->" (as TinyXML, OpenSim's parser, does).
-  const ModelSpec spec = ReadOsimString(Model("<!-- a <!-- b -->", "6"), "unbalanced.osim");
+  const model::ModelSpec spec =
+      io::ReadOsimString(Model("<!-- a <!-- b -->", "6"), "unbalanced.osim");
   EXPECT_EQ(spec.bodies[1].mass, 6.0);
 }
 
 TEST(OsimLenient, LineNumbersSurviveMultiLineNestedComment) {
   const std::string text = Model("<!-- x\n<!-- y\n-->\n-->", "oops");
   try {
-    ReadOsimString(text, "lines.osim");
+    io::ReadOsimString(text, "lines.osim");
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_EQ(e.where().line, 10);  // mass moved down by the 3 newlines of the comment
@@ -87,36 +89,36 @@ TEST(OsimLenient, ManyUnbalancedNestsStayLinear) {
   // (A rescan to the end of the text per comment would take minutes here.)
   std::string comments;
   for (int i = 0; i < 100000; ++i) comments += "<!-- <!-- -->";
-  const ModelSpec spec = ReadOsimString(Model(comments, "7"), "many.osim");
+  const model::ModelSpec spec = io::ReadOsimString(Model(comments, "7"), "many.osim");
   EXPECT_EQ(spec.bodies[1].mass, 7.0);
 }
 
 TEST(OsimLenient, UnterminatedCommentIsAnError) {
   const std::string text = Model("<!-- never closed", "1");
-  EXPECT_THROW(ReadOsimString(text, "open.osim"), Error);
+  EXPECT_THROW(io::ReadOsimString(text, "open.osim"), Error);
 }
 
 TEST(OsimLenient, TruncatedAfterLenientPartsIsAnError) {
   const std::string text = Model("<credits>a & b</credits>", "1");
   for (size_t cut : {text.size() / 3, text.size() / 2, text.size() - 20}) {
-    EXPECT_THROW(ReadOsimString(text.substr(0, cut), "cut.osim"), Error) << cut;
+    EXPECT_THROW(io::ReadOsimString(text.substr(0, cut), "cut.osim"), Error) << cut;
   }
 }
 
 TEST(OsimLenient, RealFilesWithColonsAndAmpersands) {
   const std::string dir = std::string(SINEW_TEST_DATA_DIR) + "/osim/";
-  const ModelSpec block =
-      ReadOsim(dir + "opensim-org/opensim-models/Models/BouncingBlock/bouncing_block.osim");
+  const model::ModelSpec block =
+      io::ReadOsim(dir + "opensim-org/opensim-models/Models/BouncingBlock/bouncing_block.osim");
   bool found = false;
-  for (const ForceSpec& f : block.forces) {
-    for (const Element& e : f.element.children)
+  for (const model::ForceSpec& f : block.forces) {
+    for (const model::Element& e : f.element.children)
       found = found || e.tag.find("::") != std::string::npos;
   }
   EXPECT_TRUE(found);
-  const ModelSpec knee = ReadOsim(
+  const model::ModelSpec knee = io::ReadOsim(
       dir +
       "clnsmith/opensim-jam/models/lenhart2015/scale_generic_model/lenhart2015_unscaled.osim");
-  EXPECT_NE(knee.FindBody("femur_r"), kNone);
+  EXPECT_NE(knee.FindBody("femur_r"), model::kNone);
 }
 
 }  // namespace

@@ -65,10 +65,10 @@ const std::string kNested = Doc(40000, R"(
 </objects></MarkerSet>)");
 
 TEST(OsimSemantics, NestedOffsetFramesAndRelativePaths) {
-  const ModelSpec spec = ReadOsimString(kNested, "nested.osim");
+  const model::ModelSpec spec = io::ReadOsimString(kNested, "nested.osim");
   EXPECT_EQ(spec.version, 40000);
   EXPECT_TRUE(spec.gravity.isApprox(Vec3(0, -9.80665, 0)));  // OpenSim's default
-  const JointSpec& pin = spec.joints[spec.FindJoint("pin")];
+  const model::JointSpec& pin = spec.joints[spec.FindJoint("pin")];
   EXPECT_EQ(pin.parent_body, spec.FindBody("upper"));
   EXPECT_EQ(pin.child_body, spec.FindBody("lower"));
   EXPECT_EQ(pin.parent_frame, "/jointset/pin/f2");
@@ -79,7 +79,7 @@ TEST(OsimSemantics, NestedOffsetFramesAndRelativePaths) {
   EXPECT_TRUE(pin.X_BM.isApprox(Transform::Identity()));
   // Both offset frames are listed with their parents and poses in the body.
   ASSERT_EQ(spec.frames.size(), 2u);
-  for (const FrameSpec& f : spec.frames) {
+  for (const model::FrameSpec& f : spec.frames) {
     EXPECT_EQ(f.body, spec.FindBody("upper"));
     if (f.name == "f1") {
       EXPECT_EQ(f.path, "/bodyset/upper/f1");
@@ -96,7 +96,7 @@ TEST(OsimSemantics, NestedOffsetFramesAndRelativePaths) {
   EXPECT_EQ(spec.markers[0].body, spec.FindBody("upper"));
   EXPECT_NEAR((spec.markers[0].location - Vec3(0, 1, 0)).norm(), 0, kTol);
   // Body mass properties: inertia [Ixx Iyy Izz Ixy Ixz Iyz] into a symmetric matrix.
-  const BodySpec& upper = spec.bodies[spec.FindBody("upper")];
+  const model::BodySpec& upper = spec.bodies[spec.FindBody("upper")];
   EXPECT_EQ(upper.mass, 2.0);
   EXPECT_EQ(upper.inertia(0, 1), 0.1);
   EXPECT_EQ(upper.inertia(2, 0), 0.2);
@@ -107,14 +107,14 @@ TEST(OsimSemantics, NestedOffsetFramesAndRelativePaths) {
   EXPECT_EQ(upper.geometry[0].opacity, 0.5);
   EXPECT_EQ(upper.geometry[0].dimensions.at("radius")[0], 0.1);
   // Coordinate properties.
-  const CoordinateSpec& q = spec.coordinates[spec.FindCoordinate("q")];
+  const model::CoordinateSpec& q = spec.coordinates[spec.FindCoordinate("q")];
   EXPECT_EQ(q.path, "/jointset/pin/q");
   EXPECT_EQ(q.default_value, 0.25);
   EXPECT_EQ(q.default_speed_value, -1.0);
   EXPECT_EQ(q.range_min, -1.0);
   EXPECT_EQ(q.range_max, 2.0);
   EXPECT_TRUE(q.locked);
-  EXPECT_EQ(q.motion_type, MotionType::kRotational);
+  EXPECT_EQ(q.motion_type, model::MotionType::kRotational);
 }
 
 // A 3.x file: offsets become frames named <body>_offset under the joint.
@@ -129,15 +129,15 @@ TEST(OsimSemantics, ThreeXOffsetsBecomeFrames) {
 <CoordinateSet><objects><Coordinate name="x"/></objects></CoordinateSet>
 </SliderJoint></Joint></Body>
 </objects></BodySet>)");
-  const ModelSpec spec = ReadOsimString(text, "old.osim");
+  const model::ModelSpec spec = io::ReadOsimString(text, "old.osim");
   EXPECT_TRUE(spec.gravity.isApprox(Vec3(0, -9.81, 0)));
-  const JointSpec& j = spec.joints[0];
+  const model::JointSpec& j = spec.joints[0];
   EXPECT_EQ(j.parent_frame, "/jointset/slide/ground_offset");
   EXPECT_EQ(j.child_frame, "/jointset/slide/rod_offset");
   EXPECT_NEAR((j.X_PF.p - Vec3(1, 2, 3)).norm(), 0, kTol);
   EXPECT_NEAR((j.X_BM.p - Vec3(0, 0.5, 0)).norm(), 0, kTol);
   EXPECT_NEAR((j.X_BM.R - RotationFromBodyFixedXYZ(Vec3(0.1, 0.2, 0.3))).norm(), 0, kTol);
-  EXPECT_EQ(spec.coordinates[0].motion_type, MotionType::kTranslational);
+  EXPECT_EQ(spec.coordinates[0].motion_type, model::MotionType::kTranslational);
   EXPECT_EQ(spec.bodies[1].inertia(0, 0), 0.5);
   EXPECT_EQ(spec.bodies[1].inertia(1, 0), 0.1);
   EXPECT_EQ(spec.frames.size(), 2u);
@@ -145,11 +145,11 @@ TEST(OsimSemantics, ThreeXOffsetsBecomeFrames) {
 
 // 3.x reverse=true: OpenSim's 30514 upgrade swaps the parent and child frames.
 TEST(OsimSemantics, ReverseSwapsParentAndChild) {
-  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                                  "/osim/opensim-org/opensim-core/OpenSim/Simulation/"
-                                  "SimbodyEngine/Test/double_pendulum_testReverse.osim");
-  const JointSpec& pin1 = spec.joints[spec.FindJoint("pin1")];
-  const JointSpec& pin2 = spec.joints[spec.FindJoint("pin2")];
+  const model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                             "/osim/opensim-org/opensim-core/OpenSim/Simulation/"
+                                             "SimbodyEngine/Test/double_pendulum_testReverse.osim");
+  const model::JointSpec& pin1 = spec.joints[spec.FindJoint("pin1")];
+  const model::JointSpec& pin2 = spec.joints[spec.FindJoint("pin2")];
   EXPECT_FALSE(pin1.reverse);
   EXPECT_TRUE(pin2.reverse);
   EXPECT_EQ(spec.bodies[pin2.parent_body].name, "rod2");
@@ -178,8 +178,8 @@ TEST(OsimSemantics, CustomJointDefaultsOrderAndMotionTypes) {
  <TransformAxis name="translation3"><coordinates>s</coordinates><axis>0 0 1</axis>
    <function><LinearFunction><coefficients>2 0</coefficients></LinearFunction></function></TransformAxis>
 </SpatialTransform></CustomJoint></objects></JointSet>)");
-  const ModelSpec spec = ReadOsimString(text, "custom.osim");
-  const JointSpec& j = spec.joints[0];
+  const model::ModelSpec spec = io::ReadOsimString(text, "custom.osim");
+  const model::JointSpec& j = spec.joints[0];
   ASSERT_EQ(j.spatial_transform.size(), 6u);
   auto name = [&](int i) { return spec.coordinates[j.coordinates[i]].name; };
   ASSERT_EQ(j.coordinates.size(), 4u);
@@ -196,10 +196,10 @@ TEST(OsimSemantics, CustomJointDefaultsOrderAndMotionTypes) {
   EXPECT_EQ(j.spatial_transform[3].function->TypeName(), "SimmSpline");
   EXPECT_EQ(j.spatial_transform[5].function->Calc(1.5), 3.0);  // wrapped 3.x form
   auto motion = [&](const char* n) { return spec.coordinates[spec.FindCoordinate(n)].motion_type; };
-  EXPECT_EQ(motion("k"), MotionType::kRotational);     // rotation1, slope 1 (and a spline)
-  EXPECT_EQ(motion("a"), MotionType::kRotational);     // slope -1
-  EXPECT_EQ(motion("t"), MotionType::kTranslational);  // translation2, slope 1
-  EXPECT_EQ(motion("s"), MotionType::kCoupled);        // slope 2
+  EXPECT_EQ(motion("k"), model::MotionType::kRotational);     // rotation1, slope 1 (and a spline)
+  EXPECT_EQ(motion("a"), model::MotionType::kRotational);     // slope -1
+  EXPECT_EQ(motion("t"), model::MotionType::kTranslational);  // translation2, slope 1
+  EXPECT_EQ(motion("s"), model::MotionType::kCoupled);        // slope 2
 }
 
 // StationDefinedFrame (4.5+): a = (0 0 0), b = (0 0 2), c = (1 0 0), origin (0 0 1), on body b,
@@ -220,8 +220,8 @@ TEST(OsimSemantics, StationDefinedFrame) {
 <JointSet><objects><FreeJoint name="free">
 <socket_parent_frame>/ground</socket_parent_frame><socket_child_frame>/sdf</socket_child_frame>
 </FreeJoint></objects></JointSet>)");
-  const ModelSpec spec = ReadOsimString(text, "sdf.osim");
-  const JointSpec& j = spec.joints[0];
+  const model::ModelSpec spec = io::ReadOsimString(text, "sdf.osim");
+  const model::JointSpec& j = spec.joints[0];
   EXPECT_EQ(j.child_body, spec.FindBody("b"));
   Mat3 R;
   R.col(0) = Vec3(0, 1, 0);
@@ -231,15 +231,16 @@ TEST(OsimSemantics, StationDefinedFrame) {
   EXPECT_NEAR((j.X_BM.p - Vec3(0, 0, 1)).norm(), 0, kTol);
   // FreeJoint without coordinates: OpenSim makes six, rotations then translations.
   ASSERT_EQ(j.coordinates.size(), 6u);
-  EXPECT_EQ(spec.coordinates[j.coordinates[2]].motion_type, MotionType::kRotational);
-  EXPECT_EQ(spec.coordinates[j.coordinates[3]].motion_type, MotionType::kTranslational);
+  EXPECT_EQ(spec.coordinates[j.coordinates[2]].motion_type, model::MotionType::kRotational);
+  EXPECT_EQ(spec.coordinates[j.coordinates[3]].motion_type, model::MotionType::kTranslational);
 }
 
 // Real files: arm26 (4.x) markers, wrap objects, path points; Rajagopal2016 joint frames.
 TEST(OsimSemantics, Arm26PathsWrapsAndMarkers) {
-  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                                  "/osim/opensim-org/opensim-models/Models/Arm26/arm26.osim");
-  const ForceSpec& tri = spec.forces[0];
+  const model::ModelSpec spec =
+      io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                   "/osim/opensim-org/opensim-models/Models/Arm26/arm26.osim");
+  const model::ForceSpec& tri = spec.forces[0];
   EXPECT_EQ(tri.type, "Thelen2003Muscle");
   ASSERT_TRUE(tri.geometry_path.has_value());
   EXPECT_GE(tri.geometry_path->points.size(), 2u);
@@ -247,26 +248,27 @@ TEST(OsimSemantics, Arm26PathsWrapsAndMarkers) {
   ASSERT_NE(tri.element.Child("max_isometric_force"), nullptr);
   EXPECT_EQ(tri.element.Child("max_isometric_force")->text, "798.51999999999998");
   int wraps = 0;
-  for (const BodySpec& b : spec.bodies) wraps += static_cast<int>(b.wrap_objects.size());
+  for (const model::BodySpec& b : spec.bodies) wraps += static_cast<int>(b.wrap_objects.size());
   EXPECT_GT(wraps, 0);
   EXPECT_EQ(spec.markers[0].name, "r_acromion");
 }
 
 TEST(OsimSemantics, MovingAndConditionalPathPoints) {
-  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                                  "/osim/opensim-org/opensim-core/OpenSim/Simulation/Test/"
-                                  "testSimulationUtilities_leg6dof9musc_20303.osim");
+  const model::ModelSpec spec =
+      io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                   "/osim/opensim-org/opensim-core/OpenSim/Simulation/Test/"
+                   "testSimulationUtilities_leg6dof9musc_20303.osim");
   int moving = 0, conditional = 0;
-  for (const ForceSpec& f : spec.forces) {
+  for (const model::ForceSpec& f : spec.forces) {
     if (!f.geometry_path) continue;
-    for (const PathPointSpec& p : f.geometry_path->points) {
+    for (const model::PathPointSpec& p : f.geometry_path->points) {
       if (p.type == "MovingPathPoint") {
         ++moving;
         for (int i = 0; i < 3; ++i) EXPECT_NE(p.location_functions[i], nullptr);
       }
       if (p.type == "ConditionalPathPoint") {
         ++conditional;
-        EXPECT_NE(p.coordinate, kNone);
+        EXPECT_NE(p.coordinate, model::kNone);
         EXPECT_LT(p.range_min, p.range_max);
       }
     }
@@ -280,19 +282,20 @@ TEST(OsimSemantics, MovingAndConditionalPathPoints) {
 // the values copied from the files.
 TEST(OsimSemantics, ContactGeometryAndWrapObjects) {
   const std::string dir = std::string(SINEW_TEST_DATA_DIR) + "/osim/opensim-org/opensim-core/";
-  const ModelSpec ball = ReadOsim(dir + "OpenSim/Simulation/Test/BouncingBall_HuntCrossley.osim");
+  const model::ModelSpec ball =
+      io::ReadOsim(dir + "OpenSim/Simulation/Test/BouncingBall_HuntCrossley.osim");
   ASSERT_EQ(ball.contact_geometry.size(), 2u);
-  const ContactGeometrySpec& floor = ball.contact_geometry[0];
+  const model::ContactGeometrySpec& floor = ball.contact_geometry[0];
   EXPECT_EQ(floor.type, "ContactHalfSpace");
-  EXPECT_EQ(floor.body, kGroundIndex);
+  EXPECT_EQ(floor.body, model::kGroundIndex);
   // orientation 0 0 -1.57079633: body-fixed XYZ angles, here one rotation about z.
   EXPECT_NEAR((floor.X_BC.R - RotationAboutAxis(Vec3::UnitZ(), -1.57079633)).norm(), 0, kTol);
-  const ContactGeometrySpec& sphere = ball.contact_geometry[1];
+  const model::ContactGeometrySpec& sphere = ball.contact_geometry[1];
   EXPECT_EQ(sphere.body, ball.FindBody("ball"));
   EXPECT_EQ(sphere.dimensions.at("radius")[0], 0.5);
 
-  const ModelSpec arm = ReadOsim(dir + "OpenSim/Simulation/Test/arm26.osim");
-  const auto& wraps = arm.bodies[kGroundIndex].wrap_objects;
+  const model::ModelSpec arm = io::ReadOsim(dir + "OpenSim/Simulation/Test/arm26.osim");
+  const auto& wraps = arm.bodies[model::kGroundIndex].wrap_objects;
   ASSERT_EQ(wraps.size(), 1u);
   EXPECT_EQ(wraps[0].name, "TRIlongglen");
   EXPECT_EQ(wraps[0].type, "WrapCylinder");
@@ -305,23 +308,24 @@ TEST(OsimSemantics, ContactGeometryAndWrapObjects) {
   EXPECT_EQ(wraps[0].dimensions.at("radius")[0], 0.003);
   EXPECT_EQ(wraps[0].dimensions.at("length")[0], 0.03);
   // 1.9 VisibleObject geometry_files on ground: six meshes.
-  EXPECT_EQ(arm.bodies[kGroundIndex].geometry.size(), 6u);
-  EXPECT_EQ(arm.bodies[kGroundIndex].geometry[0].mesh_file, "ground_ribs.vtp");
+  EXPECT_EQ(arm.bodies[model::kGroundIndex].geometry.size(), 6u);
+  EXPECT_EQ(arm.bodies[model::kGroundIndex].geometry[0].mesh_file, "ground_ribs.vtp");
 }
 
 // 3.05 DisplayGeometry: transform (rotations then translation) and scale factors.
 TEST(OsimSemantics, DisplayGeometry) {
-  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                                  "/osim/opensim-org/opensim-core/OpenSim/Simulation/Test/"
-                                  "double_pendulum.osim");
-  const BodySpec& rod1 = spec.bodies[spec.FindBody("rod1")];
+  const model::ModelSpec spec =
+      io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                   "/osim/opensim-org/opensim-core/OpenSim/Simulation/Test/"
+                   "double_pendulum.osim");
+  const model::BodySpec& rod1 = spec.bodies[spec.FindBody("rod1")];
   ASSERT_EQ(rod1.geometry.size(), 2u);
   EXPECT_EQ(rod1.geometry[0].mesh_file, "cylinder.vtp");
   EXPECT_NEAR((rod1.geometry[0].X_BG.p - Vec3(0, 0.25, 0)).norm(), 0, kTol);
   EXPECT_NEAR((rod1.geometry[0].scale_factors - Vec3(0.02, 0.5, 0.02)).norm(), 0, kTol);
   EXPECT_EQ(rod1.geometry[1].mesh_file, "sphere.vtp");
   // 3.05 connectors: pin2 connects rod1 to rod2 with location_in_child 0 0.5 0.
-  const JointSpec& pin2 = spec.joints[spec.FindJoint("pin2")];
+  const model::JointSpec& pin2 = spec.joints[spec.FindJoint("pin2")];
   EXPECT_EQ(spec.bodies[pin2.parent_body].name, "rod1");
   EXPECT_EQ(spec.bodies[pin2.child_body].name, "rod2");
   EXPECT_NEAR((pin2.X_BM.p - Vec3(0, 0.5, 0)).norm(), 0, kTol);
@@ -340,7 +344,7 @@ TEST(OsimSemantics, Controllers) {
 <socket_actuators>/forceset/act</socket_actuators>
 <FunctionSet name="ControlFunctions"><objects><Constant name="f"><value>2</value></Constant>
 </objects></FunctionSet></PrescribedController></objects></ControllerSet>)");
-  const ModelSpec spec = ReadOsimString(text, "ctl.osim");
+  const model::ModelSpec spec = io::ReadOsimString(text, "ctl.osim");
   ASSERT_EQ(spec.controllers.size(), 1u);
   EXPECT_EQ(spec.controllers[0].type, "PrescribedController");
   ASSERT_EQ(spec.controllers[0].actuators.size(), 1u);
@@ -349,16 +353,16 @@ TEST(OsimSemantics, Controllers) {
   // A CoordinateActuator naming a coordinate that does not exist is an error.
   std::string bad = text;
   bad.replace(bad.find("<coordinate>x<"), 14, "<coordinate>y<");
-  EXPECT_THROW(ReadOsimString(bad, "ctl.osim"), Error);
+  EXPECT_THROW(io::ReadOsimString(bad, "ctl.osim"), Error);
 }
 
 // Joint-specific numbers are kept as parameters (chrono's 3.0 ScapulothoracicJoint model).
 TEST(OsimSemantics, ScapulothoracicParameters) {
-  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                                  "/osim/projectchrono/chrono/data/opensim/"
-                                  "ScapulothorachicJoint_Shoulder.osim");
-  const JointSpec& j = spec.joints[spec.FindJoint("scapulothoracic")];
-  EXPECT_EQ(j.kind, JointType::kScapulothoracic);
+  const model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                             "/osim/projectchrono/chrono/data/opensim/"
+                                             "ScapulothorachicJoint_Shoulder.osim");
+  const model::JointSpec& j = spec.joints[spec.FindJoint("scapulothoracic")];
+  EXPECT_EQ(j.kind, model::JointType::kScapulothoracic);
   EXPECT_EQ(j.parameters.at("thoracic_ellipsoid_radii_x_y_z"),
             (std::vector<double>{0.07, 0.15, 0.07}));
   EXPECT_EQ(j.parameters.at("scapula_winging_axis_origin"), (std::vector<double>{0, 0}));
@@ -380,9 +384,9 @@ TEST(OsimSemantics, PrescribedCoordinates) {
   auto read = [&](const std::string& prescribed) {
     std::string body = joint;
     body.replace(body.find("PRESCRIBED"), 10, prescribed);
-    return ReadOsimString(Doc(40000, body), "prescribed.osim");
+    return io::ReadOsimString(Doc(40000, body), "prescribed.osim");
   };
-  const ModelSpec on = read("<prescribed>true</prescribed>");
+  const model::ModelSpec on = read("<prescribed>true</prescribed>");
   EXPECT_TRUE(on.coordinates[0].prescribed);
   ASSERT_NE(on.coordinates[0].prescribed_function, nullptr);
   EXPECT_DOUBLE_EQ(on.coordinates[0].prescribed_function->Calc(2.0), 1.1);
@@ -394,8 +398,9 @@ TEST(OsimSemantics, PrescribedCoordinates) {
 // chrono's newton_cradle names five joints `sph1` (and their coordinates q1..q3 each): it loads,
 // with warnings, and paths stay unique.
 TEST(OsimSemantics, DuplicateJointNamesLoadWithWarnings) {
-  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                                  "/osim/projectchrono/chrono/data/opensim/newton_cradle.osim");
+  const model::ModelSpec spec =
+      io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                   "/osim/projectchrono/chrono/data/opensim/newton_cradle.osim");
   ASSERT_EQ(spec.joints.size(), 5u);
   EXPECT_EQ(spec.joints[0].path, "/jointset/sph1");
   EXPECT_EQ(spec.joints[4].path, "/jointset/sph1_5");
@@ -415,7 +420,7 @@ TEST(OsimSemantics, ZeroMassModelIsNoted) {
 <BodySet><objects><Body name="b"><mass>0</mass></Body></objects></BodySet>
 <JointSet><objects><WeldJoint name="w"><socket_parent_frame>/ground</socket_parent_frame>
 <socket_child_frame>/bodyset/b</socket_child_frame></WeldJoint></objects></JointSet>)");
-  const ModelSpec spec = ReadOsimString(text, "massless.osim");
+  const model::ModelSpec spec = io::ReadOsimString(text, "massless.osim");
   ASSERT_EQ(spec.warnings.size(), 1u);
   EXPECT_NE(spec.warnings[0].message.find("every body has zero mass"), std::string::npos);
 }

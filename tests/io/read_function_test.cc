@@ -21,17 +21,17 @@ namespace sinew {
 namespace {
 
 // Parses `xml` and returns the function held by the root property element.
-FunctionPtr ReadRoot(const std::string& xml) {
-  XmlDocument doc = XmlDocument::Parse(xml, "test.osim");
-  return ReadFunctionProperty(doc, doc.root(), "/jointset/knee_r");
+functions::FunctionPtr ReadRoot(const std::string& xml) {
+  io::internal::XmlDocument doc = io::internal::XmlDocument::Parse(xml, "test.osim");
+  return io::internal::ReadFunctionProperty(doc, doc.root(), "/jointset/knee_r");
 }
 
 TEST(ReadFunctionTest, InlineAndWrappedSimmSplineAreTheSame) {
-  FunctionPtr inline_form = ReadRoot(
+  functions::FunctionPtr inline_form = ReadRoot(
       "<SimmSpline name=\"function\">\n"
       "  <!-- comment -->\n"
       "  <x>0 1 2 3 4</x>\n  <y> 0 1 4 9 17</y>\n</SimmSpline>");
-  FunctionPtr wrapped = ReadRoot(
+  functions::FunctionPtr wrapped = ReadRoot(
       "<function>\n <SimmSpline>\n  <x>0 1 2 3 4</x>\n  <y>0 1 4 9 17</y>\n"
       " </SimmSpline>\n</function>");
   ASSERT_TRUE(inline_form && wrapped);
@@ -45,9 +45,9 @@ TEST(ReadFunctionTest, InlineAndWrappedSimmSplineAreTheSame) {
 }
 
 TEST(ReadFunctionTest, NaturalCubicSplineIsReadAsSimmSpline) {
-  FunctionPtr f = ReadRoot(
+  functions::FunctionPtr f = ReadRoot(
       "<NaturalCubicSpline name=\"\">\n<x> -1 0 1 2</x>\n<y> 1 0 1 4</y>\n</NaturalCubicSpline>");
-  auto spline = std::dynamic_pointer_cast<const SimmSpline>(f);
+  auto spline = std::dynamic_pointer_cast<const functions::SimmSpline>(f);
   ASSERT_TRUE(spline);
   // y = x^2 sampled at 4 knots: the FMM end conditions reproduce it exactly.
   EXPECT_NEAR(f->Calc(0.5), 0.25, 1e-14);
@@ -61,7 +61,7 @@ TEST(ReadFunctionTest, ConstantLinearPolynomial) {
             0.0027499999);
   // A Constant without <value> is OpenSim's default 0.
   EXPECT_EQ(ReadRoot("<function><Constant/></function>")->Calc(1.0), 0.0);
-  FunctionPtr linear = ReadRoot(
+  functions::FunctionPtr linear = ReadRoot(
       "<LinearFunction name=\"function\"><coefficients> -0.333333 1</coefficients>"
       "</LinearFunction>");
   EXPECT_DOUBLE_EQ(linear->Calc(3.0), -0.999999 + 1.0);
@@ -72,31 +72,31 @@ TEST(ReadFunctionTest, ConstantLinearPolynomial) {
                        ->Calc(10.0),
                    0.3);
   // Decreasing powers: 2 x^2 - 3 x + 5.
-  FunctionPtr poly = ReadRoot(
+  functions::FunctionPtr poly = ReadRoot(
       "<PolynomialFunction name=\"function\"><coefficients>2 -3 5</coefficients>"
       "</PolynomialFunction>");
   EXPECT_DOUBLE_EQ(poly->Calc(2.0), 7.0);
 }
 
 TEST(ReadFunctionTest, MultiplierFunctionWrapsTheInnerFunction) {
-  FunctionPtr f = ReadRoot(
+  functions::FunctionPtr f = ReadRoot(
       "<MultiplierFunction name=\"function\">\n"
       "  <function>\n    <SimmSpline>\n      <x> 0 3.14159</x>\n      <y> -0.122564 -0.123775</y>\n"
       "    </SimmSpline>\n  </function>\n  <scale>0.5</scale>\n</MultiplierFunction>");
-  auto multiplier = std::dynamic_pointer_cast<const MultiplierFunction>(f);
+  auto multiplier = std::dynamic_pointer_cast<const functions::MultiplierFunction>(f);
   ASSERT_TRUE(multiplier);
   EXPECT_EQ(multiplier->scale(), 0.5);
   EXPECT_EQ(multiplier->function()->TypeName(), "SimmSpline");
   EXPECT_DOUBLE_EQ(f->Calc(0.0), 0.5 * -0.122564);
   // Inner function written inline (4.x style) is accepted too.
-  FunctionPtr g = ReadRoot(
+  functions::FunctionPtr g = ReadRoot(
       "<MultiplierFunction name=\"function\"><LinearFunction name=\"function\">"
       "<coefficients>2 1</coefficients></LinearFunction><scale>3</scale></MultiplierFunction>");
   EXPECT_DOUBLE_EQ(g->Calc(1.0), 9.0);
 }
 
 TEST(ReadFunctionTest, PiecewiseLinearFunction) {
-  FunctionPtr f = ReadRoot(
+  functions::FunctionPtr f = ReadRoot(
       "<function><PiecewiseLinearFunction>\n<x> -1 0 2</x>\n<y> 0 1 0</y>\n"
       "</PiecewiseLinearFunction></function>");
   EXPECT_EQ(f->TypeName(), "PiecewiseLinearFunction");
@@ -104,37 +104,37 @@ TEST(ReadFunctionTest, PiecewiseLinearFunction) {
 }
 
 TEST(ReadFunctionTest, OtherTypesWithTheirPropertyNames) {
-  FunctionPtr sine = ReadRoot(
+  functions::FunctionPtr sine = ReadRoot(
       "<Sine name=\"f\"><amplitude>2</amplitude><omega>3</omega><phase>0.5</phase>"
       "<offset>1</offset></Sine>");
   EXPECT_DOUBLE_EQ(sine->Calc(0.2), 2.0 * std::sin(1.1) + 1.0);
   EXPECT_DOUBLE_EQ(ReadRoot("<Sine/>")->Calc(0.3), std::sin(0.3));  // OpenSim defaults
-  FunctionPtr step = ReadRoot(
+  functions::FunctionPtr step = ReadRoot(
       "<StepFunction><transition_start_time>1</transition_start_time>"
       "<transition_end_time>3</transition_end_time><start_value>2</start_value>"
       "<end_value>6</end_value></StepFunction>");
   EXPECT_DOUBLE_EQ(step->Calc(2.0), 4.0);
-  FunctionPtr default_step = ReadRoot("<StepFunction/>");  // 0.99 -> 1.01, 0 -> 1
+  functions::FunctionPtr default_step = ReadRoot("<StepFunction/>");  // 0.99 -> 1.01, 0 -> 1
   EXPECT_EQ(default_step->Calc(0.99), 0.0);
   EXPECT_DOUBLE_EQ(default_step->Calc(1.0), 0.5);
   EXPECT_EQ(default_step->Calc(1.01), 1.0);
-  FunctionPtr constant_steps =
+  functions::FunctionPtr constant_steps =
       ReadRoot("<PiecewiseConstantFunction><x>0 1 2</x><y>5 6 7</y></PiecewiseConstantFunction>");
   EXPECT_EQ(constant_steps->Calc(1.5), 6.0);
-  FunctionPtr multivariate = ReadRoot(
+  functions::FunctionPtr multivariate = ReadRoot(
       "<MultivariatePolynomialFunction>\n<coefficients>1 1 1 1</coefficients>\n"
       "<dimension>3</dimension>\n<order>1</order>\n</MultivariatePolynomialFunction>");
   EXPECT_EQ(multivariate->NumArguments(), 3);
   const double p[3] = {1.0, 2.0, 3.0};
   EXPECT_DOUBLE_EQ(multivariate->CalcN(p), 7.0);
-  FunctionPtr gcv = ReadRoot(
+  functions::FunctionPtr gcv = ReadRoot(
       "<GCVSpline name=\"spline_slider\"><half_order>3</half_order>"
       "<error_variance>0</error_variance><x> 0 0.1 0.2 0.3 0.4 0.5 0.6</x>"
       "<y> 0.5 0.4 0.3 0.18 0.09 0.04 -0.008</y><weights> 1 1 1 1 1 1 1</weights>"
       "<coefficients> 0 0 0 0 0 0 0</coefficients></GCVSpline>");
   EXPECT_NEAR(gcv->Calc(0.3), 0.18, 1e-14);
   // A smoothing fit (known error variance) is read too; it no longer interpolates.
-  auto smoothed = std::dynamic_pointer_cast<const GCVSpline>(ReadRoot(
+  auto smoothed = std::dynamic_pointer_cast<const functions::GCVSpline>(ReadRoot(
       "<GCVSpline><half_order>2</half_order><error_variance>0.001</error_variance>"
       "<x> 0 0.1 0.2 0.3 0.4 0.5 0.6 0.7</x><y> 0.5 0.42 0.3 0.21 0.09 0.04 -0.01 -0.05</y>"
       "</GCVSpline>"));
@@ -143,33 +143,37 @@ TEST(ReadFunctionTest, OtherTypesWithTheirPropertyNames) {
   for (const char* type :
        {"Constant", "SimmSpline", "NaturalCubicSpline", "GCVSpline", "Sine", "StepFunction",
         "MultivariatePolynomialFunction", "PiecewiseConstantFunction", "PiecewiseLinearFunction"}) {
-    EXPECT_TRUE(IsFunctionType(type)) << type;
+    EXPECT_TRUE(io::internal::IsFunctionType(type)) << type;
   }
-  EXPECT_FALSE(IsFunctionType("function"));
-  EXPECT_FALSE(IsFunctionType("Body"));
+  EXPECT_FALSE(io::internal::IsFunctionType("function"));
+  EXPECT_FALSE(io::internal::IsFunctionType("Body"));
 }
 
 TEST(ReadFunctionTest, FindsPropertiesInBothForms) {
-  XmlDocument doc = XmlDocument::Parse(
+  io::internal::XmlDocument doc = io::internal::XmlDocument::Parse(
       "<TransformAxis name=\"rotation1\">\n"
       "  <coordinates>knee_angle_r</coordinates>\n"
       "  <SimmSpline name=\"function\"><x>0 1</x><y>0 2</y></SimmSpline>\n"
       "</TransformAxis>\n",
       "a.osim");
-  FunctionPtr inline_form = ReadFunctionProperty(doc, doc.root(), "function", "/a");
+  functions::FunctionPtr inline_form =
+      io::internal::ReadFunctionProperty(doc, doc.root(), "function", "/a");
   ASSERT_TRUE(inline_form);
   EXPECT_DOUBLE_EQ(inline_form->Calc(0.5), 1.0);
-  EXPECT_EQ(ReadFunctionProperty(doc, doc.root(), "x_location", "/a"), nullptr);
-  EXPECT_FALSE(FindFunctionProperty(doc.root(), "coordinates").empty());  // a plain child too
-  XmlDocument wrapped = XmlDocument::Parse(
+  EXPECT_EQ(io::internal::ReadFunctionProperty(doc, doc.root(), "x_location", "/a"), nullptr);
+  EXPECT_FALSE(
+      io::internal::FindFunctionProperty(doc.root(), "coordinates").empty());  // a plain child too
+  io::internal::XmlDocument wrapped = io::internal::XmlDocument::Parse(
       "<MovingPathPoint>\n  <x_location>\n    <NaturalCubicSpline name=\"\">\n"
       "      <x>0 1 2</x><y>0 1 4</y>\n    </NaturalCubicSpline>\n  </x_location>\n"
       "  <y_location/>\n</MovingPathPoint>\n",
       "b.osim");
-  FunctionPtr x = ReadFunctionProperty(wrapped, wrapped.root(), "x_location", "/b");
+  functions::FunctionPtr x =
+      io::internal::ReadFunctionProperty(wrapped, wrapped.root(), "x_location", "/b");
   ASSERT_TRUE(x);
   EXPECT_DOUBLE_EQ(x->Calc(1.5), 2.25);  // three knots: the parabola
-  EXPECT_EQ(ReadFunctionProperty(wrapped, wrapped.root(), "y_location", "/b"), nullptr);
+  EXPECT_EQ(io::internal::ReadFunctionProperty(wrapped, wrapped.root(), "y_location", "/b"),
+            nullptr);
 }
 
 TEST(ReadFunctionTest, EmptyWrapperGivesNull) {
@@ -223,9 +227,9 @@ TEST(ReadFunctionTest, ReadsEveryFunctionInTheCorpus) {
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
     const std::string extension = entry.path().extension().string();
     if (!entry.is_regular_file() || (extension != ".osim" && extension != ".xml")) continue;
-    std::optional<XmlDocument> doc;
+    std::optional<io::internal::XmlDocument> doc;
     try {
-      doc.emplace(XmlDocument::Load(entry.path().string()));
+      doc.emplace(io::internal::XmlDocument::Load(entry.path().string()));
     } catch (const Error& error) {
       std::cout << "skipped: " << error.what() << "\n";
       continue;  // malformed XML is the osim reader's business, not this test's
@@ -233,12 +237,13 @@ TEST(ReadFunctionTest, ReadsEveryFunctionInTheCorpus) {
     ++files;
     for (const pugi::xpath_node& found : doc->root().select_nodes("//*")) {
       const pugi::xml_node node = found.node();
-      if (!IsFunctionType(node.name())) continue;
-      FunctionPtr f;
-      EXPECT_NO_THROW(f = ReadFunction(*doc, node, "")) << entry.path() << ":" << doc->LineOf(node);
+      if (!io::internal::IsFunctionType(node.name())) continue;
+      functions::FunctionPtr f;
+      EXPECT_NO_THROW(f = io::internal::ReadFunction(*doc, node, ""))
+          << entry.path() << ":" << doc->LineOf(node);
       if (!f) continue;
       ++counts[node.name()];
-      if (auto spline = std::dynamic_pointer_cast<const SimmSpline>(f)) {
+      if (auto spline = std::dynamic_pointer_cast<const functions::SimmSpline>(f)) {
         for (size_t i = 0; i < spline->x().size(); ++i) {
           EXPECT_NEAR(spline->Calc(spline->x()[i]), spline->y()[i],
                       1e-12 * (1.0 + std::abs(spline->y()[i])))

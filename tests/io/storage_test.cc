@@ -26,7 +26,7 @@ std::string PendulumFile(const std::string& name) {
 }
 
 TEST(StorageTest, ReadsOpenSim4PathLabelsInDegrees) {
-  Storage s = ReadStorage(DataFile("double_pendum1sec.sto"));
+  io::Storage s = io::ReadStorage(DataFile("double_pendum1sec.sto"));
   EXPECT_EQ(s.name, "Results");
   EXPECT_EQ(s.Metadata("version"), "1");
   EXPECT_TRUE(s.in_degrees);
@@ -41,7 +41,7 @@ TEST(StorageTest, ReadsOpenSim4PathLabelsInDegrees) {
   // Both pins are rotational: values and speeds convert. Row 0 starts at -45 and -60 degrees
   // (written with 8 decimals: -44.99999981, so within 2e-7 deg = 3.3e-9 rad).
   const std::vector<std::string> rotational = {"q1", "q2"};
-  ConvertDegreesToRadians(s, rotational);
+  io::ConvertDegreesToRadians(s, rotational);
   EXPECT_FALSE(s.in_degrees);
   EXPECT_NEAR(s.Value(0, 0), -std::numbers::pi / 4, 4e-9);
   EXPECT_NEAR(s.Value(0, 2), -std::numbers::pi / 3, 4e-9);
@@ -53,14 +53,14 @@ TEST(StorageTest, DegreesFileMatchesItsRadiansTwin) {
   // OpenSim wrote the same SinglePin run in radians (.sto) and in degrees (.mot). The .mot has
   // no inDegrees line (it carries an old SIMM header instead), so the caller says it is in
   // degrees. Values have 20 digits, so the converted degrees agree with the radians to rounding.
-  Storage radians = ReadStorage(PendulumFile("SinglePin_states.sto"));
-  Storage degrees = ReadStorage(DataFile("SinglePin_states_degrees.mot"));
+  io::Storage radians = io::ReadStorage(PendulumFile("SinglePin_states.sto"));
+  io::Storage degrees = io::ReadStorage(DataFile("SinglePin_states_degrees.mot"));
   EXPECT_FALSE(degrees.in_degrees);
   EXPECT_EQ(degrees.comments.front(), "# SIMM Motion File Header:");
   EXPECT_EQ(degrees.Metadata("nRows"), "");  // nRows is structural, not metadata
   degrees.in_degrees = true;
   const std::vector<std::string> model_coordinates = {"r1_z"};  // r1_z is rotational
-  ConvertDegreesToRadians(degrees, model_coordinates);
+  io::ConvertDegreesToRadians(degrees, model_coordinates);
   ASSERT_EQ(radians.NumRows(), 302);
   ASSERT_EQ(degrees.NumRows(), radians.NumRows());
   ASSERT_EQ(degrees.labels, radians.labels);
@@ -76,13 +76,13 @@ TEST(StorageTest, DegreesFileMatchesItsRadiansTwin) {
 
 TEST(StorageTest, ReadsLenientOldFiles) {
   // Tabs after every header line, an empty label between two tabs, no version or inDegrees.
-  Storage s = ReadStorage(PendulumFile("SinglePin_InitialStates.sto"));
+  io::Storage s = io::ReadStorage(PendulumFile("SinglePin_InitialStates.sto"));
   EXPECT_EQ(s.name, "S26pre_CMC_states");
   ASSERT_EQ(s.labels, (std::vector<std::string>{"r1_z", "r1_z_u"}));
   ASSERT_EQ(s.NumRows(), 1);
   EXPECT_EQ(s.Value(0, 0), 1.0);
   EXPECT_TRUE(s.notes.empty());
-  Storage shoulder = ReadStorage(DataFile("ThorascapularShoulderModel_static.mot"));
+  io::Storage shoulder = io::ReadStorage(DataFile("ThorascapularShoulderModel_static.mot"));
   EXPECT_EQ(shoulder.name, "Default_Position.mot");
   EXPECT_EQ(shoulder.NumColumns(), 17);
   EXPECT_EQ(shoulder.NumRows(), 6);
@@ -90,15 +90,15 @@ TEST(StorageTest, ReadsLenientOldFiles) {
 }
 
 TEST(StorageTest, ToleratesWrongCountsButNotesThem) {
-  Storage s = ParseStorage("states\nnRows=3\nnColumns=4\nendheader\ntime a b\n0 1 2\n1 3 4\n",
-                           "counts.sto");
+  io::Storage s = io::ParseStorage(
+      "states\nnRows=3\nnColumns=4\nendheader\ntime a b\n0 1 2\n1 3 4\n", "counts.sto");
   EXPECT_EQ(s.NumRows(), 2);
   ASSERT_EQ(s.notes.size(), 2u);
   EXPECT_EQ(s.notes[0].where.line, 2);
   EXPECT_NE(s.notes[0].message.find("nRows=3"), std::string::npos);
   EXPECT_EQ(s.notes[1].where.line, 3);
   // Space-separated rows and labels, blank lines, CRLF endings, scientific notation, nan.
-  Storage t = ParseStorage(
+  io::Storage t = io::ParseStorage(
       "name\r\nversion=1\r\nendheader\r\n\r\ntime q\r\n0 4.93E-05\r\n\r\n1 nan\r\n", "crlf.mot");
   ASSERT_EQ(t.NumRows(), 2);
   EXPECT_EQ(t.Value(0, 0), 4.93e-05);
@@ -108,7 +108,7 @@ TEST(StorageTest, ToleratesWrongCountsButNotesThem) {
 // Asserts that parsing `text` throws a sinew::Error at `line` mentioning `what`.
 void ExpectParseError(const std::string& text, int line, const std::string& what) {
   try {
-    ParseStorage(text, "bad.sto");
+    io::ParseStorage(text, "bad.sto");
     FAIL() << "no error for: " << text;
   } catch (const Error& error) {
     EXPECT_EQ(error.where().file, "bad.sto");
@@ -125,11 +125,11 @@ TEST(StorageTest, BadFilesGiveErrorsWithLines) {
   ExpectParseError("name\nnRows=many\nendheader\ntime\n", 2, "nRows");
   ExpectParseError("name\nendheader\n\n", 3, "labels");
   ExpectParseError("markers\nDataType=Vec3\nendheader\ntime\tm1\n0\t1,2,3\n", 2, "Vec3");
-  EXPECT_THROW(ReadStorage(DataFile("no_such_file.sto")), Error);
+  EXPECT_THROW(io::ReadStorage(DataFile("no_such_file.sto")), Error);
 }
 
 TEST(StorageTest, WriteReadRoundTripIsExact) {
-  Storage s;
+  io::Storage s;
   s.name = "round trip";
   s.in_degrees = true;
   s.metadata = {{"DataType", "double"}, {"OpenSimVersion", "4.5"}};
@@ -137,11 +137,11 @@ TEST(StorageTest, WriteReadRoundTripIsExact) {
   s.AppendRow(0.0, {0.1, -1.0 / 3.0, 1e-300});
   s.AppendRow(0.1, {std::numbers::pi, 6.02214076e23, -0.0});
   EXPECT_THROW(s.AppendRow(0.2, {1.0}), Error);
-  const std::string text = FormatStorage(s);
+  const std::string text = io::FormatStorage(s);
   EXPECT_EQ(text.substr(0, text.find("endheader")),
             "round trip\nversion=1\nnRows=2\nnColumns=4\ninDegrees=yes\nDataType=double\n"
             "OpenSimVersion=4.5\n");
-  Storage back = ParseStorage(text, "memory");
+  io::Storage back = io::ParseStorage(text, "memory");
   EXPECT_EQ(back.name, s.name);
   EXPECT_TRUE(back.in_degrees);
   // The writer added version=1 in front of the other keys.
@@ -155,11 +155,11 @@ TEST(StorageTest, WriteReadRoundTripIsExact) {
   EXPECT_TRUE(back.notes.empty());
 
   // Through a file, from a real one.
-  Storage original = ReadStorage(DataFile("double_pendum1sec.sto"));
+  io::Storage original = io::ReadStorage(DataFile("double_pendum1sec.sto"));
   const std::string path =
       (std::filesystem::temp_directory_path() / "sinew_storage_round_trip.sto").string();
-  WriteStorage(original, path);
-  Storage reread = ReadStorage(path);
+  io::WriteStorage(original, path);
+  io::Storage reread = io::ReadStorage(path);
   std::remove(path.c_str());
   EXPECT_EQ(reread.values, original.values);
   EXPECT_EQ(reread.labels, original.labels);
@@ -174,8 +174,8 @@ TEST(StorageTest, ReadsEveryStorageFileInTheCorpus) {
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
     const std::string extension = entry.path().extension().string();
     if (!entry.is_regular_file() || (extension != ".sto" && extension != ".mot")) continue;
-    Storage s;
-    EXPECT_NO_THROW(s = ReadStorage(entry.path().string())) << entry.path();
+    io::Storage s;
+    EXPECT_NO_THROW(s = io::ReadStorage(entry.path().string())) << entry.path();
     ++files;
     if (!s.notes.empty()) ++noted;
     EXPECT_EQ(s.values.size(), s.time.size() * s.labels.size()) << entry.path();
@@ -192,8 +192,8 @@ TEST(StorageFunctionsTest, SplinesThroughAPendulumRunGiveItsSpeeds) {
   // 8e-6 at t = 0, decaying by ~0.4 per sample. The file also repeats its final time
   // (2.99999999999998 and 3.0, 2e-14 apart), a near-duplicate knot that spoils the last few
   // samples' slopes. OpenSim's GCVSplineSet fit has both effects too.
-  Storage s = ReadStorage(PendulumFile("SinglePin_states.sto"));
-  std::vector<FunctionPtr> splines = FitColumnSplines(s);
+  io::Storage s = io::ReadStorage(PendulumFile("SinglePin_states.sto"));
+  std::vector<functions::FunctionPtr> splines = io::FitColumnSplines(s);
   ASSERT_EQ(splines.size(), 2u);
   double worst_value = 0.0, worst_speed = 0.0;
   for (int row = 0; row < s.NumRows(); ++row) {
@@ -206,57 +206,57 @@ TEST(StorageFunctionsTest, SplinesThroughAPendulumRunGiveItsSpeeds) {
   EXPECT_LT(worst_value, 1e-12);
   EXPECT_LT(worst_speed, 1e-7);
   EXPECT_LT(std::abs(splines[0]->CalcDerivative(0.0, 1) - s.Value(0, 1)), 2e-5);
-  Storage one_row = ReadStorage(PendulumFile("SinglePin_InitialStates.sto"));
-  EXPECT_THROW(FitColumnSplines(one_row), Error);
+  io::Storage one_row = io::ReadStorage(PendulumFile("SinglePin_InitialStates.sto"));
+  EXPECT_THROW(io::FitColumnSplines(one_row), Error);
 }
 
 TEST(StorageLabelsTest, MapsOldAndPathStyleLabelsToCoordinates) {
-  auto value = ParseColumnLabel("/jointset/knee_r/knee_angle_r/value");
+  auto value = io::ParseColumnLabel("/jointset/knee_r/knee_angle_r/value");
   ASSERT_TRUE(value);
   EXPECT_EQ(value->coordinate, "knee_angle_r");
-  EXPECT_EQ(value->kind, CoordinateColumnKind::kValue);
+  EXPECT_EQ(value->kind, io::CoordinateColumnKind::kValue);
   EXPECT_EQ(value->path, "/jointset/knee_r/knee_angle_r");
-  auto speed = ParseColumnLabel("/jointset/knee_r/knee_angle_r/speed");
+  auto speed = io::ParseColumnLabel("/jointset/knee_r/knee_angle_r/speed");
   ASSERT_TRUE(speed);
-  EXPECT_EQ(speed->kind, CoordinateColumnKind::kSpeed);
-  EXPECT_FALSE(ParseColumnLabel("/forceset/soleus_r/activation"));
-  EXPECT_FALSE(ParseColumnLabel("time"));
-  auto old_value = ParseColumnLabel("knee_angle_r");
+  EXPECT_EQ(speed->kind, io::CoordinateColumnKind::kSpeed);
+  EXPECT_FALSE(io::ParseColumnLabel("/forceset/soleus_r/activation"));
+  EXPECT_FALSE(io::ParseColumnLabel("time"));
+  auto old_value = io::ParseColumnLabel("knee_angle_r");
   ASSERT_TRUE(old_value);
   EXPECT_EQ(old_value->coordinate, "knee_angle_r");
-  EXPECT_EQ(old_value->kind, CoordinateColumnKind::kValue);
-  auto old_speed = ParseColumnLabel("r1_z_u");
+  EXPECT_EQ(old_value->kind, io::CoordinateColumnKind::kValue);
+  auto old_speed = io::ParseColumnLabel("r1_z_u");
   ASSERT_TRUE(old_speed);
   EXPECT_EQ(old_speed->coordinate, "r1_z");
-  EXPECT_EQ(old_speed->kind, CoordinateColumnKind::kSpeed);
+  EXPECT_EQ(old_speed->kind, io::CoordinateColumnKind::kSpeed);
   // With the model's names: a coordinate whose own name ends in _u stays a value, unknown
   // labels do not resolve.
   const std::vector<std::string> names = {"tilt_u", "knee_angle_r"};
-  EXPECT_EQ(ParseColumnLabel("tilt_u", names)->kind, CoordinateColumnKind::kValue);
-  EXPECT_EQ(ParseColumnLabel("tilt_u_u", names)->coordinate, "tilt_u");
-  EXPECT_FALSE(ParseColumnLabel("RF", names));
-  EXPECT_FALSE(ParseColumnLabel("/jointset/hip/hip_flexion/value", names));
+  EXPECT_EQ(io::ParseColumnLabel("tilt_u", names)->kind, io::CoordinateColumnKind::kValue);
+  EXPECT_EQ(io::ParseColumnLabel("tilt_u_u", names)->coordinate, "tilt_u");
+  EXPECT_FALSE(io::ParseColumnLabel("RF", names));
+  EXPECT_FALSE(io::ParseColumnLabel("/jointset/hip/hip_flexion/value", names));
 }
 
 TEST(StorageLabelsTest, FindsCoordinateColumnsInEitherStyle) {
-  Storage path_style = ReadStorage(DataFile("double_pendum1sec.sto"));
-  EXPECT_EQ(FindCoordinateColumn(path_style, "q2"), 2);
-  EXPECT_EQ(FindCoordinateColumn(path_style, "q2", CoordinateColumnKind::kSpeed), 3);
-  EXPECT_EQ(FindCoordinateColumn(path_style, "q3"), -1);
-  Storage old_style = ReadStorage(PendulumFile("SinglePin_states.sto"));
-  EXPECT_EQ(FindCoordinateColumn(old_style, "r1_z"), 0);
-  EXPECT_EQ(FindCoordinateColumn(old_style, "r1_z", CoordinateColumnKind::kSpeed), 1);
-  EXPECT_EQ(FindCoordinateColumn(old_style, "r1"), -1);
+  io::Storage path_style = io::ReadStorage(DataFile("double_pendum1sec.sto"));
+  EXPECT_EQ(io::FindCoordinateColumn(path_style, "q2"), 2);
+  EXPECT_EQ(io::FindCoordinateColumn(path_style, "q2", io::CoordinateColumnKind::kSpeed), 3);
+  EXPECT_EQ(io::FindCoordinateColumn(path_style, "q3"), -1);
+  io::Storage old_style = io::ReadStorage(PendulumFile("SinglePin_states.sto"));
+  EXPECT_EQ(io::FindCoordinateColumn(old_style, "r1_z"), 0);
+  EXPECT_EQ(io::FindCoordinateColumn(old_style, "r1_z", io::CoordinateColumnKind::kSpeed), 1);
+  EXPECT_EQ(io::FindCoordinateColumn(old_style, "r1"), -1);
 }
 
 TEST(StorageLabelsTest, ConvertsOnlyRotationalColumns) {
-  Storage s = ParseStorage(
+  io::Storage s = io::ParseStorage(
       "motion\ninDegrees=yes\nendheader\n"
       "time\tknee_angle_r\tknee_tx\t/jointset/knee_r/knee_angle_r/speed\tRF\n"
       "0\t90\t0.5\t180\t1\n",
       "m.mot");
-  ConvertDegreesToRadians(s, [](std::string_view label) {
-    auto column = ParseColumnLabel(label);
+  io::ConvertDegreesToRadians(s, [](std::string_view label) {
+    auto column = io::ParseColumnLabel(label);
     return column && column->coordinate == "knee_angle_r";
   });
   EXPECT_FALSE(s.in_degrees);
@@ -265,10 +265,10 @@ TEST(StorageLabelsTest, ConvertsOnlyRotationalColumns) {
   EXPECT_DOUBLE_EQ(s.Value(0, 2), std::numbers::pi);
   EXPECT_EQ(s.Value(0, 3), 1.0);
   // Already in radians: nothing happens.
-  ConvertDegreesToRadians(s, [](std::string_view) { return true; });
+  io::ConvertDegreesToRadians(s, [](std::string_view) { return true; });
   EXPECT_DOUBLE_EQ(s.Value(0, 0), std::numbers::pi / 2);
   // And back.
-  ConvertRadiansToDegrees(s, [](std::string_view label) { return label == "knee_angle_r"; });
+  io::ConvertRadiansToDegrees(s, [](std::string_view label) { return label == "knee_angle_r"; });
   EXPECT_TRUE(s.in_degrees);
   EXPECT_DOUBLE_EQ(s.Value(0, 0), 90.0);
 }

@@ -29,25 +29,25 @@ TEST(CorpusPoseTest, EveryModelPosesAtItsDefaults) {
   int posed = 0;
   std::vector<std::string> rejected_by_reader, unsupported_joint;
   for (const fs::path& file : files) {
-    ModelSpec spec;
+    model::ModelSpec spec;
     try {
-      spec = ReadOsim(file.string());
+      spec = io::ReadOsim(file.string());
     } catch (const Error& e) {
       rejected_by_reader.push_back(e.what());
       continue;
     }
     bool unsupported = false;
-    for (const JointSpec& j : spec.joints) {
-      if (j.kind == JointType::kUnknown || j.kind == JointType::kConstantCurvature) {
+    for (const model::JointSpec& j : spec.joints) {
+      if (j.kind == model::JointType::kUnknown || j.kind == model::JointType::kConstantCurvature) {
         unsupported_joint.push_back(file.string() + ": " + j.path + " (" + j.type + ")");
         unsupported = true;
       }
     }
     if (unsupported) continue;
     try {
-      const KinematicTree tree(spec);
+      const kinematics::KinematicTree tree(spec);
       std::vector<Transform> X(tree.num_bodies());
-      CalcBodyPoses(tree, tree.default_q(), X);
+      kinematics::CalcBodyPoses(tree, tree.default_q(), X);
       for (size_t b = 0; b < X.size(); ++b) {
         EXPECT_TRUE(X[b].p.allFinite() && X[b].R.allFinite()) << file << " " << spec.bodies[b].name;
         EXPECT_LT((X[b].R.transpose() * X[b].R - Mat3::Identity()).norm(), 1e-12)

@@ -14,8 +14,8 @@
 namespace sinew {
 namespace {
 
-int AddBody(ModelSpec& spec, const std::string& name, const Vec3& mass_center) {
-  BodySpec b;
+int AddBody(model::ModelSpec& spec, const std::string& name, const Vec3& mass_center) {
+  model::BodySpec b;
   b.name = name;
   b.path = "/bodyset/" + name;
   b.mass = 1.0;
@@ -24,9 +24,9 @@ int AddBody(ModelSpec& spec, const std::string& name, const Vec3& mass_center) {
   return static_cast<int>(spec.bodies.size()) - 1;
 }
 
-int AddJoint(ModelSpec& spec, const std::string& name, JointType kind, int parent, int child,
-             const Transform& X_PF, const Transform& X_BM, int num_coordinates) {
-  JointSpec j;
+int AddJoint(model::ModelSpec& spec, const std::string& name, model::JointType kind, int parent,
+             int child, const Transform& X_PF, const Transform& X_BM, int num_coordinates) {
+  model::JointSpec j;
   j.name = name;
   j.path = "/jointset/" + name;
   j.kind = kind;
@@ -36,7 +36,7 @@ int AddJoint(ModelSpec& spec, const std::string& name, JointType kind, int paren
   j.X_PF = X_PF;
   j.X_BM = X_BM;
   for (int i = 0; i < num_coordinates; ++i) {
-    CoordinateSpec c;
+    model::CoordinateSpec c;
     c.name = name + "_q" + std::to_string(i);
     c.joint = static_cast<int>(spec.joints.size());
     j.coordinates.push_back(static_cast<int>(spec.coordinates.size()));
@@ -48,29 +48,29 @@ int AddJoint(ModelSpec& spec, const std::string& name, JointType kind, int paren
 
 // OpenSim's double pendulum: pins about z, each rod hangs 0.5 m below its pin (child frame at
 // y = +0.5 in the rod), mass centres at the rod origins.
-ModelSpec DoublePendulum(bool reverse_second) {
-  ModelSpec spec;
+model::ModelSpec DoublePendulum(bool reverse_second) {
+  model::ModelSpec spec;
   AddBody(spec, "ground", Vec3::Zero());
   const int rod1 = AddBody(spec, "rod1", Vec3::Zero());
   const int rod2 = AddBody(spec, "rod2", Vec3::Zero());
   const Transform pin_in_rod = Transform::Translation(Vec3(0, 0.5, 0));
-  AddJoint(spec, "pin1", JointType::kPin, 0, rod1, Transform(), pin_in_rod, 1);
+  AddJoint(spec, "pin1", model::JointType::kPin, 0, rod1, Transform(), pin_in_rod, 1);
   if (reverse_second) {
     // As OpenSim 4 reads a 3.x joint with reverse=true: parent and child frames swapped.
-    AddJoint(spec, "pin2", JointType::kPin, rod2, rod1, pin_in_rod, Transform(), 1);
+    AddJoint(spec, "pin2", model::JointType::kPin, rod2, rod1, pin_in_rod, Transform(), 1);
   } else {
-    AddJoint(spec, "pin2", JointType::kPin, rod1, rod2, Transform(), pin_in_rod, 1);
+    AddJoint(spec, "pin2", model::JointType::kPin, rod1, rod2, Transform(), pin_in_rod, 1);
   }
   return spec;
 }
 
 TEST(ForwardKinematicsTest, DoublePendulumByHand) {
-  const ModelSpec spec = DoublePendulum(false);
-  const KinematicTree tree(spec);
+  const model::ModelSpec spec = DoublePendulum(false);
+  const kinematics::KinematicTree tree(spec);
   const double q1 = -0.78539816, q2 = -1.04719755;
   const std::vector<double> q = {q1, q2};
   std::vector<Transform> X(3);
-  CalcBodyPoses(tree, q, X);
+  kinematics::CalcBodyPoses(tree, q, X);
   // rod1 origin 0.5 m from the pivot along its -y axis, rotated by q1; rod2 likewise from
   // rod1's origin, rotated by q1 + q2.
   const Vec3 p1(0.5 * std::sin(q1), -0.5 * std::cos(q1), 0);
@@ -82,27 +82,29 @@ TEST(ForwardKinematicsTest, DoublePendulumByHand) {
 
 TEST(ForwardKinematicsTest, ReversedJointInvertsItsTransform) {
   // With parent and child swapped, X_FM(q) maps rod2's frame to rod1's: rod2 turns by -q2.
-  const KinematicTree forward(DoublePendulum(false)), reversed(DoublePendulum(true));
+  const kinematics::KinematicTree forward(DoublePendulum(false)), reversed(DoublePendulum(true));
   ASSERT_TRUE(reversed.joints()[1].reversed);
   ASSERT_FALSE(forward.joints()[1].reversed);
   std::vector<Transform> Xf(3), Xr(3);
   const std::vector<double> qf = {0.3, -0.9}, qr = {0.3, 0.9};
-  CalcBodyPoses(forward, qf, Xf);
-  CalcBodyPoses(reversed, qr, Xr);
+  kinematics::CalcBodyPoses(forward, qf, Xf);
+  kinematics::CalcBodyPoses(reversed, qr, Xr);
   for (int b = 0; b < 3; ++b) EXPECT_TRUE(Xf[b].isApprox(Xr[b], 1e-14)) << b;
 }
 
 // A chain with every kind of joint, one of them reversed, and a CustomJoint.
-ModelSpec MixedChain() {
-  ModelSpec spec;
+model::ModelSpec MixedChain() {
+  model::ModelSpec spec;
   AddBody(spec, "ground", Vec3::Zero());
   const Transform X1(RotationFromBodyFixedXYZ(Vec3(0.1, 0.2, -0.3)), Vec3(0.1, -0.2, 0.05));
   const Transform X2(RotationFromBodyFixedXYZ(Vec3(-0.4, 0.3, 0.2)), Vec3(-0.05, 0.3, 0.1));
   int prev = 0;
-  const std::vector<std::pair<JointType, int>> kinds = {
-      {JointType::kFree, 6},   {JointType::kBall, 3},      {JointType::kPin, 1},
-      {JointType::kGimbal, 3}, {JointType::kEllipsoid, 3}, {JointType::kUniversal, 2},
-      {JointType::kPlanar, 3}, {JointType::kCustom, 2},    {JointType::kSlider, 1}};
+  const std::vector<std::pair<model::JointType, int>> kinds = {
+      {model::JointType::kFree, 6},      {model::JointType::kBall, 3},
+      {model::JointType::kPin, 1},       {model::JointType::kGimbal, 3},
+      {model::JointType::kEllipsoid, 3}, {model::JointType::kUniversal, 2},
+      {model::JointType::kPlanar, 3},    {model::JointType::kCustom, 2},
+      {model::JointType::kSlider, 1}};
   for (size_t i = 0; i < kinds.size(); ++i) {
     const int body = AddBody(spec, "b" + std::to_string(i), Vec3(0.01, 0.02 * i, -0.03));
     const bool reverse = (i == 2 || i == 5);
@@ -110,14 +112,15 @@ ModelSpec MixedChain() {
                                      X1, kinds[i].second)
                           : AddJoint(spec, "j" + std::to_string(i), kinds[i].first, prev, body, X1,
                                      X2, kinds[i].second);
-    JointSpec& joint = spec.joints[j];
-    if (kinds[i].first == JointType::kEllipsoid) joint.parameters["radii_x_y_z"] = {0.1, 0.2, 0.15};
-    if (kinds[i].first == JointType::kCustom) {
+    model::JointSpec& joint = spec.joints[j];
+    if (kinds[i].first == model::JointType::kEllipsoid)
+      joint.parameters["radii_x_y_z"] = {0.1, 0.2, 0.15};
+    if (kinds[i].first == model::JointType::kCustom) {
       using testing::TestConstantFunction;
       using testing::TestSmoothFunction;
       const int c0 = joint.coordinates[0], c1 = joint.coordinates[1];
-      auto axis = [](const char* name, Vec3 a, std::vector<int> c, FunctionPtr f) {
-        TransformAxisSpec t;
+      auto axis = [](const char* name, Vec3 a, std::vector<int> c, functions::FunctionPtr f) {
+        model::TransformAxisSpec t;
         t.name = name;
         t.axis = a;
         t.coordinates = std::move(c);
@@ -142,8 +145,8 @@ ModelSpec MixedChain() {
 }
 
 TEST(ForwardKinematicsTest, BodyVelocitiesMatchFiniteDifferencesOfPoses) {
-  const ModelSpec spec = MixedChain();
-  const KinematicTree tree(spec);
+  const model::ModelSpec spec = MixedChain();
+  const kinematics::KinematicTree tree(spec);
   const int nb = tree.num_bodies(), nq = tree.num_coordinates();
   std::vector<double> q(nq), u(nq), qdot(nq);
   for (int i = 0; i < nq; ++i) {
@@ -151,7 +154,7 @@ TEST(ForwardKinematicsTest, BodyVelocitiesMatchFiniteDifferencesOfPoses) {
     u[i] = 0.8 * std::cos(0.9 * i + 0.1);
   }
   // qdot = N(q) u joint by joint.
-  for (const TreeJoint& t : tree.joints()) {
+  for (const kinematics::TreeJoint& t : tree.joints()) {
     double ql[6], ul[6], qdl[6];
     for (int k = 0; k < t.nq; ++k) {
       ql[k] = q[t.q_index[k]];
@@ -163,16 +166,16 @@ TEST(ForwardKinematicsTest, BodyVelocitiesMatchFiniteDifferencesOfPoses) {
   }
   std::vector<Transform> X(nb), Xp(nb), Xm(nb);
   std::vector<SpatialVec> V(nb);
-  CalcBodyPoses(tree, q, X);
-  CalcBodyVelocities(tree, q, u, X, V);
+  kinematics::CalcBodyPoses(tree, q, X);
+  kinematics::CalcBodyVelocities(tree, q, u, X, V);
   const double h = 1e-6;
   std::vector<double> qp(q), qm(q);
   for (int i = 0; i < nq; ++i) {
     qp[i] += h * qdot[i];
     qm[i] -= h * qdot[i];
   }
-  CalcBodyPoses(tree, qp, Xp);
-  CalcBodyPoses(tree, qm, Xm);
+  kinematics::CalcBodyPoses(tree, qp, Xp);
+  kinematics::CalcBodyPoses(tree, qm, Xm);
   for (int b = 1; b < nb; ++b) {
     const Mat3 W = (Xp[b].R - Xm[b].R) / (2 * h) * X[b].R.transpose();
     const Vec3 w(0.5 * (W(2, 1) - W(1, 2)), 0.5 * (W(0, 2) - W(2, 0)), 0.5 * (W(1, 0) - W(0, 1)));
@@ -183,44 +186,44 @@ TEST(ForwardKinematicsTest, BodyVelocitiesMatchFiniteDifferencesOfPoses) {
     // A station's velocity agrees with the same differences.
     const Vec3 s(0.1, -0.2, 0.3);
     const Vec3 vs = (Xp[b] * s - Xm[b] * s) / (2 * h);
-    EXPECT_LT((CalcStationVelocity(X[b], V[b], s) - vs).norm(), 1e-8);
+    EXPECT_LT((kinematics::CalcStationVelocity(X[b], V[b], s) - vs).norm(), 1e-8);
   }
 }
 
 TEST(ForwardKinematicsTest, MassCentresAndMarkers) {
-  ModelSpec spec = DoublePendulum(false);
+  model::ModelSpec spec = DoublePendulum(false);
   spec.bodies[2].mass_center = Vec3(0.1, 0, 0);
-  MarkerSpec m;
+  model::MarkerSpec m;
   m.name = "tip";
   m.body = 2;
   m.location = Vec3(0, -0.5, 0);
   spec.markers.push_back(m);
-  const KinematicTree tree(spec);
+  const kinematics::KinematicTree tree(spec);
   std::vector<Transform> X(3);
   const std::vector<double> q = {0.0, std::acos(-1.0) / 2};
-  CalcBodyPoses(tree, q, X);
+  kinematics::CalcBodyPoses(tree, q, X);
   // rod1 hangs at (0, -0.5); rod2 turned 90 deg: its -y axis points along +x.
-  const std::vector<Vec3> com = CalcMassCenterLocations(spec, X);
+  const std::vector<Vec3> com = kinematics::CalcMassCenterLocations(spec, X);
   EXPECT_TRUE(com[2].isApprox(Vec3(0.5, -0.5, 0) + Vec3(0, 0.1, 0), 1e-15));
-  const std::vector<Vec3> markers = CalcMarkerLocations(spec, X);
+  const std::vector<Vec3> markers = kinematics::CalcMarkerLocations(spec, X);
   EXPECT_TRUE(markers[0].isApprox(Vec3(1.0, -0.5, 0), 1e-15));
 }
 
 TEST(KinematicTreeTest, DisconnectedBodyIsAnErrorAndLoopJointsAreListed) {
-  ModelSpec spec = DoublePendulum(false);
+  model::ModelSpec spec = DoublePendulum(false);
   AddBody(spec, "floating", Vec3::Zero());
   spec.bodies.back().where = {"m.osim", 7};
   try {
-    KinematicTree tree(spec);
+    kinematics::KinematicTree tree(spec);
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.where().line, 7);
     EXPECT_EQ(e.component(), "/bodyset/floating");
   }
-  ModelSpec loop = DoublePendulum(false);
+  model::ModelSpec loop = DoublePendulum(false);
   const int closing =
-      AddJoint(loop, "closing", JointType::kWeld, 2, 0, Transform(), Transform(), 0);
-  const KinematicTree tree(loop);
+      AddJoint(loop, "closing", model::JointType::kWeld, 2, 0, Transform(), Transform(), 0);
+  const kinematics::KinematicTree tree(loop);
   EXPECT_EQ(tree.loop_joints(), std::vector<int>{closing});
   EXPECT_EQ(tree.joints().size(), 2u);  // the loop joint places nothing
 }

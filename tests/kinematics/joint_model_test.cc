@@ -21,12 +21,12 @@ using sinew::testing::TestSmoothFunction;
 using sinew::testing::TestTwoArgFunction;
 
 // A model with ground, one body and one joint of `kind` with `n` coordinates.
-ModelSpec MakeSpec(JointType kind, const std::string& type, int n) {
-  ModelSpec spec;
+model::ModelSpec MakeSpec(model::JointType kind, const std::string& type, int n) {
+  model::ModelSpec spec;
   spec.bodies.resize(2);
   spec.bodies[0].name = "ground";
   spec.bodies[1].name = "body";
-  JointSpec joint;
+  model::JointSpec joint;
   joint.name = "joint";
   joint.path = "/jointset/joint";
   joint.type = type;
@@ -34,7 +34,7 @@ ModelSpec MakeSpec(JointType kind, const std::string& type, int n) {
   joint.parent_body = 0;
   joint.child_body = 1;
   for (int i = 0; i < n; ++i) {
-    CoordinateSpec c;
+    model::CoordinateSpec c;
     c.name = "q" + std::to_string(i);
     c.joint = 0;
     spec.coordinates.push_back(c);
@@ -44,8 +44,9 @@ ModelSpec MakeSpec(JointType kind, const std::string& type, int n) {
   return spec;
 }
 
-TransformAxisSpec Axis(const std::string& name, Vec3 axis, std::vector<int> coords, FunctionPtr f) {
-  TransformAxisSpec a;
+model::TransformAxisSpec Axis(const std::string& name, Vec3 axis, std::vector<int> coords,
+                              functions::FunctionPtr f) {
+  model::TransformAxisSpec a;
   a.name = name;
   a.axis = axis;
   a.coordinates = std::move(coords);
@@ -55,8 +56,8 @@ TransformAxisSpec Axis(const std::string& name, Vec3 axis, std::vector<int> coor
 
 // A CustomJoint with oblique axes, a one-argument nonlinear function, a two-argument coupling,
 // a constant and linear functions of slope -1.
-ModelSpec MakeCustomSpec() {
-  ModelSpec spec = MakeSpec(JointType::kCustom, "CustomJoint", 3);
+model::ModelSpec MakeCustomSpec() {
+  model::ModelSpec spec = MakeSpec(model::JointType::kCustom, "CustomJoint", 3);
   auto& st = spec.joints[0].spatial_transform;
   st.push_back(Axis("rotation1", Vec3(1, 0.2, 0), {0},
                     std::make_shared<TestSmoothFunction>(0.1, 0.9, 0.2, 0.3)));
@@ -74,24 +75,24 @@ ModelSpec MakeCustomSpec() {
 
 struct JointCase {
   std::string name;
-  ModelSpec spec;
+  model::ModelSpec spec;
 };
 
 std::vector<JointCase> AllJointCases() {
   std::vector<JointCase> cases;
-  cases.push_back({"Pin", MakeSpec(JointType::kPin, "PinJoint", 1)});
-  cases.push_back({"Slider", MakeSpec(JointType::kSlider, "SliderJoint", 1)});
-  cases.push_back({"Universal", MakeSpec(JointType::kUniversal, "UniversalJoint", 2)});
-  cases.push_back({"Gimbal", MakeSpec(JointType::kGimbal, "GimbalJoint", 3)});
-  cases.push_back({"Ball", MakeSpec(JointType::kBall, "BallJoint", 3)});
-  cases.push_back({"Free", MakeSpec(JointType::kFree, "FreeJoint", 6)});
-  cases.push_back({"Planar", MakeSpec(JointType::kPlanar, "PlanarJoint", 3)});
-  JointCase ellipsoid{"Ellipsoid", MakeSpec(JointType::kEllipsoid, "EllipsoidJoint", 3)};
+  cases.push_back({"Pin", MakeSpec(model::JointType::kPin, "PinJoint", 1)});
+  cases.push_back({"Slider", MakeSpec(model::JointType::kSlider, "SliderJoint", 1)});
+  cases.push_back({"Universal", MakeSpec(model::JointType::kUniversal, "UniversalJoint", 2)});
+  cases.push_back({"Gimbal", MakeSpec(model::JointType::kGimbal, "GimbalJoint", 3)});
+  cases.push_back({"Ball", MakeSpec(model::JointType::kBall, "BallJoint", 3)});
+  cases.push_back({"Free", MakeSpec(model::JointType::kFree, "FreeJoint", 6)});
+  cases.push_back({"Planar", MakeSpec(model::JointType::kPlanar, "PlanarJoint", 3)});
+  JointCase ellipsoid{"Ellipsoid", MakeSpec(model::JointType::kEllipsoid, "EllipsoidJoint", 3)};
   ellipsoid.spec.joints[0].parameters["radii_x_y_z"] = {0.07, 0.15, 0.09};
   cases.push_back(ellipsoid);
-  cases.push_back({"Weld", MakeSpec(JointType::kWeld, "WeldJoint", 0)});
+  cases.push_back({"Weld", MakeSpec(model::JointType::kWeld, "WeldJoint", 0)});
   JointCase scap{"Scapulothoracic",
-                 MakeSpec(JointType::kScapulothoracic, "ScapulothoracicJoint", 4)};
+                 MakeSpec(model::JointType::kScapulothoracic, "ScapulothoracicJoint", 4)};
   scap.spec.joints[0].parameters["thoracic_ellipsoid_radii_x_y_z"] = {0.07, 0.15, 0.09};
   scap.spec.joints[0].parameters["scapula_winging_axis_origin"] = {0.02, -0.03};
   scap.spec.joints[0].parameters["scapula_winging_axis_direction"] = {0.4};
@@ -101,7 +102,7 @@ std::vector<JointCase> AllJointCases() {
 }
 
 // Spatial velocity of M in F, in F, by central differences of X_FM along qdot.
-SpatialVec NumericVelocity(const JointModel& joint, const std::vector<double>& q,
+SpatialVec NumericVelocity(const kinematics::JointModel& joint, const std::vector<double>& q,
                            const std::vector<double>& qdot, double h) {
   std::vector<double> qp(q), qm(q);
   for (size_t i = 0; i < q.size(); ++i) {
@@ -126,7 +127,7 @@ class JointModelTest : public ::testing::TestWithParam<int> {};
 
 TEST_P(JointModelTest, VelocityMapMatchesFiniteDifferences) {
   const JointCase c = AllJointCases()[GetParam()];
-  const auto joint = MakeJointModel(c.spec, 0);
+  const auto joint = kinematics::MakeJointModel(c.spec, 0);
   const int n = joint->nq();
   for (int trial = 0; trial < 4; ++trial) {
     const std::vector<double> q = Sample(n, 0.7, 0.4 + trial);
@@ -150,7 +151,7 @@ TEST_P(JointModelTest, VelocityMapMatchesFiniteDifferences) {
 
 TEST_P(JointModelTest, BiasAccelerationMatchesFiniteDifferences) {
   const JointCase c = AllJointCases()[GetParam()];
-  const auto joint = MakeJointModel(c.spec, 0);
+  const auto joint = kinematics::MakeJointModel(c.spec, 0);
   const int n = joint->nq();
   for (int trial = 0; trial < 4; ++trial) {
     const std::vector<double> q = Sample(n, 0.6, 1.0 + trial);
@@ -184,7 +185,7 @@ INSTANTIATE_TEST_SUITE_P(AllJoints, JointModelTest, ::testing::Range(0, 11),
 Mat3 Rot(const Vec3& axis, double angle) { return RotationAboutAxis(axis, angle); }
 
 TEST(JointTransformTest, PinRotatesAboutZ) {
-  const auto joint = MakeJointModel(MakeSpec(JointType::kPin, "PinJoint", 1), 0);
+  const auto joint = kinematics::MakeJointModel(MakeSpec(model::JointType::kPin, "PinJoint", 1), 0);
   const double q[] = {0.5};
   const Transform X = joint->CalcX_FM(q);
   Mat3 R;
@@ -194,7 +195,8 @@ TEST(JointTransformTest, PinRotatesAboutZ) {
 }
 
 TEST(JointTransformTest, SliderTranslatesAlongX) {
-  const auto joint = MakeJointModel(MakeSpec(JointType::kSlider, "SliderJoint", 1), 0);
+  const auto joint =
+      kinematics::MakeJointModel(MakeSpec(model::JointType::kSlider, "SliderJoint", 1), 0);
   const double q[] = {-0.25};
   const Transform X = joint->CalcX_FM(q);
   EXPECT_TRUE(X.R.isIdentity(0));
@@ -205,21 +207,24 @@ TEST(JointTransformTest, UniversalGimbalBallFreeAreBodyFixedXYZ) {
   const double q[] = {0.3, -0.7, 1.2, 0.1, 0.2, 0.3};
   const Mat3 R3 = Rot(Vec3::UnitX(), q[0]) * Rot(Vec3::UnitY(), q[1]) * Rot(Vec3::UnitZ(), q[2]);
   const Mat3 R2 = Rot(Vec3::UnitX(), q[0]) * Rot(Vec3::UnitY(), q[1]);
-  EXPECT_TRUE(MakeJointModel(MakeSpec(JointType::kUniversal, "UniversalJoint", 2), 0)
-                  ->CalcX_FM(q)
-                  .R.isApprox(R2, 1e-14));
-  for (JointType kind : {JointType::kGimbal, JointType::kBall}) {
-    const Transform X = MakeJointModel(MakeSpec(kind, "J", 3), 0)->CalcX_FM(q);
+  EXPECT_TRUE(
+      kinematics::MakeJointModel(MakeSpec(model::JointType::kUniversal, "UniversalJoint", 2), 0)
+          ->CalcX_FM(q)
+          .R.isApprox(R2, 1e-14));
+  for (model::JointType kind : {model::JointType::kGimbal, model::JointType::kBall}) {
+    const Transform X = kinematics::MakeJointModel(MakeSpec(kind, "J", 3), 0)->CalcX_FM(q);
     EXPECT_TRUE(X.R.isApprox(R3, 1e-14));
     EXPECT_EQ(X.p.norm(), 0.0);
   }
-  const Transform X = MakeJointModel(MakeSpec(JointType::kFree, "FreeJoint", 6), 0)->CalcX_FM(q);
+  const Transform X =
+      kinematics::MakeJointModel(MakeSpec(model::JointType::kFree, "FreeJoint", 6), 0)->CalcX_FM(q);
   EXPECT_TRUE(X.R.isApprox(R3, 1e-14));
   EXPECT_TRUE(X.p.isApprox(Vec3(0.1, 0.2, 0.3), 1e-15));  // in F, not rotated
 }
 
 TEST(JointTransformTest, PlanarRotatesAboutZThenTranslatesInF) {
-  const auto joint = MakeJointModel(MakeSpec(JointType::kPlanar, "PlanarJoint", 3), 0);
+  const auto joint =
+      kinematics::MakeJointModel(MakeSpec(model::JointType::kPlanar, "PlanarJoint", 3), 0);
   const double q[] = {0.8, 0.3, -0.4};
   const Transform X = joint->CalcX_FM(q);
   EXPECT_TRUE(X.R.isApprox(Rot(Vec3::UnitZ(), 0.8), 1e-15));
@@ -227,10 +232,10 @@ TEST(JointTransformTest, PlanarRotatesAboutZThenTranslatesInF) {
 }
 
 TEST(JointTransformTest, EllipsoidKeepsMOnTheSurfaceWithNormalAlongMz) {
-  ModelSpec spec = MakeSpec(JointType::kEllipsoid, "EllipsoidJoint", 3);
+  model::ModelSpec spec = MakeSpec(model::JointType::kEllipsoid, "EllipsoidJoint", 3);
   const Vec3 r(0.07, 0.15, 0.09);
   spec.joints[0].parameters["radii_x_y_z"] = {r.x(), r.y(), r.z()};
-  const auto joint = MakeJointModel(spec, 0);
+  const auto joint = kinematics::MakeJointModel(spec, 0);
   const double q0[] = {0, 0, 0};
   EXPECT_TRUE(joint->CalcX_FM(q0).p.isApprox(Vec3(0, 0, r.z()), 1e-15));
   const double q[] = {0.4, -0.3, 0.9};
@@ -242,12 +247,12 @@ TEST(JointTransformTest, EllipsoidKeepsMOnTheSurfaceWithNormalAlongMz) {
 }
 
 TEST(JointTransformTest, ScapulothoracicFollowsItsSimbodyConstruction) {
-  ModelSpec spec = MakeSpec(JointType::kScapulothoracic, "ScapulothoracicJoint", 4);
+  model::ModelSpec spec = MakeSpec(model::JointType::kScapulothoracic, "ScapulothoracicJoint", 4);
   const Vec3 r(0.07, 0.15, 0.09);
   spec.joints[0].parameters["thoracic_ellipsoid_radii_x_y_z"] = {r.x(), r.y(), r.z()};
   spec.joints[0].parameters["scapula_winging_axis_origin"] = {0.02, -0.03};
   spec.joints[0].parameters["scapula_winging_axis_direction"] = {0.4};
-  const auto joint = MakeJointModel(spec, 0);
+  const auto joint = kinematics::MakeJointModel(spec, 0);
   // q = 0: M sits on the ellipsoid's z pole, axes aligned with F.
   const double q0[] = {0, 0, 0, 0};
   const Transform X0 = joint->CalcX_FM(q0);
@@ -272,8 +277,8 @@ TEST(JointTransformTest, ScapulothoracicFollowsItsSimbodyConstruction) {
 }
 
 TEST(JointTransformTest, CustomJointComposesBodyFixedRotationsAndUnrotatedTranslations) {
-  const ModelSpec spec = MakeCustomSpec();
-  const auto joint = MakeJointModel(spec, 0);
+  const model::ModelSpec spec = MakeCustomSpec();
+  const auto joint = kinematics::MakeJointModel(spec, 0);
   const double q[] = {0.3, -0.5, 0.8};
   const auto& st = spec.joints[0].spatial_transform;
   const double s1 = st[0].function->Calc(q[0]);
@@ -290,21 +295,21 @@ TEST(JointTransformTest, CustomJointComposesBodyFixedRotationsAndUnrotatedTransl
 
 TEST(JointTransformTest, LinearFunctionWithoutCoordinatesGivesItsSlopeAsOpenSimDoes) {
   // SimTK::Function::Linear called with no arguments returns coefficients[0].
-  ModelSpec spec = MakeCustomSpec();
+  model::ModelSpec spec = MakeCustomSpec();
   spec.joints[0].spatial_transform[4].function = std::make_shared<TestLinearFunction>(0.3, 0.7);
-  const auto joint = MakeJointModel(spec, 0);
-  const ModelSpec reference_spec = MakeCustomSpec();  // translation2 = Constant(0.05)
-  const auto reference = MakeJointModel(reference_spec, 0);
+  const auto joint = kinematics::MakeJointModel(spec, 0);
+  const model::ModelSpec reference_spec = MakeCustomSpec();  // translation2 = Constant(0.05)
+  const auto reference = kinematics::MakeJointModel(reference_spec, 0);
   const double q[] = {0.3, -0.5, 0.8};
   const Vec3 dp = joint->CalcX_FM(q).p - reference->CalcX_FM(q).p;
   EXPECT_TRUE(dp.isApprox(Vec3(0, 0.3 - 0.05, 0), 1e-15)) << dp.transpose();
 }
 
 TEST(JointModelErrorsTest, WrongCoordinateCountNamesTheJoint) {
-  ModelSpec spec = MakeSpec(JointType::kPin, "PinJoint", 2);
+  model::ModelSpec spec = MakeSpec(model::JointType::kPin, "PinJoint", 2);
   spec.joints[0].where = {"model.osim", 42};
   try {
-    MakeJointModel(spec, 0);
+    kinematics::MakeJointModel(spec, 0);
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_EQ(e.where().line, 42);
@@ -314,23 +319,26 @@ TEST(JointModelErrorsTest, WrongCoordinateCountNamesTheJoint) {
 }
 
 TEST(JointModelErrorsTest, CollinearCustomAxesAndMissingParametersAreErrors) {
-  ModelSpec spec = MakeCustomSpec();
+  model::ModelSpec spec = MakeCustomSpec();
   spec.joints[0].spatial_transform[1].axis = Vec3(2, 0.4, 0);  // parallel to rotation1
-  EXPECT_THROW(MakeJointModel(spec, 0), Error);
-  EXPECT_THROW(MakeJointModel(MakeSpec(JointType::kEllipsoid, "EllipsoidJoint", 3), 0), Error);
-  EXPECT_THROW(MakeJointModel(MakeSpec(JointType::kUnknown, "PluginJoint", 1), 0), Error);
+  EXPECT_THROW(kinematics::MakeJointModel(spec, 0), Error);
+  EXPECT_THROW(
+      kinematics::MakeJointModel(MakeSpec(model::JointType::kEllipsoid, "EllipsoidJoint", 3), 0),
+      Error);
+  EXPECT_THROW(
+      kinematics::MakeJointModel(MakeSpec(model::JointType::kUnknown, "PluginJoint", 1), 0), Error);
 }
 
 TEST(JointModelErrorsTest, CustomAxisWithForeignCoordinateOrWrongArityIsAnError) {
-  ModelSpec foreign = MakeCustomSpec();
-  CoordinateSpec other;
+  model::ModelSpec foreign = MakeCustomSpec();
+  model::CoordinateSpec other;
   other.name = "other";
   foreign.coordinates.push_back(other);
   foreign.joints[0].spatial_transform[0].coordinates = {3};  // not one of the joint's
-  EXPECT_THROW(MakeJointModel(foreign, 0), Error);
-  ModelSpec arity = MakeCustomSpec();
+  EXPECT_THROW(kinematics::MakeJointModel(foreign, 0), Error);
+  model::ModelSpec arity = MakeCustomSpec();
   arity.joints[0].spatial_transform[1].coordinates = {0};  // a 2-argument function, 1 coordinate
-  EXPECT_THROW(MakeJointModel(arity, 0), Error);
+  EXPECT_THROW(kinematics::MakeJointModel(arity, 0), Error);
 }
 
 }  // namespace

@@ -29,28 +29,28 @@ const std::string kChrono =
 
 // Poses every row of `motion` and calls `check(row_index, X_GB)`.
 template <typename Check>
-void ForEachPose(const ModelSpec& spec, const StoTable& motion, Check check) {
-  const KinematicTree tree(spec);
-  const MotionColumnMap map = MapMotionColumns(spec, motion.labels);
+void ForEachPose(const model::ModelSpec& spec, const StoTable& motion, Check check) {
+  const kinematics::KinematicTree tree(spec);
+  const kinematics::MotionColumnMap map = kinematics::MapMotionColumns(spec, motion.labels);
   EXPECT_TRUE(map.unknown.empty()) << map.unknown.front();
   std::vector<double> q = tree.default_q();
   std::vector<Transform> X(tree.num_bodies());
   for (size_t r = 0; r < motion.rows.size(); ++r) {
-    ApplyMotionRow(spec, map, motion.rows[r], motion.in_degrees, q);
-    CalcBodyPoses(tree, q, X);
+    kinematics::ApplyMotionRow(spec, map, motion.rows[r], motion.in_degrees, q);
+    kinematics::CalcBodyPoses(tree, q, X);
     check(r, X);
   }
 }
 
 TEST(OpenSimReferenceTest, HamnerMarkersMatchOpenSimIK) {
-  const ModelSpec spec = ReadOsim(kData + "hamner/subject02_registered.osim");
+  const model::ModelSpec spec = io::ReadOsim(kData + "hamner/subject02_registered.osim");
   const StoTable motion = ReadStoTable(kData + "hamner/subject02_running_ik.mot");
   const StoTable reference = ReadStoTable(kData + "hamner/ik_model_marker_locations.sto");
   ASSERT_EQ(reference.rows.size(), 599u);
   ASSERT_EQ(reference.labels.size(), 1 + 37 * 3u);
   ASSERT_EQ(motion.rows.size(), reference.rows.size());
   // The model has more markers than the IK task used; OpenSim wrote the 37 it tracked.
-  const std::vector<std::string> labels = MarkerLocationLabels(spec);
+  const std::vector<std::string> labels = kinematics::MarkerLocationLabels(spec);
   std::vector<int> column(labels.size());
   int compared = 0;
   for (size_t i = 0; i < labels.size(); ++i) {
@@ -62,7 +62,7 @@ TEST(OpenSimReferenceTest, HamnerMarkersMatchOpenSimIK) {
   std::string worst;
   ForEachPose(spec, motion, [&](size_t r, const std::vector<Transform>& X) {
     EXPECT_NEAR(motion.rows[r][0], reference.rows[r][0], 1e-8);
-    const std::vector<double> row = CalcMarkerLocationRow(spec, X);
+    const std::vector<double> row = kinematics::CalcMarkerLocationRow(spec, X);
     for (size_t i = 0; i < row.size(); ++i) {
       if (column[i] < 0) continue;
       const double e = std::abs(row[i] - reference.rows[r][column[i]]);
@@ -83,12 +83,12 @@ TEST(OpenSimReferenceTest, HamnerPelvisMarkerResidualIsAConstantOffset) {
   // The residual of a pelvis marker is (nearly) the same vector in the pelvis frame in all 599
   // frames: it comes from the model (the stored geometry differs slightly from the one IK ran
   // with), not from the kinematics, which would make it vary with the pose.
-  const ModelSpec spec = ReadOsim(kData + "hamner/subject02_registered.osim");
+  const model::ModelSpec spec = io::ReadOsim(kData + "hamner/subject02_registered.osim");
   const StoTable motion = ReadStoTable(kData + "hamner/subject02_running_ik.mot");
   const StoTable reference = ReadStoTable(kData + "hamner/ik_model_marker_locations.sto");
   for (const char* name : {"L.ASIS", "R.ASIS", "V.Sacral"}) {
     const auto it = std::find_if(spec.markers.begin(), spec.markers.end(),
-                                 [&](const MarkerSpec& m) { return m.name == name; });
+                                 [&](const model::MarkerSpec& m) { return m.name == name; });
     ASSERT_NE(it, spec.markers.end()) << name;
     const int c = reference.Column(std::string(name) + "_tx");
     ASSERT_GE(c, 0);
@@ -116,16 +116,16 @@ double AngleDifferenceDeg(double a, double b) {
 }
 
 TEST(OpenSimReferenceTest, Gait2354BodyKinematicsMatchOpenSim) {
-  const ModelSpec spec = ReadOsim(kData + "gait2354/subject01_simbody_adjusted.osim");
+  const model::ModelSpec spec = io::ReadOsim(kData + "gait2354/subject01_simbody_adjusted.osim");
   const StoTable motion = ReadStoTable(kData + "gait2354/subject01_walk1_Kinematics_q.sto");
   const StoTable reference =
       ReadStoTable(kData + "gait2354/subject01_walk1_BodyKinematics_pos_global.sto");
   ASSERT_EQ(motion.rows.size(), reference.rows.size());
-  const std::vector<std::string> labels = BodyKinematicsLabels(spec);
+  const std::vector<std::string> labels = kinematics::BodyKinematicsLabels(spec);
   double max_position = 0.0, max_angle = 0.0;
   std::string worst_position, worst_angle;
   ForEachPose(spec, motion, [&](size_t r, const std::vector<Transform>& X) {
-    const std::vector<double> row = CalcBodyKinematicsRow(spec, X);
+    const std::vector<double> row = kinematics::CalcBodyKinematicsRow(spec, X);
     for (size_t i = 0; i + 3 < labels.size(); ++i) {  // bodies; center_of_mass below
       const int c = reference.Column(labels[i]);
       ASSERT_GE(c, 0) << labels[i];
@@ -150,7 +150,7 @@ TEST(OpenSimReferenceTest, Gait2354TorsoDiffersByAConstantOffset) {
   // SOURCES.md: the torso mass centre of the stored model differs from the one OpenSim ran
   // with. Its angles must still match, and the position error must be a constant body-fixed
   // offset (same in every frame), which is what a different mass_center gives.
-  const ModelSpec spec = ReadOsim(kData + "gait2354/subject01_simbody_adjusted.osim");
+  const model::ModelSpec spec = io::ReadOsim(kData + "gait2354/subject01_simbody_adjusted.osim");
   const StoTable motion = ReadStoTable(kData + "gait2354/subject01_walk1_Kinematics_q.sto");
   const StoTable reference =
       ReadStoTable(kData + "gait2354/subject01_walk1_BodyKinematics_pos_global.sto");
@@ -178,17 +178,17 @@ TEST(OpenSimReferenceTest, Gait2354BodyVelocitiesMatchOpenSim) {
   // stored model's geometry differs from the one OpenSim ran by tens of nanometres, see
   // Gait2354HipOffsetIsConstantInThePelvis): v_ref - v = d/dt (p_ref - p), which we check with
   // a three-point difference over the (non-uniform) rows.
-  const ModelSpec spec = ReadOsim(kData + "gait2354/subject01_simbody_adjusted.osim");
+  const model::ModelSpec spec = io::ReadOsim(kData + "gait2354/subject01_simbody_adjusted.osim");
   const StoTable motion_q = ReadStoTable(kData + "gait2354/subject01_walk1_Kinematics_q.sto");
   const StoTable motion_u = ReadStoTable(kData + "gait2354/subject01_walk1_Kinematics_u.sto");
   const StoTable ref_p =
       ReadStoTable(kData + "gait2354/subject01_walk1_BodyKinematics_pos_global.sto");
   const StoTable ref_v =
       ReadStoTable(kData + "gait2354/subject01_walk1_BodyKinematics_vel_global.sto");
-  const KinematicTree tree(spec);
-  const MotionColumnMap map_q = MapMotionColumns(spec, motion_q.labels);
-  const MotionColumnMap map_u = MapMotionColumns(spec, motion_u.labels);
-  const std::vector<std::string> labels = BodyKinematicsLabels(spec);
+  const kinematics::KinematicTree tree(spec);
+  const kinematics::MotionColumnMap map_q = kinematics::MapMotionColumns(spec, motion_q.labels);
+  const kinematics::MotionColumnMap map_u = kinematics::MapMotionColumns(spec, motion_u.labels);
+  const std::vector<std::string> labels = kinematics::BodyKinematicsLabels(spec);
   std::vector<double> q = tree.default_q(), u = tree.default_u();
   std::vector<Transform> X(tree.num_bodies());
   std::vector<SpatialVec> V(tree.num_bodies());
@@ -197,12 +197,12 @@ TEST(OpenSimReferenceTest, Gait2354BodyVelocitiesMatchOpenSim) {
   std::vector<std::vector<double>> dp(n), dv(n);
   double max_angular = 0.0, max_linear = 0.0;
   for (size_t r = 0; r < n; ++r) {
-    ApplyMotionRow(spec, map_q, motion_q.rows[r], motion_q.in_degrees, q);
-    ApplyMotionRow(spec, map_u, motion_u.rows[r], motion_u.in_degrees, u);
-    CalcBodyPoses(tree, q, X);
-    CalcBodyVelocities(tree, q, u, X, V);
-    const std::vector<double> p_row = CalcBodyKinematicsRow(spec, X);
-    const std::vector<double> v_row = CalcBodyVelocityRow(spec, X, V);
+    kinematics::ApplyMotionRow(spec, map_q, motion_q.rows[r], motion_q.in_degrees, q);
+    kinematics::ApplyMotionRow(spec, map_u, motion_u.rows[r], motion_u.in_degrees, u);
+    kinematics::CalcBodyPoses(tree, q, X);
+    kinematics::CalcBodyVelocities(tree, q, u, X, V);
+    const std::vector<double> p_row = kinematics::CalcBodyKinematicsRow(spec, X);
+    const std::vector<double> v_row = kinematics::CalcBodyVelocityRow(spec, X, V);
     for (size_t i = 0; i + 3 < labels.size(); ++i) {
       const int c = ref_v.Column(labels[i]);
       ASSERT_GE(c, 0) << labels[i];
@@ -244,7 +244,7 @@ TEST(OpenSimReferenceTest, Gait2354HipOffsetIsConstantInThePelvis) {
   // The femur's mass-centre discrepancy is the same vector in the pelvis frame at every row:
   // the hip joint centre of the stored model differs from the run's by tens of nanometres, a
   // model difference and not a kinematics error (rotations match to 1e-13 degrees).
-  const ModelSpec spec = ReadOsim(kData + "gait2354/subject01_simbody_adjusted.osim");
+  const model::ModelSpec spec = io::ReadOsim(kData + "gait2354/subject01_simbody_adjusted.osim");
   const StoTable motion = ReadStoTable(kData + "gait2354/subject01_walk1_Kinematics_q.sto");
   const StoTable reference =
       ReadStoTable(kData + "gait2354/subject01_walk1_BodyKinematics_pos_global.sto");
@@ -265,18 +265,19 @@ TEST(OpenSimReferenceTest, Gait2354HipOffsetIsConstantInThePelvis) {
 
 // ---- The seed's models, against poses derived by hand ----
 
-std::vector<Transform> DefaultPoses(const ModelSpec& spec, std::vector<double>* q_out = nullptr) {
-  const KinematicTree tree(spec);
+std::vector<Transform> DefaultPoses(const model::ModelSpec& spec,
+                                    std::vector<double>* q_out = nullptr) {
+  const kinematics::KinematicTree tree(spec);
   std::vector<double> q = q_out && !q_out->empty() ? *q_out : tree.default_q();
   std::vector<Transform> X(tree.num_bodies());
-  CalcBodyPoses(tree, q, X);
+  kinematics::CalcBodyPoses(tree, q, X);
   return X;
 }
 
 Mat3 Rot(const Vec3& axis, double angle) { return RotationAboutAxis(axis, angle); }
 
 TEST(SeedModelsTest, DoublePendulumByHand) {
-  const ModelSpec spec = ReadOsim(kChrono + "double_pendulum.osim");
+  const model::ModelSpec spec = io::ReadOsim(kChrono + "double_pendulum.osim");
   const std::vector<Transform> X = DefaultPoses(spec);
   // Pins at the parent origins; each rod's joint frame at y = +0.5 in the rod.
   const double q1 = -0.78539816, q2 = -1.04719755;
@@ -288,7 +289,7 @@ TEST(SeedModelsTest, DoublePendulumByHand) {
 }
 
 TEST(SeedModelsTest, TripleRevoluteByHand) {
-  const ModelSpec spec = ReadOsim(kChrono + "triple_revolute.osim");
+  const model::ModelSpec spec = io::ReadOsim(kChrono + "triple_revolute.osim");
   const std::vector<Transform> X = DefaultPoses(spec);
   // pin1: z by -2; pin2: CustomJoint, x by 0.01 q + 0.2 with q = -0.754; pin3: a PinJoint (its
   // SpatialTransform element is not a PinJoint property in OpenSim and is ignored): z by 0.54.
@@ -304,7 +305,7 @@ TEST(SeedModelsTest, TripleRevoluteByHand) {
 }
 
 TEST(SeedModelsTest, SimmSplineJointByHand) {
-  const ModelSpec spec = ReadOsim(kChrono + "test.osim");
+  const model::ModelSpec spec = io::ReadOsim(kChrono + "test.osim");
   const std::vector<Transform> X = DefaultPoses(spec);
   // rotation1 about x by f(q), f the SimmSpline in the file; the other axes are constant 0.
   const std::vector<double> x = {0,       0.174533, 0.349066, 0.523599, 0.698132, 0.872665, 1.0472,
@@ -312,7 +313,7 @@ TEST(SeedModelsTest, SimmSplineJointByHand) {
   const std::vector<double> y = {0.00113686, -0.00629212, -0.105582, -0.253683, -0.414245,
                                  -0.579047,  -0.747244,   -0.91799,  -1.09044,  -1.26379,
                                  -1.43763,   -1.61186,    -1.78634};
-  const double s = SimmSpline(x, y).Calc(1.35);
+  const double s = functions::SimmSpline(x, y).Calc(1.35);
   const Mat3 R = Rot(Vec3::UnitX(), s);
   const int rod = spec.FindBody("rod");
   EXPECT_TRUE(X[rod].R.isApprox(R, 1e-14));
@@ -320,7 +321,7 @@ TEST(SeedModelsTest, SimmSplineJointByHand) {
 }
 
 TEST(SeedModelsTest, ScapulothoracicJointPlacesTheScapulaAsOpenSim) {
-  const ModelSpec spec = ReadOsim(kChrono + "ScapulothorachicJoint_Shoulder.osim");
+  const model::ModelSpec spec = io::ReadOsim(kChrono + "ScapulothorachicJoint_Shoulder.osim");
   const int scapula = spec.FindBody("scapula"), thorax = spec.FindBody("thorax");
   ASSERT_GE(scapula, 0);
   const Transform X_PF(RotationFromBodyFixedXYZ(Vec3(0, -0.87, 0)), Vec3(-0.02, -0.0173, 0.07));
@@ -338,7 +339,7 @@ TEST(SeedModelsTest, ScapulothoracicJointPlacesTheScapulaAsOpenSim) {
   const int e = spec.FindCoordinate("scapula_elevation");
   const int u = spec.FindCoordinate("scapula_upward_rot");
   const int w = spec.FindCoordinate("scapula_winging");
-  const KinematicTree tree(spec);
+  const kinematics::KinematicTree tree(spec);
   std::vector<double> q = tree.default_q();
   q[a] = 0.2;
   q[e] = -0.3;
@@ -359,10 +360,10 @@ TEST(SeedModelsTest, Reversed3xJointMatchesTheForwardModel) {
   // double_pendulum_testReverse.osim: pin2 has reverse=true, so OpenSim swaps its frames: the
   // rotation is applied from rod2's frame to rod1's, i.e. rod2 turns by -q2 relative to the
   // forward model (whose pin2 frames are otherwise identical).
-  const ModelSpec spec = ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                                  "/osim/opensim-org/opensim-core/OpenSim/Simulation/"
-                                  "SimbodyEngine/Test/double_pendulum_testReverse.osim");
-  const KinematicTree tree(spec);
+  const model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                             "/osim/opensim-org/opensim-core/OpenSim/Simulation/"
+                                             "SimbodyEngine/Test/double_pendulum_testReverse.osim");
+  const kinematics::KinematicTree tree(spec);
   const int pin2 = spec.FindJoint("pin2");
   ASSERT_GE(pin2, 0);
   EXPECT_EQ(spec.bodies[spec.joints[pin2].parent_body].name, "rod2");

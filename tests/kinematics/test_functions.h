@@ -11,7 +11,7 @@
 namespace sinew::testing {
 
 /// f(x) = a + b x + c x^2 + d sin(x): smooth, with non-zero first and second derivatives.
-class TestSmoothFunction final : public Function {
+class TestSmoothFunction final : public functions::Function {
  public:
   TestSmoothFunction(double a, double b, double c, double d) : a_(a), b_(b), c_(c), d_(d) {}
   std::string TypeName() const override { return "TestSmoothFunction"; }
@@ -27,7 +27,7 @@ class TestSmoothFunction final : public Function {
 };
 
 /// f(x0, x1) = x0 * x1 + 0.3 sin(x0) - 0.2 x1^2: a two-argument coupling.
-class TestTwoArgFunction final : public Function {
+class TestTwoArgFunction final : public functions::Function {
  public:
   std::string TypeName() const override { return "TestTwoArgFunction"; }
   int NumArguments() const override { return 2; }
@@ -47,7 +47,7 @@ class TestTwoArgFunction final : public Function {
 };
 
 /// f = value (any number of arguments).
-class TestConstantFunction final : public Function {
+class TestConstantFunction final : public functions::Function {
  public:
   explicit TestConstantFunction(double value) : value_(value) {}
   std::string TypeName() const override { return "Constant"; }
@@ -59,7 +59,7 @@ class TestConstantFunction final : public Function {
 };
 
 /// f(x) = slope x + intercept.
-class TestLinearFunction final : public Function {
+class TestLinearFunction final : public functions::Function {
  public:
   TestLinearFunction(double slope, double intercept) : slope_(slope), intercept_(intercept) {}
   std::string TypeName() const override { return "LinearFunction"; }

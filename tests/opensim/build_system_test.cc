@@ -29,8 +29,8 @@ const std::string kResources =
 // returns the largest differences from `states` over every stored row.
 void RunAgainstOpenSim(const std::string& model, const std::string& initial_states,
                        const std::string& states, double* dq, double* du) {
-  const ModelSpec spec = ReadOsim(kResources + model);
-  const auto system = BuildSystem(spec);
+  const model::ModelSpec spec = io::ReadOsim(kResources + model);
+  const auto system = opensim::BuildSystem(spec);
   engine::State state = engine::MakeDefaultState(*system);
   const auto init = ReadStoColumns(kResources + initial_states);
   for (int c = 0; c < system->num_coordinates(); ++c) {
@@ -77,11 +77,12 @@ TEST(BuildSystemTest, DoublePendulum3DReproducesOpenSim) {
 // gait2354 hung from its pelvis (pelvis coordinates locked), limbs swinging from a bent pose:
 // passive, so kinetic + gravity energy is conserved; constraints stay satisfied.
 TEST(BuildSystemTest, Gait2354HungFromPelvisConservesEnergy) {
-  ModelSpec spec = ReadOsim(kData + "/kinematics/gait2354/subject01_simbody_adjusted.osim");
-  for (CoordinateSpec& c : spec.coordinates) {
+  model::ModelSpec spec =
+      io::ReadOsim(kData + "/kinematics/gait2354/subject01_simbody_adjusted.osim");
+  for (model::CoordinateSpec& c : spec.coordinates) {
     if (c.name.rfind("pelvis_", 0) == 0) c.locked = true;
   }
-  const auto system = BuildSystem(spec);
+  const auto system = opensim::BuildSystem(spec);
   engine::State state = engine::MakeDefaultState(*system);
   const struct {
     const char* name;
@@ -119,10 +120,10 @@ TEST(BuildSystemTest, Gait2354HungFromPelvisConservesEnergy) {
 }
 
 TEST(BuildSystemTest, MasslessModelIsRejected) {
-  ModelSpec spec = ReadOsim(kResources + "SinglePin.osim");
-  for (BodySpec& b : spec.bodies) b.mass = 0.0;
+  model::ModelSpec spec = io::ReadOsim(kResources + "SinglePin.osim");
+  for (model::BodySpec& b : spec.bodies) b.mass = 0.0;
   try {
-    BuildSystem(spec);
+    opensim::BuildSystem(spec);
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("zero mass"), std::string::npos) << e.what();
@@ -131,10 +132,10 @@ TEST(BuildSystemTest, MasslessModelIsRejected) {
 }
 
 TEST(BuildSystemTest, NegativeMassNamesTheBody) {
-  ModelSpec spec = ReadOsim(kResources + "SinglePin.osim");
+  model::ModelSpec spec = io::ReadOsim(kResources + "SinglePin.osim");
   spec.bodies[1].mass = -1.0;
   try {
-    BuildSystem(spec);
+    opensim::BuildSystem(spec);
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("rod1"), std::string::npos) << e.what();
@@ -150,11 +151,12 @@ namespace {
 
 // The linear-time tree elimination and the general sparse LU solve the same KKT system.
 TEST(BuildSystemTest, TreeEliminationEqualsSparseLu) {
-  const ModelSpec spec = ReadOsim(kData + "/kinematics/gait2354/subject01_simbody_adjusted.osim");
+  const model::ModelSpec spec =
+      io::ReadOsim(kData + "/kinematics/gait2354/subject01_simbody_adjusted.osim");
   for (bool direct : {true, false}) {
-    BuildOptions options;
+    opensim::BuildOptions options;
     options.direct_joints = direct;
-    const auto system = BuildSystem(spec, options);
+    const auto system = opensim::BuildSystem(spec, options);
     engine::State state = engine::MakeDefaultState(*system);
     for (int c = 0; c < system->num_coordinates(); ++c) {
       state.q[c] = 0.3 * std::sin(1.0 + c);
@@ -183,13 +185,13 @@ namespace {
 TEST(BuildSystemTest, DirectAndParameterizedJointsAgreeOnRealModels) {
   for (const std::string file : {"/opensim-models/Models/Rajagopal/Rajagopal2016.osim",
                                  "/osim/projectchrono/chrono/data/opensim/newton_cradle.osim"}) {
-    const ModelSpec spec = ReadOsim(kData + file);
+    const model::ModelSpec spec = io::ReadOsim(kData + file);
     double max_dq = 0.0;
     engine::State end[2];
     for (int direct = 0; direct < 2; ++direct) {
-      BuildOptions options;
+      opensim::BuildOptions options;
       options.direct_joints = direct == 1;
-      const auto system = BuildSystem(spec, options);
+      const auto system = opensim::BuildSystem(spec, options);
       engine::State state = engine::MakeDefaultState(*system);
       for (int c = 0; c < system->num_coordinates(); ++c) state.u[c] = 0.3 * std::sin(c + 1.0);
       engine::PlaceBodies(*system, state);

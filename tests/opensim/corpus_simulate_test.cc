@@ -31,8 +31,8 @@ TEST(CorpusSimulateTest, EveryModelSimulatesOrIsRefusedClearly) {
   int simulated = 0, refused = 0;
   for (const auto& file : files) {
     try {
-      const ModelSpec spec = ReadOsim(file.string());
-      const auto system = BuildSystem(spec);
+      const model::ModelSpec spec = io::ReadOsim(file.string());
+      const auto system = opensim::BuildSystem(spec);
       engine::State state = engine::MakeDefaultState(*system);
       engine::IntegratorSettings settings;
       settings.accuracy = 1e-5;

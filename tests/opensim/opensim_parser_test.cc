@@ -47,7 +47,7 @@ std::vector<double> SimulateQ1(const engine::System& system, const std::vector<d
 TEST(OpenSimParserTest, TorqueActuatorWithConstantExcitationGivesParabola) {
   // The model's own PrescribedController excites "grav" with the constant 1: a torque of
   // -9.8 N m about z on rod1 (bodyB), so q'' = -9.8 / I and q = q0 - 4.9 t^2 / I.
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   auto system = parser.Parse(kChronoDir + "torque-actuator.osim");
   EXPECT_EQ(parser.GetReport().GetForce("grav")->excitation_source,
             "PrescribedController prescribedcontroller_");
@@ -61,9 +61,9 @@ TEST(OpenSimParserTest, TorqueActuatorWithConstantExcitationGivesParabola) {
 
 TEST(OpenSimParserTest, TorqueActuatorWithRampExcitationGivesCubic) {
   // Listing 1 of the seed: excitation e(t) = t, so q'' = -9.8 t / I and q = q0 - 9.8 t^3 / 6I.
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   auto system = parser.Parse(kChronoDir + "torque-actuator.osim");
-  parser.SetExcitationFunction("grav", std::make_shared<Ramp>(0.0, 1.0));
+  parser.SetExcitationFunction("grav", std::make_shared<functions::Ramp>(0.0, 1.0));
   EXPECT_EQ(parser.GetReport().GetForce("grav")->excitation_source, "set by user");
   const std::vector<double> times = {0.5, 1.0};
   const std::vector<double> q = SimulateQ1(*system, times);
@@ -75,7 +75,7 @@ TEST(OpenSimParserTest, TorqueActuatorWithRampExcitationGivesCubic) {
 
 TEST(OpenSimParserTest, ControlsFileDrivesItsActuator) {
   // The ControlSet ramps "grav.excitation" through (0, 0) and (0.5, 0.5), extrapolated: e = t.
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   parser.SetControlsFile(std::string(SINEW_TEST_DATA_DIR) + "/controls/grav_ramp_controls.xml");
   auto system = parser.Parse(kChronoDir + "torque-actuator.osim");
   EXPECT_EQ(parser.GetReport().GetForce("grav")->excitation_source, "controls file");
@@ -100,7 +100,7 @@ TEST(OpenSimParserTest, PointActuatorWithConstantExcitationIsAnExactPendulum) {
   // rod1, 1.5 m below the pin, so I q'' = -1.5 * 9.8 * sin q: a pendulum released at rest
   // from q0. It passes q = 0 at a quarter period and reaches -q0 at half a period, where the
   // period is 4 K(sin(|q0|/2)) / w with w = sqrt(1.5 * 9.8 / I).
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   auto system = parser.Parse(kChronoDir + "point-actuator.osim");
   const double w = std::sqrt(1.5 * 9.8 / kPinInertia);
   const double period = 4.0 * EllipticK(std::sin(std::abs(kQ0) / 2)) / w;
@@ -113,9 +113,9 @@ TEST(OpenSimParserTest, PointActuatorWithConstantExcitationIsAnExactPendulum) {
 TEST(OpenSimParserTest, PointActuatorWithRampExcitationMatchesItsEquationOfMotion) {
   // With e(t) = t the equation I q'' = -1.5 t sin q has no closed form: compare with a
   // classical Runge-Kutta solution of that scalar equation (step 1e-4 s, error ~1e-14).
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   auto system = parser.Parse(kChronoDir + "point-actuator.osim");
-  parser.SetExcitationFunction("grav", std::make_shared<LinearFunction>(1.0, 0.0));
+  parser.SetExcitationFunction("grav", std::make_shared<functions::LinearFunction>(1.0, 0.0));
   const double q_sinew = SimulateQ1(*system, {2.0})[0];
 
   auto accel = [](double t, double q) { return -1.5 * t * std::sin(q) / kPinInertia; };
@@ -137,12 +137,12 @@ TEST(OpenSimParserTest, PointActuatorWithRampExcitationMatchesItsEquationOfMotio
 TEST(OpenSimParserTest, DefaultExcitationIsZeroAndActivateActuatorsMakesItOne) {
   // Without the model's controller (excitation overridden by the user with 0) nothing moves;
   // ActivateActuators(true) gives the constant 1 (4.9 t^2 / I as with the controller).
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   auto system = parser.Parse(kChronoDir + "torque-actuator.osim");
   parser.SetExcitationFunction("grav", nullptr);
   EXPECT_NEAR(SimulateQ1(*system, {1.0})[0], kQ0, 1e-12);
 
-  OpenSimParser active;
+  opensim::OpenSimParser active;
   active.ActivateActuators(true);
   auto system2 = active.Parse(kChronoDir + "torque-actuator.osim");
   EXPECT_EQ(active.GetReport().GetForce("grav")->excitation_source, "ActivateActuators");
@@ -152,14 +152,14 @@ TEST(OpenSimParserTest, DefaultExcitationIsZeroAndActivateActuatorsMakesItOne) {
 TEST(OpenSimParserTest, EverySeedModelParsesWithAFullReportAndNoStandIns) {
   for (const auto& entry : std::filesystem::directory_iterator(kChronoDir)) {
     SCOPED_TRACE(entry.path().string());
-    OpenSimParser parser;
+    opensim::OpenSimParser parser;
     auto system = parser.Parse(entry.path().string());
-    const ModelSpec& spec = parser.GetSpec();
-    const Report& report = parser.GetReport();
+    const model::ModelSpec& spec = parser.GetSpec();
+    const opensim::Report& report = parser.GetReport();
     EXPECT_EQ(report.bodies().size(), spec.bodies.size() - 1);  // ground is not listed
     EXPECT_EQ(report.joints().size(), spec.joints.size());
     EXPECT_EQ(report.forces().size(), spec.forces.size());
-    for (const BodySpec& b : spec.bodies) {
+    for (const model::BodySpec& b : spec.bodies) {
       if (b.name != "ground") {
         EXPECT_NE(report.GetBody(b.name), nullptr) << b.name;
       }
@@ -168,16 +168,16 @@ TEST(OpenSimParserTest, EverySeedModelParsesWithAFullReportAndNoStandIns) {
       EXPECT_FALSE(joint.standin) << key << " (" << joint.type << ")";
       EXPECT_GE(joint.joint, 0);
     }
-    for (const ForceSpec& f : spec.forces) EXPECT_NE(report.GetForce(f.name), nullptr);
+    for (const model::ForceSpec& f : spec.forces) EXPECT_NE(report.GetForce(f.name), nullptr);
   }
 }
 
 TEST(OpenSimParserTest, RepeatedJointNamesAreKeptAndReported) {
   // newton_cradle.osim names five joints `sph1`: all five are built, under the unique names
   // the reader gives their paths, and each repeat is a warning.
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   parser.Parse(kChronoDir + "newton_cradle.osim");
-  const Report& report = parser.GetReport();
+  const opensim::Report& report = parser.GetReport();
   for (const char* key : {"sph1", "sph1_2", "sph1_3", "sph1_4", "sph1_5"}) {
     ASSERT_NE(report.GetJoint(key), nullptr) << key;
     EXPECT_EQ(report.GetJoint(key)->type, "BallJoint");
@@ -223,9 +223,9 @@ std::string WriteUnknownJointModel() {
 
 TEST(OpenSimParserTest, UnknownJointBecomesAFlaggedSphericalStandIn) {
   const std::string path = WriteUnknownJointModel();
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   auto system = parser.Parse(path);
-  const JointInfo* joint = parser.GetReport().GetJoint("odd");
+  const opensim::JointInfo* joint = parser.GetReport().GetJoint("odd");
   ASSERT_NE(joint, nullptr);
   EXPECT_TRUE(joint->standin);
   EXPECT_EQ(joint->type, "MyPluginJoint");
@@ -240,20 +240,20 @@ TEST(OpenSimParserTest, UnknownJointBecomesAFlaggedSphericalStandIn) {
   const int link = parser.GetReport().GetBody("link")->body;
   EXPECT_TRUE(state.bodies[link].p_GB.isApprox(Vec3(0, 1, 0), 1e-12));
 
-  OpenSimParser strict;
+  opensim::OpenSimParser strict;
   strict.SetStrict(true);
   EXPECT_THROW(strict.Parse(path), Error);
 }
 
 TEST(OpenSimParserTest, KnownModelsPassStrictModeOnlyWhenNothingIsLeftOut) {
-  OpenSimParser strict;
+  opensim::OpenSimParser strict;
   strict.SetStrict(true);
   EXPECT_NO_THROW(strict.Parse(kChronoDir + "torque-actuator.osim"));
   EXPECT_NO_THROW(strict.Parse(kChronoDir + "double_pendulum.osim"));
 }
 
 TEST(OpenSimParserTest, SameFileTwiceAndTwoFilesIntoOneSystem) {
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   engine::System system;
   parser.Parse(system, kChronoDir + "double_pendulum.osim");
   const int after_first = system.num_bodies();
@@ -271,14 +271,14 @@ TEST(OpenSimParserTest, SameFileTwiceAndTwoFilesIntoOneSystem) {
 }
 
 TEST(OpenSimParserTest, CollisionFamiliesAlternateWithTreeDepth) {
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   parser.EnableCollision(1, 2);
   parser.Parse(kChronoDir + "triple_revolute.osim");
-  const CollisionModel& collision = parser.GetCollisionModel();
-  const ModelSpec& spec = parser.GetSpec();
+  const contact::CollisionModel& collision = parser.GetCollisionModel();
+  const model::ModelSpec& spec = parser.GetSpec();
   EXPECT_FALSE(collision.shapes.empty());
-  for (const JointSpec& j : spec.joints) {
-    if (j.parent_body == kGroundIndex) {
+  for (const model::JointSpec& j : spec.joints) {
+    if (j.parent_body == model::kGroundIndex) {
       EXPECT_EQ(collision.family[j.child_body], 1);
     } else {
       EXPECT_FALSE(collision.CanCollide(j.parent_body, j.child_body)) << j.name;
@@ -288,8 +288,8 @@ TEST(OpenSimParserTest, CollisionFamiliesAlternateWithTreeDepth) {
 
 TEST(OpenSimParserTest, VisualizationTypeChoosesTheVisualAssets) {
   // PRIMITIVES: every body gets parts (a sphere and its segments); NONE: no parts at all.
-  OpenSimParser parser;
-  parser.SetVisualizationType(VisType::PRIMITIVES);
+  opensim::OpenSimParser parser;
+  parser.SetVisualizationType(opensim::VisType::kPrimitives);
   parser.Parse(kChronoDir + "triple_revolute.osim");
   const viz::VisualScene& scene = parser.GetVisualScene();
   ASSERT_EQ(scene.bodies.size(), parser.GetSpec().bodies.size());
@@ -297,8 +297,8 @@ TEST(OpenSimParserTest, VisualizationTypeChoosesTheVisualAssets) {
 
   // MESH: the model names mesh files (cylinder.vtp, sphere.vtp) not shipped beside it: each is
   // a warning naming the file, and the body falls back to primitives.
-  OpenSimParser mesh;
-  mesh.SetVisualizationType(VisType::MESH);
+  opensim::OpenSimParser mesh;
+  mesh.SetVisualizationType(opensim::VisType::kMesh);
   mesh.Parse(kChronoDir + "double_pendulum.osim");
   bool missing_mesh_warned = false;
   for (const Diagnostic& w : mesh.GetReport().warnings()) {
@@ -309,13 +309,13 @@ TEST(OpenSimParserTest, VisualizationTypeChoosesTheVisualAssets) {
     EXPECT_FALSE(mesh.GetVisualScene().bodies[b].parts.empty());
   }
 
-  OpenSimParser none;
+  opensim::OpenSimParser none;
   none.Parse(kChronoDir + "triple_revolute.osim");
   for (const viz::VisualBody& body : none.GetVisualScene().bodies) EXPECT_TRUE(body.parts.empty());
 }
 
 TEST(OpenSimParserTest, UnknownActuatorNameIsAnError) {
-  OpenSimParser parser;
+  opensim::OpenSimParser parser;
   parser.Parse(kChronoDir + "torque-actuator.osim");
   EXPECT_THROW(parser.SetExcitationFunction("no_such_actuator", nullptr), Error);
 }

@@ -31,10 +31,10 @@ TEST(Support, ListsEverythingNotSimulatedYet) {
 </objects></ControllerSet>
 <ProbeSet><objects><JointInternalPowerProbe name="probe"/></objects></ProbeSet>
 </Model></OpenSimDocument>)";
-  const ModelSpec spec = ReadOsimString(text, "support.osim");
+  const model::ModelSpec spec = io::ReadOsimString(text, "support.osim");
   // The plugin joint is read, with its frames resolved.
-  const JointSpec& plugin = spec.joints[spec.FindJoint("plugin")];
-  EXPECT_EQ(plugin.kind, JointType::kUnknown);
+  const model::JointSpec& plugin = spec.joints[spec.FindJoint("plugin")];
+  EXPECT_EQ(plugin.kind, model::JointType::kUnknown);
   EXPECT_EQ(plugin.parent_body, spec.FindBody("b"));
   EXPECT_EQ(plugin.child_body, spec.FindBody("c"));
   const std::vector<std::string> expected = {
@@ -43,7 +43,7 @@ TEST(Support, ListsEverythingNotSimulatedYet) {
       "/contactgeometryset/cs: ContactSphere", "/bodyset/b/wrapobjectset/ws: WrapSphere",
       "/probe: JointInternalPowerProbe",
   };
-  EXPECT_EQ(ListNotSimulated(spec), expected);
+  EXPECT_EQ(opensim::ListNotSimulated(spec), expected);
 }
 
 }  // namespace

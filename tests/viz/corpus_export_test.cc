@@ -26,9 +26,9 @@ TEST(CorpusExportTest, EveryModelExportsOrFailsWithASinewError) {
   for (const auto& entry : fs::recursive_directory_iterator(corpus)) {
     if (entry.path().extension() != ".osim") continue;
     ++models;
-    ModelSpec spec;
+    model::ModelSpec spec;
     try {
-      spec = ReadOsim(entry.path().string());
+      spec = io::ReadOsim(entry.path().string());
     } catch (const Error&) {
       continue;  // the reader's own tests cover files it rejects
     }

@@ -36,12 +36,12 @@ TEST(GltfValidatorTest, KhronosValidatorFindsNoIssues) {
   VisualOptions mesh;
   mesh.geometry_dirs = {testing::kDataDir + "/opensim-models/Geometry"};
   VisualOptions none;
-  none.mode = VisMode::kNone;
-  const ModelSpec two_link = testing::TwoLinkSpec();
-  const ModelSpec rajagopal =
-      ReadOsim(testing::kDataDir + "/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
+  none.mode = VisType::kNone;
+  const model::ModelSpec two_link = testing::TwoLinkSpec();
+  const model::ModelSpec rajagopal =
+      io::ReadOsim(testing::kDataDir + "/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
   const BodyMotion running = MotionFromTable(
-      rajagopal, ReadStorage(testing::kDataDir + "/kinematics/hamner/subject02_running_ik.mot"),
+      rajagopal, io::ReadStorage(testing::kDataDir + "/kinematics/hamner/subject02_running_ik.mot"),
       nullptr);
   const std::vector<std::pair<std::string, std::vector<uint8_t>>> files = {
       {"animated.glb",

@@ -17,13 +17,13 @@ namespace {
 
 VisualOptions MeshOptions() {
   VisualOptions options;
-  options.mode = VisMode::kMesh;
+  options.mode = VisType::kMesh;
   options.geometry_dirs = {testing::kDataDir + "/opensim-models/Geometry"};
   return options;
 }
 
 TEST(VisualSceneTest, MeshModeReadsMeshesAndFallsBackWithAWarning) {
-  const ModelSpec spec = testing::TwoLinkSpec();
+  const model::ModelSpec spec = testing::TwoLinkSpec();
   VisualScene scene = BuildVisualScene(spec, MeshOptions());
   ASSERT_EQ(scene.bodies.size(), 3u);
   EXPECT_TRUE(scene.bodies[0].parts.empty());
@@ -40,7 +40,7 @@ TEST(VisualSceneTest, MeshModeReadsMeshesAndFallsBackWithAWarning) {
   ASSERT_FALSE(scene.bodies[2].parts.empty());
   EXPECT_EQ(scene.bodies[2].parts[0].source, "primitive");
   // OpenSim's placeholder "Unassigned" means no file: nothing drawn, nothing to warn about.
-  ModelSpec placeholder = testing::TwoLinkSpec();
+  model::ModelSpec placeholder = testing::TwoLinkSpec();
   placeholder.bodies[2].geometry[0].mesh_file = "Unassigned";
   scene = BuildVisualScene(placeholder, MeshOptions());
   EXPECT_TRUE(scene.warnings.empty());
@@ -48,12 +48,12 @@ TEST(VisualSceneTest, MeshModeReadsMeshesAndFallsBackWithAWarning) {
 }
 
 TEST(VisualSceneTest, ArrowsAndLinesBecomeCylindersAndCones) {
-  ModelSpec spec = testing::TwoLinkSpec();
-  GeometrySpec arrow;
+  model::ModelSpec spec = testing::TwoLinkSpec();
+  model::GeometrySpec arrow;
   arrow.name = "arrow";
   arrow.type = "Arrow";
   arrow.dimensions = {{"start_point", {0, 0, 0}}, {"direction", {2, 0, 0}}, {"length", {1}}};
-  GeometrySpec line;
+  model::GeometrySpec line;
   line.name = "line";
   line.type = "Line";
   line.dimensions = {{"start_point", {0, 1, 0}}, {"end_point", {0, 1, 3}}};
@@ -72,10 +72,10 @@ TEST(VisualSceneTest, ArrowsAndLinesBecomeCylindersAndCones) {
 }
 
 TEST(VisualSceneTest, PrimitivesLinkEachBodyFrameToItsJointsColouredByDepth) {
-  const ModelSpec spec = testing::TwoLinkSpec();
-  EXPECT_EQ(CalcBodyDepths(spec), (std::vector<int>{0, 1, 2}));
+  const model::ModelSpec spec = testing::TwoLinkSpec();
+  EXPECT_EQ(kinematics::CalcBodyDepths(spec), (std::vector<int>{0, 1, 2}));
   VisualOptions options;
-  options.mode = VisMode::kPrimitives;
+  options.mode = VisType::kPrimitives;
   VisualScene scene = BuildVisualScene(spec, options);
   EXPECT_TRUE(scene.warnings.empty());
   // link: sphere + cylinder to the pin (0, 0.5, 0) + cylinder to the weld (0, -0.5, 0).
@@ -91,13 +91,13 @@ TEST(VisualSceneTest, PrimitivesLinkEachBodyFrameToItsJointsColouredByDepth) {
   EXPECT_GT(root.y(), root.x());
   EXPECT_GT(leaf.x(), leaf.y());
   VisualOptions none;
-  none.mode = VisMode::kNone;
+  none.mode = VisType::kNone;
   for (const auto& b : BuildVisualScene(spec, none).bodies) EXPECT_TRUE(b.parts.empty());
-  EXPECT_THROW(ParseVisMode("wireframe"), Error);
+  EXPECT_THROW(ParseVisType("wireframe"), Error);
 }
 
 TEST(GltfWriterTest, WritesAValidAnimatedGlb) {
-  const ModelSpec spec = testing::TwoLinkSpec();
+  const model::ModelSpec spec = testing::TwoLinkSpec();
   VisualScene scene = BuildVisualScene(spec, MeshOptions());
   // Three frames of a swinging pendulum: link rotates about z by 0, 0.4, 0.8 rad.
   const BodyMotion motion = testing::SwingMotion(3, 1.0, 0.5, 0.4);
@@ -150,12 +150,12 @@ TEST(GltfWriterTest, WritesAValidAnimatedGlb) {
 }
 
 TEST(GltfWriterTest, StaticSceneHasNoAnimationAndEmptySceneStaysValid) {
-  const ModelSpec spec = testing::TwoLinkSpec();
+  const model::ModelSpec spec = testing::TwoLinkSpec();
   VisualScene scene = BuildVisualScene(spec, MeshOptions());
   testing::ParsedGlb glb = testing::ParseGlb(WriteGlb(scene, {}, "static"));
   EXPECT_FALSE(glb.doc.contains("animations"));
   VisualOptions none;
-  none.mode = VisMode::kNone;
+  none.mode = VisType::kNone;
   testing::ParsedGlb empty = testing::ParseGlb(WriteGlb(BuildVisualScene(spec, none), {}, "e"));
   EXPECT_FALSE(empty.doc.contains("meshes"));
   EXPECT_FALSE(empty.doc.contains("buffers"));

@@ -78,7 +78,7 @@ TEST(HtmlViewerTest, ShowsTheModelAndAnimatesInHeadlessChromium) {
   fs::create_directories(dir);
   const fs::path page = dir / "two_link.html";
   ExportOptions options;
-  options.visual.mode = VisMode::kPrimitives;
+  options.visual.mode = VisType::kPrimitives;
   // 2 s of a pendulum swinging through 1.2 rad.
   ExportAnimation(testing::TwoLinkSpec(), testing::SwingMotion(21, 0.0, 0.1, 0.06), page.string(),
                   options);

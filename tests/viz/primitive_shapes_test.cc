@@ -7,18 +7,18 @@ namespace sinew::viz {
 namespace {
 
 // Every face's winding normal agrees with its vertex normals, and the mesh's bounds.
-void ExpectOutwardWithBounds(const TriangleMesh& m, const Vec3f& lo, const Vec3f& hi) {
+void ExpectOutwardWithBounds(const io::TriangleMesh& m, const io::Vec3f& lo, const io::Vec3f& hi) {
   ASSERT_FALSE(m.empty());
   ASSERT_EQ(m.normals.size(), m.positions.size());
   for (const auto& t : m.triangles) {
-    const Vec3f face =
+    const io::Vec3f face =
         (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]);
-    const Vec3f vertex = m.normals[t[0]] + m.normals[t[1]] + m.normals[t[2]];
+    const io::Vec3f vertex = m.normals[t[0]] + m.normals[t[1]] + m.normals[t[2]];
     ASSERT_GT(face.norm(), 1e-9f) << "degenerate triangle";
     EXPECT_GT(face.dot(vertex), 0) << "triangle faces inwards";
   }
-  Vec3f a = m.positions[0], b = m.positions[0];
-  for (const Vec3f& p : m.positions) {
+  io::Vec3f a = m.positions[0], b = m.positions[0];
+  for (const io::Vec3f& p : m.positions) {
     a = a.cwiseMin(p);
     b = b.cwiseMax(p);
   }
@@ -27,16 +27,16 @@ void ExpectOutwardWithBounds(const TriangleMesh& m, const Vec3f& lo, const Vec3f
 }
 
 TEST(PrimitiveShapesTest, UnitShapesFaceOutwardsWithDocumentedSizes) {
-  ExpectOutwardWithBounds(*UnitSphere(), Vec3f(-1, -1, -1), Vec3f(1, 1, 1));
-  ExpectOutwardWithBounds(*UnitCylinder(), Vec3f(-1, -1, -1), Vec3f(1, 1, 1));
-  ExpectOutwardWithBounds(*UnitBox(), Vec3f(-1, -1, -1), Vec3f(1, 1, 1));
-  ExpectOutwardWithBounds(*UnitCone(), Vec3f(-1, 0, -1), Vec3f(1, 1, 1));
-  ExpectOutwardWithBounds(*MakeTorus(0.25), Vec3f(-1.25f, -0.25f, -1.25f),
-                          Vec3f(1.25f, 0.25f, 1.25f));
+  ExpectOutwardWithBounds(*UnitSphere(), io::Vec3f(-1, -1, -1), io::Vec3f(1, 1, 1));
+  ExpectOutwardWithBounds(*UnitCylinder(), io::Vec3f(-1, -1, -1), io::Vec3f(1, 1, 1));
+  ExpectOutwardWithBounds(*UnitBox(), io::Vec3f(-1, -1, -1), io::Vec3f(1, 1, 1));
+  ExpectOutwardWithBounds(*UnitCone(), io::Vec3f(-1, 0, -1), io::Vec3f(1, 1, 1));
+  ExpectOutwardWithBounds(*MakeTorus(0.25), io::Vec3f(-1.25f, -0.25f, -1.25f),
+                          io::Vec3f(1.25f, 0.25f, 1.25f));
 }
 
 TEST(PrimitiveShapesTest, SphereVerticesLieOnTheUnitSphere) {
-  for (const Vec3f& p : UnitSphere()->positions) EXPECT_NEAR(p.norm(), 1.0f, 1e-6f);
+  for (const io::Vec3f& p : UnitSphere()->positions) EXPECT_NEAR(p.norm(), 1.0f, 1e-6f);
 }
 
 }  // namespace

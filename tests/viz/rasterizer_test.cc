@@ -10,8 +10,8 @@
 namespace sinew::viz {
 namespace {
 
-VisualScene OnePart(std::shared_ptr<const TriangleMesh> mesh, const Vec3& scale, const Vec3& color,
-                    const Transform& X_BG = Transform()) {
+VisualScene OnePart(std::shared_ptr<const io::TriangleMesh> mesh, const Vec3& scale,
+                    const Vec3& color, const Transform& X_BG = Transform()) {
   VisualScene scene;
   VisualBody body;
   body.body = 0;

@@ -13,8 +13,8 @@ namespace sinew::viz::testing {
 inline const std::string kDataDir = SINEW_TEST_DATA_DIR;
 
 // Ground, a "link" body hanging from a pin at the origin, and a "tip" body below it.
-inline ModelSpec TwoLinkSpec() {
-  ModelSpec spec;
+inline model::ModelSpec TwoLinkSpec() {
+  model::ModelSpec spec;
   spec.name = "two_link";
   spec.file = kDataDir + "/two_link.osim";  // need not exist: only its folder is searched
   spec.bodies.resize(3);
@@ -23,30 +23,30 @@ inline ModelSpec TwoLinkSpec() {
   spec.bodies[1].path = "/bodyset/link";
   spec.bodies[2].name = "tip";
   spec.bodies[2].path = "/bodyset/tip";
-  JointSpec pin;
+  model::JointSpec pin;
   pin.name = "pin";
   pin.parent_body = 0;
   pin.child_body = 1;
   pin.X_BM = Transform::Translation(Vec3(0, 0.5, 0));
-  JointSpec weld;
+  model::JointSpec weld;
   weld.name = "weld";
   weld.parent_body = 1;
   weld.child_body = 2;
   weld.X_PF = Transform::Translation(Vec3(0, -0.5, 0));
   spec.joints = {pin, weld};
-  GeometrySpec mesh;
+  model::GeometrySpec mesh;
   mesh.name = "patella";
   mesh.type = "Mesh";
   mesh.mesh_file = "r_patella.vtp";
   mesh.scale_factors = Vec3(2, 2, 2);
   mesh.color = Vec3(1, 0, 0);
-  GeometrySpec sphere;
+  model::GeometrySpec sphere;
   sphere.name = "ball";
   sphere.type = "Sphere";
   sphere.dimensions["radius"] = {0.1};
   sphere.X_BG = Transform::Translation(Vec3(0, 0.2, 0));
   spec.bodies[1].geometry = {mesh, sphere};
-  GeometrySpec missing = mesh;
+  model::GeometrySpec missing = mesh;
   missing.name = "lost";
   missing.mesh_file = "not_there.vtp";
   spec.bodies[2].geometry = {missing};

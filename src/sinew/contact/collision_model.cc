@@ -2,14 +2,14 @@
 
 #include <algorithm>
 
-namespace sinew {
+namespace sinew::contact {
 namespace {
 
 constexpr double kShortestSegment = 1e-3;  // m
 
 }  // namespace
 
-CollisionModel BuildCollisionModel(const ModelSpec& spec, const std::vector<int>& depth,
+CollisionModel BuildCollisionModel(const model::ModelSpec& spec, const std::vector<int>& depth,
                                    int family_1, int family_2) {
   CollisionModel model;
   model.family.assign(spec.bodies.size(), 0);
@@ -18,10 +18,10 @@ CollisionModel BuildCollisionModel(const ModelSpec& spec, const std::vector<int>
   }
   // One segment per joint end that lies on a body other than ground.
   std::vector<double> lengths;
-  for (const JointSpec& j : spec.joints) {
+  for (const model::JointSpec& j : spec.joints) {
     for (const auto& [body, p_BJ] :
          {std::pair{j.parent_body, j.X_PF.p}, std::pair{j.child_body, j.X_BM.p}}) {
-      if (body == kGroundIndex || p_BJ.norm() < kShortestSegment) continue;
+      if (body == model::kGroundIndex || p_BJ.norm() < kShortestSegment) continue;
       model.shapes.push_back({body, Vec3::Zero(), p_BJ, 0.0});
       lengths.push_back(p_BJ.norm());
     }
@@ -33,4 +33,4 @@ CollisionModel BuildCollisionModel(const ModelSpec& spec, const std::vector<int>
   return model;
 }
 
-}  // namespace sinew
+}  // namespace sinew::contact

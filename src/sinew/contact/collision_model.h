@@ -9,11 +9,21 @@
 #include <sinew/math/types.h>
 #include <sinew/model/model_spec.h>
 
-namespace sinew {
+namespace sinew::contact {
+
+/// How contact is to be treated in a system (the seed's two methods): kNsc non-smooth
+/// (complementarity), kSmc smooth (penalty).
+enum class ContactMethod {
+  kNsc,
+  kSmc,
+  // The seed's spellings, so that programs written against its API compile unchanged.
+  NSC = kNsc,
+  SMC = kSmc,
+};
 
 /// A capsule-like cylinder fixed to a body, from `p_B_start` to `p_B_end` (in B, metres).
 struct CollisionCylinder {
-  int body = kGroundIndex;
+  int body = model::kGroundIndex;
   Vec3 p_B_start = Vec3::Zero();
   Vec3 p_B_end = Vec3::Zero();
   double radius = 0.0;  ///< m
@@ -26,14 +36,14 @@ struct CollisionModel {
 
   /// True when shapes of bodies `a` and `b` may touch (different bodies, same family).
   bool CanCollide(int a, int b) const {
-    return a != b && a != kGroundIndex && b != kGroundIndex && family[a] == family[b];
+    return a != b && a != model::kGroundIndex && b != model::kGroundIndex && family[a] == family[b];
   }
 };
 
 /// Builds the collision model of `spec`: bodies at odd tree depth (`depth` per body, ground 0)
 /// get `family_1`, at even depth `family_2`. The cylinder radius is 10% of the median segment
 /// length of the model (at least 1 mm). Segments shorter than 1 mm get no shape.
-CollisionModel BuildCollisionModel(const ModelSpec& spec, const std::vector<int>& depth,
+CollisionModel BuildCollisionModel(const model::ModelSpec& spec, const std::vector<int>& depth,
                                    int family_1, int family_2);
 
-}  // namespace sinew
+}  // namespace sinew::contact

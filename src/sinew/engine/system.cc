@@ -32,7 +32,8 @@ int System::AddBody(const Body& body) {
 }
 
 int System::AddJoint(const std::string& name, int parent, const Transform& X_PF, int child,
-                     const Transform& X_BM, JointForm form, std::shared_ptr<const JointModel> model,
+                     const Transform& X_BM, JointForm form,
+                     std::shared_ptr<const kinematics::JointModel> model,
                      const std::vector<CoordinateDesc>& coordinates) {
   RequireNotFinalized();
   if (parent < 0 || parent >= num_bodies() || child < 0 || child >= num_bodies() ||

@@ -36,7 +36,7 @@ struct Coordinate {
   double default_value = 0.0;  ///< rad or m
   double default_speed = 0.0;  ///< rad/s or m/s (Ball: w_FM component in F)
   CoordinateMotion motion = CoordinateMotion::kFree;
-  FunctionPtr prescribed;  ///< q(t) for kPrescribed
+  functions::FunctionPtr prescribed;  ///< q(t) for kPrescribed
 };
 
 /// A joint between frame F on body `parent` and frame M on body `child`:
@@ -49,7 +49,7 @@ struct Joint {
   Transform X_BM;
   JointForm form = JointForm::kParameterized;
   /// X_FM(q) for kParameterized (required). Unused by the direct forms.
-  std::shared_ptr<const JointModel> model;
+  std::shared_ptr<const kinematics::JointModel> model;
   std::vector<int> coordinates;  ///< indices into System::coordinates(), in joint order
 };
 
@@ -59,7 +59,7 @@ struct CoordinateDesc {
   double default_value = 0.0;
   double default_speed = 0.0;
   CoordinateMotion motion = CoordinateMotion::kFree;
-  FunctionPtr prescribed;
+  functions::FunctionPtr prescribed;
 };
 
 /// A Cartesian multibody system. Build it with the Add* functions, then Finalize(); after that
@@ -75,7 +75,8 @@ class System {
   /// every body to ground (a joint may point towards ground: it is then used reversed; a joint
   /// between two bodies already connected closes a loop).
   int AddJoint(const std::string& name, int parent, const Transform& X_PF, int child,
-               const Transform& X_BM, JointForm form, std::shared_ptr<const JointModel> model,
+               const Transform& X_BM, JointForm form,
+               std::shared_ptr<const kinematics::JointModel> model,
                const std::vector<CoordinateDesc>& coordinates);
   /// Adds an extra constraint (loop closures, couplers, ...).
   void AddConstraint(std::shared_ptr<const Constraint> constraint);

@@ -7,7 +7,7 @@
 #include <sinew/engine/pose.h>
 #include <sinew/engine/state.h>
 
-namespace sinew {
+namespace sinew::forces {
 namespace {
 
 // A unit vector along `v`; a zero vector is an error because OpenSim would divide by zero.
@@ -83,4 +83,4 @@ void CoordinateActuator::AddLoads(const engine::System& /*system*/, const engine
   if (f != 0.0) loads.AddGeneralizedForce(coordinate_, f);
 }
 
-}  // namespace sinew
+}  // namespace sinew::forces

@@ -9,7 +9,7 @@
 #include <sinew/functions/function.h>
 #include <sinew/math/types.h>
 
-namespace sinew {
+namespace sinew::forces {
 
 /// The part every actuator shares: a name, a gain and a settable excitation function of time.
 /// The excitation may be replaced after the system is built (the seed's
@@ -22,8 +22,8 @@ class Actuator : public engine::ForceElement {
   double optimal_force() const { return optimal_force_; }
 
   /// The excitation e(t) (dimensionless); null means the constant 0.
-  void SetExcitation(FunctionPtr excitation) { excitation_ = std::move(excitation); }
-  const FunctionPtr& excitation() const { return excitation_; }
+  void SetExcitation(functions::FunctionPtr excitation) { excitation_ = std::move(excitation); }
+  const functions::FunctionPtr& excitation() const { return excitation_; }
   /// OpenSim's min_control / max_control: bounds applied to e(t) before the gain.
   void SetControlRange(double min_control, double max_control);
 
@@ -33,7 +33,7 @@ class Actuator : public engine::ForceElement {
  private:
   std::string name_;
   double optimal_force_;
-  FunctionPtr excitation_;
+  functions::FunctionPtr excitation_;
   double min_control_ = -std::numeric_limits<double>::infinity();
   double max_control_ = std::numeric_limits<double>::infinity();
 };
@@ -86,4 +86,4 @@ class CoordinateActuator : public Actuator {
   int coordinate_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::forces

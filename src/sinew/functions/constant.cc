@@ -2,7 +2,7 @@
 
 #include <sinew/functions/derivative_order.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 double Constant::CalcDerivative(double /*x*/, int order) const {
   CheckDerivativeOrder(order, "Constant");
@@ -14,4 +14,4 @@ double Constant::CalcPartialN(std::span<const double> /*x*/, std::span<const int
   return wrt.empty() ? value_ : 0.0;
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -3,7 +3,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// f(x) = value for every x (OpenSim property `value`). Derivatives are 0. Takes any number of
 /// arguments (OpenSim's Constant ignores them); NumArguments() reports `num_arguments`.
@@ -26,4 +26,4 @@ class Constant final : public Function {
   int num_arguments_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -5,7 +5,7 @@
 
 #include <sinew/common/error.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 ControlLinear::ControlLinear(std::vector<double> times, std::vector<double> values, bool use_steps,
                              bool extrapolate)
@@ -52,4 +52,4 @@ double ControlLinear::CalcDerivative(double t, int order) const {
   return use_steps_ ? 0.0 : Slope(i, i + 1);
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

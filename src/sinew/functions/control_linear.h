@@ -6,7 +6,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// Control value of time through nodes (t_i, v_i), t strictly increasing.
 /// Between nodes: linear interpolation, or with `use_steps` the value of the next node
@@ -34,4 +34,4 @@ class ControlLinear : public Function {
   bool extrapolate_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -2,10 +2,10 @@
 
 #include <sinew/common/error.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 void ThrowBadDerivativeOrder(int order, const std::string& type) {
   throw Error(type + ": derivative order must be 0, 1 or 2, got " + std::to_string(order));
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -3,7 +3,7 @@
 
 #include <string>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// Throws sinew::Error naming `type` for a derivative order other than 0, 1 or 2.
 [[noreturn]] void ThrowBadDerivativeOrder(int order, const std::string& type);
@@ -15,4 +15,4 @@ inline void CheckDerivativeOrder(int order, const TypeName& type) {
   if (order < 0 || order > 2) ThrowBadDerivativeOrder(order, std::string(type));
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -7,7 +7,7 @@
 #include <sinew/common/error.h>
 #include <sinew/functions/derivative_order.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 double Ramp::Calc(double t) const { return t < start_ ? 0.0 : slope_ * (t - start_); }
 
@@ -51,4 +51,4 @@ double CallableFunction::CalcDerivative(double x, int order) const {
   return (function_(x + h) - 2.0 * function_(x) + function_(x - h)) / (h * h);
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

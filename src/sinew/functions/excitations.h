@@ -7,7 +7,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// A ramp starting at time `start` (s): u(t) = 0 for t < start and slope * (t - start) for
 /// t >= start (`slope` in 1/s). The first derivative is 0 before `start` and `slope` from
@@ -68,4 +68,14 @@ class CallableFunction final : public Function {
   std::string name_;
 };
 
+}  // namespace sinew::functions
+
+// The seed's spellings (ChFunction_Ramp and friends became sinew::Ramp, ...): programs written
+// against the seed's API name these in namespace sinew.
+namespace sinew {
+using functions::CallableFunction;
+using functions::Function;
+using functions::FunctionPtr;
+using functions::Ramp;
+using functions::SineExcitation;
 }  // namespace sinew

@@ -6,7 +6,7 @@
 #include <span>
 #include <string>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// A real function y = f(x) (or f(x0, x1, ...)) with derivatives, named by its OpenSim class.
 /// Single-argument functions implement Calc and CalcDerivative; multi-argument ones override
@@ -36,4 +36,4 @@ class Function {
 
 using FunctionPtr = std::shared_ptr<const Function>;
 
-}  // namespace sinew
+}  // namespace sinew::functions

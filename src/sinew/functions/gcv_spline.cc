@@ -10,7 +10,7 @@
 #include <sinew/functions/derivative_order.h>
 #include <sinew/functions/knots.h>
 
-namespace sinew {
+namespace sinew::functions {
 namespace {
 
 // j (j-1) ... (j-r+1): the factor d^r/du^r u^j = FallingFactorial(j, r) u^(j-r).
@@ -266,4 +266,4 @@ double GCVSpline::CalcDerivative(double x, int order) const {
   return CalcPiece(FindKnotInterval(x_, x), x, order);
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

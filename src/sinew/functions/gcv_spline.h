@@ -5,7 +5,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// Woltring's GCVSPL spline as OpenSim uses it: the natural spline of degree 2 * half_order - 1
 /// with knots at x (piecewise polynomials of that degree, continuous up to derivative
@@ -76,4 +76,4 @@ class GCVSpline final : public Function {
   std::vector<double> start_derivatives_, end_derivatives_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::functions

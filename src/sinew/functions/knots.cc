@@ -4,7 +4,7 @@
 
 #include <sinew/common/error.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 void CheckKnots(std::span<const double> x, std::span<const double> y, int min_points,
                 const std::string& type) {
@@ -27,4 +27,4 @@ void CheckKnots(std::span<const double> x, std::span<const double> y, int min_po
   }
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -4,7 +4,7 @@
 #include <span>
 #include <string>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// Checks a knot table: x and y of equal size, at least `min_points` points, finite values and
 /// x non-decreasing. Throws sinew::Error naming `type` otherwise.
@@ -35,4 +35,4 @@ inline int FindKnotInterval(std::span<const double> x, double value) {
   }
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -2,7 +2,7 @@
 
 #include <sinew/functions/derivative_order.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 double LinearFunction::CalcDerivative(double x, int order) const {
   CheckDerivativeOrder(order, "LinearFunction");
@@ -10,4 +10,4 @@ double LinearFunction::CalcDerivative(double x, int order) const {
   return order == 1 ? slope_ : 0.0;
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -3,7 +3,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// f(x) = slope * x + intercept. OpenSim stores `coefficients` = [slope, intercept]; the default
 /// (a missing property) is [1, 0], the identity.
@@ -24,4 +24,4 @@ class LinearFunction final : public Function {
   double intercept_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -2,11 +2,11 @@
 
 #include <sinew/common/error.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 MultiplierFunction::MultiplierFunction(FunctionPtr function, double scale)
     : function_(std::move(function)), scale_(scale) {
   if (!function_) throw Error("MultiplierFunction: the inner function is missing");
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

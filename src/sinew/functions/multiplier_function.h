@@ -3,7 +3,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// f(x) = scale * g(x), where g is the inner function (OpenSim properties `function` and
 /// `scale`). Scaled OpenSim models wrap most joint and path-point functions in these.
@@ -32,4 +32,4 @@ class MultiplierFunction final : public Function {
   double scale_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::functions

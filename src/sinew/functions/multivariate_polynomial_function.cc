@@ -4,7 +4,7 @@
 
 #include <sinew/common/error.h>
 
-namespace sinew {
+namespace sinew::functions {
 namespace {
 
 // Appends the exponent tuples of total degree <= `budget` for variables d.. in OpenSim's order
@@ -93,4 +93,4 @@ double MultivariatePolynomialFunction::CalcPartialN(std::span<const double> x,
   return sum;
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

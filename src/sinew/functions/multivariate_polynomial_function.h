@@ -5,7 +5,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// A polynomial in `dimension` variables (x0, x1, ...) with every term of total degree <=
 /// `order`. OpenSim's coefficient order: ascending powers with the LAST variable running
@@ -39,4 +39,4 @@ class MultivariatePolynomialFunction final : public Function {
   std::vector<int> exponents_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::functions

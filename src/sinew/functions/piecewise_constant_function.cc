@@ -5,7 +5,7 @@
 #include <sinew/functions/derivative_order.h>
 #include <sinew/functions/knots.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 PiecewiseConstantFunction::PiecewiseConstantFunction(std::vector<double> x, std::vector<double> y)
     : x_(std::move(x)), y_(std::move(y)) {
@@ -25,4 +25,4 @@ double PiecewiseConstantFunction::CalcDerivative(double x, int order) const {
   return order == 0 ? Calc(x) : 0.0;
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

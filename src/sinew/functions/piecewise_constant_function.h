@@ -5,7 +5,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// A staircase through the knots, as OpenSim evaluates it: f = y[0] for x <= x[0],
 /// f = y[n-1] for x >= x[n-1], and f = y[k] for x in (x[k], x[k+1]), i.e. each value holds
@@ -28,4 +28,4 @@ class PiecewiseConstantFunction final : public Function {
   std::vector<double> x_, y_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -5,7 +5,7 @@
 #include <sinew/functions/derivative_order.h>
 #include <sinew/functions/knots.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 PiecewiseLinearFunction::PiecewiseLinearFunction(std::vector<double> x, std::vector<double> y)
     : x_(std::move(x)), y_(std::move(y)) {
@@ -33,4 +33,4 @@ double PiecewiseLinearFunction::CalcDerivative(double x, int order) const {
   return slope_[FindKnotInterval(x_, x)];
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

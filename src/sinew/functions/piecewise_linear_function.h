@@ -5,7 +5,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// Straight lines between the knots (x[i], y[i]); outside [x[0], x[n-1]] it extrapolates
 /// linearly with the first (last) segment's slope, as OpenSim does. The first derivative is the
@@ -30,4 +30,4 @@ class PiecewiseLinearFunction final : public Function {
   std::vector<double> slope_;  // slope_[k] of segment k; slope_[n-1] = slope_[n-2]
 };
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -2,7 +2,7 @@
 
 #include <sinew/common/error.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 double PolynomialFunction::CalcDerivative(double x, int order) const {
   if (order < 0) throw Error("PolynomialFunction: negative derivative order");
@@ -19,4 +19,4 @@ double PolynomialFunction::CalcDerivative(double x, int order) const {
   return result;
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -5,7 +5,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// f(x) = c[0] x^(n-1) + c[1] x^(n-2) + ... + c[n-1]: OpenSim's `coefficients` in DECREASING
 /// powers (the last one is the constant term). An empty list is the zero polynomial.
@@ -25,4 +25,4 @@ class PolynomialFunction final : public Function {
   std::vector<double> coefficients_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::functions

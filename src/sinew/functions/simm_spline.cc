@@ -5,7 +5,7 @@
 #include <sinew/functions/derivative_order.h>
 #include <sinew/functions/knots.h>
 
-namespace sinew {
+namespace sinew::functions {
 namespace {
 
 // OpenSim's smallest knot spacing (SimmMacros' TINY_NUMBER).
@@ -101,4 +101,4 @@ double SimmSpline::CalcDerivative(double x, int order) const {
   return 2.0 * c_[k] + 6.0 * dx * d_[k];
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -5,7 +5,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// The interpolating cubic spline OpenSim uses for joint couplings and moving path points
 /// (Forsythe, Malcolm & Moler, "Computer Methods for Mathematical Computations", 1977):
@@ -42,4 +42,4 @@ class SimmSpline final : public Function {
   std::vector<double> x_, y_, b_, c_, d_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::functions

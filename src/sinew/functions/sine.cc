@@ -4,7 +4,7 @@
 
 #include <sinew/functions/derivative_order.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 double Sine::Calc(double x) const { return amplitude_ * std::sin(omega_ * x + phase_) + offset_; }
 
@@ -21,4 +21,4 @@ double Sine::CalcDerivative(double x, int order) const {
   }
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

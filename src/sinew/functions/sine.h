@@ -3,7 +3,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// f(x) = amplitude * sin(omega * x + phase) + offset (OpenSim properties `amplitude`, `omega`
 /// in rad per unit of x, `phase` in rad, `offset`; defaults 1, 1, 0, 0).
@@ -25,4 +25,4 @@ class Sine final : public Function {
   double amplitude_, omega_, phase_, offset_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::functions

@@ -3,7 +3,7 @@
 #include <sinew/common/error.h>
 #include <sinew/functions/derivative_order.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 StepFunction::StepFunction(double transition_start_time, double transition_end_time,
                            double start_value, double end_value)
@@ -32,4 +32,4 @@ double StepFunction::CalcDerivative(double x, int order) const {
   }
 }
 
-}  // namespace sinew
+}  // namespace sinew::functions

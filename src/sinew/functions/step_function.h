@@ -3,7 +3,7 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::functions {
 
 /// A smooth step from `start_value` to `end_value` as x goes from `transition_start_time` x0 to
 /// `transition_end_time` x1 (OpenSim defaults 0.99, 1.01, 0, 1), as Simbody's Function::Step:
@@ -29,4 +29,4 @@ class StepFunction final : public Function {
   double x0_, x1_, y0_, y1_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::functions

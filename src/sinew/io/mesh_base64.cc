@@ -1,6 +1,6 @@
 #include <sinew/io/mesh_base64.h>
 
-namespace sinew {
+namespace sinew::io {
 namespace {
 
 constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -73,4 +73,4 @@ std::optional<std::vector<uint8_t>> DecodeBase64(std::string_view text) {
   return out;
 }
 
-}  // namespace sinew
+}  // namespace sinew::io

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sinew {
+namespace sinew::io {
 
 /// Encodes bytes as base64 with '=' padding.
 std::string EncodeBase64(const uint8_t* data, size_t size);
@@ -16,4 +16,4 @@ std::string EncodeBase64(const uint8_t* data, size_t size);
 /// alphabet or a truncated group.
 std::optional<std::vector<uint8_t>> DecodeBase64(std::string_view text);
 
-}  // namespace sinew
+}  // namespace sinew::io

@@ -4,7 +4,7 @@
 
 #include <sinew/common/error.h>
 
-namespace sinew {
+namespace sinew::io {
 
 void ComputeVertexNormals(TriangleMesh& mesh) {
   mesh.normals.assign(mesh.positions.size(), Vec3f::Zero());
@@ -38,4 +38,4 @@ void ValidateMesh(const TriangleMesh& mesh, const std::string& file) {
   }
 }
 
-}  // namespace sinew
+}  // namespace sinew::io

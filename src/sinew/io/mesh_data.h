@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace sinew {
+namespace sinew::io {
 
 /// Single-precision 3-vector: the precision mesh files and glTF store.
 using Vec3f = Eigen::Vector3f;
@@ -30,4 +30,4 @@ void ComputeVertexNormals(TriangleMesh& mesh);
 /// sinew::Error naming `file` otherwise.
 void ValidateMesh(const TriangleMesh& mesh, const std::string& file);
 
-}  // namespace sinew
+}  // namespace sinew::io

@@ -9,7 +9,7 @@
 #include <sinew/io/mesh_stl.h>
 #include <sinew/io/mesh_vtp.h>
 
-namespace sinew {
+namespace sinew::io {
 
 namespace fs = std::filesystem;
 
@@ -60,4 +60,4 @@ TriangleMesh ReadMesh(const std::string& file) {
               "unsupported mesh format '" + ext + "' (expected .vtp, .obj or .stl)");
 }
 
-}  // namespace sinew
+}  // namespace sinew::io

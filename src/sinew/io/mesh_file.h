@@ -7,7 +7,7 @@
 
 #include <sinew/io/mesh_data.h>
 
-namespace sinew {
+namespace sinew::io {
 
 /// Name of the environment variable with extra mesh folders (separated by ':').
 inline constexpr const char* kGeometryPathVariable = "SINEW_GEOMETRY_PATH";
@@ -26,4 +26,4 @@ std::optional<std::string> FindMeshFile(const std::string& mesh_file,
 /// sinew::Error for an unknown extension or a malformed file.
 TriangleMesh ReadMesh(const std::string& file);
 
-}  // namespace sinew
+}  // namespace sinew::io

@@ -8,7 +8,7 @@
 
 #include <sinew/common/error.h>
 
-namespace sinew {
+namespace sinew::io {
 namespace {
 
 std::vector<std::string_view> SplitWhitespace(std::string_view line) {
@@ -116,4 +116,4 @@ TriangleMesh ReadObj(const std::string& file) {
   return ParseObj(buffer.str(), file);
 }
 
-}  // namespace sinew
+}  // namespace sinew::io

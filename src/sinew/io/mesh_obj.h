@@ -5,7 +5,7 @@
 
 #include <sinew/io/mesh_data.h>
 
-namespace sinew {
+namespace sinew::io {
 
 /// Reads vertices and faces of an .obj file; polygons are fanned into triangles, negative
 /// (relative) indices are honoured, `v/vt/vn` corners keep their normals. Materials, texture
@@ -15,4 +15,4 @@ TriangleMesh ReadObj(const std::string& file);
 /// Same, from the file's text.
 TriangleMesh ParseObj(std::string_view text, const std::string& file);
 
-}  // namespace sinew
+}  // namespace sinew::io

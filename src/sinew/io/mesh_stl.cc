@@ -8,7 +8,7 @@
 
 #include <sinew/common/error.h>
 
-namespace sinew {
+namespace sinew::io {
 namespace {
 
 // Merges corners with identical coordinates into one vertex.
@@ -117,4 +117,4 @@ TriangleMesh ReadStl(const std::string& file) {
   return ParseStl(buffer.str(), file);
 }
 
-}  // namespace sinew
+}  // namespace sinew::io

@@ -6,7 +6,7 @@
 
 #include <sinew/io/mesh_data.h>
 
-namespace sinew {
+namespace sinew::io {
 
 /// Reads an .stl file, ASCII (`solid ... facet normal ... endsolid`) or binary (80-byte header,
 /// triangle count, 50 bytes per triangle). Shared corners are merged so normals are smooth.
@@ -16,4 +16,4 @@ TriangleMesh ReadStl(const std::string& file);
 /// Same, from the file's bytes.
 TriangleMesh ParseStl(std::string_view bytes, const std::string& file);
 
-}  // namespace sinew
+}  // namespace sinew::io

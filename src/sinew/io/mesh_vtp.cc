@@ -10,7 +10,7 @@
 #include <sinew/io/mesh_base64.h>
 #include <sinew/io/internal/xml_document.h>
 
-namespace sinew {
+namespace sinew::io {
 namespace {
 
 // How the document stores binary data (attributes of <VTKFile>).
@@ -79,7 +79,7 @@ double ReadScalar(const uint8_t* p, ScalarType type, bool big_endian) {
 
 class VtpReader {
  public:
-  explicit VtpReader(const XmlDocument& doc) : doc_(doc) {}
+  explicit VtpReader(const internal::XmlDocument& doc) : doc_(doc) {}
 
   TriangleMesh Read() {
     pugi::xml_node root = doc_.root();
@@ -226,7 +226,7 @@ class VtpReader {
   std::vector<uint8_t> DecodeBinary(pugi::xml_node array) {
     // Header and data may be encoded as one base64 stream or as two padded ones; the
     // decoder continues across padding, so both give the same bytes.
-    std::optional<std::vector<uint8_t>> decoded = DecodeBase64(XmlDocument::Text(array));
+    std::optional<std::vector<uint8_t>> decoded = DecodeBase64(internal::XmlDocument::Text(array));
     if (!decoded) doc_.Fail(array, "", "binary DataArray is not valid base64");
     const std::vector<uint8_t>& raw = *decoded;
     const int hb = encoding_.header_bytes;
@@ -269,20 +269,20 @@ class VtpReader {
     return out;
   }
 
-  const XmlDocument& doc_;
+  const internal::XmlDocument& doc_;
   Encoding encoding_;
 };
 
 }  // namespace
 
 TriangleMesh ParseVtp(std::string text, const std::string& file) {
-  XmlDocument doc = XmlDocument::Parse(std::move(text), file);
+  internal::XmlDocument doc = internal::XmlDocument::Parse(std::move(text), file);
   return VtpReader(doc).Read();
 }
 
 TriangleMesh ReadVtp(const std::string& file) {
-  XmlDocument doc = XmlDocument::Load(file);
+  internal::XmlDocument doc = internal::XmlDocument::Load(file);
   return VtpReader(doc).Read();
 }
 
-}  // namespace sinew
+}  // namespace sinew::io

@@ -5,7 +5,7 @@
 
 #include <sinew/io/mesh_data.h>
 
-namespace sinew {
+namespace sinew::io {
 
 /// Reads the polygons and triangle strips of a .vtp file as triangles (polygons are fanned),
 /// with the point normals when the file has them. Data arrays may be `ascii` or inline
@@ -16,4 +16,4 @@ TriangleMesh ReadVtp(const std::string& file);
 /// Same, from the text of a .vtp document; `file` names it in messages.
 TriangleMesh ParseVtp(std::string text, const std::string& file);
 
-}  // namespace sinew
+}  // namespace sinew::io

@@ -3,7 +3,7 @@
 
 #include <sinew/io/internal/osim_context.h>
 
-namespace sinew::osim {
+namespace sinew::io::internal {
 namespace {
 
 // Body properties the reader understands; anything else gets one warning per tag.
@@ -40,7 +40,7 @@ void ReadWrapObjects(ReadContext& ctx, const pugi::xml_node& owner, int body,
                      const std::string& owner_path) {
   const XmlDocument& doc = ctx.doc();
   for (pugi::xml_node wrap : ObjectsOf(owner.child("WrapObjectSet"))) {
-    WrapObjectSpec spec;
+    model::WrapObjectSpec spec;
     spec.name = NameOf(wrap);
     spec.type = wrap.name();
     const std::string component = owner_path + "/wrapobjectset/" + spec.name;
@@ -128,19 +128,19 @@ void CollectOffsetFrames(ReadContext& ctx, const pugi::xml_node& root,
 
 void ReadBodies(ReadContext& ctx, const pugi::xml_node& model) {
   const XmlDocument& doc = ctx.doc();
-  ModelSpec& spec = ctx.spec();
-  BodySpec ground;
+  model::ModelSpec& spec = ctx.spec();
+  model::BodySpec ground;
   ground.name = "ground";
   ground.path = "/ground";
   pugi::xml_node ground_node = model.child("Ground");
   ground.where = doc.Where(ground_node ? ground_node : model);
   spec.bodies.push_back(std::move(ground));
-  ctx.IndexBody("ground", kGroundIndex);
-  ctx.AddBodyFrame("/ground", kGroundIndex, ground_node ? ground_node : model);
+  ctx.IndexBody("ground", model::kGroundIndex);
+  ctx.AddBodyFrame("/ground", model::kGroundIndex, ground_node ? ground_node : model);
 
   // Bodies first (so every frame can be resolved), their geometry after the offset frames.
   std::vector<std::pair<pugi::xml_node, int>> body_nodes;
-  if (ground_node) body_nodes.emplace_back(ground_node, kGroundIndex);
+  if (ground_node) body_nodes.emplace_back(ground_node, model::kGroundIndex);
   for (pugi::xml_node node : ObjectsOf(model.child("BodySet"))) {
     const std::string name = NameOf(node);
     std::string component = "/bodyset/" + name;
@@ -151,18 +151,18 @@ void ReadBodies(ReadContext& ctx, const pugi::xml_node& model) {
     int index;
     if (name == "ground" && !ground_node) {
       // 3.x: ground is a body named "ground".
-      index = kGroundIndex;
+      index = model::kGroundIndex;
       spec.bodies[0].where = doc.Where(node);
       if (ReadDoubleOr(doc, node, "mass", "/ground", 0.0) != 0.0) {
         ctx.Warn(node, "/ground", "ground's mass is ignored");
       }
     } else {
-      if (int other = ctx.BodyIndex(name); other != kNone) {
+      if (int other = ctx.BodyIndex(name); other != model::kNone) {
         doc.Fail(node, component,
                  "duplicate body name '" + name + "' (also at line " +
                      std::to_string(spec.bodies[other].where.line) + ")");
       }
-      BodySpec body;
+      model::BodySpec body;
       body.name = name;
       body.path = component;
       pugi::xml_node mass = node.child("mass");
@@ -211,4 +211,4 @@ void ReadBodies(ReadContext& ctx, const pugi::xml_node& model) {
   }
 }
 
-}  // namespace sinew::osim
+}  // namespace sinew::io::internal

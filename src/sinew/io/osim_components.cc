@@ -6,7 +6,7 @@
 #include <sinew/io/internal/osim_context.h>
 #include <sinew/io/internal/read_function.h>
 
-namespace sinew::osim {
+namespace sinew::io::internal {
 namespace {
 
 // The frame named by a 4.x socket (relative to `own_path`) or a 3.x body name.
@@ -35,7 +35,7 @@ const FrameEntry* Attachment(ReadContext& ctx, const pugi::xml_node& node,
 void ReadConstraints(ReadContext& ctx, const pugi::xml_node& model) {
   const XmlDocument& doc = ctx.doc();
   for (pugi::xml_node node : ObjectsOf(model.child("ConstraintSet"))) {
-    ConstraintSpec c;
+    model::ConstraintSpec c;
     c.name = NameOf(node);
     c.type = node.name();
     c.path = "/constraintset/" + c.name;
@@ -56,7 +56,7 @@ void ReadConstraints(ReadContext& ctx, const pugi::xml_node& model) {
 void ReadMarkers(ReadContext& ctx, const pugi::xml_node& model) {
   const XmlDocument& doc = ctx.doc();
   for (pugi::xml_node node : ObjectsOf(model.child("MarkerSet"))) {
-    MarkerSpec marker;
+    model::MarkerSpec marker;
     marker.name = NameOf(node);
     const std::string path = "/markerset/" + marker.name;
     const FrameEntry* frame =
@@ -72,7 +72,7 @@ void ReadMarkers(ReadContext& ctx, const pugi::xml_node& model) {
 void ReadContactGeometry(ReadContext& ctx, const pugi::xml_node& model) {
   const XmlDocument& doc = ctx.doc();
   for (pugi::xml_node node : ObjectsOf(model.child("ContactGeometrySet"))) {
-    ContactGeometrySpec c;
+    model::ContactGeometrySpec c;
     c.name = NameOf(node);
     c.type = node.name();
     const std::string path = "/contactgeometryset/" + c.name;
@@ -89,7 +89,8 @@ void ReadContactGeometry(ReadContext& ctx, const pugi::xml_node& model) {
 }
 
 // A PrescribedController's FunctionSet: one function per actuator, in actuator_list order.
-void ReadControlFunctions(const XmlDocument& doc, const pugi::xml_node& node, ControllerSpec& c) {
+void ReadControlFunctions(const XmlDocument& doc, const pugi::xml_node& node,
+                          model::ControllerSpec& c) {
   const std::string path = "/controllerset/" + c.name;
   for (pugi::xml_node set : node.children("FunctionSet")) {
     for (pugi::xml_node f : set.child("objects").children()) {
@@ -106,7 +107,7 @@ void ReadControlFunctions(const XmlDocument& doc, const pugi::xml_node& node, Co
 void ReadControllers(ReadContext& ctx, const pugi::xml_node& model) {
   const XmlDocument& doc = ctx.doc();
   for (pugi::xml_node node : ObjectsOf(model.child("ControllerSet"))) {
-    ControllerSpec c;
+    model::ControllerSpec c;
     c.name = NameOf(node);
     c.type = node.name();
     std::string list = TextOf(node, "socket_actuators");
@@ -162,7 +163,7 @@ bool IsKnownModelChild(std::string_view tag) {
 
 void ReadOtherComponents(ReadContext& ctx, const pugi::xml_node& model) {
   const XmlDocument& doc = ctx.doc();
-  ModelSpec& spec = ctx.spec();
+  model::ModelSpec& spec = ctx.spec();
   ReadConstraints(ctx, model);
   ReadMarkers(ctx, model);
   ReadContactGeometry(ctx, model);
@@ -183,4 +184,4 @@ void ReadOtherComponents(ReadContext& ctx, const pugi::xml_node& model) {
   }
 }
 
-}  // namespace sinew::osim
+}  // namespace sinew::io::internal

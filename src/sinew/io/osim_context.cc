@@ -2,7 +2,7 @@
 
 #include <iterator>
 
-namespace sinew::osim {
+namespace sinew::io::internal {
 
 void ReadContext::Warn(const pugi::xml_node& node, const std::string& component,
                        const std::string& message, const std::string& dedupe_key) {
@@ -119,7 +119,7 @@ FrameEntry& ReadContext::Resolve(const std::string& path, FrameEntry& entry) {
   entry.body = parent->body;
   entry.X_BF = parent->X_BF * entry.X_PF;
   entry.state = 2;
-  FrameSpec frame;
+  model::FrameSpec frame;
   const size_t slash = path.rfind('/');
   frame.name = path.substr(slash + 1);
   frame.path = path;
@@ -159,14 +159,14 @@ void ReadContext::ResolveStationDefined(const std::string& path, FrameEntry& ent
   const pugi::xml_node node = entry.station_frame;
   const char* sockets[4] = {"socket_point_a", "socket_point_b", "socket_point_c",
                             "socket_origin_point"};
-  int body = kNone;
+  int body = model::kNone;
   Vec3 p[4];
   for (int i = 0; i < 4; ++i) {
     pugi::xml_node socket = node.child(sockets[i]);
     if (!socket)
       doc_.Fail(node, path, std::string("StationDefinedFrame has no <") + sockets[i] + ">");
     auto [station_body, p_BS] = ResolveStation(path, socket, path);
-    if (body != kNone && station_body != body) {
+    if (body != model::kNone && station_body != body) {
       doc_.Fail(socket, path, "the stations of a StationDefinedFrame are on different bodies");
     }
     body = station_body;
@@ -205,7 +205,7 @@ void ReadContext::ResolveStationDefined(const std::string& path, FrameEntry& ent
   entry.X_BF = Transform(R, p[3]);
   entry.X_PF = entry.X_BF;
   entry.state = 2;
-  FrameSpec frame;
+  model::FrameSpec frame;
   frame.name = path.substr(path.rfind('/') + 1);
   frame.path = path;
   frame.parent = spec_.bodies[body].path;
@@ -227,4 +227,4 @@ const std::vector<int>& ReadContext::CoordinatesNamed(const std::string& name) c
   return it == coordinate_names_.end() ? kEmpty : it->second;
 }
 
-}  // namespace sinew::osim
+}  // namespace sinew::io::internal

@@ -7,17 +7,18 @@
 #include <sinew/io/internal/osim_context.h>
 #include <sinew/io/internal/read_function.h>
 
-namespace sinew::osim {
+namespace sinew::io::internal {
 
 int ResolveCoordinateName(ReadContext& ctx, const pugi::xml_node& node, std::string_view text,
                           const std::string& component) {
   const auto& coords = ctx.spec().coordinates;
-  if (int by_path = ctx.CoordinateByPath(std::string(text)); by_path != kNone) return by_path;
+  if (int by_path = ctx.CoordinateByPath(std::string(text)); by_path != model::kNone)
+    return by_path;
   const size_t slash = text.rfind('/');
   const std::string_view name = slash == std::string_view::npos ? text : text.substr(slash + 1);
   const std::vector<int>& named = ctx.CoordinatesNamed(std::string(name));
   const int count = static_cast<int>(named.size());
-  const int found = named.empty() ? kNone : named.front();
+  const int found = named.empty() ? model::kNone : named.front();
   const std::string tag = node.name();
   if (count == 0) {
     ctx.doc().Fail(node, component, "<" + tag + "> '" + std::string(text) + "' does not exist");
@@ -63,10 +64,10 @@ const FrameEntry* ResolveAttachment(ReadContext& ctx, const pugi::xml_node& node
                  "names no frame (<" + std::string(socket_tag) + "> or <" + body_tag + ">)");
 }
 
-PathPointSpec ReadPathPoint(ReadContext& ctx, const pugi::xml_node& node,
-                            const std::string& path_path) {
+model::PathPointSpec ReadPathPoint(ReadContext& ctx, const pugi::xml_node& node,
+                                   const std::string& path_path) {
   const XmlDocument& doc = ctx.doc();
-  PathPointSpec point;
+  model::PathPointSpec point;
   point.name = NameOf(node);
   point.type = node.name();
   // 1.9 names: MusclePoint, MuscleViaPoint, MovingMusclePoint.
@@ -105,7 +106,7 @@ PathPointSpec ReadPathPoint(ReadContext& ctx, const pugi::xml_node& node,
       }
       if (!point.location_functions[i]) {
         // No function: the coordinate of `location` stays fixed.
-        point.location_functions[i] = std::make_shared<Constant>(location[i]);
+        point.location_functions[i] = std::make_shared<functions::Constant>(location[i]);
       }
     }
   } else if (point.type != "PathPoint") {
@@ -115,10 +116,10 @@ PathPointSpec ReadPathPoint(ReadContext& ctx, const pugi::xml_node& node,
   return point;
 }
 
-GeometryPathSpec ReadGeometryPath(ReadContext& ctx, const pugi::xml_node& points_owner,
-                                  const std::string& path_path) {
+model::GeometryPathSpec ReadGeometryPath(ReadContext& ctx, const pugi::xml_node& points_owner,
+                                         const std::string& path_path) {
   const XmlDocument& doc = ctx.doc();
-  GeometryPathSpec path;
+  model::GeometryPathSpec path;
   pugi::xml_node point_set = points_owner.child("PathPointSet");
   if (!point_set) point_set = points_owner.child("MusclePointSet");
   for (pugi::xml_node node : ObjectsOf(point_set)) {
@@ -127,7 +128,7 @@ GeometryPathSpec ReadGeometryPath(ReadContext& ctx, const pugi::xml_node& points
   pugi::xml_node wrap_set = points_owner.child("PathWrapSet");
   if (!wrap_set) wrap_set = points_owner.child("MuscleWrapSet");
   for (pugi::xml_node node : ObjectsOf(wrap_set)) {
-    PathWrapSpec wrap;
+    model::PathWrapSpec wrap;
     const std::string component = path_path + "/" + NameOf(node);
     wrap.wrap_object = TextOf(node, "wrap_object");
     wrap.method = TextOf(node, "method");
@@ -173,7 +174,7 @@ pugi::xml_node FindPathOwner(const pugi::xml_node& force) {
 void ReadForces(ReadContext& ctx, const pugi::xml_node& model) {
   const XmlDocument& doc = ctx.doc();
   for (pugi::xml_node node : ObjectsOf(model.child("ForceSet"))) {
-    ForceSpec force;
+    model::ForceSpec force;
     force.name = NameOf(node);
     force.type = node.name();
     force.path = "/forceset/" + force.name;
@@ -205,4 +206,4 @@ void ReadForces(ReadContext& ctx, const pugi::xml_node& model) {
   }
 }
 
-}  // namespace sinew::osim
+}  // namespace sinew::io::internal

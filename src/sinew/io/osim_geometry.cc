@@ -5,7 +5,7 @@
 
 #include <sinew/io/internal/osim_context.h>
 
-namespace sinew::osim {
+namespace sinew::io::internal {
 namespace {
 
 // 3.x `transform`: body-fixed XYZ angles then translation (6 numbers).
@@ -18,7 +18,7 @@ Transform ReadSixTransform(const XmlDocument& doc, const pugi::xml_node& parent,
 }
 
 void ReadAppearance(const XmlDocument& doc, const pugi::xml_node& geometry,
-                    const std::string& component, GeometrySpec& spec) {
+                    const std::string& component, model::GeometrySpec& spec) {
   pugi::xml_node appearance = geometry.child("Appearance");
   if (!appearance) return;
   spec.visible = ReadBoolOr(doc, appearance, "visible", component, true);
@@ -32,7 +32,7 @@ void ReadAttachedGeometry(ReadContext& ctx, const pugi::xml_node& owner,
                           const std::string& owner_path, const std::string& component) {
   const XmlDocument& doc = ctx.doc();
   for (pugi::xml_node geometry : ObjectsOf(owner.child("attached_geometry"))) {
-    GeometrySpec spec;
+    model::GeometrySpec spec;
     spec.name = NameOf(geometry);
     spec.type = geometry.name();
     const std::string path = owner_path + "/" + spec.name;
@@ -57,12 +57,12 @@ void ReadVisibleObject(ReadContext& ctx, const pugi::xml_node& visible, int body
   const XmlDocument& doc = ctx.doc();
   const Vec3 scale = ReadVec3Or(doc, visible, "scale_factors", component, Vec3::Ones());
   const Transform X_BV = ReadSixTransform(doc, visible, component);
-  std::vector<GeometrySpec>& out = ctx.spec().bodies[body].geometry;
+  std::vector<model::GeometrySpec>& out = ctx.spec().bodies[body].geometry;
   // geometry_files: a list of mesh file names sharing the object's transform and scale.
   std::istringstream files(TextOf(visible, "geometry_files"));
   std::string file;
   while (files >> file) {
-    GeometrySpec spec;
+    model::GeometrySpec spec;
     spec.name = file;
     spec.type = "Mesh";
     spec.body = body;
@@ -74,7 +74,7 @@ void ReadVisibleObject(ReadContext& ctx, const pugi::xml_node& visible, int body
   }
   // GeometrySet of DisplayGeometry (3.x after 2.x): each with its own transform and scale.
   for (pugi::xml_node display : ObjectsOf(visible.child("GeometrySet"))) {
-    GeometrySpec spec;
+    model::GeometrySpec spec;
     spec.name = NameOf(display);
     spec.type = "Mesh";
     spec.body = body;
@@ -91,4 +91,4 @@ void ReadVisibleObject(ReadContext& ctx, const pugi::xml_node& visible, int body
   }
 }
 
-}  // namespace sinew::osim
+}  // namespace sinew::io::internal

@@ -26,28 +26,28 @@
 #include <sinew/io/internal/osim_context.h>
 #include <sinew/io/internal/read_function.h>
 
-namespace sinew::osim {
+namespace sinew::io::internal {
 namespace {
 
 struct KindInfo {
   std::string_view tag;
-  JointType kind;
+  model::JointType kind;
   int num_coordinates;  // -1: any (CustomJoint), as many as its axes use
 };
 
 constexpr KindInfo kKinds[] = {
-    {"PinJoint", JointType::kPin, 1},
-    {"SliderJoint", JointType::kSlider, 1},
-    {"UniversalJoint", JointType::kUniversal, 2},
-    {"GimbalJoint", JointType::kGimbal, 3},
-    {"BallJoint", JointType::kBall, 3},
-    {"FreeJoint", JointType::kFree, 6},
-    {"PlanarJoint", JointType::kPlanar, 3},
-    {"EllipsoidJoint", JointType::kEllipsoid, 3},
-    {"WeldJoint", JointType::kWeld, 0},
-    {"ScapulothoracicJoint", JointType::kScapulothoracic, 4},
-    {"CustomJoint", JointType::kCustom, -1},
-    {"ConstantCurvatureJoint", JointType::kConstantCurvature, 3},
+    {"PinJoint", model::JointType::kPin, 1},
+    {"SliderJoint", model::JointType::kSlider, 1},
+    {"UniversalJoint", model::JointType::kUniversal, 2},
+    {"GimbalJoint", model::JointType::kGimbal, 3},
+    {"BallJoint", model::JointType::kBall, 3},
+    {"FreeJoint", model::JointType::kFree, 6},
+    {"PlanarJoint", model::JointType::kPlanar, 3},
+    {"EllipsoidJoint", model::JointType::kEllipsoid, 3},
+    {"WeldJoint", model::JointType::kWeld, 0},
+    {"ScapulothoracicJoint", model::JointType::kScapulothoracic, 4},
+    {"CustomJoint", model::JointType::kCustom, -1},
+    {"ConstantCurvatureJoint", model::JointType::kConstantCurvature, 3},
 };
 
 const KindInfo* FindKind(std::string_view tag) {
@@ -58,16 +58,16 @@ const KindInfo* FindKind(std::string_view tag) {
 }
 
 // The motion of a joint's i-th coordinate for the joints with a fixed coordinate layout.
-MotionType FixedMotion(JointType kind, int i) {
+model::MotionType FixedMotion(model::JointType kind, int i) {
   switch (kind) {
-    case JointType::kSlider:
-      return MotionType::kTranslational;
-    case JointType::kFree:
-      return i < 3 ? MotionType::kRotational : MotionType::kTranslational;
-    case JointType::kPlanar:
-      return i == 0 ? MotionType::kRotational : MotionType::kTranslational;
+    case model::JointType::kSlider:
+      return model::MotionType::kTranslational;
+    case model::JointType::kFree:
+      return i < 3 ? model::MotionType::kRotational : model::MotionType::kTranslational;
+    case model::JointType::kPlanar:
+      return i == 0 ? model::MotionType::kRotational : model::MotionType::kTranslational;
     default:
-      return MotionType::kRotational;
+      return model::MotionType::kRotational;
   }
 }
 
@@ -132,7 +132,7 @@ class JointReader {
 
   // A joint of a <JointSet> (4.x sockets or 3.05 connectors).
   void ReadJointSetJoint(const pugi::xml_node& node) {
-    JointSpec& joint = StartJoint(node);
+    model::JointSpec& joint = StartJoint(node);
     const int index = static_cast<int>(spec_.joints.size()) - 1;
     pugi::xml_node parent_socket = node.child("socket_parent_frame");
     pugi::xml_node child_socket = node.child("socket_child_frame");
@@ -180,7 +180,7 @@ class JointReader {
       ctx_.Warn(node, spec_.bodies[child_body].path,
                 "the joint has no name; named '" + fallback_name + "'");
     }
-    JointSpec& joint = StartJoint(node, fallback_name);
+    model::JointSpec& joint = StartJoint(node, fallback_name);
     const int index = static_cast<int>(spec_.joints.size()) - 1;
     pugi::xml_node parent_node = node.child("parent_body");
     if (!parent_node) doc_.Fail(node, joint.path, "joint has no <parent_body>");
@@ -192,14 +192,14 @@ class JointReader {
 
  private:
   // Fills the fields every layout shares and adds the joint to the spec.
-  JointSpec& StartJoint(const pugi::xml_node& node, const std::string& fallback_name = "") {
-    JointSpec joint;
+  model::JointSpec& StartJoint(const pugi::xml_node& node, const std::string& fallback_name = "") {
+    model::JointSpec joint;
     joint.name = NameOf(node);
     if (joint.name.empty()) joint.name = fallback_name;
     joint.type = node.name();
     joint.path = "/jointset/" + joint.name;
     if (joint.name.empty()) doc_.Fail(node, "/jointset", "a joint has no name");
-    if (int other = ctx_.JointIndex(joint.name); other != kNone) {
+    if (int other = ctx_.JointIndex(joint.name); other != model::kNone) {
       // Paths must stay unique (frames and coordinates hang under them): number the repeat.
       int& n = next_suffix_.try_emplace(joint.name, 2).first->second;
       while (ctx_.HasFrame(joint.path + "_" + std::to_string(n)) ||
@@ -214,7 +214,7 @@ class JointReader {
       joint.path = unique;
     }
     const KindInfo* info = FindKind(joint.type);
-    joint.kind = info ? info->kind : JointType::kUnknown;
+    joint.kind = info ? info->kind : model::JointType::kUnknown;
     if (!info) {
       ctx_.Warn(node, joint.path, "unknown joint type <" + joint.type + ">: read with its frames",
                 "jointtype:" + joint.type);
@@ -245,7 +245,7 @@ class JointReader {
     if (slash != std::string_view::npos) text = text.substr(slash + 1);
     if (text.empty()) doc_.Fail(node, component, std::string(what) + " is empty");
     const int body = ctx_.BodyIndex(std::string(text));
-    if (body == kNone) {
+    if (body == model::kNone) {
       doc_.Fail(node, component, std::string(what) + " '" + std::string(text) + "' does not exist");
     }
     return body;
@@ -254,7 +254,7 @@ class JointReader {
   // 3.x and 3.05: the offsets become frames <parent>_offset and <child>_offset under the joint.
   void ConnectWithOffsets(const pugi::xml_node& node, int index, int parent, const char* p_loc,
                           const char* p_ori, int child, const char* c_loc, const char* c_ori) {
-    JointSpec& joint = spec_.joints[index];
+    model::JointSpec& joint = spec_.joints[index];
     if (parent == child) {
       doc_.Fail(node, joint.path,
                 "joint connects body '" + spec_.bodies[parent].name + "' to itself");
@@ -298,7 +298,7 @@ class JointReader {
   // Coordinates and, for a CustomJoint, the spatial transform.
   void FinishJoint(const pugi::xml_node& node, int index) {
     const std::string path = spec_.joints[index].path;
-    const JointType kind = spec_.joints[index].kind;
+    const model::JointType kind = spec_.joints[index].kind;
     pugi::xml_node list = node.child("coordinates");
     if (!list) list = node.child("CoordinateSet");
     std::vector<int> coords;
@@ -311,7 +311,7 @@ class JointReader {
                 "no coordinates listed: made " + std::to_string(info->num_coordinates) +
                     " with default properties, named " + spec_.joints[index].name + "_coord_<i>");
       for (int i = 0; i < info->num_coordinates; ++i) {
-        CoordinateSpec c;
+        model::CoordinateSpec c;
         c.name = spec_.joints[index].name + "_coord_" + std::to_string(i);
         c.path = path + "/" + c.name;
         c.joint = index;
@@ -322,7 +322,7 @@ class JointReader {
         explicit_motion_.push_back(false);
       }
     }
-    if (kind == JointType::kCustom) {
+    if (kind == model::JointType::kCustom) {
       ReadSpatialTransform(node, index, coords);
     } else {
       spec_.joints[index].coordinates = coords;
@@ -333,14 +333,14 @@ class JointReader {
                       std::to_string(coords.size()));
       }
       for (size_t i = 0; i < coords.size(); ++i) {
-        CoordinateSpec& c = spec_.coordinates[coords[i]];
+        model::CoordinateSpec& c = spec_.coordinates[coords[i]];
         if (!explicit_motion_[coords[i]]) c.motion_type = FixedMotion(kind, static_cast<int>(i));
       }
     }
   }
 
   int ReadCoordinate(const pugi::xml_node& node, int joint, const std::string& joint_path) {
-    CoordinateSpec c;
+    model::CoordinateSpec c;
     c.name = NameOf(node);
     c.path = joint_path + "/" + c.name;
     const std::string& component = c.path;
@@ -372,11 +372,11 @@ class JointReader {
       const std::string text = Lower(XmlDocument::Text(motion));
       explicit_motion = true;
       if (text == "rotational") {
-        c.motion_type = MotionType::kRotational;
+        c.motion_type = model::MotionType::kRotational;
       } else if (text == "translational") {
-        c.motion_type = MotionType::kTranslational;
+        c.motion_type = model::MotionType::kTranslational;
       } else if (text == "coupled") {
-        c.motion_type = MotionType::kCoupled;
+        c.motion_type = model::MotionType::kCoupled;
       } else {
         doc_.Fail(motion, component,
                   "<motion_type> must be rotational, translational or coupled, found '" +
@@ -399,7 +399,8 @@ class JointReader {
 
   // The function of a TransformAxis: 3.x wraps it in <function>, 4.x writes the Function element
   // itself with name="function".
-  FunctionPtr ReadAxisFunction(const pugi::xml_node& axis, const std::string& component) {
+  functions::FunctionPtr ReadAxisFunction(const pugi::xml_node& axis,
+                                          const std::string& component) {
     if (pugi::xml_node wrapper = axis.child("function")) {
       return ReadFunctionProperty(doc_, wrapper, component);
     }
@@ -417,7 +418,7 @@ class JointReader {
   }
 
   void ReadSpatialTransform(const pugi::xml_node& node, int index, const std::vector<int>& own) {
-    JointSpec& joint = spec_.joints[index];
+    model::JointSpec& joint = spec_.joints[index];
     const std::string path = joint.path;
     pugi::xml_node transform = node.child("SpatialTransform");
     std::array<pugi::xml_node, 6> axes;
@@ -439,9 +440,9 @@ class JointReader {
       ctx_.Warn(node, path, "CustomJoint has no SpatialTransform: it allows no motion");
     }
     std::vector<int> order;
-    std::vector<TransformAxisSpec> spatial(6);
+    std::vector<model::TransformAxisSpec> spatial(6);
     for (int i = 0; i < 6; ++i) {
-      TransformAxisSpec& axis = spatial[i];
+      model::TransformAxisSpec& axis = spatial[i];
       axis.name = std::string(kAxisNames[i]);
       axis.axis = Vec3::Unit(i % 3);
       const std::string component = path + "/" + axis.name;
@@ -451,11 +452,11 @@ class JointReader {
         std::istringstream names(TextOf(a, "coordinates"));
         std::string name;
         while (names >> name) {
-          int found = kNone;
+          int found = model::kNone;
           for (int c : own) {
             if (spec_.coordinates[c].name == name) found = c;
           }
-          if (found == kNone) {
+          if (found == model::kNone) {
             doc_.Fail(a.child("coordinates"), component,
                       "coordinate '" + name + "' is not one of the joint's coordinates");
           }
@@ -477,9 +478,9 @@ class JointReader {
         }
         // OpenSim's defaults: the identity of one coordinate, or a constant 0.
         if (axis.coordinates.size() == 1) {
-          axis.function = std::make_shared<LinearFunction>(1.0, 0.0);
+          axis.function = std::make_shared<functions::LinearFunction>(1.0, 0.0);
         } else {
-          axis.function = std::make_shared<Constant>(0.0);
+          axis.function = std::make_shared<functions::Constant>(0.0);
         }
       }
     }
@@ -495,15 +496,15 @@ class JointReader {
       if (explicit_motion_[c]) continue;
       bool rotational = false, translational = false;
       for (int i = 0; i < 6; ++i) {
-        const TransformAxisSpec& axis = spatial[i];
+        const model::TransformAxisSpec& axis = spatial[i];
         if (axis.coordinates.size() != 1 || axis.coordinates[0] != c) continue;
         if (axis.function->TypeName() != "LinearFunction") continue;
         if (std::abs(std::abs(axis.function->CalcDerivative(0.0, 1)) - 1.0) > 0.0) continue;
         (i < 3 ? rotational : translational) = true;
       }
-      spec_.coordinates[c].motion_type = rotational      ? MotionType::kRotational
-                                         : translational ? MotionType::kTranslational
-                                                         : MotionType::kCoupled;
+      spec_.coordinates[c].motion_type = rotational      ? model::MotionType::kRotational
+                                         : translational ? model::MotionType::kTranslational
+                                                         : model::MotionType::kCoupled;
     }
     joint.coordinates = std::move(order);
     joint.spatial_transform = std::move(spatial);
@@ -511,7 +512,7 @@ class JointReader {
 
   ReadContext& ctx_;
   const XmlDocument& doc_;
-  ModelSpec& spec_;
+  model::ModelSpec& spec_;
   std::vector<bool> explicit_motion_;  // per coordinate: motion_type given in the file
   std::unordered_map<std::string, int> next_suffix_;  // duplicate joint name -> next number
 };
@@ -535,4 +536,4 @@ void ReadJoints(ReadContext& ctx, const pugi::xml_node& model) {
   }
 }
 
-}  // namespace sinew::osim
+}  // namespace sinew::io::internal

@@ -7,12 +7,13 @@
 
 #include <sinew/io/internal/osim_context.h>
 
-namespace sinew {
+namespace sinew::io {
 namespace {
 
 constexpr int kNewestKnownVersion = 40600;
 
-int ReadVersion(const XmlDocument& doc, const pugi::xml_node& root, ModelSpec& spec) {
+int ReadVersion(const internal::XmlDocument& doc, const pugi::xml_node& root,
+                model::ModelSpec& spec) {
   pugi::xml_attribute attribute = root.attribute("Version");
   if (!attribute) {
     spec.warnings.push_back({doc.Where(root), "", "OpenSimDocument has no Version; read as 4.x"});
@@ -33,8 +34,8 @@ int ReadVersion(const XmlDocument& doc, const pugi::xml_node& root, ModelSpec& s
   return version;
 }
 
-ModelSpec ReadDocument(const XmlDocument& doc) {
-  ModelSpec spec;
+model::ModelSpec ReadDocument(const internal::XmlDocument& doc) {
+  model::ModelSpec spec;
   spec.file = doc.file();
   pugi::xml_node root = doc.root();
   pugi::xml_node model;
@@ -52,22 +53,24 @@ ModelSpec ReadDocument(const XmlDocument& doc) {
   spec.name = model.attribute("name").value();
   if (pugi::xml_node gravity = model.child("gravity")) spec.gravity = doc.ReadVec3(gravity, "/");
 
-  osim::ReadContext ctx(doc, spec);
-  osim::ReadBodies(ctx, model);
-  osim::ReadJoints(ctx, model);
+  internal::ReadContext ctx(doc, spec);
+  internal::ReadBodies(ctx, model);
+  internal::ReadJoints(ctx, model);
   ctx.ResolveAllFrames();
-  osim::ReadForces(ctx, model);
-  osim::ReadOtherComponents(ctx, model);
-  osim::ValidateSpec(ctx, model);
+  internal::ReadForces(ctx, model);
+  internal::ReadOtherComponents(ctx, model);
+  internal::ValidateSpec(ctx, model);
   return spec;
 }
 
 }  // namespace
 
-ModelSpec ReadOsim(const std::string& file) { return ReadDocument(XmlDocument::Load(file)); }
-
-ModelSpec ReadOsimString(std::string text, const std::string& file) {
-  return ReadDocument(XmlDocument::Parse(std::move(text), file));
+model::ModelSpec ReadOsim(const std::string& file) {
+  return ReadDocument(internal::XmlDocument::Load(file));
 }
 
-}  // namespace sinew
+model::ModelSpec ReadOsimString(std::string text, const std::string& file) {
+  return ReadDocument(internal::XmlDocument::Parse(std::move(text), file));
+}
+
+}  // namespace sinew::io

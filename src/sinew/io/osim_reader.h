@@ -5,7 +5,7 @@
 
 #include <sinew/model/model_spec.h>
 
-namespace sinew {
+namespace sinew::io {
 
 /// Reads the .osim file `file` into a ModelSpec: ground (bodies[0]), bodies, offset frames
 /// (3.x joint offsets become frames named as OpenSim 4 names them), joints with their frames
@@ -13,9 +13,9 @@ namespace sinew {
 /// geometry, controllers and everything else as generic elements. Anything approximated or
 /// ignored is listed in ModelSpec::warnings.
 /// Throws sinew::Error naming the file, the line and the component path for malformed input.
-ModelSpec ReadOsim(const std::string& file);
+model::ModelSpec ReadOsim(const std::string& file);
 
 /// As ReadOsim, from text held in memory; `file` names it in messages (tests, fuzzing).
-ModelSpec ReadOsimString(std::string text, const std::string& file);
+model::ModelSpec ReadOsimString(std::string text, const std::string& file);
 
-}  // namespace sinew
+}  // namespace sinew::io

@@ -6,7 +6,7 @@
 #include <sinew/io/internal/osim_context.h>
 #include <sinew/math/rotation.h>
 
-namespace sinew::osim {
+namespace sinew::io::internal {
 
 std::string Lower(std::string_view s) {
   std::string out(s);
@@ -26,8 +26,8 @@ std::vector<pugi::xml_node> ObjectsOf(const pugi::xml_node& set_or_list) {
   return result;
 }
 
-Element ToElement(const XmlDocument& doc, const pugi::xml_node& node) {
-  Element element;
+model::Element ToElement(const XmlDocument& doc, const pugi::xml_node& node) {
+  model::Element element;
   element.tag = node.name();
   element.name = NameOf(node);
   element.line = doc.LineOf(node);
@@ -100,10 +100,10 @@ bool IsNumberList(std::string_view text) {
   return count > 0;
 }
 
-NumberMap ReadNumericLeaves(const XmlDocument& doc, const pugi::xml_node& node,
-                            const std::string& component,
-                            std::initializer_list<std::string_view> skip) {
-  NumberMap result;
+model::NumberMap ReadNumericLeaves(const XmlDocument& doc, const pugi::xml_node& node,
+                                   const std::string& component,
+                                   std::initializer_list<std::string_view> skip) {
+  model::NumberMap result;
   for (pugi::xml_node child : node.children()) {
     if (child.type() != pugi::node_element || child.first_child().type() == pugi::node_element) {
       continue;
@@ -116,4 +116,4 @@ NumberMap ReadNumericLeaves(const XmlDocument& doc, const pugi::xml_node& node,
   return result;
 }
 
-}  // namespace sinew::osim
+}  // namespace sinew::io::internal

@@ -6,17 +6,17 @@
 
 #include <sinew/io/internal/osim_context.h>
 
-namespace sinew::osim {
+namespace sinew::io::internal {
 
 void ValidateSpec(ReadContext& ctx, const pugi::xml_node& model) {
-  const ModelSpec& spec = ctx.spec();
+  const model::ModelSpec& spec = ctx.spec();
   const XmlDocument& doc = ctx.doc();
   const int n = static_cast<int>(spec.bodies.size());
 
   std::vector<std::vector<int>> joints_of(n);      // joints touching each body
   std::vector<std::vector<int>> parent_joints(n);  // joints whose child is the body
   for (size_t j = 0; j < spec.joints.size(); ++j) {
-    const JointSpec& joint = spec.joints[j];
+    const model::JointSpec& joint = spec.joints[j];
     if (joint.parent_body == joint.child_body) {
       throw Error(joint.where, joint.path,
                   "joint connects body '" + spec.bodies[joint.parent_body].name + "' to itself");
@@ -29,8 +29,8 @@ void ValidateSpec(ReadContext& ctx, const pugi::xml_node& model) {
   // Reachability from ground, joints taken in either direction (OpenSim reverses a joint in its
   // multibody tree when needed).
   std::vector<bool> reached(n, false);
-  std::vector<int> stack = {kGroundIndex};
-  reached[kGroundIndex] = true;
+  std::vector<int> stack = {model::kGroundIndex};
+  reached[model::kGroundIndex] = true;
   while (!stack.empty()) {
     const int b = stack.back();
     stack.pop_back();
@@ -49,20 +49,20 @@ void ValidateSpec(ReadContext& ctx, const pugi::xml_node& model) {
     std::vector<int> seen_at(n, -1);
     std::vector<int> chain;
     int body = b;
-    while (body != kNone && seen_at[body] < 0 && !parent_joints[body].empty()) {
+    while (body != model::kNone && seen_at[body] < 0 && !parent_joints[body].empty()) {
       seen_at[body] = static_cast<int>(chain.size());
       const int j = parent_joints[body][0];
       chain.push_back(j);
       body = spec.joints[j].parent_body;
     }
-    if (body != kNone && seen_at[body] >= 0) {
+    if (body != model::kNone && seen_at[body] >= 0) {
       std::string cycle;
       for (size_t i = static_cast<size_t>(seen_at[body]); i < chain.size(); ++i) {
-        const JointSpec& j = spec.joints[chain[i]];
+        const model::JointSpec& j = spec.joints[chain[i]];
         cycle += (cycle.empty() ? "" : ", ") + j.name + " (" + spec.bodies[j.parent_body].name +
                  " -> " + spec.bodies[j.child_body].name + ")";
       }
-      const JointSpec& first = spec.joints[chain[seen_at[body]]];
+      const model::JointSpec& first = spec.joints[chain[seen_at[body]]];
       throw Error(first.where, first.path,
                   "joints form a cycle that never reaches ground: " + cycle);
     }
@@ -78,7 +78,7 @@ void ValidateSpec(ReadContext& ctx, const pugi::xml_node& model) {
     while (root[b] != b) b = root[b] = root[root[b]];
     return b;
   };
-  for (const JointSpec& joint : spec.joints) {
+  for (const model::JointSpec& joint : spec.joints) {
     const int a = find(joint.parent_body), b = find(joint.child_body);
     if (a == b) {
       ctx.spec().warnings.push_back({joint.where, joint.path,
@@ -100,7 +100,7 @@ void ValidateSpec(ReadContext& ctx, const pugi::xml_node& model) {
 
   // Coordinate names used twice: fine until something refers to one by name (that fails).
   std::map<std::string, int> uses;
-  for (const CoordinateSpec& c : spec.coordinates) ++uses[c.name];
+  for (const model::CoordinateSpec& c : spec.coordinates) ++uses[c.name];
   std::string repeated;
   int count = 0;
   for (const auto& [name, times] : uses) {
@@ -116,4 +116,4 @@ void ValidateSpec(ReadContext& ctx, const pugi::xml_node& model) {
   (void)doc;
 }
 
-}  // namespace sinew::osim
+}  // namespace sinew::io::internal

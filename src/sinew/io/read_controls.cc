@@ -6,7 +6,7 @@
 #include <sinew/functions/control_linear.h>
 #include <sinew/io/internal/xml_document.h>
 
-namespace sinew {
+namespace sinew::io {
 namespace {
 
 constexpr std::string_view kExcitationSuffix = ".excitation";
@@ -22,14 +22,15 @@ std::string ActuatorOfControl(std::string name) {
   return name;
 }
 
-bool ReadOptionalBool(const XmlDocument& doc, const pugi::xml_node& parent, const char* tag,
-                      const std::string& component, bool fallback) {
+bool ReadOptionalBool(const internal::XmlDocument& doc, const pugi::xml_node& parent,
+                      const char* tag, const std::string& component, bool fallback) {
   const pugi::xml_node node = parent.child(tag);
   return node ? doc.ReadBool(node, component) : fallback;
 }
 
-FunctionPtr ReadControlLinear(const XmlDocument& doc, const pugi::xml_node& control,
-                              const std::string& component) {
+functions::FunctionPtr ReadControlLinear(const internal::XmlDocument& doc,
+                                         const pugi::xml_node& control,
+                                         const std::string& component) {
   std::vector<double> times, values;
   for (const pugi::xml_node& node : control.child("x_nodes").children("ControlLinearNode")) {
     const pugi::xml_node t = node.child("t");
@@ -42,7 +43,7 @@ FunctionPtr ReadControlLinear(const XmlDocument& doc, const pugi::xml_node& cont
     }
   }
   if (times.empty()) doc.Fail(control, component, "the control has no <x_nodes>");
-  return std::make_shared<ControlLinear>(
+  return std::make_shared<functions::ControlLinear>(
       std::move(times), std::move(values),
       ReadOptionalBool(doc, control, "use_steps", component, false),
       ReadOptionalBool(doc, control, "extrapolate", component, true));
@@ -50,15 +51,15 @@ FunctionPtr ReadControlLinear(const XmlDocument& doc, const pugi::xml_node& cont
 
 }  // namespace
 
-std::map<std::string, FunctionPtr> ReadControlSet(const std::string& file) {
-  const XmlDocument doc = XmlDocument::Load(file);
+std::map<std::string, functions::FunctionPtr> ReadControlSet(const std::string& file) {
+  const internal::XmlDocument doc = internal::XmlDocument::Load(file);
   pugi::xml_node set = doc.root();
   if (std::string_view(set.name()) == "OpenSimDocument") set = set.child("ControlSet");
   if (!set || std::string_view(set.name()) != "ControlSet") {
     doc.Fail(doc.root(), "",
              "not a ControlSet file (root element <" + std::string(doc.root().name()) + ">)");
   }
-  std::map<std::string, FunctionPtr> controls;
+  std::map<std::string, functions::FunctionPtr> controls;
   for (const pugi::xml_node& control : set.child("objects").children()) {
     if (control.type() != pugi::node_element) continue;
     const std::string name = control.attribute("name").value();
@@ -75,4 +76,4 @@ std::map<std::string, FunctionPtr> ReadControlSet(const std::string& file) {
   return controls;
 }
 
-}  // namespace sinew
+}  // namespace sinew::io

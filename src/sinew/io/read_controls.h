@@ -6,11 +6,11 @@
 
 #include <sinew/functions/function.h>
 
-namespace sinew {
+namespace sinew::io {
 
 /// The controls of a ControlSet file, by actuator name: a control named "X.excitation" (or
 /// "X") drives actuator X. ControlLinear controls become ControlLinear functions.
 /// Throws sinew::Error (file, line, control) for malformed files or unsupported control types.
-std::map<std::string, FunctionPtr> ReadControlSet(const std::string& file);
+std::map<std::string, functions::FunctionPtr> ReadControlSet(const std::string& file);
 
-}  // namespace sinew
+}  // namespace sinew::io

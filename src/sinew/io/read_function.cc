@@ -16,7 +16,7 @@
 #include <sinew/functions/sine.h>
 #include <sinew/functions/step_function.h>
 
-namespace sinew {
+namespace sinew::io::internal {
 namespace {
 
 // Every Function class the reader knows, by its OpenSim tag.
@@ -73,8 +73,8 @@ std::vector<double> ReadList(const XmlDocument& doc, const pugi::xml_node& eleme
 // Builds the function, turning a sinew::Error from a constructor (bad knots, ...) into one that
 // names the element's file and line.
 template <typename Make>
-FunctionPtr Build(const XmlDocument& doc, const pugi::xml_node& element,
-                  const std::string& component, Make make) {
+functions::FunctionPtr Build(const XmlDocument& doc, const pugi::xml_node& element,
+                             const std::string& component, Make make) {
   try {
     return make();
   } catch (const Error& error) {
@@ -83,18 +83,18 @@ FunctionPtr Build(const XmlDocument& doc, const pugi::xml_node& element,
   }
 }
 
-FunctionPtr ReadKnotFunction(const XmlDocument& doc, const pugi::xml_node& element,
-                             const std::string& component, std::string_view type) {
+functions::FunctionPtr ReadKnotFunction(const XmlDocument& doc, const pugi::xml_node& element,
+                                        const std::string& component, std::string_view type) {
   std::vector<double> x = ReadList(doc, element, "x", component);
   std::vector<double> y = ReadList(doc, element, "y", component);
-  return Build(doc, element, component, [&]() -> FunctionPtr {
+  return Build(doc, element, component, [&]() -> functions::FunctionPtr {
     if (type == "PiecewiseLinearFunction") {
-      return std::make_shared<PiecewiseLinearFunction>(std::move(x), std::move(y));
+      return std::make_shared<functions::PiecewiseLinearFunction>(std::move(x), std::move(y));
     }
     if (type == "PiecewiseConstantFunction") {
-      return std::make_shared<PiecewiseConstantFunction>(std::move(x), std::move(y));
+      return std::make_shared<functions::PiecewiseConstantFunction>(std::move(x), std::move(y));
     }
-    return std::make_shared<SimmSpline>(std::move(x), std::move(y));
+    return std::make_shared<functions::SimmSpline>(std::move(x), std::move(y));
   });
 }
 
@@ -107,27 +107,27 @@ bool IsFunctionType(const std::string& tag) {
   return false;
 }
 
-FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node& element,
-                         const std::string& component) {
+functions::FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node& element,
+                                    const std::string& component) {
   const std::string type = element.name();
   if (type == "Constant") {
-    return std::make_shared<Constant>(ReadScalar(doc, element, "value", component, 0.0));
+    return std::make_shared<functions::Constant>(ReadScalar(doc, element, "value", component, 0.0));
   }
   if (type == "LinearFunction") {
     pugi::xml_node coefficients = Child(doc, element, "coefficients", component, false);
-    if (!coefficients) return std::make_shared<LinearFunction>(1.0, 0.0);
+    if (!coefficients) return std::make_shared<functions::LinearFunction>(1.0, 0.0);
     std::vector<double> c = doc.ReadNumbers(coefficients, component, 2);
-    return std::make_shared<LinearFunction>(c[0], c[1]);
+    return std::make_shared<functions::LinearFunction>(c[0], c[1]);
   }
   if (type == "PolynomialFunction") {
     std::vector<double> c = ReadList(doc, element, "coefficients", component);
-    return std::make_shared<PolynomialFunction>(std::move(c));
+    return std::make_shared<functions::PolynomialFunction>(std::move(c));
   }
   if (type == "MultiplierFunction") {
     const double scale = ReadScalar(doc, element, "scale", component, 1.0);
     // The inner function: wrapped (<function><SimmSpline>...) or, as 4.x may write it, a
     // Function element of its own named "function".
-    FunctionPtr inner;
+    functions::FunctionPtr inner;
     if (pugi::xml_node wrapper = element.child("function")) {
       inner = ReadFunctionProperty(doc, wrapper, component);
     } else {
@@ -139,25 +139,26 @@ FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node& element,
       }
     }
     if (!inner) doc.Fail(element, component, "<MultiplierFunction> has no inner <function>");
-    return std::make_shared<MultiplierFunction>(std::move(inner), scale);
+    return std::make_shared<functions::MultiplierFunction>(std::move(inner), scale);
   }
   if (type == "SimmSpline" || type == "NaturalCubicSpline" || type == "natCubicSpline" ||
       type == "PiecewiseLinearFunction" || type == "PiecewiseConstantFunction") {
     return ReadKnotFunction(doc, element, component, type);
   }
   if (type == "Sine") {
-    return std::make_shared<Sine>(ReadScalar(doc, element, "amplitude", component, 1.0),
-                                  ReadScalar(doc, element, "omega", component, 1.0),
-                                  ReadScalar(doc, element, "phase", component, 0.0),
-                                  ReadScalar(doc, element, "offset", component, 0.0));
+    return std::make_shared<functions::Sine>(ReadScalar(doc, element, "amplitude", component, 1.0),
+                                             ReadScalar(doc, element, "omega", component, 1.0),
+                                             ReadScalar(doc, element, "phase", component, 0.0),
+                                             ReadScalar(doc, element, "offset", component, 0.0));
   }
   if (type == "StepFunction") {
     const double x0 = ReadScalar(doc, element, "transition_start_time", component, 0.99);
     const double x1 = ReadScalar(doc, element, "transition_end_time", component, 1.01);
     const double y0 = ReadScalar(doc, element, "start_value", component, 0.0);
     const double y1 = ReadScalar(doc, element, "end_value", component, 1.0);
-    return Build(doc, element, component,
-                 [&]() -> FunctionPtr { return std::make_shared<StepFunction>(x0, x1, y0, y1); });
+    return Build(doc, element, component, [&]() -> functions::FunctionPtr {
+      return std::make_shared<functions::StepFunction>(x0, x1, y0, y1);
+    });
   }
   if (type == "GCVSpline") {
     // OpenSim refits from x, y and error_variance; stored weights/coefficients are not used.
@@ -165,23 +166,25 @@ FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node& element,
     const double error_variance = ReadScalar(doc, element, "error_variance", component, 0.0);
     std::vector<double> x = ReadList(doc, element, "x", component);
     std::vector<double> y = ReadList(doc, element, "y", component);
-    return Build(doc, element, component, [&]() -> FunctionPtr {
-      return std::make_shared<GCVSpline>(half_order, std::move(x), std::move(y), error_variance);
+    return Build(doc, element, component, [&]() -> functions::FunctionPtr {
+      return std::make_shared<functions::GCVSpline>(half_order, std::move(x), std::move(y),
+                                                    error_variance);
     });
   }
   if (type == "MultivariatePolynomialFunction") {
     std::vector<double> c = ReadList(doc, element, "coefficients", component);
     const int dimension = ReadInteger(doc, element, "dimension", component);
     const int order = ReadInteger(doc, element, "order", component);
-    return Build(doc, element, component, [&]() -> FunctionPtr {
-      return std::make_shared<MultivariatePolynomialFunction>(std::move(c), dimension, order);
+    return Build(doc, element, component, [&]() -> functions::FunctionPtr {
+      return std::make_shared<functions::MultivariatePolynomialFunction>(std::move(c), dimension,
+                                                                         order);
     });
   }
   doc.Fail(element, component, "unknown or unsupported function type <" + type + ">");
 }
 
-FunctionPtr ReadFunctionProperty(const XmlDocument& doc, const pugi::xml_node& property,
-                                 const std::string& component) {
+functions::FunctionPtr ReadFunctionProperty(const XmlDocument& doc, const pugi::xml_node& property,
+                                            const std::string& component) {
   if (IsFunctionType(property.name())) return ReadFunction(doc, property, component);
   // A wrapper: at most one Function element inside.
   pugi::xml_node function;
@@ -206,10 +209,11 @@ pugi::xml_node FindFunctionProperty(const pugi::xml_node& parent, const std::str
   return {};
 }
 
-FunctionPtr ReadFunctionProperty(const XmlDocument& doc, const pugi::xml_node& parent,
-                                 const std::string& property, const std::string& component) {
+functions::FunctionPtr ReadFunctionProperty(const XmlDocument& doc, const pugi::xml_node& parent,
+                                            const std::string& property,
+                                            const std::string& component) {
   pugi::xml_node node = FindFunctionProperty(parent, property);
   return node ? ReadFunctionProperty(doc, node, component) : nullptr;
 }
 
-}  // namespace sinew
+}  // namespace sinew::io::internal

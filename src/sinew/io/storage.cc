@@ -6,7 +6,7 @@
 #include <sstream>
 #include <system_error>
 
-namespace sinew {
+namespace sinew::io {
 namespace {
 
 bool IsBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
@@ -254,4 +254,4 @@ void WriteStorage(const Storage& storage, const std::string& file) {
   if (!out) throw Error(SourceLocation{file, 0}, "", "write failed");
 }
 
-}  // namespace sinew
+}  // namespace sinew::io

@@ -9,7 +9,7 @@
 
 #include <sinew/common/error.h>
 
-namespace sinew {
+namespace sinew::io {
 
 /// The contents of a .sto/.mot file. Values are stored row-major.
 struct Storage {
@@ -69,4 +69,4 @@ void WriteStorage(const Storage& storage, const std::string& file);
 /// The text WriteStorage writes.
 std::string FormatStorage(const Storage& storage);
 
-}  // namespace sinew
+}  // namespace sinew::io

@@ -4,15 +4,15 @@
 
 #include <sinew/functions/gcv_spline.h>
 
-namespace sinew {
+namespace sinew::io {
 
-std::vector<FunctionPtr> FitColumnSplines(const Storage& storage, int half_order) {
-  std::vector<FunctionPtr> functions;
+std::vector<functions::FunctionPtr> FitColumnSplines(const Storage& storage, int half_order) {
+  std::vector<functions::FunctionPtr> functions;
   functions.reserve(storage.labels.size());
   for (int column = 0; column < storage.NumColumns(); ++column) {
     try {
       functions.push_back(
-          std::make_shared<GCVSpline>(half_order, storage.time, storage.Column(column)));
+          std::make_shared<functions::GCVSpline>(half_order, storage.time, storage.Column(column)));
     } catch (const Error& error) {
       throw Error("column '" + storage.labels[column] + "': " + error.message());
     }
@@ -20,4 +20,4 @@ std::vector<FunctionPtr> FitColumnSplines(const Storage& storage, int half_order
   return functions;
 }
 
-}  // namespace sinew
+}  // namespace sinew::io

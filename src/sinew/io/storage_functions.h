@@ -6,7 +6,7 @@
 #include <sinew/functions/function.h>
 #include <sinew/io/storage.h>
 
-namespace sinew {
+namespace sinew::io {
 
 /// One function of time per data column of `storage` (same order as storage.labels): the
 /// interpolating natural spline of degree 2 * half_order - 1 through (time, value), i.e. what
@@ -14,6 +14,6 @@ namespace sinew {
 /// play a motion (values, speeds and accelerations then come from the spline's derivatives).
 /// Convert degrees first (ConvertDegreesToRadians). Throws sinew::Error when there are fewer
 /// than 2 * half_order rows or the times are not strictly increasing.
-std::vector<FunctionPtr> FitColumnSplines(const Storage& storage, int half_order = 3);
+std::vector<functions::FunctionPtr> FitColumnSplines(const Storage& storage, int half_order = 3);
 
-}  // namespace sinew
+}  // namespace sinew::io

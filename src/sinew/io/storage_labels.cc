@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numbers>
 
-namespace sinew {
+namespace sinew::io {
 namespace {
 
 bool Contains(std::span<const std::string> names, std::string_view name) {
@@ -100,4 +100,4 @@ void ConvertRadiansToDegrees(Storage& storage,
   storage.in_degrees = true;
 }
 
-}  // namespace sinew
+}  // namespace sinew::io

@@ -9,7 +9,7 @@
 
 #include <sinew/io/storage.h>
 
-namespace sinew {
+namespace sinew::io {
 
 /// What a column holds for a coordinate.
 enum class CoordinateColumnKind { kValue, kSpeed };
@@ -55,4 +55,4 @@ void ConvertDegreesToRadians(Storage& storage, std::span<const std::string> rota
 void ConvertRadiansToDegrees(Storage& storage,
                              const std::function<bool(std::string_view label)>& is_rotational);
 
-}  // namespace sinew
+}  // namespace sinew::io

@@ -7,7 +7,7 @@
 
 #include <sinew/common/text.h>
 
-namespace sinew {
+namespace sinew::io::internal {
 namespace {
 
 // Makes nested comments (`<!-- a <!-- b --> c -->`) one comment, as a reader that counts
@@ -211,4 +211,4 @@ bool XmlDocument::ReadBool(const pugi::xml_node& node, const std::string& compon
            "'");
 }
 
-}  // namespace sinew
+}  // namespace sinew::io::internal

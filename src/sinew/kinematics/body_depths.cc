@@ -2,12 +2,12 @@
 
 #include <queue>
 
-namespace sinew {
+namespace sinew::kinematics {
 
-std::vector<int> CalcBodyDepths(const ModelSpec& spec) {
+std::vector<int> CalcBodyDepths(const model::ModelSpec& spec) {
   const int n = static_cast<int>(spec.bodies.size());
   std::vector<std::vector<int>> neighbours(n);
-  for (const JointSpec& j : spec.joints) {
+  for (const model::JointSpec& j : spec.joints) {
     if (j.parent_body < 0 || j.parent_body >= n || j.child_body < 0 || j.child_body >= n) continue;
     neighbours[j.parent_body].push_back(j.child_body);
     neighbours[j.child_body].push_back(j.parent_body);
@@ -15,8 +15,8 @@ std::vector<int> CalcBodyDepths(const ModelSpec& spec) {
   std::vector<int> depth(n, -1);
   if (n == 0) return depth;
   std::queue<int> frontier;
-  depth[kGroundIndex] = 0;
-  frontier.push(kGroundIndex);
+  depth[model::kGroundIndex] = 0;
+  frontier.push(model::kGroundIndex);
   while (!frontier.empty()) {
     const int b = frontier.front();
     frontier.pop();
@@ -29,4 +29,4 @@ std::vector<int> CalcBodyDepths(const ModelSpec& spec) {
   return depth;
 }
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

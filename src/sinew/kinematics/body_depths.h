@@ -5,11 +5,11 @@
 
 #include <sinew/model/model_spec.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 
 /// Number of joints between each body and ground (ground 0), joints taken in either
 /// direction; a body no chain of joints reaches gets -1. Used to colour primitives by depth and
 /// to assign collision families.
-std::vector<int> CalcBodyDepths(const ModelSpec& spec);
+std::vector<int> CalcBodyDepths(const model::ModelSpec& spec);
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

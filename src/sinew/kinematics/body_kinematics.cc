@@ -5,7 +5,7 @@
 #include <sinew/kinematics/forward_kinematics.h>
 #include <sinew/math/rotation.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 namespace {
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 
@@ -15,9 +15,9 @@ void Append(std::vector<double>& row, const Vec3& v) {
 }
 }  // namespace
 
-std::vector<std::string> BodyKinematicsLabels(const ModelSpec& spec) {
+std::vector<std::string> BodyKinematicsLabels(const model::ModelSpec& spec) {
   std::vector<std::string> labels;
-  for (const BodySpec& b : spec.bodies) {
+  for (const model::BodySpec& b : spec.bodies) {
     for (const char* suffix : {"_X", "_Y", "_Z", "_Ox", "_Oy", "_Oz"}) {
       labels.push_back(b.name + suffix);
     }
@@ -27,7 +27,8 @@ std::vector<std::string> BodyKinematicsLabels(const ModelSpec& spec) {
   return labels;
 }
 
-std::vector<double> CalcBodyKinematicsRow(const ModelSpec& spec, std::span<const Transform> X_GB) {
+std::vector<double> CalcBodyKinematicsRow(const model::ModelSpec& spec,
+                                          std::span<const Transform> X_GB) {
   std::vector<double> row;
   row.reserve(spec.bodies.size() * 6 + 3);
   Vec3 weighted = Vec3::Zero();
@@ -45,7 +46,8 @@ std::vector<double> CalcBodyKinematicsRow(const ModelSpec& spec, std::span<const
   return row;
 }
 
-std::vector<double> CalcBodyVelocityRow(const ModelSpec& spec, std::span<const Transform> X_GB,
+std::vector<double> CalcBodyVelocityRow(const model::ModelSpec& spec,
+                                        std::span<const Transform> X_GB,
                                         std::span<const SpatialVec> V_GB) {
   std::vector<double> row;
   row.reserve(spec.bodies.size() * 6 + 3);
@@ -64,19 +66,20 @@ std::vector<double> CalcBodyVelocityRow(const ModelSpec& spec, std::span<const T
   return row;
 }
 
-std::vector<std::string> MarkerLocationLabels(const ModelSpec& spec) {
+std::vector<std::string> MarkerLocationLabels(const model::ModelSpec& spec) {
   std::vector<std::string> labels;
-  for (const MarkerSpec& m : spec.markers) {
+  for (const model::MarkerSpec& m : spec.markers) {
     for (const char* suffix : {"_tx", "_ty", "_tz"}) labels.push_back(m.name + suffix);
   }
   return labels;
 }
 
-std::vector<double> CalcMarkerLocationRow(const ModelSpec& spec, std::span<const Transform> X_GB) {
+std::vector<double> CalcMarkerLocationRow(const model::ModelSpec& spec,
+                                          std::span<const Transform> X_GB) {
   std::vector<double> row;
   row.reserve(spec.markers.size() * 3);
   for (const Vec3& p : CalcMarkerLocations(spec, X_GB)) Append(row, p);
   return row;
 }
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

@@ -4,7 +4,7 @@
 #include <numbers>
 #include <unordered_map>
 
-namespace sinew {
+namespace sinew::kinematics {
 namespace {
 
 bool EndsWith(const std::string& s, const std::string& suffix) {
@@ -14,19 +14,20 @@ bool EndsWith(const std::string& s, const std::string& suffix) {
 
 }  // namespace
 
-MotionColumnMap MapMotionColumns(const ModelSpec& spec, std::span<const std::string> labels) {
+MotionColumnMap MapMotionColumns(const model::ModelSpec& spec,
+                                 std::span<const std::string> labels) {
   std::unordered_map<std::string, int> by_name, by_path;
   for (int c = static_cast<int>(spec.coordinates.size()) - 1; c >= 0; --c) {
     by_name[spec.coordinates[c].name] = c;  // the first coordinate wins on duplicate names
     if (!spec.coordinates[c].path.empty()) by_path[spec.coordinates[c].path] = c;
   }
   MotionColumnMap map;
-  map.coordinate.assign(labels.size(), kNone);
+  map.coordinate.assign(labels.size(), model::kNone);
   std::vector<bool> driven(spec.coordinates.size(), false);
   for (size_t i = 0; i < labels.size(); ++i) {
     const std::string& label = labels[i];
     if (label == "time") continue;
-    int c = kNone;
+    int c = model::kNone;
     if (EndsWith(label, "/speed")) continue;
     if (EndsWith(label, "/value")) {
       const std::string path = label.substr(0, label.size() - 6);
@@ -41,7 +42,7 @@ MotionColumnMap MapMotionColumns(const ModelSpec& spec, std::span<const std::str
     } else if (auto jt = by_path.find(label); jt != by_path.end()) {
       c = jt->second;
     }
-    if (c == kNone) {
+    if (c == model::kNone) {
       map.unknown.push_back(label);
     } else {
       map.coordinate[i] = c;
@@ -54,15 +55,16 @@ MotionColumnMap MapMotionColumns(const ModelSpec& spec, std::span<const std::str
   return map;
 }
 
-void ApplyMotionRow(const ModelSpec& spec, const MotionColumnMap& map, std::span<const double> row,
-                    bool in_degrees, std::span<double> q) {
+void ApplyMotionRow(const model::ModelSpec& spec, const MotionColumnMap& map,
+                    std::span<const double> row, bool in_degrees, std::span<double> q) {
   const size_t n = std::min(row.size(), map.coordinate.size());
   for (size_t i = 0; i < n; ++i) {
     const int c = map.coordinate[i];
-    if (c == kNone) continue;
-    const bool convert = in_degrees && spec.coordinates[c].motion_type == MotionType::kRotational;
+    if (c == model::kNone) continue;
+    const bool convert =
+        in_degrees && spec.coordinates[c].motion_type == model::MotionType::kRotational;
     q[c] = convert ? row[i] * (std::numbers::pi / 180.0) : row[i];
   }
 }
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

@@ -9,7 +9,7 @@
 
 #include <sinew/model/model_spec.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 
 /// How the columns of a motion table map to a model's coordinates.
 struct MotionColumnMap {
@@ -23,12 +23,12 @@ struct MotionColumnMap {
 
 /// Maps labels to coordinates: old-style names (`knee_angle_r`) and OpenSim 4 paths
 /// (`/jointset/knee_r/knee_angle_r/value`); `.../speed` columns are ignored silently.
-MotionColumnMap MapMotionColumns(const ModelSpec& spec, std::span<const std::string> labels);
+MotionColumnMap MapMotionColumns(const model::ModelSpec& spec, std::span<const std::string> labels);
 
 /// Writes the coordinates a row drives into `q` (ModelSpec::coordinates order), converting
 /// degrees to radians for rotational coordinates when `in_degrees` (as OpenSim does; coupled
 /// and translational coordinates are never converted). Other entries of `q` are untouched.
-void ApplyMotionRow(const ModelSpec& spec, const MotionColumnMap& map, std::span<const double> row,
-                    bool in_degrees, std::span<double> q);
+void ApplyMotionRow(const model::ModelSpec& spec, const MotionColumnMap& map,
+                    std::span<const double> row, bool in_degrees, std::span<double> q);
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

@@ -5,9 +5,9 @@
 #include <sinew/common/error.h>
 #include <sinew/kinematics/internal/joint_math.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 
-using kinematics_detail::RotationAboutUnitAxis;
+using internal::RotationAboutUnitAxis;
 
 namespace {
 constexpr int kMaxArgs = 6;  // A joint has at most six coordinates.
@@ -222,4 +222,4 @@ SpatialVec CustomJointModel::CalcHDotU(std::span<const double> q, std::span<cons
   return A;
 }
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

@@ -7,7 +7,7 @@
 
 #include <sinew/kinematics/joint_model.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 
 /// One of the six axes of a CustomJoint: s = f(q[args...]) along or about `axis` (unit, in F).
 struct TransformAxisTerm {
@@ -17,7 +17,7 @@ struct TransformAxisTerm {
   Vec3 axis = Vec3::UnitX();  ///< Unit axis in F.
   double value = 0.0;         ///< For kConstant.
   std::vector<int> args;      ///< Joint-local coordinate indices (kIdentity/kFunction1: one).
-  FunctionPtr function;       ///< For kFunction1 / kFunctionN.
+  functions::FunctionPtr function;  ///< For kFunction1 / kFunctionN.
 };
 
 /// X_FM(q) = [R(a1,s1) R(a2,s2) R(a3,s3), s4 a4 + s5 a5 + s6 a6] with s_i = f_i(q): rotations
@@ -60,4 +60,4 @@ class CustomJointModel final : public JointModel {
   std::array<Mat3, 3> fixed_rotation_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

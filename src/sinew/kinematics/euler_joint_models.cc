@@ -2,11 +2,11 @@
 
 #include <sinew/kinematics/internal/joint_math.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 
-using kinematics_detail::AngVelInParentFromBodyFixedXYZDot;
-using kinematics_detail::BodyFixedXYZ;
-using kinematics_detail::BodyFixedXYZDotFromAngVelInParent;
+using internal::AngVelInParentFromBodyFixedXYZDot;
+using internal::BodyFixedXYZ;
+using internal::BodyFixedXYZDotFromAngVelInParent;
 
 namespace {
 
@@ -110,4 +110,4 @@ SpatialVec EllipsoidJointModel::CalcHDotU(std::span<const double> q,
   return A;
 }
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

@@ -5,7 +5,7 @@
 
 #include <sinew/kinematics/joint_model.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 
 /// BallJoint: q = body-fixed X-Y-Z angles of R_FM (rad), u = w_FM in F (rad/s), p_FM = 0.
 class BallJointModel final : public JointModel {
@@ -80,4 +80,4 @@ class WeldJointModel final : public JointModel {
   }
 };
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

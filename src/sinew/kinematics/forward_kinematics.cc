@@ -5,7 +5,7 @@
 
 #include <sinew/common/error.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 namespace {
 
 // The joint's coordinates (or speeds) gathered from the model-wide vector.
@@ -23,7 +23,7 @@ void CalcBodyPoses(const KinematicTree& tree, std::span<const double> q,
       static_cast<int>(X_GB.size()) < tree.num_bodies()) {
     throw Error("CalcBodyPoses: q or X_GB is too short for the model");
   }
-  X_GB[kGroundIndex] = Transform();
+  X_GB[model::kGroundIndex] = Transform();
   for (const TreeJoint& t : tree.joints()) {
     const std::array<double, 6> q_local = Gather(t, q);
     const Transform X_FM = t.model->CalcX_FM(std::span<const double>(q_local.data(), t.nq));
@@ -41,7 +41,7 @@ void CalcBodyVelocities(const KinematicTree& tree, std::span<const double> q,
       static_cast<int>(V_GB.size()) < tree.num_bodies()) {
     throw Error("CalcBodyVelocities: q, u, X_GB or V_GB is too short for the model");
   }
-  V_GB[kGroundIndex].setZero();
+  V_GB[model::kGroundIndex].setZero();
   for (const TreeJoint& t : tree.joints()) {
     const std::array<double, 6> q_local = Gather(t, q);
     const std::array<double, 6> u_local = Gather(t, u);
@@ -70,16 +70,18 @@ void CalcBodyVelocities(const KinematicTree& tree, std::span<const double> q,
   }
 }
 
-std::vector<Vec3> CalcMassCenterLocations(const ModelSpec& spec, std::span<const Transform> X_GB) {
+std::vector<Vec3> CalcMassCenterLocations(const model::ModelSpec& spec,
+                                          std::span<const Transform> X_GB) {
   std::vector<Vec3> p(spec.bodies.size());
   for (size_t b = 0; b < spec.bodies.size(); ++b) p[b] = X_GB[b] * spec.bodies[b].mass_center;
   return p;
 }
 
-std::vector<Vec3> CalcMarkerLocations(const ModelSpec& spec, std::span<const Transform> X_GB) {
+std::vector<Vec3> CalcMarkerLocations(const model::ModelSpec& spec,
+                                      std::span<const Transform> X_GB) {
   std::vector<Vec3> p(spec.markers.size());
   for (size_t m = 0; m < spec.markers.size(); ++m) {
-    const MarkerSpec& marker = spec.markers[m];
+    const model::MarkerSpec& marker = spec.markers[m];
     if (marker.body < 0 || marker.body >= static_cast<int>(X_GB.size())) {
       throw Error(marker.where, marker.name, "marker body out of range");
     }
@@ -88,4 +90,4 @@ std::vector<Vec3> CalcMarkerLocations(const ModelSpec& spec, std::span<const Tra
   return p;
 }
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

@@ -9,7 +9,7 @@
 #include <sinew/math/transform.h>
 #include <sinew/model/model_spec.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 
 /// X_GB for every body (ground included, identity) from q (ModelSpec::coordinates order, rad
 /// or m): X_GB = X_GP * X_PF * X_FM(q) * inverse(X_BM) (inverted across reversed joints).
@@ -25,10 +25,12 @@ void CalcBodyVelocities(const KinematicTree& tree, std::span<const double> q,
                         std::span<SpatialVec> V_GB);
 
 /// Ground position (m) of each body's mass centre.
-std::vector<Vec3> CalcMassCenterLocations(const ModelSpec& spec, std::span<const Transform> X_GB);
+std::vector<Vec3> CalcMassCenterLocations(const model::ModelSpec& spec,
+                                          std::span<const Transform> X_GB);
 
 /// Ground position (m) of each marker of the model.
-std::vector<Vec3> CalcMarkerLocations(const ModelSpec& spec, std::span<const Transform> X_GB);
+std::vector<Vec3> CalcMarkerLocations(const model::ModelSpec& spec,
+                                      std::span<const Transform> X_GB);
 
 /// Ground position (m) of a station p_BS (in body B) and its velocity in G (m/s).
 inline Vec3 CalcStationLocation(const Transform& X_GB, const Vec3& p_BS) { return X_GB * p_BS; }
@@ -36,4 +38,4 @@ inline Vec3 CalcStationVelocity(const Transform& X_GB, const SpatialVec& V_GB, c
   return V_GB.tail<3>() + V_GB.head<3>().cross(X_GB.R * p_BS);
 }
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

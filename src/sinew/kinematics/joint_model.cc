@@ -8,12 +8,12 @@
 #include <sinew/kinematics/euler_joint_models.h>
 #include <sinew/kinematics/scapulothoracic_joint_model.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 namespace {
 
 using Kind = TransformAxisTerm::Kind;
 
-[[noreturn]] void Fail(const JointSpec& joint, const std::string& message) {
+[[noreturn]] void Fail(const model::JointSpec& joint, const std::string& message) {
   throw Error(joint.where, joint.path.empty() ? joint.name : joint.path, message);
 }
 
@@ -32,7 +32,7 @@ TransformAxisTerm Free(const Vec3& axis, int local_coordinate) {
   return t;
 }
 
-void RequireCoordinates(const JointSpec& joint, int n) {
+void RequireCoordinates(const model::JointSpec& joint, int n) {
   if (static_cast<int>(joint.coordinates.size()) != n) {
     Fail(joint, joint.type + " needs " + std::to_string(n) + " coordinate(s), the model gives " +
                     std::to_string(joint.coordinates.size()));
@@ -40,8 +40,8 @@ void RequireCoordinates(const JointSpec& joint, int n) {
 }
 
 // A numeric parameter of `joint` with `size` values; the first of `names` that is present.
-std::vector<double> Parameter(const JointSpec& joint, std::initializer_list<const char*> names,
-                              size_t size) {
+std::vector<double> Parameter(const model::JointSpec& joint,
+                              std::initializer_list<const char*> names, size_t size) {
   for (const char* name : names) {
     auto it = joint.parameters.find(name);
     if (it == joint.parameters.end()) continue;
@@ -54,7 +54,8 @@ std::vector<double> Parameter(const JointSpec& joint, std::initializer_list<cons
 }
 
 // TransformAxis -> term, with the axis' coordinates mapped to joint-local indices.
-TransformAxisTerm MakeCustomTerm(const JointSpec& joint, const TransformAxisSpec& axis_spec) {
+TransformAxisTerm MakeCustomTerm(const model::JointSpec& joint,
+                                 const model::TransformAxisSpec& axis_spec) {
   TransformAxisTerm t;
   t.axis = axis_spec.axis;
   if (!(t.axis.norm() > 0.0)) Fail(joint, axis_spec.name + ": zero axis");
@@ -97,7 +98,7 @@ TransformAxisTerm MakeCustomTerm(const JointSpec& joint, const TransformAxisSpec
   return t;
 }
 
-std::unique_ptr<JointModel> MakeCustom(const JointSpec& joint) {
+std::unique_ptr<JointModel> MakeCustom(const model::JointSpec& joint) {
   if (joint.spatial_transform.size() != 6) {
     Fail(joint, "CustomJoint needs a SpatialTransform with 6 axes");
   }
@@ -120,71 +121,71 @@ std::unique_ptr<JointModel> MakeCustom(const JointSpec& joint) {
 
 }  // namespace
 
-std::unique_ptr<JointModel> MakeJointModel(const ModelSpec& spec, int joint_index) {
+std::unique_ptr<JointModel> MakeJointModel(const model::ModelSpec& spec, int joint_index) {
   if (joint_index < 0 || joint_index >= static_cast<int>(spec.joints.size())) {
     throw Error("MakeJointModel: joint index out of range");
   }
-  const JointSpec& joint = spec.joints[joint_index];
+  const model::JointSpec& joint = spec.joints[joint_index];
   const Vec3 x = Vec3::UnitX(), y = Vec3::UnitY(), z = Vec3::UnitZ();
   switch (joint.kind) {
-    case JointType::kPin:
+    case model::JointType::kPin:
       RequireCoordinates(joint, 1);
       return std::make_unique<CustomJointModel>(
           std::array<TransformAxisTerm, 6>{Free(z, 0), Fixed(x), Fixed(y), Fixed(x), Fixed(y),
                                            Fixed(z)},
           1);
-    case JointType::kSlider:
+    case model::JointType::kSlider:
       RequireCoordinates(joint, 1);
       return std::make_unique<CustomJointModel>(
           std::array<TransformAxisTerm, 6>{Fixed(x), Fixed(y), Fixed(z), Free(x, 0), Fixed(y),
                                            Fixed(z)},
           1);
-    case JointType::kUniversal:
+    case model::JointType::kUniversal:
       RequireCoordinates(joint, 2);
       return std::make_unique<CustomJointModel>(
           std::array<TransformAxisTerm, 6>{Free(x, 0), Free(y, 1), Fixed(z), Fixed(x), Fixed(y),
                                            Fixed(z)},
           2);
-    case JointType::kGimbal:
+    case model::JointType::kGimbal:
       RequireCoordinates(joint, 3);
       return std::make_unique<CustomJointModel>(
           std::array<TransformAxisTerm, 6>{Free(x, 0), Free(y, 1), Free(z, 2), Fixed(x), Fixed(y),
                                            Fixed(z)},
           3);
-    case JointType::kPlanar:
+    case model::JointType::kPlanar:
       RequireCoordinates(joint, 3);
       return std::make_unique<CustomJointModel>(
           std::array<TransformAxisTerm, 6>{Free(z, 0), Fixed(x), Fixed(y), Free(x, 1), Free(y, 2),
                                            Fixed(z)},
           3);
-    case JointType::kBall:
+    case model::JointType::kBall:
       RequireCoordinates(joint, 3);
       return std::make_unique<BallJointModel>();
-    case JointType::kFree:
+    case model::JointType::kFree:
       RequireCoordinates(joint, 6);
       return std::make_unique<FreeJointModel>();
-    case JointType::kEllipsoid: {
+    case model::JointType::kEllipsoid: {
       RequireCoordinates(joint, 3);
       const std::vector<double> r = Parameter(joint, {"radii_x_y_z"}, 3);
       return std::make_unique<EllipsoidJointModel>(Vec3(r[0], r[1], r[2]));
     }
-    case JointType::kWeld:
+    case model::JointType::kWeld:
       RequireCoordinates(joint, 0);
       return std::make_unique<WeldJointModel>();
-    case JointType::kScapulothoracic: {
+    case model::JointType::kScapulothoracic: {
       RequireCoordinates(joint, 4);
       const std::vector<double> r = Parameter(joint, {"thoracic_ellipsoid_radii_x_y_z"}, 3);
       const std::vector<double> o = Parameter(joint, {"scapula_winging_axis_origin"}, 2);
       const std::vector<double> d = Parameter(joint, {"scapula_winging_axis_direction"}, 1);
       return std::make_unique<ScapulothoracicJointModel>(Vec3(r[0], r[1], r[2]), o[0], o[1], d[0]);
     }
-    case JointType::kCustom:
+    case model::JointType::kCustom:
       return MakeCustom(joint);
-    case JointType::kConstantCurvature:
-    case JointType::kUnknown:
+    case model::JointType::kConstantCurvature:
+    case model::JointType::kUnknown:
       break;
   }
   Fail(joint, "joint type " + joint.type + " is not supported by the kinematics");
 }
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

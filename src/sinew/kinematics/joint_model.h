@@ -10,7 +10,7 @@
 #include <sinew/math/types.h>
 #include <sinew/model/model_spec.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 
 /// X_FM(q) and its derivatives for one joint. Coordinates q and speeds u are in the order of
 /// JointSpec::coordinates. For most joints u = qdot; for BallJoint (and FreeJoint's rotation)
@@ -47,6 +47,6 @@ class JointModel {
 
 /// Builds the JointModel of `spec.joints[joint_index]` (every JointType but kUnknown).
 /// Throws sinew::Error for a joint it cannot model.
-std::unique_ptr<JointModel> MakeJointModel(const ModelSpec& spec, int joint_index);
+std::unique_ptr<JointModel> MakeJointModel(const model::ModelSpec& spec, int joint_index);
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

@@ -4,19 +4,19 @@
 
 #include <sinew/common/error.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 
-KinematicTree::KinematicTree(const ModelSpec& spec)
+KinematicTree::KinematicTree(const model::ModelSpec& spec)
     : num_bodies_(static_cast<int>(spec.bodies.size())),
       num_coordinates_(static_cast<int>(spec.coordinates.size())) {
   if (num_bodies_ == 0) throw Error(SourceLocation{spec.file, 0}, "", "model has no ground body");
-  for (const CoordinateSpec& c : spec.coordinates) {
+  for (const model::CoordinateSpec& c : spec.coordinates) {
     default_q_.push_back(c.default_value);
     default_u_.push_back(c.default_speed_value);
   }
   const int num_joints = static_cast<int>(spec.joints.size());
   for (int j = 0; j < num_joints; ++j) {
-    const JointSpec& joint = spec.joints[j];
+    const model::JointSpec& joint = spec.joints[j];
     const std::string component = joint.path.empty() ? joint.name : joint.path;
     for (int b : {joint.parent_body, joint.child_body}) {
       if (b < 0 || b >= num_bodies_) throw Error(joint.where, component, "joint body out of range");
@@ -35,13 +35,13 @@ KinematicTree::KinematicTree(const ModelSpec& spec)
 
   // Place bodies outward from ground: a joint with exactly one placed body places the other.
   std::vector<bool> placed(num_bodies_, false), used(num_joints, false);
-  placed[kGroundIndex] = true;
+  placed[model::kGroundIndex] = true;
   bool progress = true;
   while (progress) {
     progress = false;
     for (int j = 0; j < num_joints; ++j) {
       if (used[j]) continue;
-      const JointSpec& joint = spec.joints[j];
+      const model::JointSpec& joint = spec.joints[j];
       const bool parent_placed = placed[joint.parent_body];
       const bool child_placed = placed[joint.child_body];
       if (parent_placed == child_placed) continue;
@@ -66,7 +66,7 @@ KinematicTree::KinematicTree(const ModelSpec& spec)
   }
   for (int j = 0; j < num_joints; ++j) {
     if (used[j]) continue;
-    const JointSpec& joint = spec.joints[j];
+    const model::JointSpec& joint = spec.joints[j];
     if (placed[joint.parent_body] && placed[joint.child_body]) {
       MakeJointModel(spec, j);  // still a joint Sinew must be able to model
       loop_joints_.push_back(j);
@@ -74,11 +74,11 @@ KinematicTree::KinematicTree(const ModelSpec& spec)
   }
   for (int b = 0; b < num_bodies_; ++b) {
     if (!placed[b]) {
-      const BodySpec& body = spec.bodies[b];
+      const model::BodySpec& body = spec.bodies[b];
       throw Error(body.where, body.path.empty() ? body.name : body.path,
                   "body is not connected to ground by any joint");
     }
   }
 }
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

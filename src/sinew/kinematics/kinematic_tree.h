@@ -10,16 +10,16 @@
 #include <sinew/kinematics/joint_model.h>
 #include <sinew/model/model_spec.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 
 /// One joint of the tree, in placement order: it places body `outboard` from body `inboard`.
 /// Forward joints have inboard = the joint's parent body; a joint whose child body is nearer to
 /// ground (OpenSim 4 reverses such joints, as 3.x `reverse` did) is `reversed`: X_FM(q) still
 /// maps the parent frame F to the child frame M, but it is used inverted.
 struct TreeJoint {
-  int joint = kNone;     ///< Index into ModelSpec::joints.
-  int inboard = kNone;   ///< Body already placed.
-  int outboard = kNone;  ///< Body this joint places.
+  int joint = model::kNone;     ///< Index into ModelSpec::joints.
+  int inboard = model::kNone;   ///< Body already placed.
+  int outboard = model::kNone;  ///< Body this joint places.
   bool reversed = false;
   Transform X_IJ;  ///< The joint frame on the inboard body (X_PF, or X_BM if reversed).
   Transform X_JO;  ///< Outboard body in its joint frame (inverse X_BM, or inverse X_PF).
@@ -36,7 +36,7 @@ class KinematicTree {
   /// placed closes a loop: it does not place anything and is listed in loop_joints() (OpenSim
   /// likewise cuts such a joint, splitting its child body with a weld constraint, so it only
   /// acts when the model is assembled or simulated).
-  explicit KinematicTree(const ModelSpec& spec);
+  explicit KinematicTree(const model::ModelSpec& spec);
 
   int num_bodies() const { return num_bodies_; }
   int num_coordinates() const { return num_coordinates_; }
@@ -59,4 +59,4 @@ class KinematicTree {
   std::vector<double> default_q_, default_u_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

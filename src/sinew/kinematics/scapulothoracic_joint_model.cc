@@ -5,12 +5,12 @@
 
 #include <sinew/kinematics/internal/joint_math.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 
-using kinematics_detail::AngVelInParentFromBodyFixedXYZDot;
-using kinematics_detail::BodyFixedXYZ;
-using kinematics_detail::BodyFixedXYZDotFromAngVelInParent;
-using kinematics_detail::RotationAboutUnitAxis;
+using internal::AngVelInParentFromBodyFixedXYZDot;
+using internal::BodyFixedXYZ;
+using internal::BodyFixedXYZDotFromAngVelInParent;
+using internal::RotationAboutUnitAxis;
 
 namespace {
 Mat3 Rz(double angle) { return RotationAboutUnitAxis(Vec3::UnitZ(), angle); }
@@ -95,4 +95,4 @@ SpatialVec ScapulothoracicJointModel::CalcHDotU(std::span<const double> q,
   return A;
 }
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

@@ -5,7 +5,7 @@
 
 #include <sinew/kinematics/joint_model.h>
 
-namespace sinew {
+namespace sinew::kinematics {
 
 /// ScapulothoracicJoint. q = [abduction, elevation, upward rotation, winging] (rad).
 /// X_FM(q) = Rz(pi/2) * E(q0, q1, q2) * Rz(-pi/2) * W(q3), where E is the Ellipsoid mobilizer
@@ -45,4 +45,4 @@ class ScapulothoracicJointModel final : public JointModel {
   Mat3 R_FF0_;   // Rz(pi/2).
 };
 
-}  // namespace sinew
+}  // namespace sinew::kinematics

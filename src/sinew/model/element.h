@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sinew {
+namespace sinew::model {
 
 /// One XML element: its tag, `name` attribute, trimmed text and children, with its line.
 struct Element {
@@ -25,4 +25,4 @@ struct Element {
   }
 };
 
-}  // namespace sinew
+}  // namespace sinew::model

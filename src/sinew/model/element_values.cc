@@ -5,7 +5,7 @@
 #include <sinew/common/error.h>
 #include <sinew/common/text.h>
 
-namespace sinew {
+namespace sinew::model {
 
 void ElementValues::Fail(const std::string& message, int line) const {
   throw Error(SourceLocation{file_, line > 0 ? line : element_.line}, component_, message);
@@ -53,4 +53,4 @@ bool ElementValues::Bool(std::string_view tag, bool fallback) const {
        child->line);
 }
 
-}  // namespace sinew
+}  // namespace sinew::model

@@ -10,7 +10,7 @@
 #include <sinew/math/types.h>
 #include <sinew/model/element.h>
 
-namespace sinew {
+namespace sinew::model {
 
 /// Reads the children of one element; `file` and `component` name it in errors.
 class ElementValues {
@@ -40,4 +40,4 @@ class ElementValues {
   std::string component_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::model

@@ -1,6 +1,6 @@
 #include <sinew/model/model_spec.h>
 
-namespace sinew {
+namespace sinew::model {
 namespace {
 
 template <typename T>
@@ -21,4 +21,4 @@ int ModelSpec::FindCoordinate(std::string_view coordinate_name) const {
   return FindByName(coordinates, coordinate_name);
 }
 
-}  // namespace sinew
+}  // namespace sinew::model

@@ -15,7 +15,7 @@
 #include <sinew/math/transform.h>
 #include <sinew/model/element.h>
 
-namespace sinew {
+namespace sinew::model {
 
 inline constexpr int kGroundIndex = 0;  ///< ModelSpec::bodies[0] is ground.
 inline constexpr int kNone = -1;        ///< An index that refers to nothing.
@@ -84,7 +84,7 @@ struct TransformAxisSpec {
   std::string name;              ///< rotation1..3, translation1..3
   std::vector<int> coordinates;  ///< Indices into ModelSpec::coordinates.
   Vec3 axis = Vec3::UnitX();     ///< As written (normalized on use).
-  FunctionPtr function;          ///< Never null: defaults filled as OpenSim does.
+  functions::FunctionPtr function;  ///< Never null: defaults filled as OpenSim does.
 };
 
 /// A joint between a parent frame F (on body `parent_body`) and a child frame M (on
@@ -122,7 +122,7 @@ struct CoordinateSpec {
   bool clamped = false;
   bool locked = false;
   bool prescribed = false;
-  FunctionPtr prescribed_function;   ///< q(t) when prescribed; may be null.
+  functions::FunctionPtr prescribed_function;  ///< q(t) when prescribed; may be null.
   SourceLocation where;
 };
 
@@ -135,7 +135,8 @@ struct PathPointSpec {
   Vec3 location = Vec3::Zero();  ///< p_BP in the body frame (fixed points).
   int coordinate = kNone;        ///< ConditionalPathPoint: active when range_min <= q <= range_max
   double range_min = 0, range_max = 0;
-  std::array<FunctionPtr, 3> location_functions;    ///< MovingPathPoint x, y, z (in frame F)
+  std::array<functions::FunctionPtr, 3>
+      location_functions;  ///< MovingPathPoint x, y, z (in frame F)
   std::array<int, 3> location_coordinates{kNone, kNone, kNone};
   Transform X_BF;              ///< The frame's pose in the body (for moving points).
 };
@@ -203,7 +204,7 @@ struct ControllerSpec {
   std::string type;
   std::vector<std::string> actuators;
   /// PrescribedController: one control function of time per entry of `actuators`.
-  std::vector<FunctionPtr> functions;
+  std::vector<functions::FunctionPtr> functions;
   Element element;
   SourceLocation where;
 };
@@ -234,4 +235,4 @@ struct ModelSpec {
   int FindCoordinate(std::string_view coordinate_name) const;
 };
 
-}  // namespace sinew
+}  // namespace sinew::model

@@ -4,7 +4,7 @@
 
 #include <sinew/model/element_values.h>
 
-namespace sinew {
+namespace sinew::opensim::internal {
 namespace {
 
 // Files older than 1.9.5 name actuator bodies and directions differently; OpenSim renames
@@ -17,29 +17,32 @@ std::string LastPathSegment(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-int MapBody(const ModelSpec& spec, const ElementValues& values, const std::string& name,
-            const std::vector<int>& body_map, const char* property) {
+int MapBody(const model::ModelSpec& spec, const model::ElementValues& values,
+            const std::string& name, const std::vector<int>& body_map, const char* property) {
   const int b = spec.FindBody(LastPathSegment(name));
-  if (b == kNone) values.Fail(std::string(property) + " '" + name + "' is not a body of the model");
+  if (b == model::kNone)
+    values.Fail(std::string(property) + " '" + name + "' is not a body of the model");
   return body_map[b];
 }
 
-std::shared_ptr<Actuator> MakePointActuator(const ModelSpec& spec, const ForceSpec& force,
-                                            const ElementValues& v,
-                                            const std::vector<int>& body_map) {
+std::shared_ptr<forces::Actuator> MakePointActuator(const model::ModelSpec& spec,
+                                                    const model::ForceSpec& force,
+                                                    const model::ElementValues& v,
+                                                    const std::vector<int>& body_map) {
   const bool renamed = spec.version < kRenamedActuatorVersion && v.Has("body_B");
   const std::string body = renamed ? v.String("body_B") : v.String("body");
   Vec3 direction = v.Vector3(renamed ? "direction_A" : "direction", Vec3::Zero());
   if (renamed) direction = -direction;
-  return std::make_shared<PointActuator>(
+  return std::make_shared<forces::PointActuator>(
       force.name, v.Double("optimal_force", 1.0), MapBody(spec, v, body, body_map, "body"),
       v.Vector3(renamed ? "point_B" : "point", Vec3::Zero()), v.Bool("point_is_global", false),
       direction, renamed ? true : v.Bool("force_is_global", false));
 }
 
-std::shared_ptr<Actuator> MakeTorqueActuator(const ModelSpec& spec, const ForceSpec& force,
-                                             const ElementValues& v,
-                                             const std::vector<int>& body_map) {
+std::shared_ptr<forces::Actuator> MakeTorqueActuator(const model::ModelSpec& spec,
+                                                     const model::ForceSpec& force,
+                                                     const model::ElementValues& v,
+                                                     const std::vector<int>& body_map) {
   const bool renamed = spec.version < kRenamedActuatorVersion && v.Has("body_A");
   std::string body_a, body_b;
   if (renamed) {
@@ -51,20 +54,21 @@ std::shared_ptr<Actuator> MakeTorqueActuator(const ModelSpec& spec, const ForceS
   }
   Vec3 axis = v.Vector3(renamed ? "direction_A" : "axis", Vec3(0, 0, 1));
   if (renamed) axis = -axis;
-  return std::make_shared<TorqueActuator>(
+  return std::make_shared<forces::TorqueActuator>(
       force.name, v.Double("optimal_force", 1.0), MapBody(spec, v, body_a, body_map, "bodyA"),
       MapBody(spec, v, body_b, body_map, "bodyB"), axis, v.Bool("torque_is_global", true));
 }
 
-std::shared_ptr<Actuator> MakeCoordinateActuator(const ModelSpec& spec, const ForceSpec& force,
-                                                 const ElementValues& v,
-                                                 const std::vector<int>& coordinate_map) {
+std::shared_ptr<forces::Actuator> MakeCoordinateActuator(const model::ModelSpec& spec,
+                                                         const model::ForceSpec& force,
+                                                         const model::ElementValues& v,
+                                                         const std::vector<int>& coordinate_map) {
   const std::string name =
       LastPathSegment(v.FirstString({"coordinate", "socket_coordinate"}).value_or(""));
   const int c = spec.FindCoordinate(name);
-  if (c == kNone) v.Fail("coordinate '" + name + "' is not a coordinate of the model");
-  return std::make_shared<CoordinateActuator>(force.name, v.Double("optimal_force", 1.0),
-                                              coordinate_map[c]);
+  if (c == model::kNone) v.Fail("coordinate '" + name + "' is not a coordinate of the model");
+  return std::make_shared<forces::CoordinateActuator>(force.name, v.Double("optimal_force", 1.0),
+                                                      coordinate_map[c]);
 }
 
 }  // namespace
@@ -74,11 +78,12 @@ bool IsIdealActuator(const std::string& opensim_type) {
          opensim_type == "CoordinateActuator";
 }
 
-std::shared_ptr<Actuator> MakeActuator(const ModelSpec& spec, const ForceSpec& force,
-                                       const std::vector<int>& body_map,
-                                       const std::vector<int>& coordinate_map) {
-  const ElementValues values(force.element, spec.file, force.path);
-  std::shared_ptr<Actuator> actuator;
+std::shared_ptr<forces::Actuator> MakeActuator(const model::ModelSpec& spec,
+                                               const model::ForceSpec& force,
+                                               const std::vector<int>& body_map,
+                                               const std::vector<int>& coordinate_map) {
+  const model::ElementValues values(force.element, spec.file, force.path);
+  std::shared_ptr<forces::Actuator> actuator;
   if (force.type == "PointActuator") {
     actuator = MakePointActuator(spec, force, values, body_map);
   } else if (force.type == "TorqueActuator") {
@@ -94,4 +99,4 @@ std::shared_ptr<Actuator> MakeActuator(const ModelSpec& spec, const ForceSpec& f
   return actuator;
 }
 
-}  // namespace sinew
+}  // namespace sinew::opensim::internal

@@ -6,18 +6,18 @@
 
 #include <sinew/kinematics/joint_model.h>
 
-namespace sinew {
+namespace sinew::opensim {
 namespace {
 
-engine::JointForm DirectForm(JointType type) {
+engine::JointForm DirectForm(model::JointType type) {
   switch (type) {
-    case JointType::kPin:
+    case model::JointType::kPin:
       return engine::JointForm::kPin;
-    case JointType::kBall:
+    case model::JointType::kBall:
       return engine::JointForm::kBall;
-    case JointType::kUniversal:
+    case model::JointType::kUniversal:
       return engine::JointForm::kUniversal;
-    case JointType::kWeld:
+    case model::JointType::kWeld:
       return engine::JointForm::kWeld;
     default:
       return engine::JointForm::kParameterized;
@@ -31,14 +31,14 @@ void Note(Diagnostics* notes, const SourceLocation& where, const std::string& co
 
 }  // namespace
 
-SpecToSystem BuildInto(const ModelSpec& spec, engine::System& system, const BuildOptions& options,
-                       Diagnostics* notes) {
+SpecToSystem BuildInto(const model::ModelSpec& spec, engine::System& system,
+                       const BuildOptions& options, Diagnostics* notes) {
   if (spec.bodies.empty()) throw Error({spec.file, 0}, "/ground", "the model has no ground");
   SpecToSystem map;
   map.bodies.assign(spec.bodies.size(), 0);
-  map.coordinates.assign(spec.coordinates.size(), kNone);
+  map.coordinates.assign(spec.coordinates.size(), model::kNone);
   for (size_t b = 1; b < spec.bodies.size(); ++b) {
-    const BodySpec& body = spec.bodies[b];
+    const model::BodySpec& body = spec.bodies[b];
     if (!(body.mass >= 0.0) || !std::isfinite(body.mass)) {
       throw Error(body.where, body.path, "body mass must be finite and >= 0");
     }
@@ -54,11 +54,11 @@ SpecToSystem BuildInto(const ModelSpec& spec, engine::System& system, const Buil
     }
   }
   for (size_t j = 0; j < spec.joints.size(); ++j) {
-    const JointSpec& joint = spec.joints[j];
+    const model::JointSpec& joint = spec.joints[j];
     std::vector<engine::CoordinateDesc> coordinates;
     bool constrained_coordinate = false;
     for (int c : joint.coordinates) {
-      const CoordinateSpec& cs = spec.coordinates[c];
+      const model::CoordinateSpec& cs = spec.coordinates[c];
       engine::CoordinateDesc d;
       d.name = cs.name;
       d.default_value = cs.default_value;
@@ -79,7 +79,8 @@ SpecToSystem BuildInto(const ModelSpec& spec, engine::System& system, const Buil
     engine::JointForm form = DirectForm(joint.kind);
     if (!options.direct_joints || constrained_coordinate) form = engine::JointForm::kParameterized;
     try {
-      std::shared_ptr<const JointModel> model = MakeJointModel(spec, static_cast<int>(j));
+      std::shared_ptr<const kinematics::JointModel> model =
+          kinematics::MakeJointModel(spec, static_cast<int>(j));
       const int engine_joint = system.AddJoint(joint.name, map.bodies[joint.parent_body],
                                                joint.X_PF, map.bodies[joint.child_body], joint.X_BM,
                                                form, std::move(model), coordinates);
@@ -95,18 +96,18 @@ SpecToSystem BuildInto(const ModelSpec& spec, engine::System& system, const Buil
   return map;
 }
 
-std::unique_ptr<engine::System> BuildSystem(const ModelSpec& spec, const BuildOptions& options,
-                                            Diagnostics* notes) {
+std::unique_ptr<engine::System> BuildSystem(const model::ModelSpec& spec,
+                                            const BuildOptions& options, Diagnostics* notes) {
   auto system = std::make_unique<engine::System>(spec.gravity);
   BuildInto(spec, *system, options, notes);
-  for (const ConstraintSpec& c : spec.constraints) {
+  for (const model::ConstraintSpec& c : spec.constraints) {
     if (c.enabled) Note(notes, c.where, c.path, c.type + " is not simulated by the skeleton build");
   }
-  for (const ForceSpec& f : spec.forces) {
+  for (const model::ForceSpec& f : spec.forces) {
     if (f.applies_force)
       Note(notes, f.where, f.path, f.type + " is not simulated by the skeleton build");
   }
-  for (const ContactGeometrySpec& g : spec.contact_geometry) {
+  for (const model::ContactGeometrySpec& g : spec.contact_geometry) {
     Note(notes, g.where, g.name,
          g.type + " contact geometry is not simulated by the skeleton build");
   }
@@ -118,4 +119,4 @@ std::unique_ptr<engine::System> BuildSystem(const ModelSpec& spec, const BuildOp
   return system;
 }
 
-}  // namespace sinew
+}  // namespace sinew::opensim

@@ -9,7 +9,7 @@
 #include <sinew/engine/system.h>
 #include <sinew/model/model_spec.h>
 
-namespace sinew {
+namespace sinew::opensim {
 
 /// Choices made when building a System from a spec.
 struct BuildOptions {
@@ -30,8 +30,8 @@ struct SpecToSystem {
 /// finalized; bodies, joints and coordinates are appended after what `system` already holds,
 /// the spec's ground being the system's ground. Gravity, forces and constraints are left to the
 /// caller. Throws sinew::Error (file, line, component) for a skeleton that cannot be built.
-SpecToSystem BuildInto(const ModelSpec& spec, engine::System& system, const BuildOptions& options,
-                       Diagnostics* notes);
+SpecToSystem BuildInto(const model::ModelSpec& spec, engine::System& system,
+                       const BuildOptions& options, Diagnostics* notes);
 
 /// Builds the engine system of `spec`'s skeleton: engine body i is spec body i (0 = ground),
 /// engine joint j is spec joint j, engine coordinate c is spec coordinate c (same names).
@@ -39,7 +39,8 @@ SpecToSystem BuildInto(const ModelSpec& spec, engine::System& system, const Buil
 /// default value, prescribed ones follow prescribed_function. Forces, constraints, contact
 /// and controllers are not built here: each is listed in `notes` (when not null).
 /// Throws sinew::Error (file, line, component) for a model that cannot be simulated.
-std::unique_ptr<engine::System> BuildSystem(const ModelSpec& spec, const BuildOptions& options = {},
+std::unique_ptr<engine::System> BuildSystem(const model::ModelSpec& spec,
+                                            const BuildOptions& options = {},
                                             Diagnostics* notes = nullptr);
 
-}  // namespace sinew
+}  // namespace sinew::opensim

@@ -10,7 +10,7 @@
 #include <sinew/io/read_controls.h>
 #include <sinew/kinematics/body_depths.h>
 
-namespace sinew {
+namespace sinew::opensim {
 namespace {
 
 // The name a component is reported under: the last segment of its path, which the reader has
@@ -22,23 +22,23 @@ std::string ReportName(const std::string& path, const std::string& name) {
 
 // Replaces every joint of unknown type by a ball joint with three new coordinates, F and M
 // coincident at the start (the seed's stand-in). Returns which joints were replaced.
-std::vector<bool> ReplaceUnknownJoints(ModelSpec& spec, Report& report) {
+std::vector<bool> ReplaceUnknownJoints(model::ModelSpec& spec, Report& report) {
   std::vector<bool> replaced(spec.joints.size(), false);
   for (size_t j = 0; j < spec.joints.size(); ++j) {
-    JointSpec& joint = spec.joints[j];
-    if (joint.kind != JointType::kUnknown) continue;
+    model::JointSpec& joint = spec.joints[j];
+    if (joint.kind != model::JointType::kUnknown) continue;
     replaced[j] = true;
     report.AddWarning({joint.where, joint.path,
                        "joint type '" + joint.type +
                            "' is unknown: replaced by a spherical stand-in at its frames"});
     for (int c : joint.coordinates) {
       report.AddNotSimulated(spec.coordinates[c].path + ": coordinate of stand-in joint");
-      spec.coordinates[c].joint = kNone;
+      spec.coordinates[c].joint = model::kNone;
     }
-    joint.kind = JointType::kBall;
+    joint.kind = model::JointType::kBall;
     joint.coordinates.clear();
     for (const char* axis : {"x", "y", "z"}) {
-      CoordinateSpec c;
+      model::CoordinateSpec c;
       c.name = joint.name + "_standin_r" + axis;
       c.path = joint.path + "/" + c.name;
       c.joint = static_cast<int>(j);
@@ -68,14 +68,14 @@ std::unique_ptr<engine::System> OpenSimParser::Parse(const std::string& filename
 }
 
 void OpenSimParser::Parse(engine::System& system, const std::string& filename) {
-  ParseSpec(system, ReadOsim(filename));
+  ParseSpec(system, io::ReadOsim(filename));
 }
 
-void OpenSimParser::ParseSpec(engine::System& system, ModelSpec spec) {
+void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
   spec_ = std::move(spec);
   report_ = Report();
-  collision_ = CollisionModel();
-  contact_method_ = ContactMethod::NSC;
+  collision_ = contact::CollisionModel();
+  contact_method_ = ContactMethod::kNsc;
   for (const Diagnostic& w : spec_.warnings) report_.AddWarning(w);
 
   if (system.num_bodies() > 1 && !system.gravity().isApprox(spec_.gravity)) {
@@ -84,7 +84,7 @@ void OpenSimParser::ParseSpec(engine::System& system, ModelSpec spec) {
   }
   system.SetGravity(spec_.gravity);
 
-  ModelSpec built = spec_;
+  model::ModelSpec built = spec_;
   const std::vector<bool> standin = ReplaceUnknownJoints(built, report_);
   Diagnostics notes;
   const SpecToSystem map = BuildInto(built, system, BuildOptions{}, &notes);
@@ -102,12 +102,13 @@ void OpenSimParser::ParseSpec(engine::System& system, ModelSpec spec) {
   AssignExcitations();
   for (std::string& line : ListNotSimulated(spec_)) report_.AddNotSimulated(std::move(line));
   if (collision_enabled_) {
-    collision_ = BuildCollisionModel(spec_, CalcBodyDepths(spec_), family_1_, family_2_);
+    collision_ = contact::BuildCollisionModel(spec_, kinematics::CalcBodyDepths(spec_), family_1_,
+                                              family_2_);
   }
   scene_ = viz::VisualScene();
-  if (vis_type_ != VisType::NONE) {
+  if (vis_type_ != VisType::kNone) {
     viz::VisualOptions options;
-    options.mode = vis_type_ == VisType::MESH ? viz::VisMode::kMesh : viz::VisMode::kPrimitives;
+    options.mode = vis_type_;
     options.geometry_dirs = geometry_dirs_;
     scene_ = viz::BuildVisualScene(spec_, options);
     for (const Diagnostic& w : scene_.warnings) report_.AddWarning(w);
@@ -118,10 +119,10 @@ void OpenSimParser::ParseSpec(engine::System& system, ModelSpec spec) {
 
 void OpenSimParser::BuildActuators(engine::System& system, const std::vector<int>& body_map,
                                    const std::vector<int>& coordinate_map) {
-  for (const ForceSpec& force : spec_.forces) {
+  for (const model::ForceSpec& force : spec_.forces) {
     ForceInfo info{ReportName(force.path, force.name), force.type, nullptr, nullptr, ""};
     if (IsForceSimulated(force)) {
-      info.actuator = MakeActuator(spec_, force, body_map, coordinate_map);
+      info.actuator = internal::MakeActuator(spec_, force, body_map, coordinate_map);
       info.load = info.actuator;
       system.AddForceElement(info.actuator);
       info.excitation_source = "default 0";
@@ -132,7 +133,7 @@ void OpenSimParser::BuildActuators(engine::System& system, const std::vector<int
 
 void OpenSimParser::AssignExcitations() {
   // Lowest precedence first; each source overrides the previous ones.
-  for (const ControllerSpec& controller : spec_.controllers) {
+  for (const model::ControllerSpec& controller : spec_.controllers) {
     if (!IsControllerSimulated(controller)) continue;
     for (size_t i = 0; i < controller.actuators.size(); ++i) {
       ForceInfo* info = report_.MutableForce(controller.actuators[i]);
@@ -147,7 +148,7 @@ void OpenSimParser::AssignExcitations() {
     }
   }
   if (activate_actuators_) {
-    auto one = std::make_shared<Constant>(1.0);
+    auto one = std::make_shared<functions::Constant>(1.0);
     for (const auto& [key, info] : report_.forces()) {
       if (!info.actuator) continue;
       info.actuator->SetExcitation(one);
@@ -155,7 +156,7 @@ void OpenSimParser::AssignExcitations() {
     }
   }
   if (!controls_file_.empty()) {
-    for (auto& [name, function] : ReadControlSet(controls_file_)) {
+    for (auto& [name, function] : io::ReadControlSet(controls_file_)) {
       ForceInfo* info = report_.MutableForce(name);
       if (!info || !info->actuator) {
         report_.AddWarning({SourceLocation{controls_file_, 0}, name,
@@ -170,7 +171,7 @@ void OpenSimParser::AssignExcitations() {
 }
 
 void OpenSimParser::SetExcitationFunction(const std::string& actuator_name,
-                                          FunctionPtr excitation) {
+                                          functions::FunctionPtr excitation) {
   ForceInfo* info = report_.MutableForce(actuator_name);
   if (!info || !info->actuator) {
     throw Error(SourceLocation{spec_.file, 0}, actuator_name,
@@ -196,4 +197,4 @@ void OpenSimParser::CheckStrict() const {
   }
 }
 
-}  // namespace sinew
+}  // namespace sinew::opensim

@@ -15,18 +15,10 @@
 #include <sinew/model/model_spec.h>
 #include <sinew/viz/visual_scene.h>
 
-namespace sinew {
+namespace sinew::opensim {
 
-/// Which visual assets a parsed model gets (the seed's three modes).
-enum class VisType {
-  NONE,        ///< no visual assets (the default)
-  PRIMITIVES,  ///< a sphere at each body frame, cylinders to its joints, coloured by tree depth
-  MESH,        ///< the geometry files attached in the model
-};
-
-/// How contact is to be treated in a system created by Parse(filename, method):
-/// NSC non-smooth (complementarity), SMC smooth (penalty).
-enum class ContactMethod { NSC, SMC };
+using contact::ContactMethod;
+using viz::VisType;
 
 /// Parses OpenSim models into engine systems. Options are set before Parse; excitations after.
 /// A parser holds no global state: parse as many files, as often, into as many systems as you
@@ -61,22 +53,22 @@ class OpenSimParser {
   void Parse(engine::System& system, const std::string& filename);
   /// As Parse(system, filename), from a spec already read (e.g. one whose defaults were set
   /// from an initial-states file).
-  void ParseSpec(engine::System& system, ModelSpec spec);
+  void ParseSpec(engine::System& system, model::ModelSpec spec);
   /// Creates a system (gravity from the file), parses `filename` into it, finalizes it and
   /// returns it; the caller owns it.
   std::unique_ptr<engine::System> Parse(const std::string& filename,
-                                        ContactMethod method = ContactMethod::NSC);
+                                        ContactMethod method = ContactMethod::kNsc);
 
   /// Sets the excitation of the actuator named `actuator_name` (its name in the file, or its
   /// Report key for a repeated name). Call after Parse. Throws sinew::Error for an unknown name.
-  void SetExcitationFunction(const std::string& actuator_name, FunctionPtr excitation);
+  void SetExcitationFunction(const std::string& actuator_name, functions::FunctionPtr excitation);
 
   /// What the last Parse built.
   const Report& GetReport() const { return report_; }
   /// The model description of the last parsed file.
-  const ModelSpec& GetSpec() const { return spec_; }
+  const model::ModelSpec& GetSpec() const { return spec_; }
   /// The collision shapes of the last Parse (empty unless EnableCollision was called).
-  const CollisionModel& GetCollisionModel() const { return collision_; }
+  const contact::CollisionModel& GetCollisionModel() const { return collision_; }
   /// The visual assets of the last Parse, one entry per spec body (no parts with NONE).
   /// A mesh that cannot be found is a Report warning and its body gets primitives.
   const viz::VisualScene& GetVisualScene() const { return scene_; }
@@ -89,7 +81,7 @@ class OpenSimParser {
   void AssignExcitations();
   void CheckStrict() const;
 
-  VisType vis_type_ = VisType::NONE;
+  VisType vis_type_ = VisType::kNone;
   bool collision_enabled_ = false;
   int family_1_ = 1;
   int family_2_ = 2;
@@ -98,12 +90,19 @@ class OpenSimParser {
   bool strict_ = false;
   std::string controls_file_;
   std::vector<std::string> geometry_dirs_;
-  ContactMethod contact_method_ = ContactMethod::NSC;
+  ContactMethod contact_method_ = ContactMethod::kNsc;
 
-  ModelSpec spec_;
+  model::ModelSpec spec_;
   Report report_;
-  CollisionModel collision_;
+  contact::CollisionModel collision_;
   viz::VisualScene scene_;
 };
 
+}  // namespace sinew::opensim
+
+// The seed's public names, in namespace sinew as the seed has them.
+namespace sinew {
+using opensim::ContactMethod;
+using opensim::OpenSimParser;
+using opensim::VisType;
 }  // namespace sinew

@@ -2,7 +2,7 @@
 
 #include <iomanip>
 
-namespace sinew {
+namespace sinew::opensim {
 namespace {
 
 // Stores `info` under its name, or `name#k` for the k-th repeat; warns about repeats.
@@ -89,4 +89,4 @@ void Report::Print(std::ostream& out) const {
   }
 }
 
-}  // namespace sinew
+}  // namespace sinew::opensim

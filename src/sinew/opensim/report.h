@@ -11,9 +11,11 @@
 #include <sinew/common/error.h>
 #include <sinew/engine/system.h>
 
-namespace sinew {
-
+namespace sinew::forces {
 class Actuator;
+}  // namespace sinew::forces
+
+namespace sinew::opensim {
 
 /// A body read from the file and the engine body made for it.
 struct BodyInfo {
@@ -37,7 +39,7 @@ struct ForceInfo {
   /// The engine force element made for it; null when the type is not simulated (yet).
   std::shared_ptr<engine::ForceElement> load;
   /// For actuators: the same object as `load`, for setting excitations; else null.
-  std::shared_ptr<Actuator> actuator;
+  std::shared_ptr<forces::Actuator> actuator;
   /// Where the actuator's excitation comes from ("default 0", "ActivateActuators",
   /// "PrescribedController <name>", "controls file", "set by user").
   std::string excitation_source;
@@ -84,4 +86,4 @@ class Report {
 /// The readable name of an engine joint form ("revolute (direct)", "coordinate-parameterized").
 std::string JointFormName(engine::JointForm form);
 
-}  // namespace sinew
+}  // namespace sinew::opensim

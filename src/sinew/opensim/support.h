@@ -7,23 +7,23 @@
 
 #include <sinew/model/model_spec.h>
 
-namespace sinew {
+namespace sinew::opensim {
 
 /// True if the engine can build this joint (every type Sinew knows; not kUnknown).
-bool IsJointSimulated(const JointSpec& joint);
+bool IsJointSimulated(const model::JointSpec& joint);
 /// True if the engine simulates this force (PointActuator, TorqueActuator, CoordinateActuator).
-bool IsForceSimulated(const ForceSpec& force);
+bool IsForceSimulated(const model::ForceSpec& force);
 /// True if the engine enforces constraints of this OpenSim class (none yet).
-bool IsConstraintSimulated(const ConstraintSpec& constraint);
+bool IsConstraintSimulated(const model::ConstraintSpec& constraint);
 /// True if the engine runs controllers of this OpenSim class (PrescribedController).
-bool IsControllerSimulated(const ControllerSpec& controller);
+bool IsControllerSimulated(const model::ControllerSpec& controller);
 /// True if the engine uses contact geometry of this OpenSim class (none yet).
-bool IsContactGeometrySimulated(const ContactGeometrySpec& contact);
+bool IsContactGeometrySimulated(const model::ContactGeometrySpec& contact);
 /// True if the engine wraps paths over wrap objects of this class (none yet).
-bool IsWrapObjectSimulated(const WrapObjectSpec& wrap);
+bool IsWrapObjectSimulated(const model::WrapObjectSpec& wrap);
 
 /// One line per element the simulator does not handle yet, as "<path>: <OpenSim class>"
 /// (e.g. "/forceset/biceps: Thelen2003Muscle"), in model order.
-std::vector<std::string> ListNotSimulated(const ModelSpec& spec);
+std::vector<std::string> ListNotSimulated(const model::ModelSpec& spec);
 
-}  // namespace sinew
+}  // namespace sinew::opensim

@@ -25,7 +25,7 @@ BodyMotion ThinMotion(const BodyMotion& motion, double max_fps) {
   return out;
 }
 
-Diagnostics ExportAnimation(const ModelSpec& spec, const BodyMotion& motion,
+Diagnostics ExportAnimation(const model::ModelSpec& spec, const BodyMotion& motion,
                             const std::string& path, const ExportOptions& options) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),

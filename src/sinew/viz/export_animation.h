@@ -27,7 +27,7 @@ BodyMotion ThinMotion(const BodyMotion& motion, double max_fps);
 /// to `path`: a binary glTF 2.0 file when it ends in .glb, a self-contained HTML viewer when it
 /// ends in .html/.htm. Returns the warnings (missing meshes, ...). Throws sinew::Error for
 /// another extension, a motion whose frames do not cover every body, or an unwritable file.
-Diagnostics ExportAnimation(const ModelSpec& spec, const BodyMotion& motion,
+Diagnostics ExportAnimation(const model::ModelSpec& spec, const BodyMotion& motion,
                             const std::string& path, const ExportOptions& options);
 
 }  // namespace sinew::viz

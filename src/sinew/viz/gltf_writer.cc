@@ -75,10 +75,10 @@ class BinaryBuilder {
   std::vector<uint8_t> bin_;
 };
 
-std::vector<float> Flatten(const std::vector<Vec3f>& v) {
+std::vector<float> Flatten(const std::vector<io::Vec3f>& v) {
   std::vector<float> out;
   out.reserve(3 * v.size());
-  for (const Vec3f& p : v) out.insert(out.end(), {p.x(), p.y(), p.z()});
+  for (const io::Vec3f& p : v) out.insert(out.end(), {p.x(), p.y(), p.z()});
   return out;
 }
 
@@ -108,15 +108,15 @@ std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion
   BinaryBuilder bin(doc);
 
   // Geometry shared by parts (the same shared_ptr) is stored once.
-  std::map<const TriangleMesh*, json> primitive_of;
-  auto primitive = [&](const TriangleMesh& mesh) -> json {
+  std::map<const io::TriangleMesh*, json> primitive_of;
+  auto primitive = [&](const io::TriangleMesh& mesh) -> json {
     auto it = primitive_of.find(&mesh);
     if (it != primitive_of.end()) return it->second;
-    TriangleMesh copy;
-    const TriangleMesh* m = &mesh;
+    io::TriangleMesh copy;
+    const io::TriangleMesh* m = &mesh;
     if (mesh.normals.size() != mesh.positions.size()) {
       copy = mesh;
-      ComputeVertexNormals(copy);
+      io::ComputeVertexNormals(copy);
       m = &copy;
     }
     std::vector<uint32_t> indices;

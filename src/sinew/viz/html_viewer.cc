@@ -11,7 +11,7 @@ namespace {
 
 std::string DataUrl(std::string_view javascript) {
   return "data:text/javascript;base64," +
-         EncodeBase64(reinterpret_cast<const uint8_t*>(javascript.data()), javascript.size());
+         io::EncodeBase64(reinterpret_cast<const uint8_t*>(javascript.data()), javascript.size());
 }
 
 std::string ReplaceAll(std::string text, std::string_view from, std::string_view to) {
@@ -69,7 +69,7 @@ std::string MakeViewerHtml(const std::vector<uint8_t>& glb, const std::string& t
   // The title appears twice (<title> and the overlay); fill the model last (it is large).
   for (int i = 0; i < 2; ++i) Fill(page, "@SINEW_TITLE@", safe_title);
   Fill(page, "@SINEW_IMPORTMAP@", nlohmann::json{{"imports", imports}}.dump());
-  Fill(page, "@SINEW_GLB_BASE64@", EncodeBase64(glb.data(), glb.size()));
+  Fill(page, "@SINEW_GLB_BASE64@", io::EncodeBase64(glb.data(), glb.size()));
   return page;
 }
 

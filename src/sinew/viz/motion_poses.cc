@@ -10,25 +10,27 @@ namespace sinew::viz {
 namespace {
 
 // The coordinates a table row drives, over the model's defaults.
-std::vector<double> RowCoordinates(const ModelSpec& spec, const KinematicTree& tree,
-                                   const MotionColumnMap& map, const Storage& table, int row) {
+std::vector<double> RowCoordinates(const model::ModelSpec& spec,
+                                   const kinematics::KinematicTree& tree,
+                                   const kinematics::MotionColumnMap& map, const io::Storage& table,
+                                   int row) {
   std::vector<double> q = tree.default_q();
   const auto first = table.values.begin() + static_cast<ptrdiff_t>(row) * table.NumColumns();
   const std::vector<double> values(first, first + table.NumColumns());
-  ApplyMotionRow(spec, map, values, table.in_degrees, q);
+  kinematics::ApplyMotionRow(spec, map, values, table.in_degrees, q);
   return q;
 }
 
-std::vector<Transform> Poses(const KinematicTree& tree, const std::vector<double>& q) {
+std::vector<Transform> Poses(const kinematics::KinematicTree& tree, const std::vector<double>& q) {
   std::vector<Transform> X_GB(tree.num_bodies());
-  CalcBodyPoses(tree, q, X_GB);
+  kinematics::CalcBodyPoses(tree, q, X_GB);
   return X_GB;
 }
 
-MotionColumnMap CheckedMap(const ModelSpec& spec, const Storage& table) {
-  MotionColumnMap map = MapMotionColumns(spec, table.labels);
+kinematics::MotionColumnMap CheckedMap(const model::ModelSpec& spec, const io::Storage& table) {
+  kinematics::MotionColumnMap map = kinematics::MapMotionColumns(spec, table.labels);
   if (std::none_of(map.coordinate.begin(), map.coordinate.end(),
-                   [](int c) { return c != kNone; })) {
+                   [](int c) { return c != model::kNone; })) {
     throw Error("no column of the motion table names a coordinate of model '" + spec.name + "'");
   }
   return map;
@@ -36,17 +38,18 @@ MotionColumnMap CheckedMap(const ModelSpec& spec, const Storage& table) {
 
 }  // namespace
 
-BodyMotion DefaultPoseMotion(const ModelSpec& spec) {
-  KinematicTree tree(spec);
+BodyMotion DefaultPoseMotion(const model::ModelSpec& spec) {
+  kinematics::KinematicTree tree(spec);
   BodyMotion motion;
   motion.times = {0.0};
   motion.X_GB = {Poses(tree, tree.default_q())};
   return motion;
 }
 
-BodyMotion MotionFromTable(const ModelSpec& spec, const Storage& table, Diagnostics* notes) {
-  KinematicTree tree(spec);
-  const MotionColumnMap map = CheckedMap(spec, table);
+BodyMotion MotionFromTable(const model::ModelSpec& spec, const io::Storage& table,
+                           Diagnostics* notes) {
+  kinematics::KinematicTree tree(spec);
+  const kinematics::MotionColumnMap map = CheckedMap(spec, table);
   if (notes) {
     auto note = [notes](const std::string& component, const std::string& message) {
       Diagnostic d;
@@ -72,9 +75,10 @@ BodyMotion MotionFromTable(const ModelSpec& spec, const Storage& table, Diagnost
   return motion;
 }
 
-std::vector<Transform> PosesAtTime(const ModelSpec& spec, const Storage& table, double t) {
-  KinematicTree tree(spec);
-  const MotionColumnMap map = CheckedMap(spec, table);
+std::vector<Transform> PosesAtTime(const model::ModelSpec& spec, const io::Storage& table,
+                                   double t) {
+  kinematics::KinematicTree tree(spec);
+  const kinematics::MotionColumnMap map = CheckedMap(spec, table);
   if (table.NumRows() == 0 || t < table.time.front() || t > table.time.back()) {
     throw Error("time " + std::to_string(t) + " s is outside the table's range");
   }

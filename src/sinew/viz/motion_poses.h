@@ -11,17 +11,19 @@
 namespace sinew::viz {
 
 /// One frame at time 0 with every coordinate at its default value.
-BodyMotion DefaultPoseMotion(const ModelSpec& spec);
+BodyMotion DefaultPoseMotion(const model::ModelSpec& spec);
 
 /// Body poses at every row of `table` (coordinate values by name or OpenSim 4 state path;
 /// degrees converted for rotational coordinates when the header says inDegrees=yes).
 /// Coordinates the table does not drive stay at their default values; their names, and
 /// table columns that name no coordinate, are appended to `notes`. Throws sinew::Error when
 /// the table drives no coordinate at all or its times do not increase.
-BodyMotion MotionFromTable(const ModelSpec& spec, const Storage& table, Diagnostics* notes);
+BodyMotion MotionFromTable(const model::ModelSpec& spec, const io::Storage& table,
+                           Diagnostics* notes);
 
 /// Body poses at time `t` (s): coordinates interpolated linearly between the two rows
 /// around t. Throws sinew::Error when t is outside the table's time range.
-std::vector<Transform> PosesAtTime(const ModelSpec& spec, const Storage& table, double t);
+std::vector<Transform> PosesAtTime(const model::ModelSpec& spec, const io::Storage& table,
+                                   double t);
 
 }  // namespace sinew::viz

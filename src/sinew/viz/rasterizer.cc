@@ -23,7 +23,7 @@ PosedPart Pose(const VisualPart& part, const Transform& X_GB) {
   // Normals transform with the inverse transpose of R * diag(scale).
   // (A zero scale flattens the part; its normals then follow the unflattened axes.)
   const Vec3 inv_scale = part.scale.unaryExpr([](double s) { return s == 0 ? 1.0 : 1.0 / s; });
-  const TriangleMesh& m = *part.mesh;
+  const io::TriangleMesh& m = *part.mesh;
   out.positions.reserve(m.positions.size());
   out.normals.reserve(m.positions.size());
   for (size_t i = 0; i < m.positions.size(); ++i) {

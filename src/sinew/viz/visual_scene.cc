@@ -11,7 +11,7 @@ namespace sinew::viz {
 namespace {
 
 // First value of a named dimension, or `fallback`.
-double Dimension(const GeometrySpec& g, const std::string& key, int i, double fallback) {
+double Dimension(const model::GeometrySpec& g, const std::string& key, int i, double fallback) {
   auto it = g.dimensions.find(key);
   if (it == g.dimensions.end() || static_cast<int>(it->second.size()) <= i) return fallback;
   return it->second[i];
@@ -23,9 +23,9 @@ Mat3 RotationYTo(const Vec3& dir) {
 }
 
 // Size of the PRIMITIVES skeleton: spheres scale with the model's typical segment length.
-double SkeletonRadius(const ModelSpec& spec) {
+double SkeletonRadius(const model::ModelSpec& spec) {
   std::vector<double> lengths;
-  for (const JointSpec& j : spec.joints) {
+  for (const model::JointSpec& j : spec.joints) {
     if (j.X_PF.p.norm() > 1e-6) lengths.push_back(j.X_PF.p.norm());
     if (j.X_BM.p.norm() > 1e-6) lengths.push_back(j.X_BM.p.norm());
   }
@@ -41,7 +41,7 @@ Vec3 DepthColor(int depth, int max_depth) {
 }
 
 // The skeleton of body b: a sphere at its frame and a cylinder to each joint frame on it.
-void AddPrimitives(const ModelSpec& spec, int b, double radius, const Vec3& color,
+void AddPrimitives(const model::ModelSpec& spec, int b, double radius, const Vec3& color,
                    VisualBody& out) {
   VisualPart sphere;
   sphere.name = spec.bodies[b].name + "_frame";
@@ -62,7 +62,7 @@ void AddPrimitives(const ModelSpec& spec, int b, double radius, const Vec3& colo
     cylinder.source = "primitive";
     out.parts.push_back(cylinder);
   };
-  for (const JointSpec& j : spec.joints) {
+  for (const model::JointSpec& j : spec.joints) {
     if (j.child_body == b) add_link(j.X_BM.p, j.name);
     if (j.parent_body == b) add_link(j.X_PF.p, j.name);
   }
@@ -70,13 +70,15 @@ void AddPrimitives(const ModelSpec& spec, int b, double radius, const Vec3& colo
 
 class SceneBuilder {
  public:
-  SceneBuilder(const ModelSpec& spec, const VisualOptions& options)
-      : spec_(spec), options_(options), dirs_(MeshSearchDirs(spec.file, options.geometry_dirs)) {}
+  SceneBuilder(const model::ModelSpec& spec, const VisualOptions& options)
+      : spec_(spec),
+        options_(options),
+        dirs_(io::MeshSearchDirs(spec.file, options.geometry_dirs)) {}
 
   VisualScene Build() {
     VisualScene scene;
     // Unreached bodies (depth -1) are coloured as the root.
-    std::vector<int> depth = CalcBodyDepths(spec_);
+    std::vector<int> depth = kinematics::CalcBodyDepths(spec_);
     for (int& d : depth) d = std::max(d, 0);
     const int max_depth = *std::max_element(depth.begin(), depth.end());
     const double radius = SkeletonRadius(spec_);
@@ -84,9 +86,9 @@ class SceneBuilder {
       VisualBody body;
       body.name = spec_.bodies[b].name;
       body.body = b;
-      bool fallback = options_.mode == VisMode::kPrimitives;
-      if (options_.mode == VisMode::kMesh) {
-        for (const GeometrySpec& g : spec_.bodies[b].geometry) {
+      bool fallback = options_.mode == VisType::kPrimitives;
+      if (options_.mode == VisType::kMesh) {
+        for (const model::GeometrySpec& g : spec_.bodies[b].geometry) {
           if (!g.visible) continue;
           if (!AddGeometry(b, g, body, scene.warnings)) fallback = true;
         }
@@ -99,7 +101,7 @@ class SceneBuilder {
 
  private:
   // Adds one attached geometry; false when the body should fall back to primitives.
-  bool AddGeometry(int b, const GeometrySpec& g, VisualBody& body, Diagnostics& warnings) {
+  bool AddGeometry(int b, const model::GeometrySpec& g, VisualBody& body, Diagnostics& warnings) {
     const std::string component = spec_.bodies[b].path + "/" + g.name;
     auto warn = [&](const std::string& message) {
       warnings.push_back({SourceLocation{spec_.file, 0}, component, message});
@@ -156,7 +158,7 @@ class SceneBuilder {
 
   // A Line (start_point to end_point) or an Arrow (from start_point along direction for
   // length, with a cone head), as thin cylinders in the geometry's frame.
-  static void AddSegment(const GeometrySpec& g, const VisualPart& base, VisualBody& body) {
+  static void AddSegment(const model::GeometrySpec& g, const VisualPart& base, VisualBody& body) {
     const Vec3 start(Dimension(g, "start_point", 0, 0), Dimension(g, "start_point", 1, 0),
                      Dimension(g, "start_point", 2, 0));
     Vec3 end(Dimension(g, "end_point", 0, 0), Dimension(g, "end_point", 1, 1),
@@ -189,16 +191,16 @@ class SceneBuilder {
   }
 
   template <typename Warn>
-  std::shared_ptr<const TriangleMesh> LoadMesh(const std::string& file, Warn&& warn) {
+  std::shared_ptr<const io::TriangleMesh> LoadMesh(const std::string& file, Warn&& warn) {
     auto cached = cache_.find(file);
     if (cached != cache_.end()) {
       if (!cached->second) warn("mesh '" + file + "' unavailable (see above); drawn as primitives");
       return cached->second;
     }
-    std::shared_ptr<const TriangleMesh> mesh;
-    if (std::optional<std::string> path = FindMeshFile(file, dirs_)) {
+    std::shared_ptr<const io::TriangleMesh> mesh;
+    if (std::optional<std::string> path = io::FindMeshFile(file, dirs_)) {
       try {
-        mesh = std::make_shared<TriangleMesh>(ReadMesh(*path));
+        mesh = std::make_shared<io::TriangleMesh>(io::ReadMesh(*path));
       } catch (const Error& e) {
         warn(std::string("cannot read mesh: ") + e.what() + "; drawn as primitives");
       }
@@ -211,22 +213,22 @@ class SceneBuilder {
     return mesh;
   }
 
-  const ModelSpec& spec_;
+  const model::ModelSpec& spec_;
   const VisualOptions& options_;
   std::vector<std::string> dirs_;
-  std::map<std::string, std::shared_ptr<const TriangleMesh>> cache_;
+  std::map<std::string, std::shared_ptr<const io::TriangleMesh>> cache_;
 };
 
 }  // namespace
 
-VisMode ParseVisMode(const std::string& text) {
-  if (text == "none") return VisMode::kNone;
-  if (text == "primitives") return VisMode::kPrimitives;
-  if (text == "mesh") return VisMode::kMesh;
+VisType ParseVisType(const std::string& text) {
+  if (text == "none") return VisType::kNone;
+  if (text == "primitives") return VisType::kPrimitives;
+  if (text == "mesh") return VisType::kMesh;
   throw Error("unknown visualization mode '" + text + "' (expected none, primitives or mesh)");
 }
 
-VisualScene BuildVisualScene(const ModelSpec& spec, const VisualOptions& options) {
+VisualScene BuildVisualScene(const model::ModelSpec& spec, const VisualOptions& options) {
   return SceneBuilder(spec, options).Build();
 }
 

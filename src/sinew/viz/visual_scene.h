@@ -13,20 +13,24 @@
 
 namespace sinew::viz {
 
-/// How bodies are drawn (the seed's three modes).
-enum class VisMode {
-  kNone,        ///< Nothing: bodies carry no geometry.
+/// How bodies are drawn (the seed's three visualization modes).
+enum class VisType {
+  kNone,        ///< Nothing: bodies carry no geometry (the default).
   kPrimitives,  ///< A sphere at each body frame, cylinders to its joints, coloured by depth.
   kMesh,        ///< The model's attached geometry (mesh files and analytic shapes).
+  // The seed's spellings, so that programs written against its API compile unchanged.
+  NONE = kNone,
+  PRIMITIVES = kPrimitives,
+  MESH = kMesh,
 };
 
 /// Parses "none", "primitives" or "mesh"; throws sinew::Error otherwise.
-VisMode ParseVisMode(const std::string& text);
+VisType ParseVisType(const std::string& text);
 
 /// One drawable piece fixed to a body: vertex v of `mesh` is at X_BG * (scale .* v) in B.
 struct VisualPart {
   std::string name;
-  std::shared_ptr<const TriangleMesh> mesh;
+  std::shared_ptr<const io::TriangleMesh> mesh;
   Transform X_BG;                    ///< Pose of the part in the body frame.
   Vec3 scale = Vec3::Ones();         ///< Per-axis scale applied before X_BG.
   Vec3 color = Vec3(0.9, 0.9, 0.9);  ///< RGB in [0, 1].
@@ -37,7 +41,7 @@ struct VisualPart {
 /// The parts of one body (index into ModelSpec::bodies).
 struct VisualBody {
   std::string name;
-  int body = kGroundIndex;
+  int body = model::kGroundIndex;
   std::vector<VisualPart> parts;
 };
 
@@ -49,7 +53,7 @@ struct VisualScene {
 
 /// Options for BuildVisualScene.
 struct VisualOptions {
-  VisMode mode = VisMode::kMesh;
+  VisType mode = VisType::kMesh;
   std::vector<std::string> geometry_dirs;  ///< Searched after the model's folders.
 };
 
@@ -57,6 +61,6 @@ struct VisualOptions {
 /// model's folder, its Geometry/ subfolder, `geometry_dirs`, then $SINEW_GEOMETRY_PATH; a body
 /// whose mesh is missing or unreadable gets a warning naming the file and the folders searched,
 /// and is drawn with primitives instead. Mesh files shared by several bodies are read once.
-VisualScene BuildVisualScene(const ModelSpec& spec, const VisualOptions& options);
+VisualScene BuildVisualScene(const model::ModelSpec& spec, const VisualOptions& options);
 
 }  // namespace sinew::viz

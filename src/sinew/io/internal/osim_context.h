@@ -14,7 +14,7 @@
 #include <sinew/io/internal/xml_document.h>
 #include <sinew/model/model_spec.h>
 
-namespace sinew::osim {
+namespace sinew::io::internal {
 
 /// A physical frame known by its absolute component path: a body, ground, or an offset frame
 /// (4.x PhysicalOffsetFrame or a frame the 3.x upgrade creates).
@@ -24,20 +24,20 @@ struct FrameEntry {
   std::string parent_path;       ///< Offset frames: the parent frame's path (absolute).
   pugi::xml_node parent_node;    ///< The socket element naming the parent (for messages).
   Transform X_PF;                ///< Offset frames: pose in the parent frame.
-  int body = kNone;              ///< Resolved body index (kNone until resolved).
+  int body = model::kNone;       ///< Resolved body index (kNone until resolved).
   Transform X_BF;                ///< Resolved pose in that body's frame.
   int state = 0;                 ///< 0 unresolved, 1 being resolved, 2 resolved.
-  int spec_frame = kNone;        ///< Index into ModelSpec::frames for offset frames.
+  int spec_frame = model::kNone;  ///< Index into ModelSpec::frames for offset frames.
   pugi::xml_node station_frame;  ///< A 4.5 StationDefinedFrame (else empty).
 };
 
 /// Everything the reader's parts share while reading one document.
 class ReadContext {
  public:
-  ReadContext(const XmlDocument& doc, ModelSpec& spec) : doc_(doc), spec_(spec) {}
+  ReadContext(const XmlDocument& doc, model::ModelSpec& spec) : doc_(doc), spec_(spec) {}
 
   const XmlDocument& doc() const { return doc_; }
-  ModelSpec& spec() { return spec_; }
+  model::ModelSpec& spec() { return spec_; }
 
   /// Adds a warning at `node`; the same (component kind, message) pair is kept once per file
   /// when `dedupe_key` is non-empty, so one odd property repeated 80 times is one line.
@@ -96,7 +96,7 @@ class ReadContext {
  private:
   static int Lookup(const std::unordered_map<std::string, int>& map, const std::string& key) {
     auto it = map.find(key);
-    return it == map.end() ? kNone : it->second;
+    return it == map.end() ? model::kNone : it->second;
   }
   FrameEntry& Resolve(const std::string& path, FrameEntry& entry);
   // A StationDefinedFrame's pose from its three stations and origin.
@@ -106,7 +106,7 @@ class ReadContext {
                                       const std::string& component);
 
   const XmlDocument& doc_;
-  ModelSpec& spec_;
+  model::ModelSpec& spec_;
   std::unordered_map<std::string, FrameEntry> frames_;
   std::unordered_map<std::string, pugi::xml_node> stations_;
   std::vector<std::string> offset_order_;  // registration order, for stable frame listing
@@ -130,7 +130,7 @@ inline std::string NameOf(const pugi::xml_node& node) { return node.attribute("n
 /// accepts the list element itself (4.x `<frames>`, `<components>`, `<coordinates>`).
 std::vector<pugi::xml_node> ObjectsOf(const pugi::xml_node& set_or_list);
 /// Copies an element tree into a generic Element (tag, name, trimmed text, line, children).
-Element ToElement(const XmlDocument& doc, const pugi::xml_node& node);
+model::Element ToElement(const XmlDocument& doc, const pugi::xml_node& node);
 /// Reads the optional Vec3 child `tag` (default when absent or empty, as OpenSim does).
 Vec3 ReadVec3Or(const XmlDocument& doc, const pugi::xml_node& parent, const char* tag,
                 const std::string& component, const Vec3& fallback);
@@ -152,9 +152,9 @@ Transform MakeTransform(const Vec3& angles, const Vec3& p);
 /// True if the trimmed text is a non-empty whitespace-separated list of numbers.
 bool IsNumberList(std::string_view text);
 /// Numeric leaf children (not in `skip`) as a NumberMap.
-NumberMap ReadNumericLeaves(const XmlDocument& doc, const pugi::xml_node& node,
-                            const std::string& component,
-                            std::initializer_list<std::string_view> skip);
+model::NumberMap ReadNumericLeaves(const XmlDocument& doc, const pugi::xml_node& node,
+                                   const std::string& component,
+                                   std::initializer_list<std::string_view> skip);
 
 /// The coordinate a property names (a 4.x path or a 3.x name); fails at `node` when there is
 /// none; when several have that name, warns and takes the first (as OpenSim 3's lookup does).
@@ -180,4 +180,4 @@ void ReadOtherComponents(ReadContext& ctx, const pugi::xml_node& model);
 /// Checks the assembled spec: duplicate names, bodies not connected to ground, cycles.
 void ValidateSpec(ReadContext& ctx, const pugi::xml_node& model);
 
-}  // namespace sinew::osim
+}  // namespace sinew::io::internal

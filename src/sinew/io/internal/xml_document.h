@@ -12,7 +12,7 @@
 #include <sinew/common/error.h>
 #include <sinew/math/types.h>
 
-namespace sinew {
+namespace sinew::io::internal {
 
 /// A parsed XML document that knows the line of every node.
 class XmlDocument {
@@ -59,4 +59,4 @@ class XmlDocument {
   std::shared_ptr<pugi::xml_document> doc_;
 };
 
-}  // namespace sinew
+}  // namespace sinew::io::internal

@@ -6,7 +6,7 @@
 
 #include <sinew/math/types.h>
 
-namespace sinew::kinematics_detail {
+namespace sinew::kinematics::internal {
 
 /// Rotation by `angle` (rad) about the unit vector `a` (Rodrigues' formula).
 inline Mat3 RotationAboutUnitAxis(const Vec3& a, double angle) {
@@ -48,4 +48,4 @@ inline Vec3 AngVelInParentFromBodyFixedXYZDot(double q0, double q1, const Vec3& 
   return {qd.x() + s1 * qd.z(), c0 * qd.y() - s0 * c1 * qd.z(), s0 * qd.y() + c0 * c1 * qd.z()};
 }
 
-}  // namespace sinew::kinematics_detail
+}  // namespace sinew::kinematics::internal

@@ -8,7 +8,7 @@
 #include <sinew/forces/actuator.h>
 #include <sinew/model/model_spec.h>
 
-namespace sinew {
+namespace sinew::opensim::internal {
 
 /// True for the actuator classes MakeActuator builds.
 bool IsIdealActuator(const std::string& opensim_type);
@@ -17,8 +17,9 @@ bool IsIdealActuator(const std::string& opensim_type);
 /// through `body_map` / `coordinate_map` (spec index -> engine index). Its excitation is unset
 /// (0). Throws sinew::Error (file, line, force path) for unknown bodies or coordinates or
 /// malformed properties.
-std::shared_ptr<Actuator> MakeActuator(const ModelSpec& spec, const ForceSpec& force,
-                                       const std::vector<int>& body_map,
-                                       const std::vector<int>& coordinate_map);
+std::shared_ptr<forces::Actuator> MakeActuator(const model::ModelSpec& spec,
+                                               const model::ForceSpec& force,
+                                               const std::vector<int>& body_map,
+                                               const std::vector<int>& coordinate_map);
 
-}  // namespace sinew
+}  // namespace sinew::opensim::internal
