@@ -15,7 +15,7 @@ namespace {
 
 const sinew::model::ModelSpec& Hamner() {
   static const sinew::model::ModelSpec spec = sinew::io::ReadOsim(
-      std::string(SINEW_TEST_DATA_DIR) + "/kinematics/hamner/subject02_registered.osim");
+      std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-models/Pipelines/Hamner/outputReference/subject02_registered.osim");
   return spec;
 }
 

@@ -124,7 +124,7 @@ BENCHMARK(BM_GCVSplineCalc);
 
 // Reading a real states file (SinglePin_states.sto, 302 rows x 3 columns, 26 kB).
 void BM_ReadStorage(benchmark::State& state) {
-  const std::string file = std::string(SINEW_TEST_DATA_DIR) + "/storage/SinglePin_states.sto";
+  const std::string file = std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-core/Applications/Analyze/tests/resources/SinglePin_states.sto";
   for (auto _ : state) {
     sinew::io::Storage s = sinew::io::ReadStorage(file);
     benchmark::DoNotOptimize(s.values.data());

@@ -13,7 +13,7 @@ namespace {
 
 const std::string kRajagopal =
     std::string(SINEW_TEST_DATA_DIR) +
-    "/osim/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
+    "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
 
 std::string Slurp(const std::string& file) {
   std::ifstream in(file, std::ios::binary);

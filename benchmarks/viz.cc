@@ -14,9 +14,9 @@ namespace sinew::viz {
 namespace {
 
 const std::string kData = SINEW_TEST_DATA_DIR;
-const std::string kModel = kData + "/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
-const std::string kGeometry = kData + "/opensim-models/Geometry";
-const std::string kMotion = kData + "/kinematics/hamner/subject02_running_ik.mot";
+const std::string kModel = kData + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
+const std::string kGeometry = kData + "/opensim-org/opensim-models/Geometry";
+const std::string kMotion = kData + "/opensim-org/opensim-models/Pipelines/Hamner/outputReference/ResultsIK/subject02_running_ik.mot";
 
 VisualScene MeshScene(const model::ModelSpec& spec) {
   VisualOptions options;

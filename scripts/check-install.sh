@@ -29,5 +29,5 @@ cmake -S "$root/examples/find_package_consumer" -B "$build/install-check/consume
   -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build/install-check/consumer" >/dev/null
 "$build/install-check/consumer/consumer" \
-  "$root/tests/data/osim/projectchrono/chrono/data/opensim/double_pendulum.osim" >/dev/null
+  "$root/tests/data/projectchrono/chrono/data/opensim/double_pendulum.osim" >/dev/null
 echo "install check: find_package(sinew) consumer built and ran"

@@ -30,7 +30,7 @@ CliRun RunCli(const std::string& args) {
 }
 
 const std::string kArm26 =
-    std::string(SINEW_TEST_DATA_DIR) + "/osim/opensim-org/opensim-models/Models/Arm26/arm26.osim";
+    std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-models/Models/Arm26/arm26.osim";
 
 TEST(Inspect, TextSummary) {
   const CliRun run = RunCli("inspect " + kArm26);

@@ -20,9 +20,9 @@ namespace fs = std::filesystem;
 using sinew::testing::ReadStoTable;
 using sinew::testing::StoTable;
 
-const std::string kData = std::string(SINEW_TEST_DATA_DIR) + "/kinematics/";
+const std::string kData = std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-models/Pipelines/";
 const std::string kChrono =
-    std::string(SINEW_TEST_DATA_DIR) + "/osim/projectchrono/chrono/data/opensim/";
+    std::string(SINEW_TEST_DATA_DIR) + "/projectchrono/chrono/data/opensim/";
 
 struct Result {
   int exit_code;
@@ -50,13 +50,13 @@ Result RunCli(const std::string& args, const fs::path& dir) {
 TEST(KinematicsCliTest, Gait2354BodiesMatchOpenSimBodyKinematics) {
   const fs::path dir = TempDir("gait");
   const Result r =
-      RunCli(kData + "gait2354/subject01_simbody_adjusted.osim --motion " + kData +
-                 "gait2354/subject01_walk1_Kinematics_q.sto --out " + (dir / "out").string(),
+      RunCli(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim --motion " + kData +
+                 "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto --out " + (dir / "out").string(),
              dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const StoTable ours = ReadStoTable((dir / "out/bodies.sto").string());
   const StoTable ref =
-      ReadStoTable(kData + "gait2354/subject01_walk1_BodyKinematics_pos_global.sto");
+      ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_BodyKinematics_pos_global.sto");
   ASSERT_EQ(ours.rows.size(), ref.rows.size());
   ASSERT_EQ(ours.labels, ref.labels);  // same columns in the same order
   for (size_t row = 0; row < ref.rows.size(); ++row) {
@@ -74,7 +74,7 @@ TEST(KinematicsCliTest, Gait2354BodiesMatchOpenSimBodyKinematics) {
 TEST(KinematicsCliTest, HamnerMarkersMatchOpenSimAndUnknownColumnsAreReported) {
   const fs::path dir = TempDir("hamner");
   // The IK motion plus a column the model does not know.
-  const StoTable motion = ReadStoTable(kData + "hamner/subject02_running_ik.mot");
+  const StoTable motion = ReadStoTable(kData + "Hamner/outputReference/ResultsIK/subject02_running_ik.mot");
   {
     std::ofstream out(dir / "motion.mot");
     out.precision(17);
@@ -86,13 +86,13 @@ TEST(KinematicsCliTest, HamnerMarkersMatchOpenSimAndUnknownColumnsAreReported) {
       out << "1.0\n";
     }
   }
-  const Result r = RunCli(kData + "hamner/subject02_registered.osim --motion " +
+  const Result r = RunCli(kData + "Hamner/outputReference/subject02_registered.osim --motion " +
                               (dir / "motion.mot").string() + " --out " + (dir / "out").string(),
                           dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("not_a_coordinate"), std::string::npos) << r.err;
   const StoTable ours = ReadStoTable((dir / "out/markers.sto").string());
-  const StoTable ref = ReadStoTable(kData + "hamner/ik_model_marker_locations.sto");
+  const StoTable ref = ReadStoTable(kData + "Hamner/outputReference/ResultsIK/ik_model_marker_locations.sto");
   ASSERT_EQ(ours.rows.size(), ref.rows.size());
   double max_error = 0.0;
   for (size_t c = 1; c < ref.labels.size(); ++c) {

@@ -18,7 +18,7 @@ namespace {
 using sinew::engine::testing::ReadStoColumns;
 
 const std::string kChrono =
-    std::string(SINEW_TEST_DATA_DIR) + "/osim/projectchrono/chrono/data/opensim/";
+    std::string(SINEW_TEST_DATA_DIR) + "/projectchrono/chrono/data/opensim/";
 // torque-actuator.osim: a z pin, rod1 with inertia 1.25 kg m^2 about it, q1(0) = -0.78539816,
 // no gravity; actuator "grav" puts -9.8 e(t) N m on rod1.
 constexpr double kQ0 = -0.78539816;
@@ -87,7 +87,7 @@ TEST(SimulateActuatorsTest, SineExcitationMatchesItsDoubleIntegral) {
 TEST(SimulateActuatorsTest, ControlsFileDrivesTheActuator) {
   // The ControlSet ramps "grav.excitation" as e = t.
   EXPECT_NEAR(FinalQ1("controls", "--controls " + std::string(SINEW_TEST_DATA_DIR) +
-                                      "/controls/grav_ramp_controls.xml"),
+                                      "/sinew/grav_ramp_controls.xml"),
               kQ0 - 9.8 / (6 * kInertia), kTolerance);
 }
 
@@ -103,7 +103,7 @@ TEST(SimulateActuatorsTest, BadExcitationsAndStrictFailuresExitWithCode2) {
   EXPECT_EQ(RunCli("simulate " + kChrono +
                    "double_pendulum.osim --duration 0.01 --strict --quiet " + "--out " + out),
             0);
-  const std::string arm26 = std::string(SINEW_TEST_DATA_DIR) + "/osim/opensim-org/opensim-core/" +
+  const std::string arm26 = std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-core/" +
                             "OpenSim/Simulation/Test/arm26.osim";
   ASSERT_TRUE(std::filesystem::exists(arm26));
   EXPECT_EQ(RunCli("simulate " + arm26 + " --duration 0.01 --strict --quiet --out " + out), 2);

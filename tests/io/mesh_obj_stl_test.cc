@@ -86,8 +86,8 @@ TEST(StlTest, TruncatedOrMalformedFilesThrow) {
 
 TEST(MeshFileTest, SearchesModelFolderThenGeometryThenExtraDirs) {
   namespace fs = std::filesystem;
-  const std::string model = kDataDir + "/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
-  const std::string extra = kDataDir + "/opensim-models/Geometry";
+  const std::string model = kDataDir + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
+  const std::string extra = kDataDir + "/opensim-org/opensim-models/Geometry";
   std::vector<std::string> dirs = io::MeshSearchDirs(model, {extra});
   ASSERT_GE(dirs.size(), 3u);
   EXPECT_EQ(fs::path(dirs[1]).filename(), "Geometry");

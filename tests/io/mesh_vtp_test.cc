@@ -38,7 +38,7 @@ TEST(Base64Test, MatchesRfc4648Vectors) {
 TEST(VtpTest, ReadsRealOpenSimMesh) {
   // r_patella.vtp: 72 points, 80 polygons that fan into 140 triangles (counted with a Python
   // script).
-  const std::string file = kDataDir + "/opensim-models/Geometry/r_patella.vtp";
+  const std::string file = kDataDir + "/opensim-org/opensim-models/Geometry/r_patella.vtp";
   io::TriangleMesh mesh = io::ReadVtp(file);
   EXPECT_EQ(mesh.positions.size(), 72u);
   EXPECT_EQ(mesh.triangles.size(), 140u);

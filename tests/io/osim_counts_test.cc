@@ -3,11 +3,11 @@
 // arm26, a ScapulothoracicJoint model, bouncing_block with '::', lenhart2015 with a bare '&'),
 // checked against numbers counted INDEPENDENTLY with tests/io/count_osim.py: Python's
 // xml.etree parser (not pugixml, not Sinew), see its docstring for the counting rules. Rerun:
-//   python3 tests/io/count_osim.py $(find tests/data/osim -name '*.osim' | sort)
-//   python3 tests/io/count_osim.py --joints $(find tests/data/osim -name '*.osim' | sort)
-//       (output saved as tests/data/osim/joint_bodies.txt)
-//   python3 tests/io/count_osim.py --frames $(find tests/data/osim -name '*.osim' | sort)
-//       (output saved as tests/data/osim/joint_frames.txt)
+// The 15 files are those named in tests/data/sinew/joint_bodies.txt; from tests/data, with
+// FILES=$(awk '{print $1}' sinew/joint_bodies.txt | sort -u):
+//   python3 ../io/count_osim.py $FILES
+//   python3 ../io/count_osim.py --joints $FILES   (output saved as sinew/joint_bodies.txt)
+//   python3 ../io/count_osim.py --frames $FILES   (output saved as sinew/joint_frames.txt)
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -28,35 +28,35 @@ struct Expected {
 
 // Output of count_osim.py, unchanged.
 constexpr Expected kExpected[] = {
-    {"osim/clnsmith/opensim-jam/models/lenhart2015/scale_generic_model/lenhart2015_unscaled.osim",
+    {"clnsmith/opensim-jam/models/lenhart2015/scale_generic_model/lenhart2015_unscaled.osim",
      40000, 25, 25, 52, 134, 0, 0},
-    {"osim/opensim-org/opensim-core/OpenSim/Simulation/SimbodyEngine/Test/"
+    {"opensim-org/opensim-core/OpenSim/Simulation/SimbodyEngine/Test/"
      "double_pendulum_testReverse.osim",
      20302, 2, 2, 2, 0, 0, 0},
-    {"osim/opensim-org/opensim-core/OpenSim/Simulation/Test/BouncingBall_HuntCrossley.osim", 20001,
+    {"opensim-org/opensim-core/OpenSim/Simulation/Test/BouncingBall_HuntCrossley.osim", 20001,
      1, 1, 6, 1, 0, 0},
-    {"osim/opensim-org/opensim-core/OpenSim/Simulation/Test/StationDefinedFrames_Advanced.osim",
+    {"opensim-org/opensim-core/OpenSim/Simulation/Test/StationDefinedFrames_Advanced.osim",
      40600, 2, 2, 12, 0, 0, 0},
-    {"osim/opensim-org/opensim-core/OpenSim/Simulation/Test/arm26.osim", 10901, 2, 2, 2, 6, 0, 3},
-    {"osim/opensim-org/opensim-core/OpenSim/Simulation/Test/double_pendulum.osim", 30501, 2, 2, 2,
+    {"opensim-org/opensim-core/OpenSim/Simulation/Test/arm26.osim", 10901, 2, 2, 2, 6, 0, 3},
+    {"opensim-org/opensim-core/OpenSim/Simulation/Test/double_pendulum.osim", 30501, 2, 2, 2,
      0, 0, 0},
-    {"osim/opensim-org/opensim-core/OpenSim/Simulation/Test/gait2354_simbody.osim", 10905, 12, 12,
+    {"opensim-org/opensim-core/OpenSim/Simulation/Test/gait2354_simbody.osim", 10905, 12, 12,
      23, 54, 0, 0},
-    {"osim/opensim-org/opensim-core/OpenSim/Simulation/Test/"
+    {"opensim-org/opensim-core/OpenSim/Simulation/Test/"
      "testSimulationUtilities_leg6dof9musc_20303.osim",
      20303, 7, 7, 7, 9, 1, 12},
-    {"osim/opensim-org/opensim-core/OpenSim/Tools/Test/BuiltinGeometry.osim", 30517, 1, 1, 6, 3, 1,
+    {"opensim-org/opensim-core/OpenSim/Tools/Test/BuiltinGeometry.osim", 30517, 1, 1, 6, 3, 1,
      0},
-    {"osim/opensim-org/opensim-models/Models/Arm26/arm26.osim", 40000, 3, 3, 2, 6, 0, 3},
-    {"osim/opensim-org/opensim-models/Models/BouncingBlock/bouncing_block.osim", 40000, 3, 3, 8, 4,
+    {"opensim-org/opensim-models/Models/Arm26/arm26.osim", 40000, 3, 3, 2, 6, 0, 3},
+    {"opensim-org/opensim-models/Models/BouncingBlock/bouncing_block.osim", 40000, 3, 3, 8, 4,
      2, 0},
-    {"osim/opensim-org/opensim-models/Models/Hamner/FullBodyModel_Hamner2010_v2_0.osim", 40000, 20,
+    {"opensim-org/opensim-models/Models/Hamner/FullBodyModel_Hamner2010_v2_0.osim", 40000, 20,
      20, 37, 92, 0, 83},
-    {"osim/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim", 40000, 22, 22, 39, 97,
+    {"opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim", 40000, 22, 22, 39, 97,
      2, 66},
-    {"osim/projectchrono/chrono/data/opensim/ScapulothorachicJoint_Shoulder.osim", 30000, 7, 7, 17,
+    {"projectchrono/chrono/data/opensim/ScapulothorachicJoint_Shoulder.osim", 30000, 7, 7, 17,
      5, 1, 21},
-    {"osim/projectchrono/chrono/data/opensim/newton_cradle.osim", 30000, 5, 5, 15, 2, 0, 0},
+    {"projectchrono/chrono/data/opensim/newton_cradle.osim", 30000, 5, 5, 15, 2, 0, 0},
 };
 
 class OsimCounts : public ::testing::TestWithParam<Expected> {};
@@ -94,10 +94,10 @@ std::string TestName(const ::testing::TestParamInfo<Expected>& info) {
 INSTANTIATE_TEST_SUITE_P(RealFiles, OsimCounts, ::testing::ValuesIn(kExpected), TestName);
 
 // Every joint's parent and child body in the same 15 files, against
-// tests/data/osim/joint_bodies.txt, written by `count_osim.py --joints` (its own resolution of
+// tests/data/sinew/joint_bodies.txt, written by `count_osim.py --joints` (its own resolution of
 // socket paths, offset frames, station-defined frames, 3.05 connectors, 3.x nesting and reverse).
 TEST(OsimJointBodies, MatchIndependentResolution) {
-  std::ifstream in(std::string(SINEW_TEST_DATA_DIR) + "/osim/joint_bodies.txt");
+  std::ifstream in(std::string(SINEW_TEST_DATA_DIR) + "/sinew/joint_bodies.txt");
   ASSERT_TRUE(in.good());
   struct Row {
     std::string joint, parent, child;
@@ -130,11 +130,11 @@ TEST(OsimJointBodies, MatchIndependentResolution) {
 }
 
 // Every joint's X_PF and X_BM (frames resolved into the parent and child bodies) in the same
-// files against tests/data/osim/joint_frames.txt, computed by `count_osim.py --frames` with its
+// files against tests/data/sinew/joint_frames.txt, computed by `count_osim.py --frames` with its
 // own rotation and transform code. Joints on station-defined frames are not in that file.
 // Tolerance 1e-12: a few products of rotations of O(1) numbers, done in a different order.
 TEST(OsimJointFrames, MatchIndependentComputation) {
-  std::ifstream in(std::string(SINEW_TEST_DATA_DIR) + "/osim/joint_frames.txt");
+  std::ifstream in(std::string(SINEW_TEST_DATA_DIR) + "/sinew/joint_frames.txt");
   ASSERT_TRUE(in.good());
   // (file, joint name, occurrence) -> 24 numbers.
   std::map<std::string, std::map<std::string, std::vector<std::vector<double>>>> expected;

@@ -106,7 +106,7 @@ TEST(OsimLenient, TruncatedAfterLenientPartsIsAnError) {
 }
 
 TEST(OsimLenient, RealFilesWithColonsAndAmpersands) {
-  const std::string dir = std::string(SINEW_TEST_DATA_DIR) + "/osim/";
+  const std::string dir = std::string(SINEW_TEST_DATA_DIR) + "/";
   const model::ModelSpec block =
       io::ReadOsim(dir + "opensim-org/opensim-models/Models/BouncingBlock/bouncing_block.osim");
   bool found = false;

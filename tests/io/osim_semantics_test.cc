@@ -146,7 +146,7 @@ TEST(OsimSemantics, ThreeXOffsetsBecomeFrames) {
 // 3.x reverse=true: OpenSim's 30514 upgrade swaps the parent and child frames.
 TEST(OsimSemantics, ReverseSwapsParentAndChild) {
   const model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                                             "/osim/opensim-org/opensim-core/OpenSim/Simulation/"
+                                             "/opensim-org/opensim-core/OpenSim/Simulation/"
                                              "SimbodyEngine/Test/double_pendulum_testReverse.osim");
   const model::JointSpec& pin1 = spec.joints[spec.FindJoint("pin1")];
   const model::JointSpec& pin2 = spec.joints[spec.FindJoint("pin2")];
@@ -239,7 +239,7 @@ TEST(OsimSemantics, StationDefinedFrame) {
 TEST(OsimSemantics, Arm26PathsWrapsAndMarkers) {
   const model::ModelSpec spec =
       io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                   "/osim/opensim-org/opensim-models/Models/Arm26/arm26.osim");
+                   "/opensim-org/opensim-models/Models/Arm26/arm26.osim");
   const model::ForceSpec& tri = spec.forces[0];
   EXPECT_EQ(tri.type, "Thelen2003Muscle");
   ASSERT_TRUE(tri.geometry_path.has_value());
@@ -256,7 +256,7 @@ TEST(OsimSemantics, Arm26PathsWrapsAndMarkers) {
 TEST(OsimSemantics, MovingAndConditionalPathPoints) {
   const model::ModelSpec spec =
       io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                   "/osim/opensim-org/opensim-core/OpenSim/Simulation/Test/"
+                   "/opensim-org/opensim-core/OpenSim/Simulation/Test/"
                    "testSimulationUtilities_leg6dof9musc_20303.osim");
   int moving = 0, conditional = 0;
   for (const model::ForceSpec& f : spec.forces) {
@@ -281,7 +281,7 @@ TEST(OsimSemantics, MovingAndConditionalPathPoints) {
 // 3.x contact geometry (body_name, location, orientation) and a 1.9 wrap object on ground, with
 // the values copied from the files.
 TEST(OsimSemantics, ContactGeometryAndWrapObjects) {
-  const std::string dir = std::string(SINEW_TEST_DATA_DIR) + "/osim/opensim-org/opensim-core/";
+  const std::string dir = std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-core/";
   const model::ModelSpec ball =
       io::ReadOsim(dir + "OpenSim/Simulation/Test/BouncingBall_HuntCrossley.osim");
   ASSERT_EQ(ball.contact_geometry.size(), 2u);
@@ -316,7 +316,7 @@ TEST(OsimSemantics, ContactGeometryAndWrapObjects) {
 TEST(OsimSemantics, DisplayGeometry) {
   const model::ModelSpec spec =
       io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                   "/osim/opensim-org/opensim-core/OpenSim/Simulation/Test/"
+                   "/opensim-org/opensim-core/OpenSim/Simulation/Test/"
                    "double_pendulum.osim");
   const model::BodySpec& rod1 = spec.bodies[spec.FindBody("rod1")];
   ASSERT_EQ(rod1.geometry.size(), 2u);
@@ -359,7 +359,7 @@ TEST(OsimSemantics, Controllers) {
 // Joint-specific numbers are kept as parameters (chrono's 3.0 ScapulothoracicJoint model).
 TEST(OsimSemantics, ScapulothoracicParameters) {
   const model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                                             "/osim/projectchrono/chrono/data/opensim/"
+                                             "/projectchrono/chrono/data/opensim/"
                                              "ScapulothorachicJoint_Shoulder.osim");
   const model::JointSpec& j = spec.joints[spec.FindJoint("scapulothoracic")];
   EXPECT_EQ(j.kind, model::JointType::kScapulothoracic);
@@ -400,7 +400,7 @@ TEST(OsimSemantics, PrescribedCoordinates) {
 TEST(OsimSemantics, DuplicateJointNamesLoadWithWarnings) {
   const model::ModelSpec spec =
       io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                   "/osim/projectchrono/chrono/data/opensim/newton_cradle.osim");
+                   "/projectchrono/chrono/data/opensim/newton_cradle.osim");
   ASSERT_EQ(spec.joints.size(), 5u);
   EXPECT_EQ(spec.joints[0].path, "/jointset/sph1");
   EXPECT_EQ(spec.joints[4].path, "/jointset/sph1_5");

@@ -15,14 +15,17 @@
 namespace sinew {
 namespace {
 
-std::string DataFile(const std::string& name) {
-  return std::string(SINEW_TEST_DATA_DIR) + "/storage/" + name;
-}
-
-// OpenSim's SinglePin run, kept with the model it belongs to.
+// Files from opensim-core's test resources (Analyze, or ID for the shoulder motion).
 std::string PendulumFile(const std::string& name) {
   return std::string(SINEW_TEST_DATA_DIR) +
          "/opensim-org/opensim-core/Applications/Analyze/tests/resources/" + name;
+}
+std::string DataFile(const std::string& name) {
+  if (name.starts_with("Thorascapular")) {
+    return std::string(SINEW_TEST_DATA_DIR) +
+           "/opensim-org/opensim-core/Applications/ID/tests/resources/" + name;
+  }
+  return PendulumFile(name);
 }
 
 TEST(StorageTest, ReadsOpenSim4PathLabelsInDegrees) {

@@ -23,9 +23,9 @@ namespace {
 using sinew::testing::ReadStoTable;
 using sinew::testing::StoTable;
 
-const std::string kData = std::string(SINEW_TEST_DATA_DIR) + "/kinematics/";
+const std::string kData = std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-models/Pipelines/";
 const std::string kChrono =
-    std::string(SINEW_TEST_DATA_DIR) + "/osim/projectchrono/chrono/data/opensim/";
+    std::string(SINEW_TEST_DATA_DIR) + "/projectchrono/chrono/data/opensim/";
 
 // Poses every row of `motion` and calls `check(row_index, X_GB)`.
 template <typename Check>
@@ -43,9 +43,9 @@ void ForEachPose(const model::ModelSpec& spec, const StoTable& motion, Check che
 }
 
 TEST(OpenSimReferenceTest, HamnerMarkersMatchOpenSimIK) {
-  const model::ModelSpec spec = io::ReadOsim(kData + "hamner/subject02_registered.osim");
-  const StoTable motion = ReadStoTable(kData + "hamner/subject02_running_ik.mot");
-  const StoTable reference = ReadStoTable(kData + "hamner/ik_model_marker_locations.sto");
+  const model::ModelSpec spec = io::ReadOsim(kData + "Hamner/outputReference/subject02_registered.osim");
+  const StoTable motion = ReadStoTable(kData + "Hamner/outputReference/ResultsIK/subject02_running_ik.mot");
+  const StoTable reference = ReadStoTable(kData + "Hamner/outputReference/ResultsIK/ik_model_marker_locations.sto");
   ASSERT_EQ(reference.rows.size(), 599u);
   ASSERT_EQ(reference.labels.size(), 1 + 37 * 3u);
   ASSERT_EQ(motion.rows.size(), reference.rows.size());
@@ -83,9 +83,9 @@ TEST(OpenSimReferenceTest, HamnerPelvisMarkerResidualIsAConstantOffset) {
   // The residual of a pelvis marker is (nearly) the same vector in the pelvis frame in all 599
   // frames: it comes from the model (the stored geometry differs slightly from the one IK ran
   // with), not from the kinematics, which would make it vary with the pose.
-  const model::ModelSpec spec = io::ReadOsim(kData + "hamner/subject02_registered.osim");
-  const StoTable motion = ReadStoTable(kData + "hamner/subject02_running_ik.mot");
-  const StoTable reference = ReadStoTable(kData + "hamner/ik_model_marker_locations.sto");
+  const model::ModelSpec spec = io::ReadOsim(kData + "Hamner/outputReference/subject02_registered.osim");
+  const StoTable motion = ReadStoTable(kData + "Hamner/outputReference/ResultsIK/subject02_running_ik.mot");
+  const StoTable reference = ReadStoTable(kData + "Hamner/outputReference/ResultsIK/ik_model_marker_locations.sto");
   for (const char* name : {"L.ASIS", "R.ASIS", "V.Sacral"}) {
     const auto it = std::find_if(spec.markers.begin(), spec.markers.end(),
                                  [&](const model::MarkerSpec& m) { return m.name == name; });
@@ -116,10 +116,10 @@ double AngleDifferenceDeg(double a, double b) {
 }
 
 TEST(OpenSimReferenceTest, Gait2354BodyKinematicsMatchOpenSim) {
-  const model::ModelSpec spec = io::ReadOsim(kData + "gait2354/subject01_simbody_adjusted.osim");
-  const StoTable motion = ReadStoTable(kData + "gait2354/subject01_walk1_Kinematics_q.sto");
+  const model::ModelSpec spec = io::ReadOsim(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
+  const StoTable motion = ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto");
   const StoTable reference =
-      ReadStoTable(kData + "gait2354/subject01_walk1_BodyKinematics_pos_global.sto");
+      ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_BodyKinematics_pos_global.sto");
   ASSERT_EQ(motion.rows.size(), reference.rows.size());
   const std::vector<std::string> labels = kinematics::BodyKinematicsLabels(spec);
   double max_position = 0.0, max_angle = 0.0;
@@ -150,10 +150,10 @@ TEST(OpenSimReferenceTest, Gait2354TorsoDiffersByAConstantOffset) {
   // SOURCES.md: the torso mass centre of the stored model differs from the one OpenSim ran
   // with. Its angles must still match, and the position error must be a constant body-fixed
   // offset (same in every frame), which is what a different mass_center gives.
-  const model::ModelSpec spec = io::ReadOsim(kData + "gait2354/subject01_simbody_adjusted.osim");
-  const StoTable motion = ReadStoTable(kData + "gait2354/subject01_walk1_Kinematics_q.sto");
+  const model::ModelSpec spec = io::ReadOsim(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
+  const StoTable motion = ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto");
   const StoTable reference =
-      ReadStoTable(kData + "gait2354/subject01_walk1_BodyKinematics_pos_global.sto");
+      ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_BodyKinematics_pos_global.sto");
   const int torso = spec.FindBody("torso");
   ASSERT_GE(torso, 0);
   const int cx = reference.Column("torso_X");
@@ -178,13 +178,13 @@ TEST(OpenSimReferenceTest, Gait2354BodyVelocitiesMatchOpenSim) {
   // stored model's geometry differs from the one OpenSim ran by tens of nanometres, see
   // Gait2354HipOffsetIsConstantInThePelvis): v_ref - v = d/dt (p_ref - p), which we check with
   // a three-point difference over the (non-uniform) rows.
-  const model::ModelSpec spec = io::ReadOsim(kData + "gait2354/subject01_simbody_adjusted.osim");
-  const StoTable motion_q = ReadStoTable(kData + "gait2354/subject01_walk1_Kinematics_q.sto");
-  const StoTable motion_u = ReadStoTable(kData + "gait2354/subject01_walk1_Kinematics_u.sto");
+  const model::ModelSpec spec = io::ReadOsim(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
+  const StoTable motion_q = ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto");
+  const StoTable motion_u = ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_u.sto");
   const StoTable ref_p =
-      ReadStoTable(kData + "gait2354/subject01_walk1_BodyKinematics_pos_global.sto");
+      ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_BodyKinematics_pos_global.sto");
   const StoTable ref_v =
-      ReadStoTable(kData + "gait2354/subject01_walk1_BodyKinematics_vel_global.sto");
+      ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_BodyKinematics_vel_global.sto");
   const kinematics::KinematicTree tree(spec);
   const kinematics::MotionColumnMap map_q = kinematics::MapMotionColumns(spec, motion_q.labels);
   const kinematics::MotionColumnMap map_u = kinematics::MapMotionColumns(spec, motion_u.labels);
@@ -244,10 +244,10 @@ TEST(OpenSimReferenceTest, Gait2354HipOffsetIsConstantInThePelvis) {
   // The femur's mass-centre discrepancy is the same vector in the pelvis frame at every row:
   // the hip joint centre of the stored model differs from the run's by tens of nanometres, a
   // model difference and not a kinematics error (rotations match to 1e-13 degrees).
-  const model::ModelSpec spec = io::ReadOsim(kData + "gait2354/subject01_simbody_adjusted.osim");
-  const StoTable motion = ReadStoTable(kData + "gait2354/subject01_walk1_Kinematics_q.sto");
+  const model::ModelSpec spec = io::ReadOsim(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
+  const StoTable motion = ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto");
   const StoTable reference =
-      ReadStoTable(kData + "gait2354/subject01_walk1_BodyKinematics_pos_global.sto");
+      ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_BodyKinematics_pos_global.sto");
   const int pelvis = spec.FindBody("pelvis");
   for (const char* femur : {"femur_r", "femur_l"}) {
     const int b = spec.FindBody(femur);
@@ -361,7 +361,7 @@ TEST(SeedModelsTest, Reversed3xJointMatchesTheForwardModel) {
   // rotation is applied from rod2's frame to rod1's, i.e. rod2 turns by -q2 relative to the
   // forward model (whose pin2 frames are otherwise identical).
   const model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                                             "/osim/opensim-org/opensim-core/OpenSim/Simulation/"
+                                             "/opensim-org/opensim-core/OpenSim/Simulation/"
                                              "SimbodyEngine/Test/double_pendulum_testReverse.osim");
   const kinematics::KinematicTree tree(spec);
   const int pin2 = spec.FindJoint("pin2");

@@ -78,7 +78,7 @@ TEST(BuildSystemTest, DoublePendulum3DReproducesOpenSim) {
 // passive, so kinetic + gravity energy is conserved; constraints stay satisfied.
 TEST(BuildSystemTest, Gait2354HungFromPelvisConservesEnergy) {
   model::ModelSpec spec =
-      io::ReadOsim(kData + "/kinematics/gait2354/subject01_simbody_adjusted.osim");
+      io::ReadOsim(kData + "/opensim-org/opensim-models/Pipelines/Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
   for (model::CoordinateSpec& c : spec.coordinates) {
     if (c.name.rfind("pelvis_", 0) == 0) c.locked = true;
   }
@@ -152,7 +152,7 @@ namespace {
 // The linear-time tree elimination and the general sparse LU solve the same KKT system.
 TEST(BuildSystemTest, TreeEliminationEqualsSparseLu) {
   const model::ModelSpec spec =
-      io::ReadOsim(kData + "/kinematics/gait2354/subject01_simbody_adjusted.osim");
+      io::ReadOsim(kData + "/opensim-org/opensim-models/Pipelines/Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
   for (bool direct : {true, false}) {
     opensim::BuildOptions options;
     options.direct_joints = direct;
@@ -183,8 +183,8 @@ namespace {
 // give the same motion on real models: Rajagopal2016 (Pin, Universal, Weld, CustomJoint) and the
 // chrono Newton's cradle (Ball).
 TEST(BuildSystemTest, DirectAndParameterizedJointsAgreeOnRealModels) {
-  for (const std::string file : {"/opensim-models/Models/Rajagopal/Rajagopal2016.osim",
-                                 "/osim/projectchrono/chrono/data/opensim/newton_cradle.osim"}) {
+  for (const std::string file : {"/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim",
+                                 "/projectchrono/chrono/data/opensim/newton_cradle.osim"}) {
     const model::ModelSpec spec = io::ReadOsim(kData + file);
     double max_dq = 0.0;
     engine::State end[2];

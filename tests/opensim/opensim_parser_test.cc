@@ -18,7 +18,7 @@ namespace sinew {
 namespace {
 
 const std::string kChronoDir =
-    std::string(SINEW_TEST_DATA_DIR) + "/osim/projectchrono/chrono/data/opensim/";
+    std::string(SINEW_TEST_DATA_DIR) + "/projectchrono/chrono/data/opensim/";
 
 // Both actuator models: rod1 (m = 1 kg, Izz = 1 kg m^2 about its mass centre at its origin)
 // hangs from a z pin 0.5 m above its origin; q1 starts at -0.78539816 rad, gravity is 0.
@@ -76,7 +76,7 @@ TEST(OpenSimParserTest, TorqueActuatorWithRampExcitationGivesCubic) {
 TEST(OpenSimParserTest, ControlsFileDrivesItsActuator) {
   // The ControlSet ramps "grav.excitation" through (0, 0) and (0.5, 0.5), extrapolated: e = t.
   opensim::OpenSimParser parser;
-  parser.SetControlsFile(std::string(SINEW_TEST_DATA_DIR) + "/controls/grav_ramp_controls.xml");
+  parser.SetControlsFile(std::string(SINEW_TEST_DATA_DIR) + "/sinew/grav_ramp_controls.xml");
   auto system = parser.Parse(kChronoDir + "torque-actuator.osim");
   EXPECT_EQ(parser.GetReport().GetForce("grav")->excitation_source, "controls file");
   const double q = SimulateQ1(*system, {1.0})[0];

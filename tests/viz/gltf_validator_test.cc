@@ -34,14 +34,14 @@ TEST(GltfValidatorTest, KhronosValidatorFindsNoIssues) {
   // A small animated scene, the same without motion, one with no geometry at all, and the
   // full Rajagopal2016 model with 81 meshes and the 599-frame running motion.
   VisualOptions mesh;
-  mesh.geometry_dirs = {testing::kDataDir + "/opensim-models/Geometry"};
+  mesh.geometry_dirs = {testing::kDataDir + "/opensim-org/opensim-models/Geometry"};
   VisualOptions none;
   none.mode = VisType::kNone;
   const model::ModelSpec two_link = testing::TwoLinkSpec();
   const model::ModelSpec rajagopal =
-      io::ReadOsim(testing::kDataDir + "/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
+      io::ReadOsim(testing::kDataDir + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
   const BodyMotion running = MotionFromTable(
-      rajagopal, io::ReadStorage(testing::kDataDir + "/kinematics/hamner/subject02_running_ik.mot"),
+      rajagopal, io::ReadStorage(testing::kDataDir + "/opensim-org/opensim-models/Pipelines/Hamner/outputReference/ResultsIK/subject02_running_ik.mot"),
       nullptr);
   const std::vector<std::pair<std::string, std::vector<uint8_t>>> files = {
       {"animated.glb",

@@ -18,7 +18,7 @@ namespace {
 VisualOptions MeshOptions() {
   VisualOptions options;
   options.mode = VisType::kMesh;
-  options.geometry_dirs = {testing::kDataDir + "/opensim-models/Geometry"};
+  options.geometry_dirs = {testing::kDataDir + "/opensim-org/opensim-models/Geometry"};
   return options;
 }
 
@@ -35,7 +35,7 @@ TEST(VisualSceneTest, MeshModeReadsMeshesAndFallsBackWithAWarning) {
   ASSERT_EQ(scene.warnings.size(), 1u);
   const std::string warning = scene.warnings[0].Format();
   EXPECT_NE(warning.find("not_there.vtp"), std::string::npos) << warning;
-  EXPECT_NE(warning.find("opensim-models/Geometry"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("opensim-org/opensim-models/Geometry"), std::string::npos) << warning;
   EXPECT_NE(warning.find("/bodyset/tip/lost"), std::string::npos) << warning;
   ASSERT_FALSE(scene.bodies[2].parts.empty());
   EXPECT_EQ(scene.bodies[2].parts[0].source, "primitive");
