@@ -2,6 +2,8 @@
 // below as genuinely broken, which must fail with a precise error (file, line, component).
 #include <gtest/gtest.h>
 
+#include "corpus.h"
+
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -23,8 +25,8 @@ const std::map<std::string, std::string> kBroken = {
 };
 
 TEST(OsimCorpus, EveryFileLoadsOrFailsPrecisely) {
-  const fs::path root = SINEW_SHARED_DATA_DIR;
-  if (!fs::exists(root)) GTEST_SKIP() << "no shared corpus at " << root;
+  SINEW_SKIP_WITHOUT_CORPUS();
+  const std::filesystem::path root = testing::CorpusDir();
   int loaded = 0, failed = 0;
   for (const auto& entry : fs::recursive_directory_iterator(root)) {
     if (entry.path().extension() != ".osim") continue;
@@ -66,8 +68,8 @@ namespace {
 // angles: 12 coordinates in 9 files); the 4.x rule calls those coupled. The reader keeps the
 // file's value when there is one, so this matters only for files without motion_type.
 TEST(OsimCorpus, DerivedMotionTypesMatchTheOnesOpenSimWrote) {
-  const fs::path root = SINEW_SHARED_DATA_DIR;
-  if (!fs::exists(root)) GTEST_SKIP() << "no shared corpus at " << root;
+  SINEW_SKIP_WITHOUT_CORPUS();
+  const std::filesystem::path root = testing::CorpusDir();
   int compared = 0, spline_rotations = 0;
   for (const auto& entry : fs::recursive_directory_iterator(root)) {
     if (entry.path().extension() != ".osim") continue;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "corpus.h"
+
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -220,8 +222,8 @@ TEST(ReadFunctionTest, ErrorsNameFileLineAndComponent) {
 // Reads every Function element in every model and setup file of the shared OpenSim corpus.
 // Every one must load, and a SimmSpline must reproduce its own knots.
 TEST(ReadFunctionTest, ReadsEveryFunctionInTheCorpus) {
-  const std::filesystem::path root = SINEW_SHARED_DATA_DIR;
-  if (!std::filesystem::exists(root)) GTEST_SKIP() << "no shared corpus at " << root;
+  SINEW_SKIP_WITHOUT_CORPUS();
+  const std::filesystem::path root = testing::CorpusDir();
   std::map<std::string, int> counts;
   int files = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {

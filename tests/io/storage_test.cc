@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "corpus.h"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -171,8 +173,8 @@ TEST(StorageTest, WriteReadRoundTripIsExact) {
 
 // Every .sto/.mot in the shared OpenSim corpus reads; wrong declared counts are only noted.
 TEST(StorageTest, ReadsEveryStorageFileInTheCorpus) {
-  const std::filesystem::path root = SINEW_SHARED_DATA_DIR;
-  if (!std::filesystem::exists(root)) GTEST_SKIP() << "no shared corpus at " << root;
+  SINEW_SKIP_WITHOUT_CORPUS();
+  const std::filesystem::path root = testing::CorpusDir();
   int files = 0, noted = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
     const std::string extension = entry.path().extension().string();

@@ -3,6 +3,8 @@
 // are skipped (listed), as are models with joint types Sinew does not model (listed).
 #include <gtest/gtest.h>
 
+#include "corpus.h"
+
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -18,8 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(CorpusPoseTest, EveryModelPosesAtItsDefaults) {
-  const fs::path root(SINEW_SHARED_DATA_DIR);
-  if (!fs::exists(root)) GTEST_SKIP() << "no shared corpus at " << root;
+  SINEW_SKIP_WITHOUT_CORPUS();
+  const std::filesystem::path root = testing::CorpusDir();
   std::vector<fs::path> files;
   for (const auto& entry : fs::recursive_directory_iterator(root)) {
     if (entry.is_regular_file() && entry.path().extension() == ".osim") files.push_back(entry);

@@ -3,6 +3,8 @@
 // models name that exists in the corpus is read. Skipped when the corpus is absent.
 #include <gtest/gtest.h>
 
+#include "corpus.h"
+
 #include <filesystem>
 #include <set>
 
@@ -18,8 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(CorpusExportTest, EveryModelExportsOrFailsWithASinewError) {
-  const fs::path corpus = SINEW_SHARED_DATA_DIR;
-  if (!fs::is_directory(corpus)) GTEST_SKIP() << "no shared corpus at " << corpus;
+  SINEW_SKIP_WITHOUT_CORPUS();
+  const std::filesystem::path corpus = testing::CorpusDir();
   const std::string geometry = (corpus / "opensim-org/opensim-models/Geometry").string();
   int models = 0, exported = 0, meshes = 0;
   std::set<std::string> unreadable;
