@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Configures and builds Sinew. Usage: scripts/build.sh [release|asan] (default release).
 # Builds into build/<kind>. Warnings are errors in both kinds.
+# SINEW_CORPUS_DIR (folder of real OpenSim files for the corpus sweeps; default
+# ../shared/opensim-data when present) and SINEW_REQUIRE_CORPUS=ON (fail without it, as CI does)
+# are passed to CMake.
 set -euo pipefail
 kind=${1:-release}
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -9,5 +12,6 @@ case "$kind" in
   asan) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSINEW_SANITIZE=ON -DSINEW_BUILD_BENCHMARKS=OFF) ;;
   *) echo "usage: $0 [release|asan]" >&2; exit 1 ;;
 esac
+flags+=(-DSINEW_CORPUS_DIR="${SINEW_CORPUS_DIR:-}" -DSINEW_REQUIRE_CORPUS="${SINEW_REQUIRE_CORPUS:-OFF}")
 cmake -S "$root" -B "$root/build/$kind" -G Ninja -DSINEW_WERROR=ON "${flags[@]}" >/dev/null
 cmake --build "$root/build/$kind" -j "$(nproc)"

@@ -110,8 +110,10 @@ TEST(PendulumTest, SinglePinMatchesExactPendulumEquation) {
 TEST(PendulumTest, SinglePinReproducesOpenSim) {
   double q_error = 0, u_error = 0;
   CompareWithOpenSim(MakePendulum(false, false), "SinglePin_states.sto", &q_error, &u_error);
-  EXPECT_LT(q_error, 1e-6);
-  EXPECT_LT(u_error, 1e-5);
+  // Asserted within ~3x of the published figures (docs/engine.md): measured 3.1e-8 rad and
+  // 9.7e-8 rad/s. The difference is OpenSim's own integration error at its accuracy setting.
+  EXPECT_LT(q_error, 1e-7);
+  EXPECT_LT(u_error, 3e-7);
   std::printf("SinglePin: max |dq| = %.3g rad, max |du| = %.3g rad/s\n", q_error, u_error);
 }
 
@@ -120,8 +122,9 @@ TEST(PendulumTest, DoublePendulum3DReproducesOpenSim) {
     double q_error = 0, u_error = 0;
     CompareWithOpenSim(MakePendulum(true, direct), "DoublePendulum3D_states.sto", &q_error,
                        &u_error);
-    EXPECT_LT(q_error, 1e-6) << "direct=" << direct;
-    EXPECT_LT(u_error, 1e-5) << "direct=" << direct;
+    // Within ~3x of the published 1.05e-7 rad and 5.7e-7 rad/s (docs/engine.md).
+    EXPECT_LT(q_error, 3e-7) << "direct=" << direct;
+    EXPECT_LT(u_error, 2e-6) << "direct=" << direct;
     std::printf("DoublePendulum3D (%s joints): max |dq| = %.3g rad, max |du| = %.3g rad/s\n",
                 direct ? "direct" : "parameterized", q_error, u_error);
   }
@@ -176,10 +179,11 @@ TEST(PendulumTest, DoublePendulumConservesEnergyAndConstraints) {
       max_phi = std::max(max_phi, CalcPositionErrors(system, state).lpNorm<Eigen::Infinity>());
       max_vel = std::max(max_vel, CalcVelocityErrors(system, state, kkt).lpNorm<Eigen::Infinity>());
     }
-    // Energy is dominated by the swing's 5 to 15 J: relative drift.
-    EXPECT_LT(max_drift / std::abs(e0), 1e-6) << "direct=" << direct;
-    EXPECT_LT(max_phi, 1e-8);
-    EXPECT_LT(max_vel, 1e-8);
+    // Energy is dominated by the swing's 5 to 15 J: relative drift. Asserted within ~5x of the
+    // published figures (docs/engine.md): drift 1.7e-10 / 6.3e-11, |phi| 1e-13, |Jv| 2e-15.
+    EXPECT_LT(max_drift / std::abs(e0), 1e-9) << "direct=" << direct;
+    EXPECT_LT(max_phi, 1e-12);
+    EXPECT_LT(max_vel, 1e-14);
     std::printf("double pendulum (%s): relative energy drift %.2g, |phi| %.2g, |Jv| %.2g\n",
                 direct ? "direct" : "parameterized", max_drift / std::abs(e0), max_phi, max_vel);
   }

@@ -61,8 +61,10 @@ TEST(BuildSystemTest, SinglePinReproducesOpenSim) {
   RunAgainstOpenSim("SinglePin.osim", "SinglePin_InitialStates.sto", "SinglePin_states.sto", &dq,
                     &du);
   std::printf("SinglePin.osim: max |dq| = %.3g rad, max |du| = %.3g rad/s\n", dq, du);
-  EXPECT_LT(dq, 1e-6);
-  EXPECT_LT(du, 1e-5);
+  // Asserted within ~3x of the published figures (docs/engine.md): measured 3.1e-8 rad and
+  // 9.7e-8 rad/s. The difference is OpenSim's own integration error at its accuracy setting.
+  EXPECT_LT(dq, 1e-7);
+  EXPECT_LT(du, 3e-7);
 }
 
 TEST(BuildSystemTest, DoublePendulum3DReproducesOpenSim) {
@@ -70,8 +72,9 @@ TEST(BuildSystemTest, DoublePendulum3DReproducesOpenSim) {
   RunAgainstOpenSim("DoublePendulum3D.osim", "DoublePendulum3D_InitialStates.sto",
                     "DoublePendulum3D_states.sto", &dq, &du);
   std::printf("DoublePendulum3D.osim: max |dq| = %.3g rad, max |du| = %.3g rad/s\n", dq, du);
-  EXPECT_LT(dq, 1e-6);
-  EXPECT_LT(du, 1e-5);
+  // Within ~3x of the published 1.05e-7 rad and 5.7e-7 rad/s (docs/engine.md).
+  EXPECT_LT(dq, 3e-7);
+  EXPECT_LT(du, 2e-6);
 }
 
 // gait2354 hung from its pelvis (pelvis coordinates locked), limbs swinging from a bent pose:
@@ -114,9 +117,11 @@ TEST(BuildSystemTest, Gait2354HungFromPelvisConservesEnergy) {
       "|Jv - c| = %.2g, steps %ld\n",
       drift / std::abs(e0), drift / max_kinetic, phi, vel, integrator->stats().steps);
   EXPECT_GT(max_kinetic, 1.0);  // the limbs really move
-  EXPECT_LT(drift / std::abs(e0), 1e-6);
-  EXPECT_LT(phi, 1e-8);
-  EXPECT_LT(vel, 1e-8);
+  // Within ~5x of the published figures (README, docs/engine.md): relative drift 6.8e-12,
+  // residuals 9.4e-13 (positions) and 2.8e-14 (velocities).
+  EXPECT_LT(drift / std::abs(e0), 3e-11);
+  EXPECT_LT(phi, 5e-12);
+  EXPECT_LT(vel, 1e-13);
 }
 
 TEST(BuildSystemTest, MasslessModelIsRejected) {
