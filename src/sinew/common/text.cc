@@ -1,6 +1,7 @@
 #include <sinew/common/text.h>
 
 #include <charconv>
+#include <cmath>
 
 namespace sinew {
 
@@ -33,6 +34,13 @@ bool ParseNumbers(std::string_view text, std::vector<double>* values, std::strin
     values->push_back(value);
   }
   return true;
+}
+
+const double* FindOutOfRange(const std::vector<double>& values, NumberRange range) {
+  for (const double& v : values) {
+    if (std::isnan(v) || (range == NumberRange::kFinite && std::isinf(v))) return &v;
+  }
+  return nullptr;
 }
 
 }  // namespace sinew

@@ -20,4 +20,13 @@ bool ParseNumber(std::string_view token, double* value);
 bool ParseNumbers(std::string_view text, std::vector<double>* values,
                   std::string_view* bad_token = nullptr);
 
+/// Which numbers a model property accepts. NaN never: no OpenSim property means "not a number".
+enum class NumberRange {
+  kFinite,         ///< masses, lengths, angles, coefficients, knots: almost every property
+  kAllowInfinite,  ///< bounds, where OpenSim writes Inf for "none" (min_control, ranges, times)
+};
+
+/// The first number of `values` that `range` rejects (NaN, or infinite under kFinite), or null.
+const double* FindOutOfRange(const std::vector<double>& values, NumberRange range);
+
 }  // namespace sinew

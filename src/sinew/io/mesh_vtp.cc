@@ -193,7 +193,7 @@ class VtpReader {
     const std::string_view format = array.attribute("format").value();
     std::vector<double> values;
     if (format == "ascii") {
-      values = doc_.ReadNumbers(array, "");
+      values = doc_.ReadNumbers(array, array.attribute("Name").value());
     } else if (format == "binary") {
       const ScalarType type = ParseScalarType(array.attribute("type").value());
       if (type.bytes == 0) {

@@ -88,7 +88,7 @@ model::PathPointSpec ReadPathPoint(ReadContext& ctx, const pugi::xml_node& node,
     point.coordinate = ResolveCoordinate(ctx, coordinate, component);
     pugi::xml_node range = node.child("range");
     if (!range) doc.Fail(node, component, "ConditionalPathPoint has no <range>");
-    std::vector<double> r = doc.ReadNumbers(range, component, 2);
+    std::vector<double> r = doc.ReadNumbers(range, component, 2, NumberRange::kAllowInfinite);
     point.range_min = r[0];
     point.range_max = r[1];
   } else if (point.type == "MovingPathPoint") {
@@ -134,7 +134,7 @@ model::GeometryPathSpec ReadGeometryPath(ReadContext& ctx, const pugi::xml_node&
     wrap.method = TextOf(node, "method");
     if (wrap.method.empty()) wrap.method = "hybrid";
     if (pugi::xml_node range = node.child("range")) {
-      std::vector<double> r = doc.ReadNumbers(range, component, 2);
+      std::vector<double> r = doc.ReadNumbers(range, component, 2, NumberRange::kAllowInfinite);
       for (int i = 0; i < 2; ++i) {
         // Path point numbers (1-based) or -1: whole numbers in int range (casting anything else
         // would be undefined behaviour).

@@ -350,7 +350,7 @@ class JointReader {
     c.default_value = ReadDoubleOr(doc_, node, "default_value", component, 0.0);
     c.default_speed_value = ReadDoubleOr(doc_, node, "default_speed_value", component, 0.0);
     if (pugi::xml_node range = node.child("range")) {
-      std::vector<double> r = doc_.ReadNumbers(range, component, 2);
+      std::vector<double> r = doc_.ReadNumbers(range, component, 2, NumberRange::kAllowInfinite);
       c.range_min = r[0];
       c.range_max = r[1];
       if (r[0] > r[1]) doc_.Fail(range, component, "<range> minimum exceeds maximum");

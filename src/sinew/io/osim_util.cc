@@ -1,10 +1,10 @@
 // Small helpers shared by the .osim reader's parts.
+#include <sinew/io/internal/osim_context.h>
+#include <sinew/math/rotation.h>
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-
-#include <sinew/io/internal/osim_context.h>
-#include <sinew/math/rotation.h>
 
 namespace sinew::io::internal {
 
@@ -111,7 +111,9 @@ model::NumberMap ReadNumericLeaves(const XmlDocument& doc, const pugi::xml_node&
     const std::string_view tag = child.name();
     if (std::find(skip.begin(), skip.end(), tag) != skip.end()) continue;
     if (!IsNumberList(XmlDocument::Text(child))) continue;
-    result[std::string(tag)] = doc.ReadNumbers(child, component);
+    // Kept for the builders, which check each value; here only NaN is refused, since OpenSim
+    // writes Inf for an absent bound (min_control, max_control).
+    result[std::string(tag)] = doc.ReadNumbers(child, component, -1, NumberRange::kAllowInfinite);
   }
   return result;
 }

@@ -1,11 +1,10 @@
+#include <sinew/common/text.h>
 #include <sinew/io/internal/xml_document.h>
 
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-
-#include <sinew/common/text.h>
 
 namespace sinew::io::internal {
 namespace {
@@ -181,7 +180,8 @@ double XmlDocument::ReadDouble(const pugi::xml_node& node, const std::string& co
 }
 
 std::vector<double> XmlDocument::ReadNumbers(const pugi::xml_node& node,
-                                             const std::string& component, int count) const {
+                                             const std::string& component, int count,
+                                             NumberRange range) const {
   std::vector<double> values;
   std::string_view bad_token;
   if (!ParseNumbers(Text(node), &values, &bad_token)) {
@@ -193,6 +193,12 @@ std::vector<double> XmlDocument::ReadNumbers(const pugi::xml_node& node,
     Fail(node, component,
          "<" + std::string(node.name()) + "> expects " + std::to_string(count) + " number" +
              (count == 1 ? "" : "s") + ", found " + std::to_string(values.size()));
+  }
+  if (const double* bad = FindOutOfRange(values, range)) {
+    Fail(node, component,
+         "<" + std::string(node.name()) + "> expects " +
+             (range == NumberRange::kFinite ? "finite numbers" : "numbers (Inf allowed, not NaN)") +
+             ", found " + std::to_string(*bad));
   }
   return values;
 }

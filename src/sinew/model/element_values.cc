@@ -1,9 +1,8 @@
+#include <sinew/common/error.h>
+#include <sinew/common/text.h>
 #include <sinew/model/element_values.h>
 
 #include <vector>
-
-#include <sinew/common/error.h>
-#include <sinew/common/text.h>
 
 namespace sinew::model {
 
@@ -24,23 +23,39 @@ std::optional<std::string> ElementValues::FirstString(
   return std::nullopt;
 }
 
+namespace {
+
+// The numbers of `child`, which must be `count` numbers in `range`.
+std::vector<double> ReadChecked(const ElementValues& v, std::string_view tag, const Element& child,
+                                size_t count, NumberRange range) {
+  std::vector<double> values;
+  if (!ParseNumbers(child.text, &values) || values.size() != count ||
+      FindOutOfRange(values, range) != nullptr) {
+    const std::string what = count == 1 ? "one " : std::to_string(count) + " ";
+    const std::string kind = range == NumberRange::kFinite ? "finite number" : "number";
+    v.Fail("<" + std::string(tag) + "> expects " + what + kind + (count == 1 ? "" : "s") +
+               ", found '" + child.text + "'",
+           child.line);
+  }
+  return values;
+}
+
+}  // namespace
+
 double ElementValues::Double(std::string_view tag, double fallback) const {
   const Element* child = element_.Child(tag);
-  if (!child) return fallback;
-  std::vector<double> values;
-  if (!ParseNumbers(child->text, &values) || values.size() != 1) {
-    Fail("<" + std::string(tag) + "> expects one number, found '" + child->text + "'", child->line);
-  }
-  return values[0];
+  return child ? ReadChecked(*this, tag, *child, 1, NumberRange::kFinite)[0] : fallback;
+}
+
+double ElementValues::Bound(std::string_view tag, double fallback) const {
+  const Element* child = element_.Child(tag);
+  return child ? ReadChecked(*this, tag, *child, 1, NumberRange::kAllowInfinite)[0] : fallback;
 }
 
 Vec3 ElementValues::Vector3(std::string_view tag, const Vec3& fallback) const {
   const Element* child = element_.Child(tag);
   if (!child) return fallback;
-  std::vector<double> values;
-  if (!ParseNumbers(child->text, &values) || values.size() != 3) {
-    Fail("<" + std::string(tag) + "> expects 3 numbers, found '" + child->text + "'", child->line);
-  }
+  const std::vector<double> values = ReadChecked(*this, tag, *child, 3, NumberRange::kFinite);
   return {values[0], values[1], values[2]};
 }
 

@@ -22,9 +22,12 @@ class ElementValues {
   bool Has(std::string_view tag) const { return element_.Child(tag) != nullptr; }
   /// The property's trimmed text, or `fallback` when absent.
   std::string String(std::string_view tag, const std::string& fallback = "") const;
-  /// One number; `fallback` when absent; throws sinew::Error when not a number.
+  /// One finite number; `fallback` when absent; throws sinew::Error for anything else.
   double Double(std::string_view tag, double fallback) const;
-  /// Three numbers; `fallback` when absent; throws for another count.
+  /// One number that may be infinite (a bound such as min_control, where OpenSim writes Inf for
+  /// none); `fallback` when absent; throws for NaN or text that is not a number.
+  double Bound(std::string_view tag, double fallback) const;
+  /// Three finite numbers; `fallback` when absent; throws for another count.
   Vec3 Vector3(std::string_view tag, const Vec3& fallback) const;
   /// true/false; `fallback` when absent; throws for other text.
   bool Bool(std::string_view tag, bool fallback) const;

@@ -94,8 +94,8 @@ std::shared_ptr<forces::Actuator> MakeActuator(const model::ModelSpec& spec,
     values.Fail("'" + force.type + "' is not an ideal actuator");
   }
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  actuator->SetControlRange(values.Double("min_control", -kInf),
-                            values.Double("max_control", kInf));
+  actuator->SetControlRange(values.Bound("min_control", -kInf),
+                            values.Bound("max_control", kInf));
   return actuator;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <sinew/common/error.h>
+#include <sinew/common/text.h>
 #include <sinew/math/types.h>
 
 namespace sinew::io::internal {
@@ -36,12 +37,15 @@ class XmlDocument {
 
   /// The trimmed text of `node`.
   static std::string_view Text(const pugi::xml_node& node);
-  /// The text of `node` as one number; throws on anything else.
+  /// The text of `node` as one finite number; throws on anything else.
   double ReadDouble(const pugi::xml_node& node, const std::string& component) const;
-  /// Whitespace-separated numbers; `count` >= 0 requires exactly that many.
+  /// Whitespace-separated numbers; `count` >= 0 requires exactly that many. Every number must be
+  /// finite unless `range` allows infinities (bounds); NaN is always an error. This is where
+  /// every number of a model file is checked.
   std::vector<double> ReadNumbers(const pugi::xml_node& node, const std::string& component,
-                                  int count = -1) const;
-  /// Exactly three numbers.
+                                  int count = -1,
+                                  NumberRange range = NumberRange::kFinite) const;
+  /// Exactly three finite numbers.
   Vec3 ReadVec3(const pugi::xml_node& node, const std::string& component) const;
   /// "true"/"false" (also "1"/"0"); throws on anything else.
   bool ReadBool(const pugi::xml_node& node, const std::string& component) const;
