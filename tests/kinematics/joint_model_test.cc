@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -90,7 +91,6 @@ std::vector<JointCase> AllJointCases() {
   JointCase ellipsoid{"Ellipsoid", MakeSpec(model::JointType::kEllipsoid, "EllipsoidJoint", 3)};
   ellipsoid.spec.joints[0].parameters["radii_x_y_z"] = {0.07, 0.15, 0.09};
   cases.push_back(ellipsoid);
-  cases.push_back({"Weld", MakeSpec(model::JointType::kWeld, "WeldJoint", 0)});
   JointCase scap{"Scapulothoracic",
                  MakeSpec(model::JointType::kScapulothoracic, "ScapulothoracicJoint", 4)};
   scap.spec.joints[0].parameters["thoracic_ellipsoid_radii_x_y_z"] = {0.07, 0.15, 0.09};
@@ -175,7 +175,9 @@ TEST_P(JointModelTest, BiasAccelerationMatchesFiniteDifferences) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllJoints, JointModelTest, ::testing::Range(0, 11),
+// Every joint with coordinates (WeldJoint has none: WeldIsTheIdentityWithNoSpeeds below).
+INSTANTIATE_TEST_SUITE_P(AllJoints, JointModelTest,
+                         ::testing::Range(0, static_cast<int>(AllJointCases().size())),
                          [](const ::testing::TestParamInfo<int>& param_info) {
                            return AllJointCases()[param_info.param].name;
                          });
@@ -201,6 +203,27 @@ TEST(JointTransformTest, SliderTranslatesAlongX) {
   const Transform X = joint->CalcX_FM(q);
   EXPECT_TRUE(X.R.isIdentity(0));
   EXPECT_TRUE(X.p.isApprox(Vec3(-0.25, 0, 0), 1e-15));
+}
+
+TEST(JointTransformTest, WeldIsTheIdentityWithNoSpeeds) {
+  // OpenSim's WeldJoint holds M on F: X_FM is the identity whatever the state (the offsets
+  // are in X_PF and X_BM), H_FM has no columns, and the joint adds no velocity or bias.
+  const auto joint =
+      kinematics::MakeJointModel(MakeSpec(model::JointType::kWeld, "WeldJoint", 0), 0);
+  ASSERT_EQ(joint->nq(), 0);
+  ASSERT_EQ(joint->nu(), 0);
+  const std::span<const double> none;
+  const Transform X = joint->CalcX_FM(none);
+  EXPECT_EQ(X.R, Mat3::Identity());
+  EXPECT_EQ(X.p, Vec3::Zero());
+  const Mat6X H = joint->CalcH_FM(none);
+  EXPECT_EQ(H.rows(), 6);
+  EXPECT_EQ(H.cols(), 0);
+  EXPECT_EQ(joint->CalcV_FM(none, none), SpatialVec::Zero());
+  EXPECT_EQ(joint->CalcHDotU(none, none), SpatialVec::Zero());
+  // A weld given a coordinate is an error.
+  EXPECT_THROW(kinematics::MakeJointModel(MakeSpec(model::JointType::kWeld, "WeldJoint", 1), 0),
+               Error);
 }
 
 TEST(JointTransformTest, UniversalGimbalBallFreeAreBodyFixedXYZ) {

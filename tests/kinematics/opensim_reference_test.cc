@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include <sinew/functions/simm_spline.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/kinematics/body_kinematics.h>
 #include <sinew/kinematics/coordinate_motion.h>
@@ -308,17 +307,33 @@ TEST(SeedModelsTest, TripleRevoluteByHand) {
 TEST(SeedModelsTest, SimmSplineJointByHand) {
   const model::ModelSpec spec = io::ReadOsim(kChrono + "test.osim");
   const std::vector<Transform> X = DefaultPoses(spec);
-  // rotation1 about x by f(q), f the SimmSpline in the file; the other axes are constant 0.
-  const std::vector<double> x = {0,       0.174533, 0.349066, 0.523599, 0.698132, 0.872665, 1.0472,
-                                 1.22173, 1.39626,  1.5708,   1.74533,  1.91986,  2.0944};
-  const std::vector<double> y = {0.00113686, -0.00629212, -0.105582, -0.253683, -0.414245,
-                                 -0.579047,  -0.747244,   -0.91799,  -1.09044,  -1.26379,
-                                 -1.43763,   -1.61186,    -1.78634};
-  const double s = functions::SimmSpline(x, y).Calc(1.35);
+  // rotation1 about x by f(q1), f the SimmSpline in the file (13 knots x_0..x_12 = 0, 0.174533,
+  // ..., 2.0944); the other axes are constant 0; q1 defaults to 1.35, in [x_7, x_8] =
+  // [1.22173, 1.39626]. By hand, with sigma_i = f''(x_i) / 6, spacings h_i and chord slopes
+  // delta_i:
+  //   interior rows h_{i-1} sigma_{i-1} + 2 (h_{i-1} + h_i) sigma_i + h_i sigma_{i+1}
+  //     = delta_i - delta_{i-1};
+  //   end rows (FMM: the third derivative on each end interval is that of the cubic through
+  //   the four end knots) sigma_1 - sigma_0 = h_0 f[x_0..x_3] = h_0 * 1.3495439259294766 and
+  //   sigma_12 - sigma_11 = h_11 f[x_9..x_12] = h_11 * 0.0047025281261507705.
+  // The 13 x 13 system solved exactly in rational arithmetic (Python fractions, from the
+  // decimal knots of the file) gives sigma_7 = -0.009417618330514228 and
+  // sigma_8 = -0.00433747283736956. On [x_7, x_8]: h = 0.17453, dx = 1.35 - 1.22173 = 0.12827,
+  //   delta_7 = (-1.09044 + 0.91799) / 0.17453 = -0.988082278118375,
+  //   b = delta_7 - h (sigma_8 + 2 sigma_7) = -0.9840379451296196,
+  //   f(1.35) = y_7 + b dx + 3 sigma_7 dx^2 + (sigma_8 - sigma_7) / h dx^3
+  //           = -0.91799 - 0.1262225472217763 - 0.0004648496731515797 + 0.0000614301174975
+  //           = -1.0446159667774304.
+  const double s = -1.0446159667774304;
   const Mat3 R = Rot(Vec3::UnitX(), s);
   const int rod = spec.FindBody("rod");
+  // A rounding-level difference in f (1e-16 rad) moves R and p by about 1e-16.
   EXPECT_TRUE(X[rod].R.isApprox(R, 1e-14));
   EXPECT_TRUE(X[rod].p.isApprox(R * Vec3(0, -0.5, 0), 1e-14));
+  // At a knot the spline takes the knot's value: q1 = x_3 = 0.523599 gives f = y_3 = -0.253683.
+  std::vector<double> q = {0.523599};
+  const std::vector<Transform> X3 = DefaultPoses(spec, &q);
+  EXPECT_TRUE(X3[rod].R.isApprox(Rot(Vec3::UnitX(), -0.253683), 1e-14));
 }
 
 TEST(SeedModelsTest, ScapulothoracicJointPlacesTheScapulaAsOpenSim) {

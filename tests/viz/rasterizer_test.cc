@@ -1,4 +1,4 @@
-// The software renderer against hand-computed projections, and the PNG codec round trip.
+// The software renderer against hand-computed projections.
 #include <sinew/viz/rasterizer.h>
 
 #include <gtest/gtest.h>
@@ -123,19 +123,6 @@ TEST(RasterizerTest, FloorAndShadowAppearWhenAsked) {
   options.floor = false;
   image = RenderScene(scene, {Transform()}, camera, options);
   EXPECT_EQ(image.At(0, image.height - 1)[0], 245);  // no floor in the corner
-}
-
-TEST(PngTest, EncodeDecodeRoundTrip) {
-  Image image(7, 5);
-  for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = static_cast<uint8_t>(i * 37);
-  std::vector<uint8_t> png = EncodePng(image);
-  Image back = DecodePng(png, "mem.png");
-  EXPECT_EQ(back.width, 7);
-  EXPECT_EQ(back.height, 5);
-  EXPECT_EQ(back.rgb, image.rgb);
-  png[45] ^= 0xff;  // corrupt the compressed data (IDAT payload starts at byte 41)
-  EXPECT_THROW(DecodePng(png, "bad.png"), Error);
-  EXPECT_THROW(DecodePng({1, 2, 3}, "bad.png"), Error);
 }
 
 }  // namespace

@@ -1,6 +1,5 @@
 #include <sinew/forces/actuator.h>
 
-#include <algorithm>
 #include <utility>
 
 #include <sinew/common/error.h>
@@ -34,7 +33,7 @@ void Actuator::SetControlRange(double min_control, double max_control) {
 
 double Actuator::CalcActuation(double t) const {
   const double e = excitation_ ? excitation_->Calc(t) : 0.0;
-  return optimal_force_ * std::clamp(e, min_control_, max_control_);
+  return optimal_force_ * e;
 }
 
 PointActuator::PointActuator(std::string name, double optimal_force, int body, const Vec3& point,

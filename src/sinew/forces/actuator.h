@@ -1,5 +1,8 @@
 // OpenSim's ideal actuators: a force, torque or generalized force equal to
-// optimal_force x excitation(t), the excitation clamped to [min_control, max_control].
+// optimal_force x excitation(t). As in OpenSim, min_control and max_control do not clamp the
+// excitation in a forward simulation (OpenSim's CoordinateActuator, PointActuator and
+// TorqueActuator::computeActuation return control x optimal_force; the bounds serve solvers
+// such as Static Optimization and CMC).
 #pragma once
 
 #include <limits>
@@ -24,10 +27,13 @@ class Actuator : public engine::ForceElement {
   /// The excitation e(t) (dimensionless); null means the constant 0.
   void SetExcitation(functions::FunctionPtr excitation) { excitation_ = std::move(excitation); }
   const functions::FunctionPtr& excitation() const { return excitation_; }
-  /// OpenSim's min_control / max_control: bounds applied to e(t) before the gain.
+  /// OpenSim's min_control / max_control (dimensionless): kept for reporting, not applied to
+  /// e(t) (see the file comment). Throws sinew::Error when min_control > max_control.
   void SetControlRange(double min_control, double max_control);
+  double min_control() const { return min_control_; }
+  double max_control() const { return max_control_; }
 
-  /// optimal_force * clamp(e(t)): N for forces, N m for torques.
+  /// optimal_force * e(t) at time t (s): N for forces, N m for torques.
   double CalcActuation(double t) const;
 
  private:

@@ -136,7 +136,11 @@ void OpenSimParser::AssignExcitations() {
   for (const model::ControllerSpec& controller : spec_.controllers) {
     if (!IsControllerSimulated(controller)) continue;
     for (size_t i = 0; i < controller.actuators.size(); ++i) {
-      ForceInfo* info = report_.MutableForce(controller.actuators[i]);
+      // 3.x files list actuator names (actuator_list); 4.x files socket paths
+      // (socket_actuators, e.g. /forceset/act): the Report key is the path's last segment.
+      const std::string& entry = controller.actuators[i];
+      ForceInfo* info = report_.MutableForce(entry);
+      if (!info) info = report_.MutableForce(ReportName(entry, entry));
       if (!info || !info->actuator) {
         report_.AddWarning({controller.where, "/controllerset/" + controller.name,
                             "controls '" + controller.actuators[i] +

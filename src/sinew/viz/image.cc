@@ -87,7 +87,11 @@ Image DecodePng(const std::vector<uint8_t>& bytes, const std::string& name) {
     if (at + 12 + static_cast<size_t>(length) > bytes.size()) return fail("truncated chunk");
     const std::string type(bytes.begin() + at + 4, bytes.begin() + at + 8);
     const uint8_t* data = &bytes[at + 8];
+    if (crc32(0, &bytes[at + 4], length + 4) != GetU32(data + length)) {
+      return fail("chunk " + type + " fails its CRC check");
+    }
     if (type == "IHDR") {
+      if (length != 13) return fail("IHDR chunk of " + std::to_string(length) + " bytes, not 13");
       width = static_cast<int>(GetU32(data));
       height = static_cast<int>(GetU32(data + 4));
       color = data[9];

@@ -25,7 +25,8 @@ struct Image {
 std::vector<uint8_t> EncodePng(const Image& image);
 
 /// Decodes a non-interlaced 8-bit PNG (grey, grey+alpha, RGB or RGBA; alpha dropped).
-/// Throws sinew::Error naming `name` on anything else or on corrupt data.
+/// Throws sinew::Error naming `name` on anything else or on corrupt data (a chunk whose CRC
+/// does not match, a malformed header, a broken compressed stream).
 Image DecodePng(const std::vector<uint8_t>& bytes, const std::string& name);
 
 /// Reads a whole file; throws sinew::Error when it cannot be opened.
