@@ -1,4 +1,4 @@
-// `sinew export MODEL.osim [--motion FILE | --states FILE] --vis primitives|mesh
+// `sinew export MODEL.osim [--motion FILE | --states FILE] --vis primitives|mesh [--verbose]
 //  --out FILE.glb|FILE.html`: the model (and its motion) for a glTF viewer or a browser.
 #include <iostream>
 #include <memory>
@@ -6,6 +6,9 @@
 #include <vector>
 
 #include "apps/sinew/commands.h"
+#include "apps/sinew/notices.h"
+#include "apps/sinew/output_files.h"
+#include "apps/sinew/tables.h"
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
 #include <sinew/viz/export_animation.h>
@@ -22,14 +25,12 @@ struct ExportArgs {
   std::string out;
   std::vector<std::string> geometry_dirs;
   double fps = 0;
+  bool verbose = false;
 };
 
-void PrintWarnings(const Diagnostics& warnings) {
-  for (const Diagnostic& d : warnings) std::cerr << "sinew: warning: " << d.Format() << "\n";
-}
-
 void RunExport(const ExportArgs& args) {
-  const model::ModelSpec spec = io::ReadOsim(args.model);
+  model::ModelSpec spec = io::ReadOsim(args.model);
+  UseStandIns(spec, args.model);
   viz::ExportOptions options;
   options.visual.mode = viz::ParseVisType(args.vis);
   options.visual.geometry_dirs = args.geometry_dirs;
@@ -40,14 +41,15 @@ void RunExport(const ExportArgs& args) {
     motion = viz::DefaultPoseMotion(spec);
   } else {
     Diagnostics notes;
-    motion = viz::MotionFromTable(spec, io::ReadStorage(table_file), &notes);
+    motion = viz::MotionFromTable(spec, ReadTableFor(table_file, spec), &notes);
     if (!notes.empty()) {
       std::cerr << "sinew: note: " << notes.size()
                 << " coordinates or columns not matched between model and table; first: "
                 << notes.front().Format() << "\n";
     }
   }
-  PrintWarnings(viz::ExportAnimation(spec, motion, args.out, options));
+  CreateParentFolder(args.out);
+  PrintSceneWarnings(viz::ExportAnimation(spec, motion, args.out, options), args.verbose);
   std::cout << "wrote " << args.out << " (" << spec.bodies.size() << " bodies, "
             << motion.times.size() << " frames)\n";
 }
@@ -69,7 +71,9 @@ void AddExportCommand(CLI::App& app) {
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
   cmd->add_option("--fps", args->fps, "Keep at most this many frames per second (default: all)")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--out,-o", args->out, "Output file: .glb or .html")->required();
+  cmd->add_flag("--verbose", args->verbose, "List every missing mesh file, not just how many");
+  cmd->add_option("--out,-o", args->out, "Output file: .glb or .html (folders are created)")
+      ->required();
   cmd->callback([args] { RunExport(*args); });
 }
 

@@ -8,9 +8,13 @@
 #include <vector>
 
 #include "apps/sinew/commands.h"
+#include "apps/sinew/notices.h"
+#include "apps/sinew/output_files.h"
+#include "apps/sinew/tables.h"
 #include <sinew/common/error.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
+#include <sinew/io/storage_labels.h>
 #include <sinew/kinematics/body_kinematics.h>
 #include <sinew/kinematics/coordinate_motion.h>
 #include <sinew/kinematics/forward_kinematics.h>
@@ -26,7 +30,8 @@ struct Options {
 };
 
 void Run(const Options& options) {
-  const model::ModelSpec spec = io::ReadOsim(options.model);
+  model::ModelSpec spec = io::ReadOsim(options.model);
+  UseStandIns(spec, options.model);
   const kinematics::KinematicTree tree(spec);
   for (int j : tree.loop_joints()) {
     std::cerr << "sinew: note: joint '" << spec.joints[j].name
@@ -38,17 +43,23 @@ void Run(const Options& options) {
   io::Storage motion;
   kinematics::MotionColumnMap map;
   if (!options.motion.empty()) {
-    motion = io::ReadStorage(options.motion);
-    for (const Diagnostic& note : motion.notes)
-      std::cerr << "sinew: note: " << note.Format() << "\n";
+    motion = ReadTableFor(options.motion, spec);
     map = kinematics::MapMotionColumns(spec, motion.labels);
+    // Speed columns (`q_u`, `.../speed`) are not used here but do name a coordinate.
+    std::vector<std::string> names, unknown;
+    for (const model::CoordinateSpec& c : spec.coordinates) names.push_back(c.name);
     for (const std::string& label : map.unknown) {
-      std::cerr << "sinew: warning: " << options.motion << ": column '" << label
-                << "' names no coordinate of the model; ignored\n";
+      if (!io::ParseColumnLabel(label, names)) unknown.push_back(label);
     }
+    WarnUnusedColumns(unknown, options.motion, "they name no coordinate of the model");
+    std::vector<std::string> missing;
     for (int c : map.missing) {
-      std::cerr << "sinew: note: coordinate '" << spec.coordinates[c].name
-                << "' is not in the motion; it keeps its default value\n";
+      if (spec.coordinates[c].joint != model::kNone) missing.push_back(spec.coordinates[c].name);
+    }
+    if (!missing.empty()) {
+      std::cerr << "sinew: note: " << missing.size() << " coordinate(s) of the model are not in "
+                << options.motion << " (" << FirstFew(missing)
+                << "); they keep their default values\n";
     }
   } else {
     motion.time = {0.0};  // one row at the default pose
@@ -73,11 +84,7 @@ void Run(const Options& options) {
     markers.AppendRow(motion.time[r], kinematics::CalcMarkerLocationRow(spec, X_GB));
   }
 
-  std::error_code ec;
-  std::filesystem::create_directories(options.out, ec);
-  if (ec) {
-    throw Error(SourceLocation{options.out, 0}, "", "cannot create directory: " + ec.message());
-  }
+  CreateFolder(options.out);
   const std::filesystem::path dir(options.out);
   io::WriteStorage(bodies, (dir / "bodies.sto").string());
   if (!spec.markers.empty()) io::WriteStorage(markers, (dir / "markers.sto").string());

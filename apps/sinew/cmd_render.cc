@@ -1,11 +1,15 @@
-// `sinew render MODEL.osim [--states FILE --time T] --out FILE.png`: a still picture made by
-// the built-in software renderer (no display or GPU needed).
+// `sinew render MODEL.osim [--motion FILE | --states FILE] [--time T] [--verbose]
+//  --out FILE.png`: a still picture made by the built-in software renderer (no display or GPU
+// needed).
 #include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "apps/sinew/commands.h"
+#include "apps/sinew/notices.h"
+#include "apps/sinew/output_files.h"
+#include "apps/sinew/tables.h"
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
 #include <sinew/viz/gltf_writer.h>
@@ -28,10 +32,13 @@ struct RenderArgs {
   std::string out;
   std::vector<std::string> geometry_dirs;
   bool no_floor = false;
+  bool verbose = false;
 };
 
 void RunRender(const RenderArgs& args) {
-  const model::ModelSpec spec = io::ReadOsim(args.model);
+  RequireExtension(args.out, ".png", "PNG");
+  model::ModelSpec spec = io::ReadOsim(args.model);
+  UseStandIns(spec, args.model);
   viz::VisualOptions visual;
   visual.mode = viz::ParseVisType(args.vis);
   visual.geometry_dirs = args.geometry_dirs;
@@ -41,12 +48,12 @@ void RunRender(const RenderArgs& args) {
     if (args.has_time) throw Error("--time needs --states or --motion");
     X_GB = viz::DefaultPoseMotion(spec).X_GB[0];
   } else {
-    const io::Storage table = io::ReadStorage(table_file);
+    const io::Storage table = ReadTableFor(table_file, spec);
     const double t = args.has_time || table.time.empty() ? args.time : table.time.front();
     X_GB = viz::PosesAtTime(spec, table, t);
   }
   const viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
-  for (const Diagnostic& d : scene.warnings) std::cerr << "sinew: warning: " << d.Format() << "\n";
+  PrintSceneWarnings(scene, args.verbose);
   viz::RenderOptions options;
   options.width = args.width;
   options.height = args.height;
@@ -54,6 +61,7 @@ void RunRender(const RenderArgs& args) {
   const viz::Camera camera =
       viz::FrameCamera(viz::SceneBounds(scene, X_GB), viz::ParseViewDirection(args.view),
                        static_cast<double>(args.width) / args.height);
+  CreateParentFolder(args.out);
   viz::WriteFileBytes(args.out, viz::EncodePng(viz::RenderScene(scene, X_GB, camera, options)));
   std::cout << "wrote " << args.out << " (" << args.width << "x" << args.height << ")\n";
 }
@@ -79,7 +87,8 @@ void AddRenderCommand(CLI::App& app) {
   cmd->add_option("--geometry-dir", args->geometry_dirs,
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
   cmd->add_flag("--no-floor", args->no_floor, "Leave out the floor and the model's shadow");
-  cmd->add_option("--out,-o", args->out, "Output PNG file")->required();
+  cmd->add_flag("--verbose", args->verbose, "List every missing mesh file, not just how many");
+  cmd->add_option("--out,-o", args->out, "Output PNG file (.png; folders are created)")->required();
   cmd->callback([args] { RunRender(*args); });
 }
 

@@ -1,7 +1,7 @@
 // `sinew simulate MODEL.osim --duration T [--accuracy A] [--integrator NAME] [--step H]
 //  [--report-interval DT] [--initial-states FILE.sto] [--activate-actuators]
-//  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--strict] [--export FILE] [--quiet]
-//  --out DIR`: a forward simulation of what the OpenSim parser builds (skeleton, ideal
+//  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--strict] [--export FILE] [--verbose]
+//  [--quiet] --out DIR`: a forward simulation of what the OpenSim parser builds (skeleton, ideal
 // actuators and their excitations). Writes DIR/states.sto (every coordinate's value and speed,
 // OpenSim 4 labels, radians and metres) and DIR/bodies.sto (OpenSim BodyKinematics positions).
 #include <unistd.h>
@@ -16,7 +16,9 @@
 
 #include "apps/sinew/commands.h"
 #include "apps/sinew/excitation_option.h"
-#include <sinew/opensim/parser.h>
+#include "apps/sinew/notices.h"
+#include "apps/sinew/output_files.h"
+#include "apps/sinew/tables.h"
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/integrator.h>
@@ -25,6 +27,8 @@
 #include <sinew/io/storage.h>
 #include <sinew/io/storage_labels.h>
 #include <sinew/kinematics/body_kinematics.h>
+#include <sinew/opensim/parser.h>
+#include <sinew/opensim/support.h>
 #include <sinew/viz/export_animation.h>
 
 namespace sinew::cli {
@@ -40,6 +44,7 @@ struct SimulateOptions {
   std::string initial_states;
   std::string out;
   bool quiet = false;
+  bool verbose = false;
   bool activate_actuators = false;
   std::vector<std::string> excitations;
   std::string controls;
@@ -52,17 +57,24 @@ struct SimulateOptions {
 // Takes the first row of an initial-states file (OpenSim 4 paths or old names; rotational
 // columns converted when the file is in degrees) as the coordinates' default values and speeds,
 // so that locked coordinates are held at the file's value, as OpenSim's Forward tool does.
-// Coordinates the file does not name keep their defaults. Returns the row's time.
-double ApplyInitialStates(const std::string& path, model::ModelSpec& spec) {
-  io::Storage storage = io::ReadStorage(path);
-  for (const Diagnostic& note : storage.notes) {
-    std::cerr << "sinew: note: " << note.Format() << "\n";
-  }
+// Coordinates the file does not name keep their defaults; columns that name no simulated
+// coordinate (muscle states, coordinates of stand-in joints) are reported in one line, an
+// error with `strict`. Returns the row's time.
+double ApplyInitialStates(const std::string& path, bool strict, model::ModelSpec& spec) {
+  io::Storage storage = ReadTableFor(path, spec);
   if (storage.NumRows() == 0) throw Error({path, 0}, "", "the initial-states file has no rows");
-  std::vector<std::string> rotational;
+  std::vector<std::string> rotational, simulated;
   for (const model::CoordinateSpec& c : spec.coordinates) {
+    if (c.joint == model::kNone || !opensim::IsJointSimulated(spec.joints[c.joint])) continue;
+    simulated.push_back(c.name);
     if (c.motion_type == model::MotionType::kRotational) rotational.push_back(c.name);
   }
+  std::vector<std::string> unused;
+  for (const std::string& label : storage.labels) {
+    if (!io::ParseColumnLabel(label, simulated)) unused.push_back(label);
+  }
+  WarnUnusedColumns(unused, path, "they name no coordinate value or speed that is simulated",
+                    strict);
   io::ConvertDegreesToRadians(storage, rotational);
   for (model::CoordinateSpec& c : spec.coordinates) {
     const int value = io::FindCoordinateColumn(storage, c.name, io::CoordinateColumnKind::kValue);
@@ -86,7 +98,10 @@ void RunSimulate(const SimulateOptions& options) {
   if (!(options.report_interval > 0.0)) throw Error("--report-interval must be > 0");
   model::ModelSpec spec = io::ReadOsim(options.model);
   double t0 = 0.0;
-  if (!options.initial_states.empty()) t0 = ApplyInitialStates(options.initial_states, spec);
+  if (!options.initial_states.empty()) {
+    t0 = ApplyInitialStates(options.initial_states, options.strict, spec);
+  }
+  WarnNotSimulated(spec, options.model, options.strict);
   opensim::OpenSimParser parser;
   parser.ActivateActuators(options.activate_actuators);
   parser.SetControlsFile(options.controls);
@@ -99,21 +114,24 @@ void RunSimulate(const SimulateOptions& options) {
     parser.SetExcitationFunction(name, std::move(function));
   }
   const opensim::Report& report = parser.GetReport();
-  if (!options.quiet && (!report.not_simulated().empty() || !report.warnings().empty())) {
-    std::cerr << "sinew: note: " << report.not_simulated().size() << " element(s) not simulated, "
-              << report.warnings().size() << " warning(s); `sinew inspect` lists them\n";
+  if (!options.quiet && !report.warnings().empty()) {
+    std::cerr << "sinew: note: " << report.warnings().size()
+              << " warning(s) from reading and building the model; `sinew inspect " << options.model
+              << "` lists them\n";
   }
   engine::State state = engine::MakeDefaultState(*system, t0);
   engine::IntegratorSettings settings;
   settings.accuracy = options.accuracy;
   settings.step = options.step;
   const auto integrator = engine::MakeIntegrator(options.integrator, *system, settings);
-  std::filesystem::create_directories(options.out);
+  CreateFolder(options.out);
+  if (!options.export_file.empty()) CreateParentFolder(options.export_file);
 
   io::Storage states, bodies;
   states.name = "states";
-  for (const model::CoordinateSpec& c : spec.coordinates) {
-    const std::string base = "/jointset/" + spec.joints[c.joint].name + "/" + c.name;
+  // The system's coordinates, in its order (a stand-in joint's are its own, not the file's).
+  for (const engine::Coordinate& c : system->coordinates()) {
+    const std::string base = "/jointset/" + system->joints()[c.joint].name + "/" + c.name;
     states.labels.push_back(base + "/value");
     states.labels.push_back(base + "/speed");
   }
@@ -157,10 +175,8 @@ void RunSimulate(const SimulateOptions& options) {
     viz::ExportOptions export_options;
     export_options.visual.mode = viz::ParseVisType(options.vis);
     export_options.visual.geometry_dirs = options.geometry_dirs;
-    for (const Diagnostic& w :
-         viz::ExportAnimation(spec, motion, options.export_file, export_options)) {
-      if (!options.quiet) std::cerr << "sinew: warning: " << w.Format() << "\n";
-    }
+    PrintSceneWarnings(viz::ExportAnimation(spec, motion, options.export_file, export_options),
+                       options.verbose);
   }
   if (!options.quiet) {
     const auto& stats = integrator->stats();
@@ -195,14 +211,18 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--controls", options->controls,
                   "OpenSim ControlSet file (e.g. *_controls.xml) driving the actuators it names");
   cmd->add_flag("--strict", options->strict,
-                "Fail if anything in the model is approximated or not simulated");
+                "Fail (exit code 2) if anything in the model or the initial states is "
+                "approximated, not simulated or not used");
   cmd->add_option("--export", options->export_file,
                   "Also write the motion as a .glb or self-contained .html viewer");
   cmd->add_option("--vis", options->vis, "Visualization for --export: mesh (default), primitives")
       ->check(CLI::IsMember({"primitives", "mesh"}));
   cmd->add_option("--geometry-dir", options->geometry_dirs,
                   "Extra folder to search for mesh files (repeatable)");
-  cmd->add_flag("--quiet", options->quiet, "No progress bar or summary");
+  cmd->add_flag("--verbose", options->verbose,
+                "With --export: list every missing mesh file, not just how many");
+  cmd->add_flag("--quiet", options->quiet,
+                "No progress bar or summary (warnings are still printed)");
   cmd->callback([options]() { RunSimulate(*options); });
 }
 

@@ -6,9 +6,12 @@
 
 namespace sinew::cli {
 
-/// Exit codes shared by all commands.
+/// Exit codes shared by all commands: 0 for success (and --help, --version); 2 for a
+/// command-line mistake (unknown option, bad value, missing argument: the usage is printed) and
+/// for bad input (a file that cannot be read or used, --strict refusing a model); 3 for an
+/// internal error.
 inline constexpr int kExitOk = 0;
-inline constexpr int kExitUsage = 1;
+inline constexpr int kExitUsage = 2;
 inline constexpr int kExitBadInput = 2;
 
 void AddInspectCommand(CLI::App& app);

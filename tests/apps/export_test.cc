@@ -2,19 +2,19 @@
 // meshes, driven by the Hamner running IK motion (same coordinate names). The .glb is read back
 // and checked against the model file and the motion table.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
+#include <pugixml.hpp>
 #include <string>
+#include <vector>
 
+#include "apps/cli_test_util.h"
+#include "viz/glb_test_util.h"
 #include <sinew/io/mesh_file.h>
 #include <sinew/io/storage.h>
-#include "viz/glb_test_util.h"
 #include <sinew/viz/image.h>
 
 namespace sinew {
@@ -23,65 +23,52 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kData = SINEW_TEST_DATA_DIR;
-const std::string kModel = kData + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
+const std::string kModel =
+    kData + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
 const std::string kGeometry = kData + "/opensim-org/opensim-models/Geometry";
-const std::string kMotion = kData + "/opensim-org/opensim-models/Pipelines/Hamner/outputReference/ResultsIK/subject02_running_ik.mot";
+const std::string kMotion = kData +
+                            "/opensim-org/opensim-models/Pipelines/Hamner/outputReference/"
+                            "ResultsIK/subject02_running_ik.mot";
 
-struct CliRun {
-  int code = -1;
-  std::string out, err;
-};
+using testing::CliRun;
+using testing::CountOccurrences;
 
-// Runs the sinew program with `args` (no mesh folders from the environment).
-CliRun Sinew(const std::string& args, const fs::path& dir) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = "env -u SINEW_GEOMETRY_PATH " + std::string(SINEW_CLI_PATH) + " " +
-                              args + " >" + out.string() + " 2>" + err.string();
-  CliRun run;
-  const int status = std::system(command.c_str());
-  run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  };
-  run.out = slurp(out);
-  run.err = slurp(err);
-  return run;
-}
-
-int CountOccurrences(const std::string& text, const std::string& needle) {
-  int n = 0;
-  for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
-  return n;
-}
-
-class ExportTest : public ::testing::Test {
+class ExportTest : public testing::CliTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("sinew_export_test_" + std::to_string(getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-    std::ifstream in(kModel);
-    std::stringstream s;
-    s << in.rdbuf();
-    model_text_ = s.str();
+    CliTest::SetUp();
+    model_text_ = testing::ReadText(kModel);
   }
-  void TearDown() override {
-    if (!HasFailure()) fs::remove_all(dir_);
-  }
-  fs::path dir_;
   std::string model_text_;
 };
 
+// The mesh files the model names that are neither beside it nor in its Geometry/ folder (the
+// folders searched when no other is given): by an XML parser and the file system, not Sinew.
+struct MissingMeshes {
+  std::vector<std::string> files;  ///< each once, in model order
+  int geometries = 0;              ///< the <Mesh> elements that name one of them
+};
+
+MissingMeshes MeshesNotBesideTheModel() {
+  pugi::xml_document doc;
+  EXPECT_TRUE(doc.load_file(kModel.c_str()));
+  const fs::path folder = fs::path(kModel).parent_path();
+  MissingMeshes missing;
+  for (const pugi::xpath_node& n : doc.select_nodes("//BodySet//Mesh/mesh_file")) {
+    const std::string file = n.node().text().as_string();
+    if (fs::exists(folder / file) || fs::exists(folder / "Geometry" / file)) continue;
+    ++missing.geometries;
+    std::vector<std::string>& files = missing.files;
+    if (std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
+  }
+  return missing;
+}
+
 TEST_F(ExportTest, RajagopalGlbHasEveryMeshAndTheMotion) {
-  const fs::path glb_file = dir_ / "rajagopal.glb";
-  CliRun run = Sinew("export " + kModel + " --motion " + kMotion + " --vis mesh --geometry-dir " +
-                         kGeometry + " --out " + glb_file.string(),
-                     dir_);
-  ASSERT_EQ(run.code, 0) << run.err;
+  const fs::path glb_file = dir() / "rajagopal.glb";
+  CliRun run = Run("export " + kModel + " --motion " + kMotion + " --vis mesh --geometry-dir " +
+                   kGeometry + " --out " + glb_file.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(run.err.find("warning"), std::string::npos) << run.err;
   viz::testing::ParsedGlb glb = viz::testing::ParseGlb(viz::ReadFileBytes(glb_file.string()));
   const auto& doc = glb.doc;
@@ -148,14 +135,25 @@ TEST_F(ExportTest, RajagopalGlbHasEveryMeshAndTheMotion) {
   }
 }
 
-TEST_F(ExportTest, MissingMeshesWarnAndFallBackToPrimitives) {
-  // Without the shared Geometry folder only the model's own 9 meshes are found.
-  const fs::path glb_file = dir_ / "partial.glb";
-  CliRun run = Sinew("export " + kModel + " --vis mesh --out " + glb_file.string(), dir_);
-  ASSERT_EQ(run.code, 0) << run.err;
-  EXPECT_EQ(CountOccurrences(run.err, "warning"), 72) << run.err;
-  EXPECT_NE(run.err.find("mesh file 'r_patella.vtp' not found in: "), std::string::npos);
-  EXPECT_NE(run.err.find("Rajagopal/Geometry"), std::string::npos);
+TEST_F(ExportTest, MissingMeshesAreSummarizedInOneLineAndListedWithVerbose) {
+  // Without the shared Geometry folder only the model's own meshes are found.
+  const MissingMeshes missing_meshes = MeshesNotBesideTheModel();
+  const std::vector<std::string>& missing = missing_meshes.files;
+  ASSERT_GT(missing.size(), 3u);
+  const fs::path glb_file = dir() / "partial.glb";
+  CliRun run = Run("export " + kModel + " --vis mesh --out " + glb_file.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(CountOccurrences(run.err, "sinew: warning:"), 1) << run.err;
+  const std::string summary = "sinew: warning: " + std::to_string(missing.size()) +
+                              " mesh files were not found (" + missing[0] + ", " + missing[1] +
+                              ", " + missing[2] + " and " + std::to_string(missing.size() - 3) +
+                              " more); their bodies are drawn as primitives. Searched: ";
+  EXPECT_NE(run.err.find(summary), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("Rajagopal/Geometry"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find(". Add the folder that holds them with --geometry-dir DIR or "
+                         "$SINEW_GEOMETRY_PATH; --verbose lists every one\n"),
+            std::string::npos)
+      << run.err;
   viz::testing::ParsedGlb glb = viz::testing::ParseGlb(viz::ReadFileBytes(glb_file.string()));
   int vtp = 0, primitive = 0;
   for (const auto& node : glb.doc["nodes"]) {
@@ -163,24 +161,36 @@ TEST_F(ExportTest, MissingMeshesWarnAndFallBackToPrimitives) {
     const std::string source = node["extras"]["source"];
     (source == "primitive" ? primitive : vtp) += 1;
   }
-  EXPECT_EQ(vtp, 9);
+  // Every <Mesh> of the model whose file was found is drawn from it.
+  EXPECT_EQ(vtp, CountOccurrences(model_text_, "<Mesh ") - missing_meshes.geometries);
   EXPECT_GT(primitive, 0);
+  // --verbose: one line per geometry whose file is missing, then the summary.
+  run = Run("export " + kModel + " --vis mesh --verbose --out " + glb_file.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  for (const std::string& file : missing) {
+    EXPECT_NE(run.err.find("mesh file '" + file + "' not found in: "), std::string::npos) << file;
+  }
+  EXPECT_EQ(CountOccurrences(run.err, "sinew: warning:"), missing_meshes.geometries + 1) << run.err;
+  EXPECT_NE(run.err.find(summary), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("--verbose lists every one"), std::string::npos) << run.err;
+  // render prints the same summary.
+  run = Run("render " + kModel + " --vis mesh --width 40 --height 40 --out " +
+            (dir() / "partial.png").string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(CountOccurrences(run.err, "sinew: warning:"), 1) << run.err;
+  EXPECT_NE(run.err.find(summary), std::string::npos) << run.err;
 }
 
 TEST_F(ExportTest, HtmlViewerAndRenderedImage) {
-  const fs::path html = dir_ / "rajagopal.html", png = dir_ / "rajagopal.png";
-  CliRun run = Sinew("export " + kModel + " --vis primitives --out " + html.string(), dir_);
-  ASSERT_EQ(run.code, 0) << run.err;
-  std::ifstream in(html);
-  std::stringstream page;
-  page << in.rdbuf();
-  EXPECT_NE(page.str().find("<script type=\"importmap\">{\"imports\""), std::string::npos);
-  EXPECT_GT(page.str().size(), 500000u);  // three.js is inside
-  run =
-      Sinew("render " + kModel + " --motion " + kMotion + " --time 0.5 --vis mesh --geometry-dir " +
-                kGeometry + " --width 200 --height 240 --out " + png.string(),
-            dir_);
-  ASSERT_EQ(run.code, 0) << run.err;
+  const fs::path html = dir() / "rajagopal.html", png = dir() / "rajagopal.png";
+  CliRun run = Run("export " + kModel + " --vis primitives --out " + html.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string page = testing::ReadText(html);
+  EXPECT_NE(page.find("<script type=\"importmap\">{\"imports\""), std::string::npos);
+  EXPECT_GT(page.size(), 500000u);  // three.js is inside
+  run = Run("render " + kModel + " --motion " + kMotion + " --time 0.5 --vis mesh --geometry-dir " +
+            kGeometry + " --width 200 --height 240 --out " + png.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
   viz::Image image = viz::DecodePng(viz::ReadFileBytes(png.string()), png.string());
   EXPECT_EQ(image.width, 200);
   EXPECT_EQ(image.height, 240);
@@ -207,14 +217,13 @@ TEST_P(StatesExportTest, StatesFileDrivesThePendulumAsHandComputed) {
     for (std::string& label : relabelled.labels) {
       label = "/jointset/pin1/r1_z/" + std::string(label == "r1_z" ? "value" : "speed");
     }
-    states = (dir_ / "states.sto").string();
+    states = (dir() / "states.sto").string();
     io::WriteStorage(relabelled, states);
   }
-  const fs::path glb_file = dir_ / "pin.glb";
-  CliRun run = Sinew(
-      "export " + model + " --states " + states + " --vis primitives --out " + glb_file.string(),
-      dir_);
-  ASSERT_EQ(run.code, 0) << run.err;
+  const fs::path glb_file = dir() / "pin.glb";
+  CliRun run = Run("export " + model + " --states " + states + " --vis primitives --out " +
+                   glb_file.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
   viz::testing::ParsedGlb glb = viz::testing::ParseGlb(viz::ReadFileBytes(glb_file.string()));
   const io::Storage table = io::ReadStorage(states);
   const int q_column = table.FindColumn(opensim4_labels ? "/jointset/pin1/r1_z/value" : "r1_z");
@@ -251,20 +260,48 @@ TEST_P(StatesExportTest, StatesFileDrivesThePendulumAsHandComputed) {
 
 INSTANTIATE_TEST_SUITE_P(Labels, StatesExportTest, ::testing::Bool());
 
+TEST_F(ExportTest, RenderCreatesItsFolderAndWritesOnlyPng) {
+  // Folders that do not exist yet, parents too; the extension in any case.
+  const fs::path png = dir() / "new" / "deeper" / "pose.PNG";
+  CliRun run =
+      Run("render " + kModel + " --vis primitives --width 64 --height 48 --out " + png.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out, "wrote " + png.string() + " (64x48)\n");
+  const viz::Image image = viz::DecodePng(viz::ReadFileBytes(png.string()), png.string());
+  EXPECT_EQ(image.width, 64);
+  EXPECT_EQ(image.height, 48);
+  // Any other extension is refused before anything is written, naming the one supported.
+  for (const std::string name : {"pose.jpg", "pose"}) {
+    const fs::path out = dir() / "other" / name;
+    run = Run("render " + kModel + " --vis primitives --out " + out.string());
+    EXPECT_EQ(run.exit_code, 2) << name;
+    const std::string ext = fs::path(name).extension().string();
+    EXPECT_EQ(run.err, "sinew: error: " + out.string() +
+                           ": the output is written as PNG only: its name must end in .png" +
+                           (ext.empty() ? " (it has no extension)" : ", not " + ext) + "\n");
+    EXPECT_FALSE(fs::exists(dir() / "other")) << name;
+  }
+  // export makes its folder too.
+  const fs::path glb = dir() / "made" / "for" / "it.glb";
+  run = Run("export " + kModel + " --vis primitives --out " + glb.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(fs::exists(glb));
+}
+
 TEST_F(ExportTest, BadInputExitsWithCodeTwo) {
-  CliRun run = Sinew("export " + kData + "/nothing.osim --out " + (dir_ / "x.glb").string(), dir_);
-  EXPECT_EQ(run.code, 2);
+  CliRun run = Run("export " + kData + "/nothing.osim --out " + (dir() / "x.glb").string());
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("nothing.osim"), std::string::npos) << run.err;
-  run = Sinew("export " + kModel + " --vis primitives --out " + (dir_ / "x.obj").string(), dir_);
-  EXPECT_EQ(run.code, 2);
+  run = Run("export " + kModel + " --vis primitives --out " + (dir() / "x.obj").string());
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find(".glb or .html"), std::string::npos) << run.err;
-  run = Sinew("render " + kModel + " --vis primitives --time 1 --out " + (dir_ / "x.png").string(),
-              dir_);
-  EXPECT_EQ(run.code, 2);
-  run = Sinew("render " + kModel + " --motion " + kMotion + " --time 99 --vis primitives --out " +
-                  (dir_ / "x.png").string(),
-              dir_);
-  EXPECT_EQ(run.code, 2);
+  run = Run("render " + kModel + " --vis primitives --time 1 --out " + (dir() / "x.png").string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("sinew: error: --time needs --states or --motion\n"), std::string::npos)
+      << run.err;
+  run = Run("render " + kModel + " --motion " + kMotion + " --time 99 --vis primitives --out " +
+            (dir() / "x.png").string());
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("outside"), std::string::npos) << run.err;
 }
 

@@ -1,40 +1,26 @@
 // `sinew inspect`: the text summary, the --json object's fields, and exit code 2 with a precise
 // message for bad input. Runs the built CLI (SINEW_CLI_PATH).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "apps/cli_test_util.h"
+
+namespace sinew {
 namespace {
 
-struct CliRun {
-  int exit_code;
-  std::string out;
-};
-
-// Runs the CLI with `args`, capturing stdout and stderr together.
-CliRun RunCli(const std::string& args) {
-  const std::string command = std::string(SINEW_CLI_PATH) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  EXPECT_NE(pipe, nullptr);
-  std::string out;
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) out.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  return {WEXITSTATUS(status), out};
-}
+using testing::CliRun;
 
 const std::string kArm26 =
     std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-models/Models/Arm26/arm26.osim";
 
-TEST(Inspect, TextSummary) {
-  const CliRun run = RunCli("inspect " + kArm26);
-  ASSERT_EQ(run.exit_code, 0) << run.out;
+class Inspect : public testing::CliTest {};
+
+TEST_F(Inspect, TextSummary) {
+  const CliRun run = Run("inspect " + kArm26);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("format version: 40000"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("r_shoulder  CustomJoint  base -> r_humerus  [r_shoulder_elev]"),
             std::string::npos)
@@ -43,9 +29,9 @@ TEST(Inspect, TextSummary) {
   EXPECT_NE(run.out.find("/forceset/TRIlong: Thelen2003Muscle"), std::string::npos) << run.out;
 }
 
-TEST(Inspect, JsonFields) {
-  const CliRun run = RunCli("inspect --json " + kArm26);
-  ASSERT_EQ(run.exit_code, 0) << run.out;
+TEST_F(Inspect, JsonFields) {
+  const CliRun run = Run("inspect --json " + kArm26);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json j = nlohmann::json::parse(run.out);
   EXPECT_EQ(j["version"], 40000);
   ASSERT_EQ(j["bodies"].size(), 3u);  // ground is not listed
@@ -73,15 +59,18 @@ TEST(Inspect, JsonFields) {
   EXPECT_GE(j["not_simulated"].size(), 6u);
 }
 
-TEST(Inspect, BadInputExitsWithTwo) {
-  const std::string file = testing::TempDir() + "/bad_inspect.osim";
+TEST_F(Inspect, BadInputExitsWithTwo) {
+  const std::string file = Path("bad_inspect.osim");
   std::ofstream(file) << "<OpenSimDocument Version=\"40000\">\n<Model name=\"m\">\n"
                          "<BodySet><objects><Body name=\"b\"><mass>x</mass></Body>\n";
-  const CliRun run = RunCli("inspect " + file);
-  EXPECT_EQ(run.exit_code, 2) << run.out;
-  EXPECT_NE(run.out.find("bad_inspect.osim:"), std::string::npos) << run.out;
-  const CliRun missing = RunCli("inspect /nonexistent/model.osim");
-  EXPECT_EQ(missing.exit_code, 2) << missing.out;
+  const CliRun run = Run("inspect " + file);
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("sinew: error: " + file + ":"), std::string::npos) << run.err;
+  const CliRun missing = Run("inspect " + Path("nonexistent/model.osim"));
+  EXPECT_EQ(missing.exit_code, 2) << missing.err;
+  EXPECT_NE(missing.err.find("sinew: error: " + Path("nonexistent/model.osim")), std::string::npos)
+      << missing.err;
 }
 
 }  // namespace
+}  // namespace sinew

@@ -1,17 +1,15 @@
 // `sinew kinematics` end to end: files in OpenSim's layouts that match OpenSim's results,
 // the default pose, unknown motion columns reported, bad input -> exit code 2 with file:line.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
-#include <sstream>
 #include <string>
 
+#include "apps/cli_test_util.h"
 #include "kinematics/sto_table.h"
 
 namespace {
@@ -20,43 +18,30 @@ namespace fs = std::filesystem;
 using sinew::testing::ReadStoTable;
 using sinew::testing::StoTable;
 
-const std::string kData = std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-models/Pipelines/";
+const std::string kData =
+    std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-models/Pipelines/";
 const std::string kChrono =
     std::string(SINEW_TEST_DATA_DIR) + "/projectchrono/chrono/data/opensim/";
 
-struct Result {
-  int exit_code;
-  std::string err;
+using sinew::testing::CliRun;
+
+class KinematicsCliTest : public sinew::testing::CliTest {
+ protected:
+  // `sinew kinematics ARGS`.
+  CliRun Kinematics(const std::string& args) const { return Run("kinematics " + args); }
 };
 
-fs::path TempDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("sinew_kinematics_cli_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-Result RunCli(const std::string& args, const fs::path& dir) {
-  const fs::path err = dir / "stderr.txt";
-  const std::string cmd =
-      std::string(SINEW_CLI_PATH) + " kinematics " + args + " 2> " + err.string() + " > /dev/null";
-  const int status = std::system(cmd.c_str());
-  std::ifstream in(err);
-  std::stringstream text;
-  text << in.rdbuf();
-  return {WEXITSTATUS(status), text.str()};
-}
-
-TEST(KinematicsCliTest, Gait2354BodiesMatchOpenSimBodyKinematics) {
-  const fs::path dir = TempDir("gait");
-  const Result r =
-      RunCli(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim --motion " + kData +
-                 "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto --out " + (dir / "out").string(),
-             dir);
+TEST_F(KinematicsCliTest, Gait2354BodiesMatchOpenSimBodyKinematics) {
+  const fs::path& folder = dir();
+  const CliRun r = Kinematics(
+      kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim --motion " + kData +
+      "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto --out " +
+      (folder / "out").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const StoTable ours = ReadStoTable((dir / "out/bodies.sto").string());
-  const StoTable ref =
-      ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_BodyKinematics_pos_global.sto");
+  const StoTable ours = ReadStoTable((folder / "out/bodies.sto").string());
+  const StoTable ref = ReadStoTable(kData +
+                                    "Gait2354_Simbody/OutputReference/ResultsForward/"
+                                    "subject01_walk1_BodyKinematics_pos_global.sto");
   ASSERT_EQ(ours.rows.size(), ref.rows.size());
   ASSERT_EQ(ours.labels, ref.labels);  // same columns in the same order
   for (size_t row = 0; row < ref.rows.size(); ++row) {
@@ -71,12 +56,13 @@ TEST(KinematicsCliTest, Gait2354BodiesMatchOpenSimBodyKinematics) {
   }
 }
 
-TEST(KinematicsCliTest, HamnerMarkersMatchOpenSimAndUnknownColumnsAreReported) {
-  const fs::path dir = TempDir("hamner");
+TEST_F(KinematicsCliTest, HamnerMarkersMatchOpenSimAndUnknownColumnsAreReported) {
+  const fs::path& folder = dir();
   // The IK motion plus a column the model does not know.
-  const StoTable motion = ReadStoTable(kData + "Hamner/outputReference/ResultsIK/subject02_running_ik.mot");
+  const StoTable motion =
+      ReadStoTable(kData + "Hamner/outputReference/ResultsIK/subject02_running_ik.mot");
   {
-    std::ofstream out(dir / "motion.mot");
+    std::ofstream out(folder / "motion.mot");
     out.precision(17);
     out << "Coordinates\nversion=1\ninDegrees=yes\nendheader\n";
     for (const std::string& l : motion.labels) out << l << "\t";
@@ -86,13 +72,14 @@ TEST(KinematicsCliTest, HamnerMarkersMatchOpenSimAndUnknownColumnsAreReported) {
       out << "1.0\n";
     }
   }
-  const Result r = RunCli(kData + "Hamner/outputReference/subject02_registered.osim --motion " +
-                              (dir / "motion.mot").string() + " --out " + (dir / "out").string(),
-                          dir);
+  const CliRun r =
+      Kinematics(kData + "Hamner/outputReference/subject02_registered.osim --motion " +
+                 (folder / "motion.mot").string() + " --out " + (folder / "out").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("not_a_coordinate"), std::string::npos) << r.err;
-  const StoTable ours = ReadStoTable((dir / "out/markers.sto").string());
-  const StoTable ref = ReadStoTable(kData + "Hamner/outputReference/ResultsIK/ik_model_marker_locations.sto");
+  const StoTable ours = ReadStoTable((folder / "out/markers.sto").string());
+  const StoTable ref =
+      ReadStoTable(kData + "Hamner/outputReference/ResultsIK/ik_model_marker_locations.sto");
   ASSERT_EQ(ours.rows.size(), ref.rows.size());
   double max_error = 0.0;
   for (size_t c = 1; c < ref.labels.size(); ++c) {
@@ -105,11 +92,11 @@ TEST(KinematicsCliTest, HamnerMarkersMatchOpenSimAndUnknownColumnsAreReported) {
   EXPECT_LT(max_error, 1e-6);
 }
 
-TEST(KinematicsCliTest, DefaultPoseWithoutMotion) {
-  const fs::path dir = TempDir("default");
-  const Result r = RunCli(kChrono + "double_pendulum.osim --out " + (dir / "out").string(), dir);
+TEST_F(KinematicsCliTest, DefaultPoseWithoutMotion) {
+  const fs::path& folder = dir();
+  const CliRun r = Kinematics(kChrono + "double_pendulum.osim --out " + (folder / "out").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const StoTable ours = ReadStoTable((dir / "out/bodies.sto").string());
+  const StoTable ours = ReadStoTable((folder / "out/bodies.sto").string());
   ASSERT_EQ(ours.rows.size(), 1u);
   // rod2's mass centre (its origin) by hand: two 0.5 m links at -45 and -105 degrees.
   const double q1 = -0.78539816, q12 = -0.78539816 - 1.04719755;
@@ -119,18 +106,17 @@ TEST(KinematicsCliTest, DefaultPoseWithoutMotion) {
   EXPECT_NEAR(ours.rows[0][ours.Column("rod2_Oz")], q12 * 180 / std::numbers::pi, 1e-12);
 }
 
-TEST(KinematicsCliTest, BadInputGivesExitCode2WithFileAndLine) {
-  const fs::path dir = TempDir("bad");
-  Result r = RunCli((dir / "missing.osim").string() + " --out " + (dir / "out").string(), dir);
+TEST_F(KinematicsCliTest, BadInputGivesExitCode2WithFileAndLine) {
+  const fs::path& folder = dir();
+  CliRun r = Kinematics((folder / "missing.osim").string() + " --out " + (folder / "out").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("missing.osim"), std::string::npos) << r.err;
   {
-    std::ofstream out(dir / "bad.mot");
+    std::ofstream out(folder / "bad.mot");
     out << "Coordinates\nversion=1\ninDegrees=no\nendheader\ntime\tq1\n0.0\t0.1\n0.1\tabc\n";
   }
-  r = RunCli(kChrono + "double_pendulum.osim --motion " + (dir / "bad.mot").string() + " --out " +
-                 (dir / "out").string(),
-             dir);
+  r = Kinematics(kChrono + "double_pendulum.osim --motion " + (folder / "bad.mot").string() +
+                 " --out " + (folder / "out").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("bad.mot:7"), std::string::npos) << r.err;
 }

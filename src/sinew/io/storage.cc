@@ -73,6 +73,37 @@ void AppendNumber(std::string& out, double value) {
   out.append(buffer, ec == std::errc() ? ptr : buffer);
 }
 
+// The file's version=N (OpenSim reads it with atoi: 0 when absent or not a number).
+int FileVersion(const Storage& storage) {
+  const std::string version = storage.Metadata("version");
+  int number = 0;
+  std::from_chars(version.data(), version.data() + version.size(), number);
+  return number;
+}
+
+// What OpenSim's Storage reader takes the angles of a file without an inDegrees line to be:
+// an old file (version < 1) may say it in SIMM's words; an old .mot file is a SIMM motion, in
+// degrees; anything else is in radians (OpenSim's default).
+void ApplyOpenSimAngleRule(Storage& storage, const std::string& simm_angles_line,
+                           const std::string& file) {
+  if (FileVersion(storage) >= 1) return;
+  if (!simm_angles_line.empty()) {
+    storage.in_degrees_stated = true;
+    storage.in_degrees = simm_angles_line == "Angles are in degrees.";
+    return;
+  }
+  const std::string extension = file.size() >= 4 ? file.substr(file.size() - 4) : "";
+  if (EqualsIgnoringCase(extension, ".mot")) {
+    storage.in_degrees = true;
+    Diagnostic note;
+    note.where.file = file;
+    note.message =
+        "no inDegrees line in an old-format .mot file (no version=1): its angles are read as "
+        "degrees, as OpenSim reads a SIMM motion";
+    storage.notes.push_back(std::move(note));
+  }
+}
+
 }  // namespace
 
 int Storage::FindColumn(std::string_view label) const {
@@ -124,6 +155,7 @@ Storage ParseStorage(std::string_view text, const std::string& file) {
 
   // Header.
   long declared_rows = -1, declared_columns = -1;
+  std::string simm_angles_line;
   int rows_line = 0, columns_line = 0;
   std::string_view line;
   bool found_end = false;
@@ -135,6 +167,9 @@ Storage ParseStorage(std::string_view text, const std::string& file) {
     }
     const size_t equals = trimmed.find('=');
     if (equals == std::string_view::npos) {
+      if (trimmed == "Angles are in degrees." || trimmed == "Angles are in radians.") {
+        simm_angles_line = std::string(trimmed);
+      }
       if (line_number == 1) {
         storage.name = std::string(trimmed);
       } else if (!trimmed.empty()) {
@@ -151,6 +186,7 @@ Storage ParseStorage(std::string_view text, const std::string& file) {
       (key == "nRows" ? declared_rows : declared_columns) = static_cast<long>(number);
       (key == "nRows" ? rows_line : columns_line) = line_number;
     } else if (key == "inDegrees") {
+      storage.in_degrees_stated = true;
       if (EqualsIgnoringCase(value, "yes") || EqualsIgnoringCase(value, "true")) {
         storage.in_degrees = true;
       } else if (EqualsIgnoringCase(value, "no") || EqualsIgnoringCase(value, "false")) {
@@ -166,6 +202,7 @@ Storage ParseStorage(std::string_view text, const std::string& file) {
     }
   }
   if (!found_end) fail("no 'endheader' line: not an OpenSim storage file");
+  if (!storage.in_degrees_stated) ApplyOpenSimAngleRule(storage, simm_angles_line, file);
 
   // Labels: the first non-blank line after the header.
   std::vector<std::string> labels;

@@ -20,8 +20,15 @@ struct Storage {
   std::vector<std::pair<std::string, std::string>> metadata;
   /// Other header lines (free text, SIMM header lines), trimmed, blank ones dropped.
   std::vector<std::string> comments;
-  /// The header's inDegrees flag (false when absent): angles in the file are in degrees.
+  /// Angles in the file are in degrees: the header's inDegrees flag or, when the header has
+  /// none, what OpenSim's Storage reader assumes (see in_degrees_stated).
   bool in_degrees = false;
+  /// True when the header states the unit: an inDegrees line, or in an old file (no version
+  /// line, or version=0) the SIMM line "Angles are in degrees." / "Angles are in radians.".
+  /// Otherwise OpenSim's rule applies: an old .mot file is a SIMM motion, in degrees; anything
+  /// else is in radians. (OpenSim reads an old .mot as degrees even under inDegrees=no; Sinew
+  /// follows a stated unit.)
+  bool in_degrees_stated = false;
   /// Label of the first column, normally "time".
   std::string time_label = "time";
   /// Labels of the data columns after the first.

@@ -126,6 +126,9 @@ std::unique_ptr<JointModel> MakeJointModel(const model::ModelSpec& spec, int joi
     throw Error("MakeJointModel: joint index out of range");
   }
   const model::JointSpec& joint = spec.joints[joint_index];
+  if (!IsJointTypeModeled(joint.kind)) {
+    Fail(joint, "joint type " + joint.type + " is not supported by the kinematics");
+  }
   const Vec3 x = Vec3::UnitX(), y = Vec3::UnitY(), z = Vec3::UnitZ();
   switch (joint.kind) {
     case model::JointType::kPin:
@@ -183,9 +186,13 @@ std::unique_ptr<JointModel> MakeJointModel(const model::ModelSpec& spec, int joi
       return MakeCustom(joint);
     case model::JointType::kConstantCurvature:
     case model::JointType::kUnknown:
-      break;
+      break;  // refused above
   }
   Fail(joint, "joint type " + joint.type + " is not supported by the kinematics");
+}
+
+bool IsJointTypeModeled(model::JointType kind) {
+  return kind != model::JointType::kConstantCurvature && kind != model::JointType::kUnknown;
 }
 
 }  // namespace sinew::kinematics

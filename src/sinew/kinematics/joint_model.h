@@ -45,7 +45,11 @@ class JointModel {
   }
 };
 
-/// Builds the JointModel of `spec.joints[joint_index]` (every JointType but kUnknown).
+/// True when MakeJointModel can model joints of this type: every JointType except
+/// kConstantCurvature and kUnknown. The engine builds the same set (it uses these models).
+bool IsJointTypeModeled(model::JointType kind);
+
+/// Builds the JointModel of `spec.joints[joint_index]` (a type IsJointTypeModeled accepts).
 /// Throws sinew::Error for a joint it cannot model.
 std::unique_ptr<JointModel> MakeJointModel(const model::ModelSpec& spec, int joint_index);
 

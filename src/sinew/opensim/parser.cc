@@ -20,31 +20,18 @@ std::string ReportName(const std::string& path, const std::string& name) {
   return path.empty() || slash == std::string::npos ? name : path.substr(slash + 1);
 }
 
-// Replaces every joint of unknown type by a ball joint with three new coordinates, F and M
-// coincident at the start (the seed's stand-in). Returns which joints were replaced.
+// Replaces the joints the engine cannot build by stand-ins (ReplaceWithStandIns), reporting
+// each. Returns which joints were replaced.
 std::vector<bool> ReplaceUnknownJoints(model::ModelSpec& spec, Report& report) {
   std::vector<bool> replaced(spec.joints.size(), false);
-  for (size_t j = 0; j < spec.joints.size(); ++j) {
-    model::JointSpec& joint = spec.joints[j];
-    if (joint.kind != model::JointType::kUnknown) continue;
-    replaced[j] = true;
+  for (const StandIn& standin : ReplaceWithStandIns(spec)) {
+    const model::JointSpec& joint = spec.joints[standin.joint];
+    replaced[standin.joint] = true;
     report.AddWarning({joint.where, joint.path,
                        "joint type '" + joint.type +
-                           "' is unknown: replaced by a spherical stand-in at its frames"});
-    for (int c : joint.coordinates) {
+                           "' cannot be simulated: replaced by a spherical stand-in at its frames"});
+    for (int c : standin.coordinates) {
       report.AddNotSimulated(spec.coordinates[c].path + ": coordinate of stand-in joint");
-      spec.coordinates[c].joint = model::kNone;
-    }
-    joint.kind = model::JointType::kBall;
-    joint.coordinates.clear();
-    for (const char* axis : {"x", "y", "z"}) {
-      model::CoordinateSpec c;
-      c.name = joint.name + "_standin_r" + axis;
-      c.path = joint.path + "/" + c.name;
-      c.joint = static_cast<int>(j);
-      c.where = joint.where;
-      joint.coordinates.push_back(static_cast<int>(spec.coordinates.size()));
-      spec.coordinates.push_back(std::move(c));
     }
   }
   return replaced;

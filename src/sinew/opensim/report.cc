@@ -69,12 +69,12 @@ void Report::Print(std::ostream& out) const {
   }
   out << "Joints (" << joints_.size() << ")\n";
   for (const auto& [key, info] : joints_) {
-    out << "  " << std::left << std::setw(28) << key << std::setw(22) << info.type
+    out << "  " << std::left << std::setw(27) << key << " " << std::setw(21) << info.type << " "
         << JointFormName(info.form) << (info.standin ? "  STAND-IN" : "") << "\n";
   }
   out << "Forces (" << forces_.size() << ")\n";
   for (const auto& [key, info] : forces_) {
-    out << "  " << std::left << std::setw(28) << key << std::setw(22) << info.type
+    out << "  " << std::left << std::setw(27) << key << " " << std::setw(21) << info.type << " "
         << (info.load ? "simulated" : "not simulated");
     if (info.actuator) out << ", excitation: " << info.excitation_source;
     out << "\n";

@@ -29,7 +29,8 @@ struct JointInfo {
   std::string type;  ///< The OpenSim class, as written in the file.
   int joint = -1;    ///< Index into engine::System::joints().
   engine::JointForm form = engine::JointForm::kParameterized;  ///< How the engine imposes it.
-  bool standin = false;  ///< True when an unknown joint type was replaced by a ball joint.
+  bool standin = false;  ///< True when a joint the engine cannot model was replaced by a ball
+                         ///< joint (opensim::ReplaceWithStandIns).
 };
 
 /// A force (actuator, spring, muscle, ...) read from the file and what was made of it.

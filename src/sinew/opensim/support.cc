@@ -1,11 +1,14 @@
 #include <sinew/opensim/support.h>
 
+#include <array>
+
+#include <sinew/kinematics/joint_model.h>
 #include <sinew/opensim/internal/actuator_builder.h>
 
 namespace sinew::opensim {
 
 bool IsJointSimulated(const model::JointSpec& joint) {
-  return joint.kind != model::JointType::kUnknown;
+  return kinematics::IsJointTypeModeled(joint.kind);
 }
 bool IsForceSimulated(const model::ForceSpec& force) {
   return force.applies_force && internal::IsIdealActuator(force.type);
@@ -17,36 +20,101 @@ bool IsControllerSimulated(const model::ControllerSpec& controller) {
 bool IsContactGeometrySimulated(const model::ContactGeometrySpec& /*contact*/) { return false; }
 bool IsWrapObjectSimulated(const model::WrapObjectSpec& /*wrap*/) { return false; }
 
-std::vector<std::string> ListNotSimulated(const model::ModelSpec& spec) {
-  std::vector<std::string> lines;
+std::vector<NotSimulatedElement> FindNotSimulated(const model::ModelSpec& spec) {
+  std::vector<NotSimulatedElement> out;
   for (const model::JointSpec& j : spec.joints) {
-    if (!IsJointSimulated(j)) lines.push_back(j.path + ": " + j.type);
+    if (!IsJointSimulated(j)) out.push_back({ElementKind::kJoint, j.path, j.type});
   }
   for (const model::ForceSpec& f : spec.forces) {
-    if (!IsForceSimulated(f)) lines.push_back(f.path + ": " + f.type);
+    if (IsForceSimulated(f)) continue;
+    const bool muscle = f.type.ends_with("Muscle");
+    out.push_back({muscle ? ElementKind::kMuscle : ElementKind::kForce, f.path, f.type});
   }
   for (const model::ConstraintSpec& c : spec.constraints) {
-    if (!IsConstraintSimulated(c)) lines.push_back(c.path + ": " + c.type);
+    if (!IsConstraintSimulated(c)) out.push_back({ElementKind::kConstraint, c.path, c.type});
   }
   for (const model::ControllerSpec& c : spec.controllers) {
-    if (!IsControllerSimulated(c)) lines.push_back("/controllerset/" + c.name + ": " + c.type);
+    if (!IsControllerSimulated(c)) {
+      out.push_back({ElementKind::kController, "/controllerset/" + c.name, c.type});
+    }
   }
   for (const model::ContactGeometrySpec& c : spec.contact_geometry) {
     if (!IsContactGeometrySimulated(c)) {
-      lines.push_back("/contactgeometryset/" + c.name + ": " + c.type);
+      out.push_back({ElementKind::kContactGeometry, "/contactgeometryset/" + c.name, c.type});
     }
   }
   for (const model::BodySpec& b : spec.bodies) {
     for (const model::WrapObjectSpec& w : b.wrap_objects) {
       if (!IsWrapObjectSimulated(w)) {
-        lines.push_back(b.path + "/wrapobjectset/" + w.name + ": " + w.type);
+        out.push_back({ElementKind::kWrapObject, b.path + "/wrapobjectset/" + w.name, w.type});
       }
     }
   }
   for (const model::Element& e : spec.other_components) {
-    lines.push_back("/" + (e.name.empty() ? e.tag : e.name) + ": " + e.tag);
+    out.push_back({ElementKind::kOther, "/" + (e.name.empty() ? e.tag : e.name), e.tag});
   }
+  return out;
+}
+
+std::vector<std::string> ListNotSimulated(const model::ModelSpec& spec) {
+  std::vector<std::string> lines;
+  for (const NotSimulatedElement& e : FindNotSimulated(spec))
+    lines.push_back(e.path + ": " + e.type);
   return lines;
+}
+
+std::string CountByKind(const std::vector<NotSimulatedElement>& elements) {
+  constexpr int kKinds = static_cast<int>(ElementKind::kOther) + 1;
+  std::array<int, kKinds> counts{};
+  for (const NotSimulatedElement& e : elements) ++counts[static_cast<int>(e.kind)];
+  const bool muscles = counts[static_cast<int>(ElementKind::kMuscle)] > 0;
+  // Singular and plural names, in ElementKind order.
+  const std::array<std::array<const char*, 2>, kKinds> names = {{
+      {"joint", "joints"},
+      {"muscle", "muscles"},
+      {muscles ? "other force" : "force", muscles ? "other forces" : "forces"},
+      {"constraint", "constraints"},
+      {"controller", "controllers"},
+      {"contact geometry", "contact geometries"},
+      {"wrap object", "wrap objects"},
+      {"other component", "other components"},
+  }};
+  std::vector<std::string> parts;
+  for (int k = 0; k < kKinds; ++k) {
+    if (counts[k] > 0) {
+      parts.push_back(std::to_string(counts[k]) + " " + names[k][counts[k] == 1 ? 0 : 1]);
+    }
+  }
+  std::string text;
+  for (size_t i = 0; i < parts.size(); ++i) {
+    if (i > 0) text += i + 1 == parts.size() ? " and " : ", ";
+    text += parts[i];
+  }
+  return text;
+}
+
+std::vector<StandIn> ReplaceWithStandIns(model::ModelSpec& spec) {
+  std::vector<StandIn> replaced;
+  for (size_t j = 0; j < spec.joints.size(); ++j) {
+    model::JointSpec& joint = spec.joints[j];
+    if (IsJointSimulated(joint)) continue;
+    StandIn standin{static_cast<int>(j), joint.coordinates};
+    for (int c : joint.coordinates) spec.coordinates[c].joint = model::kNone;
+    joint.kind = model::JointType::kBall;
+    joint.coordinates.clear();
+    joint.spatial_transform.clear();
+    for (const char* axis : {"x", "y", "z"}) {
+      model::CoordinateSpec c;
+      c.name = joint.name + "_standin_r" + axis;
+      c.path = joint.path + "/" + c.name;
+      c.joint = static_cast<int>(j);
+      c.where = joint.where;
+      joint.coordinates.push_back(static_cast<int>(spec.coordinates.size()));
+      spec.coordinates.push_back(std::move(c));
+    }
+    replaced.push_back(std::move(standin));
+  }
+  return replaced;
 }
 
 }  // namespace sinew::opensim

@@ -25,7 +25,7 @@ BodyMotion ThinMotion(const BodyMotion& motion, double max_fps) {
   return out;
 }
 
-Diagnostics ExportAnimation(const model::ModelSpec& spec, const BodyMotion& motion,
+VisualScene ExportAnimation(const model::ModelSpec& spec, const BodyMotion& motion,
                             const std::string& path, const ExportOptions& options) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -58,7 +58,7 @@ Diagnostics ExportAnimation(const model::ModelSpec& spec, const BodyMotion& moti
   } else {
     WriteFileBytes(path, glb);
   }
-  return scene.warnings;
+  return scene;
 }
 
 }  // namespace sinew::viz

@@ -25,9 +25,10 @@ BodyMotion ThinMotion(const BodyMotion& motion, double max_fps);
 
 /// Writes `spec` moving along `motion` (body poses X_GB per frame; one frame for a still pose)
 /// to `path`: a binary glTF 2.0 file when it ends in .glb, a self-contained HTML viewer when it
-/// ends in .html/.htm. Returns the warnings (missing meshes, ...). Throws sinew::Error for
-/// another extension, a motion whose frames do not cover every body, or an unwritable file.
-Diagnostics ExportAnimation(const model::ModelSpec& spec, const BodyMotion& motion,
+/// ends in .html/.htm. Returns the scene it drew: its `warnings` and `missing_meshes` say what
+/// could not be drawn as asked. Throws sinew::Error for another extension, a motion whose
+/// frames do not cover every body, or an unwritable file.
+VisualScene ExportAnimation(const model::ModelSpec& spec, const BodyMotion& motion,
                             const std::string& path, const ExportOptions& options);
 
 }  // namespace sinew::viz

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 #include <sinew/io/mesh_file.h>
 #include <sinew/kinematics/body_depths.h>
@@ -77,6 +78,7 @@ class SceneBuilder {
 
   VisualScene Build() {
     VisualScene scene;
+    if (options_.mode == VisType::kMesh) scene.mesh_dirs = dirs_;
     // Unreached bodies (depth -1) are coloured as the root.
     std::vector<int> depth = kinematics::CalcBodyDepths(spec_);
     for (int& d : depth) d = std::max(d, 0);
@@ -90,7 +92,7 @@ class SceneBuilder {
       if (options_.mode == VisType::kMesh) {
         for (const model::GeometrySpec& g : spec_.bodies[b].geometry) {
           if (!g.visible) continue;
-          if (!AddGeometry(b, g, body, scene.warnings)) fallback = true;
+          if (!AddGeometry(b, g, body, scene)) fallback = true;
         }
       }
       if (fallback) AddPrimitives(spec_, b, radius, DepthColor(depth[b], max_depth), body);
@@ -101,10 +103,10 @@ class SceneBuilder {
 
  private:
   // Adds one attached geometry; false when the body should fall back to primitives.
-  bool AddGeometry(int b, const model::GeometrySpec& g, VisualBody& body, Diagnostics& warnings) {
+  bool AddGeometry(int b, const model::GeometrySpec& g, VisualBody& body, VisualScene& scene) {
     const std::string component = spec_.bodies[b].path + "/" + g.name;
     auto warn = [&](const std::string& message) {
-      warnings.push_back({SourceLocation{spec_.file, 0}, component, message});
+      scene.warnings.push_back({SourceLocation{spec_.file, 0}, component, message});
     };
     VisualPart part;
     part.name = g.name;
@@ -118,7 +120,12 @@ class SceneBuilder {
       // OpenSim writes "Unassigned" (or nothing) for a mesh without a file: nothing to draw.
       if (g.mesh_file.empty() || g.mesh_file == "Unassigned") return true;
       part.mesh = LoadMesh(g.mesh_file, warn);
-      if (!part.mesh) return false;
+      if (!part.mesh) {
+        if (not_found_.count(g.mesh_file) > 0) {
+          scene.missing_meshes.push_back({g.mesh_file, scene.warnings.size() - 1});
+        }
+        return false;
+      }
       part.source = g.mesh_file;
     } else if (g.type == "Sphere") {
       part.mesh = UnitSphere();
@@ -208,6 +215,7 @@ class SceneBuilder {
       std::string searched;
       for (const std::string& d : dirs_) searched += (searched.empty() ? "" : ", ") + d;
       warn("mesh file '" + file + "' not found in: " + searched + "; drawn as primitives");
+      not_found_.insert(file);
     }
     cache_[file] = mesh;
     return mesh;
@@ -217,6 +225,7 @@ class SceneBuilder {
   const VisualOptions& options_;
   std::vector<std::string> dirs_;
   std::map<std::string, std::shared_ptr<const io::TriangleMesh>> cache_;
+  std::set<std::string> not_found_;  // files of cache_ found in no folder
 };
 
 }  // namespace

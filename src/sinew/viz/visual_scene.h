@@ -45,10 +45,21 @@ struct VisualBody {
   std::vector<VisualPart> parts;
 };
 
+/// A geometry whose mesh file was found in none of the searched folders.
+struct MissingMesh {
+  std::string file;    ///< The mesh file as the model names it (e.g. "r_patella.vtp").
+  size_t warning = 0;  ///< Index of its entry in VisualScene::warnings.
+};
+
 /// Everything drawable in a model, one entry per spec body in the same order.
 struct VisualScene {
   std::vector<VisualBody> bodies;
   Diagnostics warnings;  ///< Missing meshes, unsupported shapes, fallbacks.
+  /// One entry per geometry whose mesh file was not found (each also in `warnings`), in
+  /// model order; a file several geometries use appears once per geometry.
+  std::vector<MissingMesh> missing_meshes;
+  /// The folders searched for mesh files, in search order (kMesh mode only).
+  std::vector<std::string> mesh_dirs;
 };
 
 /// Options for BuildVisualScene.

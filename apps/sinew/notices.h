@@ -1,0 +1,35 @@
+// What a `sinew` run tells the user about the parts of a model it leaves out or replaces, and
+// about tables and meshes it could not use as given: each kind of issue in ONE stderr line with
+// a count, the first few names and where to find the rest.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <sinew/model/model_spec.h>
+#include <sinew/viz/visual_scene.h>
+
+namespace sinew::cli {
+
+/// "a, b, c and 2 more" from the first `shown` of `names` ("" when empty).
+std::string FirstFew(const std::vector<std::string>& names, size_t shown = 3);
+
+/// What `sinew simulate` leaves out of `spec` (opensim::FindNotSimulated: muscles, other
+/// forces, constraints, wrap objects, contact geometry, controllers..., and joints replaced by
+/// spherical stand-ins) as one warning line on stderr naming `model_path` for `sinew inspect`.
+/// With `strict` it is a sinew::Error instead (exit code 2). Nothing when nothing is left out.
+void WarnNotSimulated(const model::ModelSpec& spec, const std::string& model_path, bool strict);
+
+/// For the commands that pose bodies from coordinates (kinematics, export, render): replaces
+/// the joints the engine cannot model by their stand-ins (opensim::ReplaceWithStandIns), with
+/// one warning line naming them, and one note line when the model has constraints, which such
+/// commands do not enforce.
+void UseStandIns(model::ModelSpec& spec, const std::string& model_path);
+
+/// Prints the warnings of a visual scene: missing mesh files as ONE line (count, first few
+/// names, the folders searched, and how to add one with --geometry-dir or
+/// $SINEW_GEOMETRY_PATH), each missing mesh on its own line when `verbose`, and every other
+/// warning as it is.
+void PrintSceneWarnings(const viz::VisualScene& scene, bool verbose);
+
+}  // namespace sinew::cli

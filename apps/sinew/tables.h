@@ -1,0 +1,25 @@
+// Motion and states tables (.mot/.sto) read for a model by the `sinew` commands, with ONE
+// stderr line for each thing the reader or the model could not use as written.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <sinew/io/storage.h>
+#include <sinew/model/model_spec.h>
+
+namespace sinew::cli {
+
+/// Reads `path` for `spec`: prints the reader's notes, and one warning when the file has no
+/// inDegrees line, so that its angles are read as radians (as OpenSim reads such a file), yet
+/// a rotational coordinate's values go beyond 2*pi rad in magnitude, which looks like degrees.
+/// Throws sinew::Error for an unreadable file.
+io::Storage ReadTableFor(const std::string& path, const model::ModelSpec& spec);
+
+/// One warning line for the `labels` of table `path` that a command could not use: their
+/// count, the first few, and `reason` ("they name no coordinate of the model"). With
+/// `strict`, a sinew::Error instead (exit code 2). Nothing when `labels` is empty.
+void WarnUnusedColumns(const std::vector<std::string>& labels, const std::string& path,
+                       const std::string& reason, bool strict = false);
+
+}  // namespace sinew::cli

@@ -1,0 +1,139 @@
+// A run that leaves parts of a model out says so ONCE on stderr, with counts by kind taken
+// from the model file itself, and names the `sinew inspect` command that lists them; --strict
+// makes it an error (exit code 2). Columns of an initial-states file that name no simulated
+// coordinate are reported the same way.
+#include <gtest/gtest.h>
+
+#include <pugixml.hpp>
+#include <string>
+
+#include "apps/cli_test_util.h"
+#include "engine/test_models.h"
+
+namespace sinew {
+namespace {
+
+using testing::CliRun;
+using testing::CountOccurrences;
+
+const std::string kData = SINEW_TEST_DATA_DIR;
+const std::string kRajagopal =
+    kData + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
+const std::string kArm26 = kData + "/opensim-org/opensim-models/Models/Arm26/arm26.osim";
+
+// Counts in the file itself (an XML parser, not Sinew's reader): the ForceSet's elements whose
+// class ends in "Muscle", its ideal actuators (the only forces Sinew simulates: Point, Torque
+// and CoordinateActuator) and its other forces, the ConstraintSet's elements, and every body's
+// WrapObjectSet's.
+struct FileCounts {
+  int muscles = 0, ideal_actuators = 0, other_forces = 0, constraints = 0, wrap_objects = 0;
+};
+
+FileCounts CountInFile(const std::string& osim) {
+  pugi::xml_document doc;
+  EXPECT_TRUE(doc.load_file(osim.c_str()));
+  FileCounts counts;
+  for (const pugi::xpath_node& n : doc.select_nodes("//ForceSet/objects/*")) {
+    const std::string tag = n.node().name();
+    if (tag.ends_with("Muscle")) {
+      ++counts.muscles;
+    } else if (tag == "PointActuator" || tag == "TorqueActuator" || tag == "CoordinateActuator") {
+      ++counts.ideal_actuators;
+    } else {
+      ++counts.other_forces;
+    }
+  }
+  counts.constraints = static_cast<int>(doc.select_nodes("//ConstraintSet/objects/*").size());
+  counts.wrap_objects =
+      static_cast<int>(doc.select_nodes("//BodySet//WrapObjectSet/objects/*").size());
+  return counts;
+}
+
+class NotSimulatedTest : public testing::CliTest {};
+
+TEST_F(NotSimulatedTest, SimulateSaysOnceWhatIsLeftOutByKind) {
+  const FileCounts counts = CountInFile(kRajagopal);
+  ASSERT_GT(counts.muscles, 0);
+  ASSERT_GT(counts.constraints, 0);
+  ASSERT_GT(counts.wrap_objects, 0);
+  ASSERT_GT(counts.ideal_actuators, 0);  // simulated, so not counted below
+  ASSERT_EQ(counts.other_forces, 0);     // so the sentence lists exactly these three kinds
+  const std::string expected =
+      "sinew: warning: " + std::to_string(counts.muscles) + " muscles, " +
+      std::to_string(counts.constraints) + " constraints and " +
+      std::to_string(counts.wrap_objects) +
+      " wrap objects are NOT simulated: results are those of the skeleton without them. List "
+      "them with: sinew inspect " +
+      kRajagopal + "\n";
+  const CliRun run = Run("simulate " + kRajagopal + " --duration 0 --quiet --out " + Path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(CountOccurrences(run.err, expected), 1) << run.err;
+  EXPECT_EQ(CountOccurrences(run.err, "NOT simulated"), 1) << run.err;
+  // The summary says the same without --quiet.
+  const CliRun loud = Run("simulate " + kRajagopal + " --duration 0 --out " + Path("out"));
+  ASSERT_EQ(loud.exit_code, 0) << loud.err;
+  EXPECT_EQ(CountOccurrences(loud.err, expected), 1) << loud.err;
+}
+
+TEST_F(NotSimulatedTest, StrictMakesItAnError) {
+  const FileCounts counts = CountInFile(kArm26);
+  const CliRun run =
+      Run("simulate " + kArm26 + " --duration 0 --strict --quiet --out " + Path("out"));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("sinew: error: " + kArm26 +
+                         ": --strict: " + std::to_string(counts.muscles) + " muscles and " +
+                         std::to_string(counts.wrap_objects) + " wrap objects are NOT simulated"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("out/states.sto")));
+  // A model with nothing left out passes --strict, silently.
+  const CliRun clean = Run("simulate " + kData +
+                           "/projectchrono/chrono/data/opensim/double_pendulum.osim "
+                           "--duration 0.01 --strict --quiet --out " +
+                           Path("clean"));
+  EXPECT_EQ(clean.exit_code, 0) << clean.err;
+  EXPECT_EQ(clean.err, "");
+}
+
+// arm26 from a states file as OpenSim 4 writes them: coordinate values and speeds, and the
+// muscles' activation and fiber_length, which Sinew does not simulate.
+TEST_F(NotSimulatedTest, UnusableInitialStateColumnsAreReportedInOneLine) {
+  const std::string states = Path("arm26_states.sto");
+  {
+    std::ofstream out(states);
+    out << "states\nversion=1\ninDegrees=no\nendheader\ntime"
+           "\t/jointset/r_shoulder/r_shoulder_elev/value\t/jointset/r_shoulder/r_shoulder_elev/"
+           "speed"
+           "\t/jointset/r_elbow/r_elbow_flex/value\t/jointset/r_elbow/r_elbow_flex/speed";
+    for (const char* muscle : {"TRIlong", "TRIlat", "TRImed", "BIClong", "BICshort", "BRA"}) {
+      out << "\t/forceset/" << muscle << "/activation\t/forceset/" << muscle << "/fiber_length";
+    }
+    out << "\n0\t0.1\t0\t0.5\t0";
+    for (int i = 0; i < 6; ++i) out << "\t0.05\t0.1";
+    out << "\n";
+  }
+  const std::string base = "simulate " + kArm26 + " --duration 0 --quiet --initial-states " +
+                           states + " --out " + Path("out");
+  const CliRun run = Run(base);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(CountOccurrences(run.err, "are not used"), 1) << run.err;
+  EXPECT_NE(run.err.find("sinew: warning: " + states +
+                         ": 12 columns are not used (/forceset/TRIlong/activation, "
+                         "/forceset/TRIlong/fiber_length, /forceset/TRIlat/activation and 9 "
+                         "more): they name no coordinate value or speed that is simulated\n"),
+            std::string::npos)
+      << run.err;
+  // The coordinates were used: the first row of states.sto is the file's.
+  const auto columns = engine::testing::ReadStoColumns(Path("out/states.sto"));
+  EXPECT_EQ(columns.at("/jointset/r_shoulder/r_shoulder_elev/value").front(), 0.1);
+  EXPECT_EQ(columns.at("/jointset/r_elbow/r_elbow_flex/value").front(), 0.5);
+  // --strict refuses the file (the columns come before the model's own muscles).
+  const CliRun strict = Run(base + " --strict");
+  EXPECT_EQ(strict.exit_code, 2) << strict.err;
+  EXPECT_NE(strict.err.find("sinew: error: " + states + ": --strict: 12 columns are not used"),
+            std::string::npos)
+      << strict.err;
+}
+
+}  // namespace
+}  // namespace sinew
