@@ -39,7 +39,7 @@ std::string TempDir(const std::string& name) {
   return dir.string();
 }
 
-TEST(ProjectionFailureTest, AbsurdFixedStepEndsWithACleanError) {
+TEST(SimulateProjectionFailureTest, AbsurdFixedStepEndsWithACleanError) {
   for (const std::string integrator : {"euler", "implicit-euler"}) {
     SCOPED_TRACE(integrator);
     const std::string out = TempDir(integrator);
@@ -63,7 +63,7 @@ TEST(ProjectionFailureTest, AbsurdFixedStepEndsWithACleanError) {
 
 // The same model and integrator with an ordinary step simulate fine: the failure above is the
 // step's, not the model's.
-TEST(ProjectionFailureTest, SameModelWithAnOrdinaryStepSimulates) {
+TEST(SimulateProjectionFailureTest, SameModelWithAnOrdinaryStepSimulates) {
   const std::string out = TempDir("ordinary");
   const CliResult result = RunCli(
       "simulate " + kModel + " --duration 0.1 --integrator euler --step 1e-3 --quiet --out " + out);
