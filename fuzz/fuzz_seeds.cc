@@ -117,6 +117,13 @@ int main(int argc, char** argv) {
   auto write = [&](const std::string& name, const std::string& bytes) {
     std::ofstream(dir + "/" + name, std::ios::binary) << bytes;
   };
+  // A minimal ascii triangle: small inputs let mutations reach the counts and arrays quickly.
+  write("vtp_ascii_triangle",
+        "0<VTKFile type=\"PolyData\"><PolyData><Piece NumberOfPoints=\"3\" NumberOfPolys=\"1\">"
+        "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 "
+        "0 1 0</DataArray></Points><Polys><DataArray type=\"Int32\" Name=\"connectivity\" "
+        "format=\"ascii\">0 1 2</DataArray><DataArray type=\"Int32\" Name=\"offsets\" "
+        "format=\"ascii\">3</DataArray></Polys></Piece></PolyData></VTKFile>");
   write("vtp_binary", "0" + SquareVtp({}));
   write("vtp_zlib", "0" + SquareVtp({true}));
   write("vtp_zlib_blocks", "0" + SquareVtp({true, false, false, 20}));
