@@ -1,20 +1,84 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer target of the .osim reader with clang + ASan and runs it for a bounded
-# time (default 60 s), seeded with the small test models. Usage: scripts/fuzz.sh [seconds].
-# Exit status is non-zero only when the fuzzer finds a crash, a leak or a timeout.
+# Builds Sinew's libFuzzer targets with clang + ASan + UBSan (in build/fuzz) and runs each of them
+# in turn, the fuzzing time SECONDS (default 60) split evenly between them (at least 1 s each);
+# the build does not count. Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
+#   targets: osim_reader storage_reader mesh_reader controls_reader simulate (default: all)
+# Seeds: the small files of tests/data (.osim, .sto/.mot, .vtp, ControlSet .xml) plus the
+# generated ones fuzz_seeds writes; corpora grow across runs in build/fuzz/corpus/<target>.
+# Findings go to build/fuzz/artifacts/, each run's log to build/fuzz/logs/<target>.log.
+# Exit status is non-zero when any target finds a crash, a leak, a timeout or an out-of-memory.
 set -euo pipefail
 seconds=${1:-60}
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(osim_reader storage_reader mesh_reader controls_reader simulate)
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="$root/build/fuzz"
+
 CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DSINEW_BUILD_FUZZERS=ON -DSINEW_BUILD_TESTS=OFF -DSINEW_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build "$build" --target fuzz_osim_reader -j "$(nproc)"
-corpus=$(mktemp -d)
-trap 'rm -rf "$corpus"' EXIT
-# Seeds: the test models under 60 KB (small inputs keep the run fast).
-find "$root/tests/data" -name '*.osim' -size -60k -exec cp {} "$corpus/" \;
-artifacts="$build/artifacts"
-mkdir -p "$artifacts"
-"$build/fuzz/fuzz_osim_reader" "$corpus" -dict="$root/fuzz/osim.dict" \
-  -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
-  -artifact_prefix="$artifacts/" -print_final_stats=1
+  -DSINEW_BUILD_FUZZERS=ON -DSINEW_BUILD_TESTS=OFF -DSINEW_BUILD_BENCHMARKS=OFF \
+  -DSINEW_BUILD_EXAMPLES=OFF >/dev/null
+build_targets=(fuzz_seeds)
+for t in "${targets[@]}"; do build_targets+=("fuzz_$t"); done
+cmake --build "$build" --target "${build_targets[@]}" -j "$(nproc)"
+
+seeds=$(mktemp -d)
+trap 'rm -rf "$seeds"' EXIT
+# Copies the files under tests/data named *.EXT (case-insensitive) and smaller than 64 KB into
+# DIR, each name prefixed by PREFIX and its content by the bytes PREFIX_BYTES.
+copy_seeds() {
+  local dir=$1 ext=$2 prefix=$3 bytes=$4
+  mkdir -p "$dir"
+  find "$root/tests/data" -iname "*.$ext" -size -64k -print0 |
+    while IFS= read -r -d '' f; do
+      { printf '%s' "$bytes"; cat "$f"; } >"$dir/$prefix$(basename "$f")"
+    done
+}
+copy_seeds "$seeds/osim_reader" osim "" ""
+copy_seeds "$seeds/storage_reader" sto "" ""
+copy_seeds "$seeds/storage_reader" mot "" ""
+copy_seeds "$seeds/mesh_reader" vtp "" "0"
+"$build/fuzz/fuzz_seeds" "$seeds/mesh_reader"
+mkdir -p "$seeds/controls_reader"
+grep -rlZ --include='*.xml' '<ControlSet' "$root/tests/data" | xargs -0 -I{} cp {} "$seeds/controls_reader/"
+# The simulate target's first byte picks the integrator and actuator excitation: seed both
+# euler without excitation ('0') and rk45 with every actuator excited ('3').
+copy_seeds "$seeds/simulate" osim "euler_" "0"
+copy_seeds "$seeds/simulate" osim "rk45_" "3"
+
+dict_of() {
+  case $1 in
+    osim_reader | simulate) echo "$root/fuzz/osim.dict" ;;
+    storage_reader) echo "$root/fuzz/storage.dict" ;;
+    mesh_reader) echo "$root/fuzz/mesh.dict" ;;
+    controls_reader) echo "$root/fuzz/controls.dict" ;;
+  esac
+}
+
+share=$((seconds / ${#targets[@]}))
+[ "$share" -ge 1 ] || share=1
+mkdir -p "$build/artifacts" "$build/logs"
+failed=()
+for t in "${targets[@]}"; do
+  corpus="$build/corpus/$t"
+  mkdir -p "$corpus"
+  log="$build/logs/$t.log"
+  echo "fuzz: $t for $share s (log: $log)"
+  status=0
+  "$build/fuzz/fuzz_$t" "$corpus" "$seeds/$t" -dict="$(dict_of "$t")" \
+    -max_total_time="$share" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
+    -artifact_prefix="$build/artifacts/${t}-" -print_final_stats=1 >"$log" 2>&1 || status=$?
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
+  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 || true)
+  echo "fuzz: $t: ${runs:-?} runs, ${rate:-?} runs/s, $cov, exit $status"
+  if [ "$status" -ne 0 ]; then
+    failed+=("$t")
+    grep -E 'ERROR|SUMMARY|runtime error|Test unit written|uncaught' "$log" | head -20 || true
+  fi
+done
+if [ ${#failed[@]} -gt 0 ]; then
+  echo "fuzz: FAILED: ${failed[*]} (reproduce: build/fuzz/fuzz/fuzz_TARGET ARTIFACT)" >&2
+  exit 1
+fi
+echo "fuzz: no findings"

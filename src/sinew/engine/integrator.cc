@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,13 @@ double Integrator::ConstraintTolerance() const {
 }
 
 namespace {
+
+// A number for a message: up to 6 significant digits, no trailing zeros ("0.067", "1e-10").
+std::string FormatNumber(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
 
 // The integrated vector y = [positions; velocities]: per moving body p_GB and quat_GB
 // (w, x, y, z), then the integrated q; then the KKT velocities.
@@ -126,8 +134,12 @@ class RungeKutta45 final : public Integrator {
       } else {
         ++stats_.rejected;
         if (h_ < settings_.min_step) {
-          throw Error("integrator: step size fell below " + std::to_string(settings_.min_step) +
-                      " s at t = " + std::to_string(state.t) + " s");
+          throw Error("integrator 'rk45': the step size fell below " +
+                      FormatNumber(settings_.min_step) + " s at t = " + FormatNumber(state.t) +
+                      " s (" + std::to_string(stats_.rejected) + " steps rejected, " +
+                      std::to_string(stats_.projection_failures) +
+                      " of them because the position projection did not converge): the motion "
+                      "may be singular there; try a looser accuracy or check the model");
         }
       }
     }
@@ -225,13 +237,39 @@ class FixedStepIntegrator : public Integrator {
 
  protected:
   FixedStepIntegrator(const System& system, const IntegratorSettings& settings, const char* name)
-      : Integrator(system, settings) {
+      : Integrator(system, settings), name_(name) {
     if (!(settings.step > 0.0)) {
       throw Error(std::string("integrator '") + name + "' needs a step > 0");
     }
   }
   // One step of length h from state.t, ending at time t_new.
   virtual void Step(State& state, double h, double t_new) = 0;
+
+  // Moves `later`, the state a step from `t_start` produced, onto the constraints (positions,
+  // velocities, direct coordinates). A fixed-step scheme cannot retry with a shorter step, so
+  // when the positions do not converge it throws a sinew::Error saying where and what to try.
+  void ProjectAfterStep(State& later, double t_start) {
+    constexpr int kIterations = 10;
+    if (!ProjectPositions(system_, later, ConstraintTolerance(), kkt_, kIterations,
+                          &stats_.projection_factorizations)) {
+      ++stats_.projection_failures;
+      const VecX phi = CalcPositionErrors(system_, later);
+      throw Error(
+          "integrator '" + name_ +
+          "': position projection failed in the step from t = " + FormatNumber(t_start) +
+          " s to t = " + FormatNumber(later.t) + " s: the largest constraint error is still " +
+          FormatNumber(phi.lpNorm<Eigen::Infinity>()) + " after " + std::to_string(kIterations) +
+          " Newton iterations (tolerance " + FormatNumber(ConstraintTolerance()) +
+          "). A fixed step of " + FormatNumber(settings_.step) +
+          " s is likely too large for this motion: try a smaller step, or the "
+          "error-controlled integrator rk45, which shortens its steps where needed");
+    }
+    ProjectVelocities(system_, later, kkt_);
+    UpdateDirectCoordinates(system_, later);
+  }
+
+ private:
+  std::string name_;
 };
 
 // Fixed-step semi-implicit Euler on the velocity-level KKT system, with projection.
@@ -263,13 +301,7 @@ class SemiImplicitEuler final : public FixedStepIntegrator {
     // Positions move with the new velocities.
     ScatterVelocities(system_, kkt_, v1, later);
     ApplyPositionDisplacement(system_, kkt_, h * v1, later);
-    if (!ProjectPositions(system_, later, ConstraintTolerance(), kkt_, 10,
-                          &stats_.projection_factorizations)) {
-      throw Error("integrator 'euler': position projection failed at t = " + std::to_string(t_new) +
-                  " s (step too large?)");
-    }
-    ProjectVelocities(system_, later, kkt_);
-    UpdateDirectCoordinates(system_, later);
+    ProjectAfterStep(later, state.t);
     state = std::move(later);
   }
 };
@@ -342,13 +374,7 @@ class LinearizedImplicitEuler final : public FixedStepIntegrator {
     const VecX v1 = x.head(nv);
     ScatterVelocities(system_, kkt_, v1, later);
     ApplyPositionDisplacement(system_, kkt_, h * v1, later);
-    if (!ProjectPositions(system_, later, ConstraintTolerance(), kkt_, 10,
-                          &stats_.projection_factorizations)) {
-      throw Error("integrator 'implicit-euler': position projection failed at t = " +
-                  std::to_string(t_new) + " s (step too large?)");
-    }
-    ProjectVelocities(system_, later, kkt_);
-    UpdateDirectCoordinates(system_, later);
+    ProjectAfterStep(later, state.t);
     state = std::move(later);
   }
 };

@@ -1,5 +1,6 @@
 #include <sinew/engine/projection.h>
 
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -63,8 +64,13 @@ bool ProjectPositions(const System& system, State& state, double tolerance, KktS
     if (error <= tolerance) return true;
     if (iteration == max_iterations) break;
     // Modified Newton: keep the matrix while the error falls fast (it does for the small
-    // corrections after an integration step); refactorize otherwise.
-    if (iteration == 0 || error > 0.1 * previous) {
+    // corrections after an integration step); refactorize otherwise. With a kept matrix the
+    // error only falls linearly, by about error / previous per iteration, so the matrix is also
+    // refactorized when that rate would not reach the tolerance in the iterations left (a large
+    // correction, e.g. after a long fixed step, can settle at a rate just under 0.1 and stall).
+    const double rate = error / previous;
+    const int left = max_iterations - iteration;
+    if (iteration == 0 || rate > 0.1 || error * std::pow(rate, left) > tolerance) {
       kkt.Factorize(state);
       if (factorizations) ++*factorizations;
     }

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 #include <sinew/io/mesh_base64.h>
@@ -115,11 +117,16 @@ class VtpReader {
  private:
   void ReadPiece(pugi::xml_node piece, TriangleMesh& mesh, bool& all_normals) {
     const size_t base = mesh.positions.size();
-    const size_t n_points = piece.attribute("NumberOfPoints").as_ullong();
+    // The declared count is only trusted once an array holding that many points was read.
+    const uint64_t n_points = piece.attribute("NumberOfPoints").as_ullong();
     pugi::xml_node points = piece.child("Points").child("DataArray");
     if (n_points > 0 && !points) doc_.Fail(piece, "", "missing <Points><DataArray>");
     if (n_points > 0) {
-      std::vector<double> xyz = ReadArray(points, 3 * n_points);
+      std::vector<double> xyz = ReadArray(points, n_points, 3);
+      // Triangles index vertices with 32 bits.
+      if (n_points > std::numeric_limits<uint32_t>::max() - base) {
+        doc_.Fail(piece, "", "the mesh has more than 2^32 points");
+      }
       for (size_t i = 0; i < n_points; ++i) {
         mesh.positions.emplace_back(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
       }
@@ -131,7 +138,7 @@ class VtpReader {
     pugi::xml_node normals_array =
         point_data.find_child_by_attribute("DataArray", "Name", normals_name.c_str());
     if (normals_array && n_points > 0) {
-      std::vector<double> n = ReadArray(normals_array, 3 * n_points);
+      std::vector<double> n = ReadArray(normals_array, n_points, 3);
       for (size_t i = 0; i < n_points; ++i) {
         Vec3f v(n[3 * i], n[3 * i + 1], n[3 * i + 2]);
         const float length = v.norm();
@@ -146,7 +153,7 @@ class VtpReader {
 
   void ReadCells(pugi::xml_node piece, const char* tag, const char* count_attr, size_t base,
                  size_t n_points, TriangleMesh& mesh, bool strips) {
-    const size_t n_cells = piece.attribute(count_attr).as_ullong();
+    const uint64_t n_cells = piece.attribute(count_attr).as_ullong();
     if (n_cells == 0) return;
     pugi::xml_node cells = piece.child(tag);
     if (!cells) doc_.Fail(piece, "", std::string("missing <") + tag + ">");
@@ -155,8 +162,8 @@ class VtpReader {
     if (!offsets_node || !conn_node) {
       doc_.Fail(cells, "", std::string("<") + tag + "> needs 'connectivity' and 'offsets' arrays");
     }
-    std::vector<double> offsets = ReadArray(offsets_node, n_cells);
-    std::vector<double> conn = ReadArray(conn_node, -1);
+    std::vector<double> offsets = ReadArray(offsets_node, n_cells, 1);
+    std::vector<double> conn = ReadArray(conn_node, std::nullopt, 1);
     size_t start = 0;
     for (size_t c = 0; c < n_cells; ++c) {
       const double end_d = offsets[c];
@@ -188,8 +195,11 @@ class VtpReader {
     }
   }
 
-  // The values of a <DataArray>; `expected` >= 0 requires exactly that many.
-  std::vector<double> ReadArray(pugi::xml_node array, long long expected) {
+  // The values of a <DataArray>. With `tuples` set, the array must hold exactly that many
+  // tuples of `components` values. The check divides the values present instead of multiplying
+  // the declared count, so no count in the file can overflow it.
+  std::vector<double> ReadArray(pugi::xml_node array, std::optional<uint64_t> tuples,
+                                int components) {
     const std::string_view format = array.attribute("format").value();
     std::vector<double> values;
     if (format == "ascii") {
@@ -201,7 +211,14 @@ class VtpReader {
             array, "",
             "unsupported DataArray type '" + std::string(array.attribute("type").value()) + "'");
       }
-      std::vector<uint8_t> bytes = DecodeBinary(array);
+      // The bytes the piece's counts call for, when known and representable (a count beyond
+      // that cannot match the data present and fails below).
+      std::optional<uint64_t> expected_bytes;
+      const uint64_t tuple_bytes = static_cast<uint64_t>(components) * type.bytes;
+      if (tuples && *tuples <= std::numeric_limits<uint64_t>::max() / tuple_bytes) {
+        expected_bytes = *tuples * tuple_bytes;
+      }
+      std::vector<uint8_t> bytes = DecodeBinary(array, expected_bytes);
       const size_t n = bytes.size() / type.bytes;
       values.resize(n);
       for (size_t i = 0; i < n; ++i) {
@@ -212,59 +229,87 @@ class VtpReader {
                 "DataArray format '" + std::string(format) +
                     "' is not supported (ascii or inline binary only)");
     }
-    if (expected >= 0 && values.size() != static_cast<size_t>(expected)) {
+    if (tuples && (values.size() % components != 0 || values.size() / components != *tuples)) {
       doc_.Fail(array, "",
                 "DataArray '" + std::string(array.attribute("Name").value()) + "' has " +
-                    std::to_string(values.size()) + " values, expected " +
-                    std::to_string(expected));
+                    std::to_string(values.size()) + " values, expected " + std::to_string(*tuples) +
+                    " tuples of " + std::to_string(components));
     }
     return values;
   }
 
   // The payload bytes of an inline binary array: base64 of a size header then the data,
-  // the data made of zlib blocks when the file is compressed.
-  std::vector<uint8_t> DecodeBinary(pugi::xml_node array) {
+  // the data made of zlib blocks when the file is compressed. `expected_bytes`, when known, is
+  // the size the piece's counts call for; a header promising another size fails before any
+  // allocation.
+  //
+  // Decompression cap: nothing is inflated beyond the total the header promises,
+  // (n_blocks - 1) * block_size + last_block_size, and each block inflates into a buffer of
+  // exactly its promised size (zlib stops there). The promise itself is bounded by the data
+  // present: a block's size may not exceed what deflate can expand its compressed bytes to
+  // (1032:1, plus a small allowance for empty streams), and must equal `expected_bytes` when
+  // that is known. So a file of B bytes inflates to at most ~1032 B bytes, and to exactly the
+  // declared array size when the counts are known.
+  std::vector<uint8_t> DecodeBinary(pugi::xml_node array, std::optional<uint64_t> expected_bytes) {
     // Header and data may be encoded as one base64 stream or as two padded ones; the
     // decoder continues across padding, so both give the same bytes.
     std::optional<std::vector<uint8_t>> decoded = DecodeBase64(internal::XmlDocument::Text(array));
     if (!decoded) doc_.Fail(array, "", "binary DataArray is not valid base64");
     const std::vector<uint8_t>& raw = *decoded;
-    const int hb = encoding_.header_bytes;
-    auto header = [&](size_t i) -> uint64_t {
-      if ((i + 1) * hb > raw.size()) doc_.Fail(array, "", "binary DataArray header is truncated");
-      return ReadUnsigned(raw.data() + i * hb, hb, encoding_.big_endian);
+    const size_t hb = static_cast<size_t>(encoding_.header_bytes);
+    auto header = [&](uint64_t i) -> uint64_t {
+      if (i >= raw.size() / hb) doc_.Fail(array, "", "binary DataArray header is truncated");
+      return ReadUnsigned(raw.data() + i * hb, encoding_.header_bytes, encoding_.big_endian);
+    };
+    auto check_promise = [&](uint64_t promised) {
+      if (expected_bytes && promised != *expected_bytes) {
+        doc_.Fail(array, "",
+                  "binary DataArray header promises " + std::to_string(promised) +
+                      " bytes, the piece's counts call for " + std::to_string(*expected_bytes));
+      }
     };
     if (!encoding_.zlib) {
       const uint64_t size = header(0);
       if (size > raw.size() - hb) doc_.Fail(array, "", "binary DataArray is truncated");
+      check_promise(size);
       return {raw.begin() + hb, raw.begin() + hb + static_cast<ptrdiff_t>(size)};
     }
-    // Compressed: [n_blocks, block_size, last_block_size, compressed_size[n_blocks]].
+    // Compressed: [n_blocks, block_size, last_size, compressed_size[n_blocks]].
     const uint64_t n_blocks = header(0);
     const uint64_t block_size = header(1);
     const uint64_t last_size = header(2);
-    if (n_blocks > raw.size()) doc_.Fail(array, "", "binary DataArray header is corrupt");
-    size_t offset = (3 + n_blocks) * hb;
-    std::vector<uint8_t> out;
+    if (n_blocks > raw.size() / hb) doc_.Fail(array, "", "binary DataArray header is truncated");
+    // The uncompressed size of each block and their total, checked before inflating anything.
+    constexpr uint64_t kMaxDeflateRatio = 1032;  // deflate's best case, zlib's technical report
+    constexpr uint64_t kEmptyStreamAllowance = 64;
+    std::vector<uint64_t> compressed(n_blocks), inflated(n_blocks);
+    uint64_t offset = (3 + n_blocks) * hb, total = 0;
     for (uint64_t b = 0; b < n_blocks; ++b) {
-      const uint64_t compressed = header(3 + b);
-      uLongf size = (b + 1 == n_blocks && last_size != 0) ? last_size : block_size;
-      if (offset > raw.size() || compressed > raw.size() - offset) {
+      compressed[b] = header(3 + b);
+      inflated[b] = (b + 1 == n_blocks && last_size != 0) ? last_size : block_size;
+      if (offset > raw.size() || compressed[b] > raw.size() - offset) {
         doc_.Fail(array, "", "compressed DataArray is truncated");
       }
-      // zlib cannot expand data more than ~1032 times: a larger claim is a corrupt header.
-      if (size > 1032 * compressed + 64) {
+      offset += compressed[b];
+      if (inflated[b] > kMaxDeflateRatio * compressed[b] + kEmptyStreamAllowance) {
         doc_.Fail(array, "", "compressed DataArray header claims an impossible block size");
       }
-      const size_t at = out.size();
-      out.resize(at + size);
-      if (uncompress(out.data() + at, &size, raw.data() + offset, compressed) != Z_OK) {
+      total += inflated[b];  // cannot wrap: each term is below 1032 * raw.size() + 64
+    }
+    check_promise(total);
+    std::vector<uint8_t> out(total);
+    offset = (3 + n_blocks) * hb;
+    uint64_t at = 0;
+    for (uint64_t b = 0; b < n_blocks; ++b) {
+      uLongf size = inflated[b];
+      if (uncompress(out.data() + at, &size, raw.data() + offset, compressed[b]) != Z_OK ||
+          size != inflated[b]) {
         doc_.Fail(array, "",
-                  "compressed DataArray block " + std::to_string(b) +
-                      " does not inflate (corrupt zlib data)");
+                  "compressed DataArray block " + std::to_string(b) + " does not inflate to the " +
+                      std::to_string(inflated[b]) + " bytes its header promises (corrupt data)");
       }
-      out.resize(at + size);
-      offset += compressed;
+      at += inflated[b];
+      offset += compressed[b];
     }
     return out;
   }

@@ -1,6 +1,7 @@
 #include <sinew/io/read_controls.h>
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <sinew/functions/control_linear.h>
@@ -49,10 +50,8 @@ functions::FunctionPtr ReadControlLinear(const internal::XmlDocument& doc,
       ReadOptionalBool(doc, control, "extrapolate", component, true));
 }
 
-}  // namespace
-
-std::map<std::string, functions::FunctionPtr> ReadControlSet(const std::string& file) {
-  const internal::XmlDocument doc = internal::XmlDocument::Load(file);
+// The controls of a parsed ControlSet document.
+std::map<std::string, functions::FunctionPtr> ReadControls(const internal::XmlDocument& doc) {
   pugi::xml_node set = doc.root();
   if (std::string_view(set.name()) == "OpenSimDocument") set = set.child("ControlSet");
   if (!set || std::string_view(set.name()) != "ControlSet") {
@@ -74,6 +73,17 @@ std::map<std::string, functions::FunctionPtr> ReadControlSet(const std::string& 
     }
   }
   return controls;
+}
+
+}  // namespace
+
+std::map<std::string, functions::FunctionPtr> ReadControlSet(const std::string& file) {
+  return ReadControls(internal::XmlDocument::Load(file));
+}
+
+std::map<std::string, functions::FunctionPtr> ParseControlSet(std::string text,
+                                                              const std::string& file) {
+  return ReadControls(internal::XmlDocument::Parse(std::move(text), file));
 }
 
 }  // namespace sinew::io

@@ -13,4 +13,8 @@ namespace sinew::io {
 /// Throws sinew::Error (file, line, control) for malformed files or unsupported control types.
 std::map<std::string, functions::FunctionPtr> ReadControlSet(const std::string& file);
 
+/// As ReadControlSet, from the XML text of a ControlSet file; `file` names it in messages.
+std::map<std::string, functions::FunctionPtr> ParseControlSet(std::string text,
+                                                              const std::string& file);
+
 }  // namespace sinew::io

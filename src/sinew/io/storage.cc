@@ -181,8 +181,10 @@ Storage ParseStorage(std::string_view text, const std::string& file) {
     const std::string value(Trim(trimmed.substr(equals + 1)));
     if (key == "nRows" || key == "nColumns") {
       double number = 0;
-      if (!ParseNumber(value, &number) || number < 0)
+      // Written as a negation so that NaN fails too; the bound keeps the cast below defined.
+      if (!ParseNumber(value, &number) || !(number >= 0 && number < 1e18)) {
         fail(key + " expects a count, found '" + value + "'");
+      }
       (key == "nRows" ? declared_rows : declared_columns) = static_cast<long>(number);
       (key == "nRows" ? rows_line : columns_line) = line_number;
     } else if (key == "inDegrees") {
@@ -271,6 +273,11 @@ std::string FormatStorage(const Storage& storage) {
   out += "endheader\n";
   out += storage.time_label;
   for (const std::string& label : storage.labels) out += "\t" + label;
+  // A label line without tabs is split on blanks when read: a lone time label with a blank in it
+  // gets a trailing tab (an empty field, skipped on reading) to be read back whole.
+  if (storage.labels.empty() && storage.time_label.find_first_of(" \t\r") != std::string::npos) {
+    out += '\t';
+  }
   out += '\n';
   for (int row = 0; row < storage.NumRows(); ++row) {
     AppendNumber(out, storage.time[row]);
