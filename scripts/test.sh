@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs every test: a Release build, then the same tests under ASan+UBSan.
+# Sets up, builds and runs every test: a Release build (then every benchmark once, briefly, so
+# none can rot), the install check, the same tests under ASan+UBSan, and the fuzz targets.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/setup.sh"
@@ -8,8 +9,13 @@ for kind in release asan; do
   bash "$root/scripts/build.sh" "$kind"
   echo "== $kind tests"
   (cd "$root/build/$kind" && ctest --output-on-failure -j "$(nproc)")
-  if [ "$kind" = release ]; then bash "$root/scripts/check-install.sh" "$root/build/release"; fi
+  if [ "$kind" = release ]; then
+    bash "$root/scripts/check-install.sh" "$root/build/release"
+    echo "== benchmarks (each once, minimal time: they must run, the timings mean little)"
+    bash "$root/scripts/run-benchmarks.sh" "$root/build/release" --quick >/dev/null
+  fi
 done
-# The .osim reader's fuzz target, for a bounded time (needs clang with libFuzzer).
-echo "== fuzz (60 s)"
-bash "$root/scripts/fuzz.sh" 60
+# The fuzz targets (readers and the build-and-simulate path), 100 s in all (needs clang with
+# libFuzzer).
+echo "== fuzz (100 s over all targets)"
+bash "$root/scripts/fuzz.sh" 100
