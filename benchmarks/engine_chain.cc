@@ -10,14 +10,13 @@
 // the projection to remove). The state copy this needs is a small part of a step. An integrator
 // failure (a sinew::Error) ends the benchmark with an error instead of aborting the program.
 #include <benchmark/benchmark.h>
-
-#include <cmath>
-
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/dynamics.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/system.h>
+
+#include <cmath>
 
 #include "engine/chain_model.h"
 

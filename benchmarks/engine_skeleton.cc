@@ -5,14 +5,13 @@
 // simulated seconds per wall second (sim_s_per_s) and steps per second. Both models are the
 // copies in tests/data (gait2354 in opensim-core's test version of the file).
 #include <benchmark/benchmark.h>
-
-#include <cmath>
-#include <string>
-
-#include <sinew/opensim/build_system.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/io/osim_reader.h>
+#include <sinew/opensim/build_system.h>
+
+#include <cmath>
+#include <string>
 
 namespace {
 

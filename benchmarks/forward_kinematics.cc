@@ -1,21 +1,20 @@
 // Forward kinematics of the Hamner full-body model (37 coordinates, CustomJoints with
 // SimmSplines): body poses per pose, and poses plus the 37 marker positions. Goal: < 5 us/pose.
-#include <sinew/kinematics/forward_kinematics.h>
-
 #include <benchmark/benchmark.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/kinematics/forward_kinematics.h>
+#include <sinew/kinematics/kinematic_tree.h>
 
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include <sinew/io/osim_reader.h>
-#include <sinew/kinematics/kinematic_tree.h>
-
 namespace {
 
 const sinew::model::ModelSpec& Hamner() {
   static const sinew::model::ModelSpec spec = sinew::io::ReadOsim(
-      std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-models/Pipelines/Hamner/outputReference/subject02_registered.osim");
+      std::string(SINEW_TEST_DATA_DIR) +
+      "/opensim-org/opensim-models/Pipelines/Hamner/outputReference/subject02_registered.osim");
   return spec;
 }
 

@@ -1,15 +1,14 @@
 // Function evaluation costs. Forward kinematics of a full-body model evaluates ~37 joints with a
 // few spline couplings each per pose; the goal is well under 5 us for all of them.
 #include <benchmark/benchmark.h>
-
-#include <cmath>
-#include <memory>
-#include <vector>
-
 #include <sinew/functions/gcv_spline.h>
 #include <sinew/functions/multiplier_function.h>
 #include <sinew/functions/simm_spline.h>
 #include <sinew/io/storage.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
 
 namespace {
 
@@ -124,7 +123,9 @@ BENCHMARK(BM_GCVSplineCalc);
 
 // Reading a real states file (SinglePin_states.sto, 302 rows x 3 columns, 26 kB).
 void BM_ReadStorage(benchmark::State& state) {
-  const std::string file = std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-core/Applications/Analyze/tests/resources/SinglePin_states.sto";
+  const std::string file =
+      std::string(SINEW_TEST_DATA_DIR) +
+      "/opensim-org/opensim-core/Applications/Analyze/tests/resources/SinglePin_states.sto";
   for (auto _ : state) {
     sinew::io::Storage s = sinew::io::ReadStorage(file);
     benchmark::DoNotOptimize(s.values.data());

@@ -1,19 +1,17 @@
 // Reading Rajagopal2016.osim (875 KB, 22 bodies, 80 muscles) into the spec: goal < 10 ms median
 // (Release). Also the XML parse alone, to see what the reader adds on top of pugixml.
 #include <benchmark/benchmark.h>
+#include <sinew/io/internal/xml_document.h>
+#include <sinew/io/osim_reader.h>
 
 #include <fstream>
 #include <sstream>
 #include <string>
 
-#include <sinew/io/osim_reader.h>
-#include <sinew/io/internal/xml_document.h>
-
 namespace {
 
-const std::string kRajagopal =
-    std::string(SINEW_TEST_DATA_DIR) +
-    "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
+const std::string kRajagopal = std::string(SINEW_TEST_DATA_DIR) +
+                               "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
 
 std::string Slurp(const std::string& file) {
   std::ifstream in(file, std::ios::binary);

@@ -3,10 +3,9 @@
 // linearly with n. Google Benchmark fits the complexity (BigO and RMS lines of the report);
 // a quadratic lookup shows as O(N^2) and takes seconds at n = 16000.
 #include <benchmark/benchmark.h>
+#include <sinew/io/osim_reader.h>
 
 #include <string>
-
-#include <sinew/io/osim_reader.h>
 
 namespace {
 

@@ -1,7 +1,6 @@
 // Visualization costs on a real model: Rajagopal2016 (23 bodies, 81 .vtp meshes) driven by
 // 599 frames of the Hamner running motion.
 #include <benchmark/benchmark.h>
-
 #include <sinew/io/mesh_file.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
@@ -14,9 +13,12 @@ namespace sinew::viz {
 namespace {
 
 const std::string kData = SINEW_TEST_DATA_DIR;
-const std::string kModel = kData + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
+const std::string kModel =
+    kData + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
 const std::string kGeometry = kData + "/opensim-org/opensim-models/Geometry";
-const std::string kMotion = kData + "/opensim-org/opensim-models/Pipelines/Hamner/outputReference/ResultsIK/subject02_running_ik.mot";
+const std::string kMotion = kData +
+                            "/opensim-org/opensim-models/Pipelines/Hamner/outputReference/"
+                            "ResultsIK/subject02_running_ik.mot";
 
 VisualScene MeshScene(const model::ModelSpec& spec) {
   VisualOptions options;

@@ -2,12 +2,12 @@
 // loads or throws sinew::Error; anything else (a crash, another exception, a sanitizer report, a
 // hang) is a bug. Every control that loads is evaluated (value and derivatives) before, inside
 // and after its nodes, as a simulation would.
+#include <sinew/common/error.h>
+#include <sinew/io/read_controls.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
-
-#include <sinew/common/error.h>
-#include <sinew/io/read_controls.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {

@@ -3,15 +3,15 @@
 // sinew::Error; anything else (a crash, another exception, a sanitizer report, a hang, an
 // allocation beyond -rss_limit_mb) is a bug. A mesh that loads must be valid (indices in range,
 // one normal per vertex).
-#include <cstddef>
-#include <cstdint>
-#include <string>
-#include <string_view>
-
 #include <sinew/common/error.h>
 #include <sinew/io/mesh_obj.h>
 #include <sinew/io/mesh_stl.h>
 #include <sinew/io/mesh_vtp.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;

@@ -1,10 +1,10 @@
 // libFuzzer target: any byte string given to the .osim reader either loads or throws
 // sinew::Error; anything else (a crash, another exception, a sanitizer report, a hang) is a bug.
+#include <sinew/io/osim_reader.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
-
-#include <sinew/io/osim_reader.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {

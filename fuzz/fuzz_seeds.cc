@@ -2,6 +2,7 @@
 // file in: .vtp with inline binary arrays (raw, zlib in one or several blocks, UInt64 headers,
 // big-endian), .obj, ASCII and binary .stl. Usage: fuzz_seeds MESH_CORPUS_DIR. Each file starts
 // with the format byte fuzz_mesh_reader dispatches on ('0' .vtp, '1' .obj, '2' .stl).
+#include <sinew/io/mesh_base64.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -11,8 +12,6 @@
 #include <iostream>
 #include <string>
 #include <vector>
-
-#include <sinew/io/mesh_base64.h>
 
 namespace {
 

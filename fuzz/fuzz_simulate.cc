@@ -7,17 +7,17 @@
 // The simulation is kept short so that one input costs milliseconds: 5 fixed steps of 1 ms with
 // "euler", or rk45 up to 5 ms with its step bounded to 1 ms and a loose accuracy (its step-size
 // floor of 1e-6 s bounds the number of rejections).
-#include <cstddef>
-#include <cstdint>
-#include <memory>
-#include <string>
-
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/system.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/opensim/parser.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;

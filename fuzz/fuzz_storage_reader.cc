@@ -1,13 +1,13 @@
 // libFuzzer target: any byte string given to the .sto/.mot reader either loads or throws
 // sinew::Error; anything else (a crash, another exception, a sanitizer report, a hang) is a bug.
 // A table that loads is also written back and read again, which must succeed.
+#include <sinew/common/error.h>
+#include <sinew/io/storage.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
-
-#include <sinew/common/error.h>
-#include <sinew/io/storage.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

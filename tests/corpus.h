@@ -15,7 +15,7 @@ inline std::filesystem::path CorpusDir() { return std::filesystem::path(SINEW_CO
 
 /// First statement of a corpus sweep: skips the test (ctest lists it as skipped) when the build
 /// was configured without a corpus.
-#define SINEW_SKIP_WITHOUT_CORPUS()                                                    \
+#define SINEW_SKIP_WITHOUT_CORPUS()                                                   \
   if (::sinew::testing::CorpusDir().empty())                                          \
   GTEST_SKIP() << "no corpus configured (cmake -DSINEW_CORPUS_DIR=<folder>): corpus " \
                   "sweep not run"

@@ -1,5 +1,10 @@
 // `sinew export MODEL.osim [--motion FILE | --states FILE] --vis primitives|mesh [--verbose]
 //  --out FILE.glb|FILE.html`: the model (and its motion) for a glTF viewer or a browser.
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
+#include <sinew/viz/export_animation.h>
+#include <sinew/viz/motion_poses.h>
+
 #include <iostream>
 #include <memory>
 #include <string>
@@ -9,10 +14,6 @@
 #include "apps/sinew/notices.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
-#include <sinew/io/osim_reader.h>
-#include <sinew/io/storage.h>
-#include <sinew/viz/export_animation.h>
-#include <sinew/viz/motion_poses.h>
 
 namespace sinew::cli {
 namespace {

@@ -1,5 +1,9 @@
 // `sinew inspect MODEL.osim [--json]`: what a model file says and what the OpenSim parser
 // builds from it (its Report), as text or one JSON object.
+#include <sinew/io/osim_reader.h>
+#include <sinew/opensim/parser.h>
+#include <sinew/opensim/support.h>
+
 #include <iostream>
 #include <map>
 #include <memory>
@@ -7,9 +11,6 @@
 #include <string>
 
 #include "apps/sinew/commands.h"
-#include <sinew/opensim/parser.h>
-#include <sinew/opensim/support.h>
-#include <sinew/io/osim_reader.h>
 
 namespace sinew::cli {
 namespace {

@@ -1,6 +1,15 @@
 // `sinew kinematics MODEL.osim [--motion FILE] --out DIR`: body mass-centre positions and
 // orientations (OpenSim BodyKinematics layout) and marker locations, at the default pose or for
 // every row of a motion file.
+#include <sinew/common/error.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
+#include <sinew/io/storage_labels.h>
+#include <sinew/kinematics/body_kinematics.h>
+#include <sinew/kinematics/coordinate_motion.h>
+#include <sinew/kinematics/forward_kinematics.h>
+#include <sinew/kinematics/kinematic_tree.h>
+
 #include <filesystem>
 #include <iostream>
 #include <span>
@@ -11,14 +20,6 @@
 #include "apps/sinew/notices.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
-#include <sinew/common/error.h>
-#include <sinew/io/osim_reader.h>
-#include <sinew/io/storage.h>
-#include <sinew/io/storage_labels.h>
-#include <sinew/kinematics/body_kinematics.h>
-#include <sinew/kinematics/coordinate_motion.h>
-#include <sinew/kinematics/forward_kinematics.h>
-#include <sinew/kinematics/kinematic_tree.h>
 
 namespace sinew::cli {
 namespace {

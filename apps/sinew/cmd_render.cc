@@ -1,6 +1,12 @@
 // `sinew render MODEL.osim [--motion FILE | --states FILE] [--time T] [--verbose]
 //  --out FILE.png`: a still picture made by the built-in software renderer (no display or GPU
 // needed).
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
+#include <sinew/viz/gltf_writer.h>
+#include <sinew/viz/motion_poses.h>
+#include <sinew/viz/rasterizer.h>
+
 #include <iostream>
 #include <memory>
 #include <string>
@@ -10,11 +16,6 @@
 #include "apps/sinew/notices.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
-#include <sinew/io/osim_reader.h>
-#include <sinew/io/storage.h>
-#include <sinew/viz/gltf_writer.h>
-#include <sinew/viz/motion_poses.h>
-#include <sinew/viz/rasterizer.h>
 
 namespace sinew::cli {
 namespace {

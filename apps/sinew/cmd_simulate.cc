@@ -4,6 +4,17 @@
 //  [--quiet] --out DIR`: a forward simulation of what the OpenSim parser builds (skeleton, ideal
 // actuators and their excitations). Writes DIR/states.sto (every coordinate's value and speed,
 // OpenSim 4 labels, radians and metres) and DIR/bodies.sto (OpenSim BodyKinematics positions).
+#include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/engine/pose.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
+#include <sinew/io/storage_labels.h>
+#include <sinew/kinematics/body_kinematics.h>
+#include <sinew/opensim/parser.h>
+#include <sinew/opensim/support.h>
+#include <sinew/viz/export_animation.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -19,17 +30,6 @@
 #include "apps/sinew/notices.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
-#include <sinew/common/error.h>
-#include <sinew/engine/assemble.h>
-#include <sinew/engine/integrator.h>
-#include <sinew/engine/pose.h>
-#include <sinew/io/osim_reader.h>
-#include <sinew/io/storage.h>
-#include <sinew/io/storage_labels.h>
-#include <sinew/kinematics/body_kinematics.h>
-#include <sinew/opensim/parser.h>
-#include <sinew/opensim/support.h>
-#include <sinew/viz/export_animation.h>
 
 namespace sinew::cli {
 namespace {

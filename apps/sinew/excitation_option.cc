@@ -1,12 +1,12 @@
 #include "apps/sinew/excitation_option.h"
 
-#include <memory>
-#include <vector>
-
 #include <sinew/common/error.h>
 #include <sinew/common/text.h>
 #include <sinew/functions/constant.h>
 #include <sinew/functions/excitations.h>
+
+#include <memory>
+#include <vector>
 
 namespace sinew::cli {
 namespace {

@@ -1,10 +1,10 @@
 // The `--excitation NAME=KIND:ARGS` option of `sinew simulate`.
 #pragma once
 
+#include <sinew/functions/function.h>
+
 #include <string>
 #include <utility>
-
-#include <sinew/functions/function.h>
 
 namespace sinew::cli {
 

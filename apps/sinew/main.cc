@@ -1,9 +1,10 @@
 // sinew: load OpenSim models and simulate them. See README.md and `sinew --help`.
+#include <sinew/common/error.h>
+
 #include <iostream>
 #include <string>
 
 #include "apps/sinew/commands.h"
-#include <sinew/common/error.h>
 
 namespace {
 

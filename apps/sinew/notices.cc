@@ -1,10 +1,10 @@
 #include "apps/sinew/notices.h"
 
-#include <iostream>
-#include <set>
-
 #include <sinew/common/error.h>
 #include <sinew/opensim/support.h>
+
+#include <iostream>
+#include <set>
 
 namespace sinew::cli {
 namespace {

@@ -3,11 +3,11 @@
 // a count, the first few names and where to find the rest.
 #pragma once
 
-#include <string>
-#include <vector>
-
 #include <sinew/model/model_spec.h>
 #include <sinew/viz/visual_scene.h>
+
+#include <string>
+#include <vector>
 
 namespace sinew::cli {
 

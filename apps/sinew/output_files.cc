@@ -1,11 +1,11 @@
 #include "apps/sinew/output_files.h"
 
+#include <sinew/common/error.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <system_error>
-
-#include <sinew/common/error.h>
 
 namespace sinew::cli {
 

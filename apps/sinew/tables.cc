@@ -1,13 +1,14 @@
 #include "apps/sinew/tables.h"
 
+#include <sinew/common/error.h>
+#include <sinew/io/storage_labels.h>
+
 #include <cmath>
 #include <iostream>
 #include <numbers>
 #include <optional>
 
 #include "apps/sinew/notices.h"
-#include <sinew/common/error.h>
-#include <sinew/io/storage_labels.h>
 
 namespace sinew::cli {
 

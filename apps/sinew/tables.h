@@ -2,11 +2,11 @@
 // stderr line for each thing the reader or the model could not use as written.
 #pragma once
 
-#include <string>
-#include <vector>
-
 #include <sinew/io/storage.h>
 #include <sinew/model/model_spec.h>
+
+#include <string>
+#include <vector>
 
 namespace sinew::cli {
 

@@ -1,7 +1,7 @@
 // Uses an installed Sinew: parse the model named on the command line and print its Report.
-#include <iostream>
-
 #include <sinew/opensim/parser.h>
+
+#include <iostream>
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -2,6 +2,9 @@
 // meshes, driven by the Hamner running IK motion (same coordinate names). The .glb is read back
 // and checked against the model file and the motion table.
 #include <gtest/gtest.h>
+#include <sinew/io/mesh_file.h>
+#include <sinew/io/storage.h>
+#include <sinew/viz/image.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,9 +16,6 @@
 
 #include "apps/cli_test_util.h"
 #include "viz/glb_test_util.h"
-#include <sinew/io/mesh_file.h>
-#include <sinew/io/storage.h>
-#include <sinew/viz/image.h>
 
 namespace sinew {
 namespace {

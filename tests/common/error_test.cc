@@ -1,6 +1,5 @@
-#include <sinew/common/error.h>
-
 #include <gtest/gtest.h>
+#include <sinew/common/error.h>
 
 namespace sinew {
 namespace {

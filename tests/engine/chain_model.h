@@ -3,10 +3,10 @@
 // coordinate starting at 0.1 rad and 0.2 rad/s, gravity -9.81 m/s^2 along y.
 #pragma once
 
+#include <sinew/engine/system.h>
+
 #include <cmath>
 #include <string>
-
-#include <sinew/engine/system.h>
 
 namespace sinew::engine::testing {
 

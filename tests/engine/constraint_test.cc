@@ -2,13 +2,6 @@
 // x1 = r x2, under gravity along the sliders. Checked against the closed form of the coupled
 // motion and of the coupling force, and for its residual along the simulation.
 #include <gtest/gtest.h>
-
-#include <algorithm>
-#include <cmath>
-#include <iostream>
-#include <memory>
-#include <vector>
-
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/constraint.h>
@@ -16,6 +9,13 @@
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/kkt.h>
 #include <sinew/engine/system.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <vector>
+
 #include "engine/test_models.h"
 
 namespace sinew::engine {

@@ -1,14 +1,14 @@
 // The linearized implicit Euler scheme on a stiff spring: stable where the semi-implicit
 // (symplectic) Euler blows up, and first-order accurate on a smooth problem.
 #include <gtest/gtest.h>
-
-#include <cmath>
-#include <memory>
-
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/loads.h>
 #include <sinew/engine/system.h>
+
+#include <cmath>
+#include <memory>
+
 #include "engine/test_models.h"
 
 namespace sinew::engine {

@@ -1,10 +1,6 @@
 // Applied loads (frames and points as documented), saving/restoring states, several systems in
 // one process, and the fixed-step semi-implicit Euler scheme's first-order convergence.
 #include <gtest/gtest.h>
-
-#include <cmath>
-#include <memory>
-
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/dynamics.h>
@@ -12,6 +8,10 @@
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/reactions.h>
 #include <sinew/engine/system.h>
+
+#include <cmath>
+#include <memory>
+
 #include "engine/test_models.h"
 
 namespace sinew::engine {

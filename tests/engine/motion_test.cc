@@ -1,18 +1,18 @@
 // Initial speeds and analytic motions: a spinning ball joint, a rolling (coupled) joint, a
 // torque-free asymmetric body, locked and prescribed coordinates, a massless intermediate body.
 #include <gtest/gtest.h>
-
-#include <cmath>
-#include <memory>
-#include <string>
-#include <vector>
-
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/energy.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/system.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "engine/test_models.h"
 
 namespace sinew::engine {

@@ -3,16 +3,16 @@
 // the .osim values, so the engine is tested apart from the reader), energy conservation, and
 // parameterized versus direct Cartesian joints.
 #include <gtest/gtest.h>
-
-#include <cmath>
-#include <memory>
-#include <string>
-
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/energy.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/projection.h>
 #include <sinew/engine/system.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
 #include "engine/test_models.h"
 
 namespace sinew::engine {

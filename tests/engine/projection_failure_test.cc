@@ -4,14 +4,13 @@
 // used to stall (its modified Newton kept a stale matrix while the error fell by only ~10x per
 // iteration and ran out of iterations at 1.3e-10 against a tolerance of 1e-10).
 #include <gtest/gtest.h>
-
-#include <cmath>
-#include <string>
-
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/projection.h>
+
+#include <cmath>
+#include <string>
 
 #include "engine/chain_model.h"
 

@@ -2,6 +2,10 @@
 // engine be tested independently of the kinematics layer.
 #pragma once
 
+#include <sinew/engine/system.h>
+#include <sinew/kinematics/joint_model.h>
+#include <sinew/math/rotation.h>
+
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -9,10 +13,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <sinew/engine/system.h>
-#include <sinew/kinematics/joint_model.h>
-#include <sinew/math/rotation.h>
 
 namespace sinew::engine::testing {
 

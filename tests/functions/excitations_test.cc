@@ -1,12 +1,10 @@
-#include <sinew/functions/excitations.h>
-
 #include <gtest/gtest.h>
+#include <sinew/common/error.h>
+#include <sinew/functions/excitations.h>
+#include <sinew/functions/functions.h>
 
 #include <cmath>
 #include <numbers>
-
-#include <sinew/common/error.h>
-#include <sinew/functions/functions.h>
 
 namespace sinew {
 namespace {

@@ -2,10 +2,10 @@
 // derivatives.
 #pragma once
 
+#include <sinew/functions/function.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <sinew/functions/function.h>
 
 namespace sinew::testing {
 

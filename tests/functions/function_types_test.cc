@@ -1,14 +1,7 @@
 // Value and derivative tests for the simple OpenSim function types, against hand-computed values
 // and finite differences.
 #include <gtest/gtest.h>
-
-#include <array>
-#include <cmath>
-#include <memory>
-#include <numbers>
-
 #include <sinew/common/error.h>
-#include "finite_difference.h"
 #include <sinew/functions/constant.h>
 #include <sinew/functions/linear_function.h>
 #include <sinew/functions/multiplier_function.h>
@@ -19,6 +12,13 @@
 #include <sinew/functions/simm_spline.h>
 #include <sinew/functions/sine.h>
 #include <sinew/functions/step_function.h>
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include "finite_difference.h"
 
 namespace sinew {
 namespace {

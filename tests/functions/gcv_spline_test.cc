@@ -1,6 +1,6 @@
-#include <sinew/functions/gcv_spline.h>
-
 #include <gtest/gtest.h>
+#include <sinew/common/error.h>
+#include <sinew/functions/gcv_spline.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -10,7 +10,6 @@
 #include <random>
 #include <vector>
 
-#include <sinew/common/error.h>
 #include "finite_difference.h"
 
 namespace sinew {

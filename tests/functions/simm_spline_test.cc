@@ -1,12 +1,11 @@
-#include <sinew/functions/simm_spline.h>
-
 #include <gtest/gtest.h>
+#include <sinew/common/error.h>
+#include <sinew/functions/simm_spline.h>
 
 #include <Eigen/Dense>
 #include <cmath>
 #include <vector>
 
-#include <sinew/common/error.h>
 #include "finite_difference.h"
 
 namespace sinew {

@@ -5,15 +5,14 @@
 // NumberOfPolys and the offsets array. Each case must now be a sinew::Error naming the file and
 // line, with no out-of-bounds read (the ASan CI build checks that part).
 #include <gtest/gtest.h>
+#include <sinew/common/error.h>
+#include <sinew/io/mesh_base64.h>
+#include <sinew/io/mesh_vtp.h>
 #include <zlib.h>
 
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <sinew/common/error.h>
-#include <sinew/io/mesh_base64.h>
-#include <sinew/io/mesh_vtp.h>
 
 namespace sinew {
 namespace {

@@ -1,16 +1,15 @@
 // Tests for the .obj and .stl readers and the OpenSim mesh search order.
 #include <gtest/gtest.h>
+#include <sinew/common/error.h>
+#include <sinew/io/mesh_file.h>
+#include <sinew/io/mesh_obj.h>
+#include <sinew/io/mesh_stl.h>
 
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
-
-#include <sinew/common/error.h>
-#include <sinew/io/mesh_file.h>
-#include <sinew/io/mesh_obj.h>
-#include <sinew/io/mesh_stl.h>
 
 namespace sinew {
 namespace {
@@ -86,7 +85,8 @@ TEST(StlTest, TruncatedOrMalformedFilesThrow) {
 
 TEST(MeshFileTest, SearchesModelFolderThenGeometryThenExtraDirs) {
   namespace fs = std::filesystem;
-  const std::string model = kDataDir + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
+  const std::string model =
+      kDataDir + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
   const std::string extra = kDataDir + "/opensim-org/opensim-models/Geometry";
   std::vector<std::string> dirs = io::MeshSearchDirs(model, {extra});
   ASSERT_GE(dirs.size(), 3u);

@@ -1,16 +1,14 @@
 // Tests for the .vtp reader: a real OpenSim mesh (ascii), and the same small mesh written in
 // every binary variant (base64, zlib blocks, UInt64 headers, big-endian) must read alike.
-#include <sinew/io/mesh_vtp.h>
-
 #include <gtest/gtest.h>
+#include <sinew/common/error.h>
+#include <sinew/io/mesh_base64.h>
+#include <sinew/io/mesh_vtp.h>
 #include <zlib.h>
 
 #include <cstring>
 #include <string>
 #include <vector>
-
-#include <sinew/common/error.h>
-#include <sinew/io/mesh_base64.h>
 
 namespace sinew {
 namespace {

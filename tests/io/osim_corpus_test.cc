@@ -1,8 +1,7 @@
-// Every .osim file of the corpus (SINEW_CORPUS_DIR, see tests/corpus.h) loads, except the files listed
-// below as genuinely broken, which must fail with a precise error (file, line, component).
+// Every .osim file of the corpus (SINEW_CORPUS_DIR, see tests/corpus.h) loads, except the files
+// listed below as genuinely broken, which must fail with a precise error (file, line, component).
 #include <gtest/gtest.h>
-
-#include "corpus.h"
+#include <sinew/io/osim_reader.h>
 
 #include <filesystem>
 #include <fstream>
@@ -10,7 +9,7 @@
 #include <map>
 #include <string>
 
-#include <sinew/io/osim_reader.h>
+#include "corpus.h"
 
 namespace sinew {
 namespace {

@@ -9,14 +9,13 @@
 //   python3 ../io/count_osim.py --joints $FILES   (output saved as sinew/joint_bodies.txt)
 //   python3 ../io/count_osim.py --frames $FILES   (output saved as sinew/joint_frames.txt)
 #include <gtest/gtest.h>
+#include <sinew/io/osim_reader.h>
 
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <sinew/io/osim_reader.h>
 
 namespace sinew {
 namespace {
@@ -28,34 +27,33 @@ struct Expected {
 
 // Output of count_osim.py, unchanged.
 constexpr Expected kExpected[] = {
-    {"clnsmith/opensim-jam/models/lenhart2015/scale_generic_model/lenhart2015_unscaled.osim",
-     40000, 25, 25, 52, 134, 0, 0},
+    {"clnsmith/opensim-jam/models/lenhart2015/scale_generic_model/lenhart2015_unscaled.osim", 40000,
+     25, 25, 52, 134, 0, 0},
     {"opensim-org/opensim-core/OpenSim/Simulation/SimbodyEngine/Test/"
      "double_pendulum_testReverse.osim",
      20302, 2, 2, 2, 0, 0, 0},
-    {"opensim-org/opensim-core/OpenSim/Simulation/Test/BouncingBall_HuntCrossley.osim", 20001,
-     1, 1, 6, 1, 0, 0},
-    {"opensim-org/opensim-core/OpenSim/Simulation/Test/StationDefinedFrames_Advanced.osim",
-     40600, 2, 2, 12, 0, 0, 0},
+    {"opensim-org/opensim-core/OpenSim/Simulation/Test/BouncingBall_HuntCrossley.osim", 20001, 1, 1,
+     6, 1, 0, 0},
+    {"opensim-org/opensim-core/OpenSim/Simulation/Test/StationDefinedFrames_Advanced.osim", 40600,
+     2, 2, 12, 0, 0, 0},
     {"opensim-org/opensim-core/OpenSim/Simulation/Test/arm26.osim", 10901, 2, 2, 2, 6, 0, 3},
-    {"opensim-org/opensim-core/OpenSim/Simulation/Test/double_pendulum.osim", 30501, 2, 2, 2,
-     0, 0, 0},
-    {"opensim-org/opensim-core/OpenSim/Simulation/Test/gait2354_simbody.osim", 10905, 12, 12,
-     23, 54, 0, 0},
+    {"opensim-org/opensim-core/OpenSim/Simulation/Test/double_pendulum.osim", 30501, 2, 2, 2, 0, 0,
+     0},
+    {"opensim-org/opensim-core/OpenSim/Simulation/Test/gait2354_simbody.osim", 10905, 12, 12, 23,
+     54, 0, 0},
     {"opensim-org/opensim-core/OpenSim/Simulation/Test/"
      "testSimulationUtilities_leg6dof9musc_20303.osim",
      20303, 7, 7, 7, 9, 1, 12},
-    {"opensim-org/opensim-core/OpenSim/Tools/Test/BuiltinGeometry.osim", 30517, 1, 1, 6, 3, 1,
-     0},
+    {"opensim-org/opensim-core/OpenSim/Tools/Test/BuiltinGeometry.osim", 30517, 1, 1, 6, 3, 1, 0},
     {"opensim-org/opensim-models/Models/Arm26/arm26.osim", 40000, 3, 3, 2, 6, 0, 3},
-    {"opensim-org/opensim-models/Models/BouncingBlock/bouncing_block.osim", 40000, 3, 3, 8, 4,
-     2, 0},
-    {"opensim-org/opensim-models/Models/Hamner/FullBodyModel_Hamner2010_v2_0.osim", 40000, 20,
-     20, 37, 92, 0, 83},
-    {"opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim", 40000, 22, 22, 39, 97,
-     2, 66},
-    {"projectchrono/chrono/data/opensim/ScapulothorachicJoint_Shoulder.osim", 30000, 7, 7, 17,
-     5, 1, 21},
+    {"opensim-org/opensim-models/Models/BouncingBlock/bouncing_block.osim", 40000, 3, 3, 8, 4, 2,
+     0},
+    {"opensim-org/opensim-models/Models/Hamner/FullBodyModel_Hamner2010_v2_0.osim", 40000, 20, 20,
+     37, 92, 0, 83},
+    {"opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim", 40000, 22, 22, 39, 97, 2,
+     66},
+    {"projectchrono/chrono/data/opensim/ScapulothorachicJoint_Shoulder.osim", 30000, 7, 7, 17, 5, 1,
+     21},
     {"projectchrono/chrono/data/opensim/newton_cradle.osim", 30000, 5, 5, 15, 2, 0, 0},
 };
 

@@ -1,11 +1,10 @@
 // Malformed input gives a sinew::Error naming the file, the line and the component; never a
 // crash, a hang or a silent misread.
 #include <gtest/gtest.h>
+#include <sinew/io/osim_reader.h>
 
 #include <array>
 #include <string>
-
-#include <sinew/io/osim_reader.h>
 
 namespace sinew {
 namespace {

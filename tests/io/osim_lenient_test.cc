@@ -2,11 +2,10 @@
 // '&', a stray non-UTF-8 byte, nested comments. They load as OpenSim loads them, with the line
 // numbers of everything after them unchanged. A truncated file is still an error.
 #include <gtest/gtest.h>
+#include <sinew/io/internal/xml_document.h>
+#include <sinew/io/osim_reader.h>
 
 #include <string>
-
-#include <sinew/io/osim_reader.h>
-#include <sinew/io/internal/xml_document.h>
 
 namespace sinew {
 namespace {

@@ -2,13 +2,12 @@
 // offset frames (nested, relative paths), 3.x offsets and `reverse`, CustomJoint defaults,
 // coordinate order and motion types, markers, StationDefinedFrame, geometry, gravity.
 #include <gtest/gtest.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/math/rotation.h>
 
 #include <cmath>
 #include <numbers>
 #include <string>
-
-#include <sinew/io/osim_reader.h>
-#include <sinew/math/rotation.h>
 
 namespace sinew {
 namespace {
@@ -237,9 +236,8 @@ TEST(OsimSemantics, StationDefinedFrame) {
 
 // Real files: arm26 (4.x) markers, wrap objects, path points; Rajagopal2016 joint frames.
 TEST(OsimSemantics, Arm26PathsWrapsAndMarkers) {
-  const model::ModelSpec spec =
-      io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                   "/opensim-org/opensim-models/Models/Arm26/arm26.osim");
+  const model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                             "/opensim-org/opensim-models/Models/Arm26/arm26.osim");
   const model::ForceSpec& tri = spec.forces[0];
   EXPECT_EQ(tri.type, "Thelen2003Muscle");
   ASSERT_TRUE(tri.geometry_path.has_value());
@@ -254,10 +252,9 @@ TEST(OsimSemantics, Arm26PathsWrapsAndMarkers) {
 }
 
 TEST(OsimSemantics, MovingAndConditionalPathPoints) {
-  const model::ModelSpec spec =
-      io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                   "/opensim-org/opensim-core/OpenSim/Simulation/Test/"
-                   "testSimulationUtilities_leg6dof9musc_20303.osim");
+  const model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                             "/opensim-org/opensim-core/OpenSim/Simulation/Test/"
+                                             "testSimulationUtilities_leg6dof9musc_20303.osim");
   int moving = 0, conditional = 0;
   for (const model::ForceSpec& f : spec.forces) {
     if (!f.geometry_path) continue;
@@ -314,10 +311,9 @@ TEST(OsimSemantics, ContactGeometryAndWrapObjects) {
 
 // 3.05 DisplayGeometry: transform (rotations then translation) and scale factors.
 TEST(OsimSemantics, DisplayGeometry) {
-  const model::ModelSpec spec =
-      io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                   "/opensim-org/opensim-core/OpenSim/Simulation/Test/"
-                   "double_pendulum.osim");
+  const model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
+                                             "/opensim-org/opensim-core/OpenSim/Simulation/Test/"
+                                             "double_pendulum.osim");
   const model::BodySpec& rod1 = spec.bodies[spec.FindBody("rod1")];
   ASSERT_EQ(rod1.geometry.size(), 2u);
   EXPECT_EQ(rod1.geometry[0].mesh_file, "cylinder.vtp");
@@ -398,9 +394,8 @@ TEST(OsimSemantics, PrescribedCoordinates) {
 // chrono's newton_cradle names five joints `sph1` (and their coordinates q1..q3 each): it loads,
 // with warnings, and paths stay unique.
 TEST(OsimSemantics, DuplicateJointNamesLoadWithWarnings) {
-  const model::ModelSpec spec =
-      io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
-                   "/projectchrono/chrono/data/opensim/newton_cradle.osim");
+  const model::ModelSpec spec = io::ReadOsim(
+      std::string(SINEW_TEST_DATA_DIR) + "/projectchrono/chrono/data/opensim/newton_cradle.osim");
   ASSERT_EQ(spec.joints.size(), 5u);
   EXPECT_EQ(spec.joints[0].path, "/jointset/sph1");
   EXPECT_EQ(spec.joints[4].path, "/jointset/sph1_5");

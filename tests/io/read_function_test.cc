@@ -1,15 +1,4 @@
-#include <sinew/io/internal/read_function.h>
-
 #include <gtest/gtest.h>
-
-#include "corpus.h"
-
-#include <cmath>
-#include <filesystem>
-#include <iostream>
-#include <map>
-#include <optional>
-
 #include <sinew/common/error.h>
 #include <sinew/functions/constant.h>
 #include <sinew/functions/gcv_spline.h>
@@ -18,6 +7,15 @@
 #include <sinew/functions/piecewise_linear_function.h>
 #include <sinew/functions/polynomial_function.h>
 #include <sinew/functions/simm_spline.h>
+#include <sinew/io/internal/read_function.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <optional>
+
+#include "corpus.h"
 
 namespace sinew {
 namespace {
@@ -219,8 +217,8 @@ TEST(ReadFunctionTest, ErrorsNameFileLineAndComponent) {
       1, "need 4 coefficients");
 }
 
-// Reads every Function element in every model and setup file of the OpenSim corpus (SINEW_CORPUS_DIR).
-// Every one must load, and a SimmSpline must reproduce its own knots.
+// Reads every Function element in every model and setup file of the OpenSim corpus
+// (SINEW_CORPUS_DIR). Every one must load, and a SimmSpline must reproduce its own knots.
 TEST(ReadFunctionTest, ReadsEveryFunctionInTheCorpus) {
   SINEW_SKIP_WITHOUT_CORPUS();
   const std::filesystem::path root = testing::CorpusDir();
@@ -257,12 +255,15 @@ TEST(ReadFunctionTest, ReadsEveryFunctionInTheCorpus) {
   for (const auto& [type, count] : counts) std::cout << type << ": " << count << "\n";
   // Counted in the corpus: 5,496 function elements. A change in any count means a file was
   // added to the corpus or the reader skips (or invents) functions; update on purpose only.
-  const std::map<std::string, int> expected = {
-      {"Constant", 1858},          {"GCVSpline", 1},
-      {"LinearFunction", 1128},    {"MultiplierFunction", 570},
-      {"MultivariatePolynomialFunction", 2}, {"NaturalCubicSpline", 800},
-      {"PiecewiseLinearFunction", 10},       {"PolynomialFunction", 30},
-      {"SimmSpline", 1097}};
+  const std::map<std::string, int> expected = {{"Constant", 1858},
+                                               {"GCVSpline", 1},
+                                               {"LinearFunction", 1128},
+                                               {"MultiplierFunction", 570},
+                                               {"MultivariatePolynomialFunction", 2},
+                                               {"NaturalCubicSpline", 800},
+                                               {"PiecewiseLinearFunction", 10},
+                                               {"PolynomialFunction", 30},
+                                               {"SimmSpline", 1097}};
   EXPECT_EQ(counts, expected);
   int total = 0;
   for (const auto& [type, count] : counts) total += count;

@@ -2,11 +2,10 @@
 // (nRows=1e300 was converted to long: undefined behaviour) and a table whose only column is a
 // time label with a space in it (written without a tab, it was read back as several columns).
 #include <gtest/gtest.h>
-
-#include <string>
-
 #include <sinew/common/error.h>
 #include <sinew/io/storage.h>
+
+#include <string>
 
 namespace sinew {
 namespace {

@@ -1,8 +1,8 @@
-#include <sinew/io/storage.h>
-
 #include <gtest/gtest.h>
-
-#include "corpus.h"
+#include <sinew/common/error.h>
+#include <sinew/io/storage.h>
+#include <sinew/io/storage_functions.h>
+#include <sinew/io/storage_labels.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,9 +13,7 @@
 #include <string>
 #include <vector>
 
-#include <sinew/common/error.h>
-#include <sinew/io/storage_functions.h>
-#include <sinew/io/storage_labels.h>
+#include "corpus.h"
 
 namespace sinew {
 namespace {
@@ -71,7 +69,7 @@ TEST(StorageTest, DegreesFileMatchesItsRadiansTwin) {
   ASSERT_EQ(degrees.notes.size(), 1u);
   EXPECT_NE(degrees.notes[0].message.find("as OpenSim reads a SIMM motion"), std::string::npos);
   EXPECT_EQ(degrees.comments.front(), "# SIMM Motion File Header:");
-  EXPECT_EQ(degrees.Metadata("nRows"), "");  // nRows is structural, not metadata
+  EXPECT_EQ(degrees.Metadata("nRows"), "");                     // nRows is structural, not metadata
   const std::vector<std::string> model_coordinates = {"r1_z"};  // r1_z is rotational
   io::ConvertDegreesToRadians(degrees, model_coordinates);
   ASSERT_EQ(radians.NumRows(), 302);
@@ -97,13 +95,13 @@ TEST(StorageTest, WithoutInDegreesTheUnitFollowsOpenSimsRule) {
     bool degrees, stated;
   };
   const Case cases[] = {
-      {"m\n", "old.mot", true, false},                  // SIMM motion: degrees
-      {"m\nversion=0\n", "old.MOT", true, false},      // version 0 is old too
-      {"m\nversion=1\n", "new.mot", false, false},     // version 1: OpenSim's default, radians
-      {"m\n", "old.sto", false, false},                 // not a .mot: radians
+      {"m\n", "old.mot", true, false},              // SIMM motion: degrees
+      {"m\nversion=0\n", "old.MOT", true, false},   // version 0 is old too
+      {"m\nversion=1\n", "new.mot", false, false},  // version 1: OpenSim's default, radians
+      {"m\n", "old.sto", false, false},             // not a .mot: radians
       {"m\nAngles are in radians.\n", "old.mot", false, true},
       {"m\nAngles are in degrees.\n", "old.sto", true, true},
-      {"m\ninDegrees=no\n", "old.mot", false, true},   // a stated unit is followed
+      {"m\ninDegrees=no\n", "old.mot", false, true},  // a stated unit is followed
   };
   for (const Case& c : cases) {
     const io::Storage s = io::ParseStorage(c.header + body, c.file);
@@ -204,7 +202,8 @@ TEST(StorageTest, WriteReadRoundTripIsExact) {
   EXPECT_EQ(reread.in_degrees, original.in_degrees);
 }
 
-// Every .sto/.mot in the OpenSim corpus (SINEW_CORPUS_DIR) reads; wrong declared counts are only noted.
+// Every .sto/.mot in the OpenSim corpus (SINEW_CORPUS_DIR) reads; wrong declared counts are only
+// noted.
 TEST(StorageTest, ReadsEveryStorageFileInTheCorpus) {
   SINEW_SKIP_WITHOUT_CORPUS();
   const std::filesystem::path root = testing::CorpusDir();

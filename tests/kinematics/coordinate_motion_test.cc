@@ -1,6 +1,5 @@
-#include <sinew/kinematics/coordinate_motion.h>
-
 #include <gtest/gtest.h>
+#include <sinew/kinematics/coordinate_motion.h>
 
 #include <numbers>
 #include <string>

@@ -1,18 +1,17 @@
-// Every model of the OpenSim corpus (SINEW_CORPUS_DIR) can be posed at its default coordinates: the joint
-// tree builds, every pose is finite and rotations are orthonormal. Files the reader rejects
+// Every model of the OpenSim corpus (SINEW_CORPUS_DIR) can be posed at its default coordinates: the
+// joint tree builds, every pose is finite and rotations are orthonormal. Files the reader rejects
 // are skipped (listed), as are models with joint types Sinew does not model (listed).
 #include <gtest/gtest.h>
-
-#include "corpus.h"
+#include <sinew/io/osim_reader.h>
+#include <sinew/kinematics/forward_kinematics.h>
+#include <sinew/kinematics/kinematic_tree.h>
 
 #include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include <sinew/io/osim_reader.h>
-#include <sinew/kinematics/forward_kinematics.h>
-#include <sinew/kinematics/kinematic_tree.h>
+#include "corpus.h"
 
 namespace sinew {
 namespace {

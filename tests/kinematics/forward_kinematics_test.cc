@@ -1,15 +1,14 @@
 // Forward kinematics on hand-built models: poses derived by hand, reversed joints, and body
 // velocities against finite differences of the poses.
-#include <sinew/kinematics/forward_kinematics.h>
-
 #include <gtest/gtest.h>
+#include <sinew/kinematics/forward_kinematics.h>
+#include <sinew/math/rotation.h>
 
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "kinematics/test_functions.h"
-#include <sinew/math/rotation.h>
 
 namespace sinew {
 namespace {

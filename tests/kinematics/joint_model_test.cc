@@ -1,8 +1,8 @@
 // Every joint type: X_FM against hand-derived values, and H_FM, N(q) and Hdot*u against
 // central finite differences of X_FM along the motion qdot = N(q) u.
-#include <sinew/kinematics/joint_model.h>
-
 #include <gtest/gtest.h>
+#include <sinew/kinematics/joint_model.h>
+#include <sinew/math/rotation.h>
 
 #include <cmath>
 #include <numbers>
@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "kinematics/test_functions.h"
-#include <sinew/math/rotation.h>
 
 namespace sinew {
 namespace {

@@ -1,6 +1,12 @@
 // Forward kinematics of real OpenSim models against results OpenSim produced (Hamner IK marker
 // locations, Gait2354 BodyKinematics) and against hand-derived poses of the seed's models.
 #include <gtest/gtest.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/kinematics/body_kinematics.h>
+#include <sinew/kinematics/coordinate_motion.h>
+#include <sinew/kinematics/forward_kinematics.h>
+#include <sinew/kinematics/kinematic_tree.h>
+#include <sinew/math/rotation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -8,13 +14,7 @@
 #include <string>
 #include <vector>
 
-#include <sinew/io/osim_reader.h>
-#include <sinew/kinematics/body_kinematics.h>
-#include <sinew/kinematics/coordinate_motion.h>
-#include <sinew/kinematics/forward_kinematics.h>
-#include <sinew/kinematics/kinematic_tree.h>
 #include "kinematics/sto_table.h"
-#include <sinew/math/rotation.h>
 
 namespace sinew {
 namespace {
@@ -22,7 +22,8 @@ namespace {
 using sinew::testing::ReadStoTable;
 using sinew::testing::StoTable;
 
-const std::string kData = std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-models/Pipelines/";
+const std::string kData =
+    std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-models/Pipelines/";
 const std::string kChrono =
     std::string(SINEW_TEST_DATA_DIR) + "/projectchrono/chrono/data/opensim/";
 
@@ -42,9 +43,12 @@ void ForEachPose(const model::ModelSpec& spec, const StoTable& motion, Check che
 }
 
 TEST(OpenSimReferenceTest, HamnerMarkersMatchOpenSimIK) {
-  const model::ModelSpec spec = io::ReadOsim(kData + "Hamner/outputReference/subject02_registered.osim");
-  const StoTable motion = ReadStoTable(kData + "Hamner/outputReference/ResultsIK/subject02_running_ik.mot");
-  const StoTable reference = ReadStoTable(kData + "Hamner/outputReference/ResultsIK/ik_model_marker_locations.sto");
+  const model::ModelSpec spec =
+      io::ReadOsim(kData + "Hamner/outputReference/subject02_registered.osim");
+  const StoTable motion =
+      ReadStoTable(kData + "Hamner/outputReference/ResultsIK/subject02_running_ik.mot");
+  const StoTable reference =
+      ReadStoTable(kData + "Hamner/outputReference/ResultsIK/ik_model_marker_locations.sto");
   ASSERT_EQ(reference.rows.size(), 599u);
   ASSERT_EQ(reference.labels.size(), 1 + 37 * 3u);
   ASSERT_EQ(motion.rows.size(), reference.rows.size());
@@ -82,9 +86,12 @@ TEST(OpenSimReferenceTest, HamnerPelvisMarkerResidualIsAConstantOffset) {
   // The residual of a pelvis marker is (nearly) the same vector in the pelvis frame in all 599
   // frames: it comes from the model (the stored geometry differs slightly from the one IK ran
   // with), not from the kinematics, which would make it vary with the pose.
-  const model::ModelSpec spec = io::ReadOsim(kData + "Hamner/outputReference/subject02_registered.osim");
-  const StoTable motion = ReadStoTable(kData + "Hamner/outputReference/ResultsIK/subject02_running_ik.mot");
-  const StoTable reference = ReadStoTable(kData + "Hamner/outputReference/ResultsIK/ik_model_marker_locations.sto");
+  const model::ModelSpec spec =
+      io::ReadOsim(kData + "Hamner/outputReference/subject02_registered.osim");
+  const StoTable motion =
+      ReadStoTable(kData + "Hamner/outputReference/ResultsIK/subject02_running_ik.mot");
+  const StoTable reference =
+      ReadStoTable(kData + "Hamner/outputReference/ResultsIK/ik_model_marker_locations.sto");
   for (const char* name : {"L.ASIS", "R.ASIS", "V.Sacral"}) {
     const auto it = std::find_if(spec.markers.begin(), spec.markers.end(),
                                  [&](const model::MarkerSpec& m) { return m.name == name; });
@@ -115,10 +122,13 @@ double AngleDifferenceDeg(double a, double b) {
 }
 
 TEST(OpenSimReferenceTest, Gait2354BodyKinematicsMatchOpenSim) {
-  const model::ModelSpec spec = io::ReadOsim(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
-  const StoTable motion = ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto");
-  const StoTable reference =
-      ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_BodyKinematics_pos_global.sto");
+  const model::ModelSpec spec =
+      io::ReadOsim(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
+  const StoTable motion = ReadStoTable(
+      kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto");
+  const StoTable reference = ReadStoTable(kData +
+                                          "Gait2354_Simbody/OutputReference/ResultsForward/"
+                                          "subject01_walk1_BodyKinematics_pos_global.sto");
   ASSERT_EQ(motion.rows.size(), reference.rows.size());
   const std::vector<std::string> labels = kinematics::BodyKinematicsLabels(spec);
   double max_position = 0.0, max_angle = 0.0;
@@ -150,10 +160,13 @@ TEST(OpenSimReferenceTest, Gait2354TorsoDiffersByAConstantOffset) {
   // SOURCES.md: the torso mass centre of the stored model differs from the one OpenSim ran
   // with. Its angles must still match, and the position error must be a constant body-fixed
   // offset (same in every frame), which is what a different mass_center gives.
-  const model::ModelSpec spec = io::ReadOsim(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
-  const StoTable motion = ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto");
-  const StoTable reference =
-      ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_BodyKinematics_pos_global.sto");
+  const model::ModelSpec spec =
+      io::ReadOsim(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
+  const StoTable motion = ReadStoTable(
+      kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto");
+  const StoTable reference = ReadStoTable(kData +
+                                          "Gait2354_Simbody/OutputReference/ResultsForward/"
+                                          "subject01_walk1_BodyKinematics_pos_global.sto");
   const int torso = spec.FindBody("torso");
   ASSERT_GE(torso, 0);
   const int cx = reference.Column("torso_X");
@@ -178,13 +191,18 @@ TEST(OpenSimReferenceTest, Gait2354BodyVelocitiesMatchOpenSim) {
   // stored model's geometry differs from the one OpenSim ran by tens of nanometres, see
   // Gait2354HipOffsetIsConstantInThePelvis): v_ref - v = d/dt (p_ref - p), which we check with
   // a three-point difference over the (non-uniform) rows.
-  const model::ModelSpec spec = io::ReadOsim(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
-  const StoTable motion_q = ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto");
-  const StoTable motion_u = ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_u.sto");
-  const StoTable ref_p =
-      ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_BodyKinematics_pos_global.sto");
-  const StoTable ref_v =
-      ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_BodyKinematics_vel_global.sto");
+  const model::ModelSpec spec =
+      io::ReadOsim(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
+  const StoTable motion_q = ReadStoTable(
+      kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto");
+  const StoTable motion_u = ReadStoTable(
+      kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_u.sto");
+  const StoTable ref_p = ReadStoTable(kData +
+                                      "Gait2354_Simbody/OutputReference/ResultsForward/"
+                                      "subject01_walk1_BodyKinematics_pos_global.sto");
+  const StoTable ref_v = ReadStoTable(kData +
+                                      "Gait2354_Simbody/OutputReference/ResultsForward/"
+                                      "subject01_walk1_BodyKinematics_vel_global.sto");
   const kinematics::KinematicTree tree(spec);
   const kinematics::MotionColumnMap map_q = kinematics::MapMotionColumns(spec, motion_q.labels);
   const kinematics::MotionColumnMap map_u = kinematics::MapMotionColumns(spec, motion_u.labels);
@@ -244,10 +262,13 @@ TEST(OpenSimReferenceTest, Gait2354HipOffsetIsConstantInThePelvis) {
   // The femur's mass-centre discrepancy is the same vector in the pelvis frame at every row:
   // the hip joint centre of the stored model differs from the run's by tens of nanometres, a
   // model difference and not a kinematics error (rotations match to 1e-13 degrees).
-  const model::ModelSpec spec = io::ReadOsim(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
-  const StoTable motion = ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto");
-  const StoTable reference =
-      ReadStoTable(kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_BodyKinematics_pos_global.sto");
+  const model::ModelSpec spec =
+      io::ReadOsim(kData + "Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
+  const StoTable motion = ReadStoTable(
+      kData + "Gait2354_Simbody/OutputReference/ResultsForward/subject01_walk1_Kinematics_q.sto");
+  const StoTable reference = ReadStoTable(kData +
+                                          "Gait2354_Simbody/OutputReference/ResultsForward/"
+                                          "subject01_walk1_BodyKinematics_pos_global.sto");
   const int pelvis = spec.FindBody("pelvis");
   for (const char* femur : {"femur_r", "femur_l"}) {
     const int b = spec.FindBody(femur);

@@ -1,12 +1,12 @@
 // Tiny Function subclasses for kinematics tests (so the tests need no other layer's classes).
 #pragma once
 
+#include <sinew/functions/function.h>
+
 #include <cmath>
 #include <memory>
 #include <span>
 #include <string>
-
-#include <sinew/functions/function.h>
 
 namespace sinew::testing {
 

@@ -1,10 +1,8 @@
-#include <sinew/math/rotation.h>
-
 #include <gtest/gtest.h>
+#include <sinew/math/rotation.h>
+#include <sinew/math/transform.h>
 
 #include <cmath>
-
-#include <sinew/math/transform.h>
 
 namespace sinew {
 namespace {

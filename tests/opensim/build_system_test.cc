@@ -1,20 +1,19 @@
 // The skeleton build on real OpenSim files: SinglePin and DoublePendulum3D (3.x-era CustomJoints)
 // reproduce OpenSim's stored states; gait2354 conserves energy; bad models give clear errors.
-#include <sinew/opensim/build_system.h>
-
 #include <gtest/gtest.h>
-
-#include <cmath>
-#include <cstdio>
-#include <string>
-
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/dynamics.h>
 #include <sinew/engine/energy.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/projection.h>
-#include "engine/test_models.h"
 #include <sinew/io/osim_reader.h>
+#include <sinew/opensim/build_system.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "engine/test_models.h"
 
 namespace sinew {
 namespace {
@@ -80,8 +79,9 @@ TEST(BuildSystemTest, DoublePendulum3DReproducesOpenSim) {
 // gait2354 hung from its pelvis (pelvis coordinates locked), limbs swinging from a bent pose:
 // passive, so kinetic + gravity energy is conserved; constraints stay satisfied.
 TEST(BuildSystemTest, Gait2354HungFromPelvisConservesEnergy) {
-  model::ModelSpec spec =
-      io::ReadOsim(kData + "/opensim-org/opensim-models/Pipelines/Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
+  model::ModelSpec spec = io::ReadOsim(kData +
+                                       "/opensim-org/opensim-models/Pipelines/Gait2354_Simbody/"
+                                       "OutputReference/subject01_simbody_adjusted.osim");
   for (model::CoordinateSpec& c : spec.coordinates) {
     if (c.name.rfind("pelvis_", 0) == 0) c.locked = true;
   }
@@ -157,7 +157,9 @@ namespace {
 // The linear-time tree elimination and the general sparse LU solve the same KKT system.
 TEST(BuildSystemTest, TreeEliminationEqualsSparseLu) {
   const model::ModelSpec spec =
-      io::ReadOsim(kData + "/opensim-org/opensim-models/Pipelines/Gait2354_Simbody/OutputReference/subject01_simbody_adjusted.osim");
+      io::ReadOsim(kData +
+                   "/opensim-org/opensim-models/Pipelines/Gait2354_Simbody/OutputReference/"
+                   "subject01_simbody_adjusted.osim");
   for (bool direct : {true, false}) {
     opensim::BuildOptions options;
     options.direct_joints = direct;

@@ -2,16 +2,15 @@
 // closed forms: a CoordinateActuator driven beyond its max_control (unclamped, as OpenSim), and
 // a prescribed coordinate with a free slider riding on it.
 #include <gtest/gtest.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/forces/actuator.h>
+#include <sinew/opensim/parser.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
-
-#include <sinew/engine/assemble.h>
-#include <sinew/engine/integrator.h>
-#include <sinew/forces/actuator.h>
-#include <sinew/opensim/parser.h>
 
 namespace sinew {
 namespace {

@@ -2,21 +2,20 @@
 // milliseconds with satisfied constraints and finite states, or is refused with a sinew::Error
 // (never a crash or NaNs). Skipped when the corpus is absent.
 #include <gtest/gtest.h>
-
-#include "corpus.h"
-
-#include <algorithm>
-#include <map>
-#include <cstdio>
-#include <filesystem>
-#include <string>
-#include <vector>
-
-#include <sinew/opensim/build_system.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/projection.h>
 #include <sinew/io/osim_reader.h>
+#include <sinew/opensim/build_system.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "corpus.h"
 
 namespace sinew {
 namespace {

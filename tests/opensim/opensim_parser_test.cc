@@ -1,18 +1,16 @@
 // The seed's parser API on the seed's own models: actuators against analytic solutions, the
 // Report, stand-ins, strict mode, controls files, and parsing more than once.
-#include <sinew/opensim/parser.h>
-
 #include <gtest/gtest.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/functions/excitations.h>
+#include <sinew/functions/linear_function.h>
+#include <sinew/opensim/parser.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
-
-#include <sinew/engine/assemble.h>
-#include <sinew/engine/integrator.h>
-#include <sinew/functions/excitations.h>
-#include <sinew/functions/linear_function.h>
 
 namespace sinew {
 namespace {

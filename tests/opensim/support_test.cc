@@ -1,9 +1,7 @@
 // ListNotSimulated: one line per element the engine does not handle yet, in model order.
-#include <sinew/opensim/support.h>
-
 #include <gtest/gtest.h>
-
 #include <sinew/io/osim_reader.h>
+#include <sinew/opensim/support.h>
 
 namespace sinew {
 namespace {

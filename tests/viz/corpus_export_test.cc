@@ -1,18 +1,17 @@
-// Every model of the OpenSim corpus (SINEW_CORPUS_DIR) goes through the visualization pipeline (mesh mode
-// with the corpus' Geometry folder, default pose) without crashing, and every mesh file the
-// models name that exists in the corpus is read. Skipped when the corpus is absent.
+// Every model of the OpenSim corpus (SINEW_CORPUS_DIR) goes through the visualization pipeline
+// (mesh mode with the corpus' Geometry folder, default pose) without crashing, and every mesh file
+// the models name that exists in the corpus is read. Skipped when the corpus is absent.
 #include <gtest/gtest.h>
-
-#include "corpus.h"
-
-#include <filesystem>
-#include <set>
-
 #include <sinew/io/mesh_file.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/viz/gltf_writer.h>
 #include <sinew/viz/motion_poses.h>
 #include <sinew/viz/visual_scene.h>
+
+#include <filesystem>
+#include <set>
+
+#include "corpus.h"
 
 namespace sinew::viz {
 namespace {

@@ -2,6 +2,10 @@
 // web/package.json) with no errors and no warnings: a reference independent of our writer and
 // of our own parsing in glb_test_util.h. Skipped when node or the validator is not installed.
 #include <gtest/gtest.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
+#include <sinew/viz/gltf_writer.h>
+#include <sinew/viz/motion_poses.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -11,10 +15,6 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include <sinew/io/osim_reader.h>
-#include <sinew/io/storage.h>
-#include <sinew/viz/gltf_writer.h>
-#include <sinew/viz/motion_poses.h>
 #include "viz/two_link_spec.h"
 
 namespace sinew::viz {
@@ -38,10 +38,12 @@ TEST(GltfValidatorTest, KhronosValidatorFindsNoIssues) {
   VisualOptions none;
   none.mode = VisType::kNone;
   const model::ModelSpec two_link = testing::TwoLinkSpec();
-  const model::ModelSpec rajagopal =
-      io::ReadOsim(testing::kDataDir + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
+  const model::ModelSpec rajagopal = io::ReadOsim(
+      testing::kDataDir + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
   const BodyMotion running = MotionFromTable(
-      rajagopal, io::ReadStorage(testing::kDataDir + "/opensim-org/opensim-models/Pipelines/Hamner/outputReference/ResultsIK/subject02_running_ik.mot"),
+      rajagopal,
+      io::ReadStorage(testing::kDataDir + "/opensim-org/opensim-models/Pipelines/Hamner/"
+                                          "outputReference/ResultsIK/subject02_running_ik.mot"),
       nullptr);
   const std::vector<std::pair<std::string, std::vector<uint8_t>>> files = {
       {"animated.glb",

@@ -1,14 +1,13 @@
 // The .glb written for a small hand-made model: container layout, node/mesh structure,
 // accessor bounds and the animation samples, all read back with nlohmann-json.
-#include <sinew/viz/gltf_writer.h>
-
 #include <gtest/gtest.h>
-
-#include <cmath>
-
 #include <sinew/kinematics/body_depths.h>
 #include <sinew/math/rotation.h>
 #include <sinew/viz/export_animation.h>
+#include <sinew/viz/gltf_writer.h>
+
+#include <cmath>
+
 #include "viz/glb_test_util.h"
 #include "viz/two_link_spec.h"
 

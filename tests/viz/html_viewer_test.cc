@@ -1,16 +1,15 @@
 // The HTML viewer in headless Chromium (software WebGL through SwiftShader): the page must show
 // the model (not a blank canvas) and the picture must change as the animation plays.
-#include <sinew/viz/html_viewer.h>
-
 #include <gtest/gtest.h>
+#include <sinew/viz/export_animation.h>
+#include <sinew/viz/html_viewer.h>
+#include <sinew/viz/image.h>
 #include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 
-#include <sinew/viz/export_animation.h>
-#include <sinew/viz/image.h>
 #include "viz/two_link_spec.h"
 
 namespace sinew::viz {

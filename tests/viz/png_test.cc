@@ -2,9 +2,9 @@
 // 15948): chunks parsed by hand, every CRC checked with a CRC-32 written here, the image data
 // inflated with zlib directly and the row filters undone here. And the library's decoder on
 // images this test encodes with every row filter.
-#include <sinew/viz/image.h>
-
 #include <gtest/gtest.h>
+#include <sinew/common/error.h>
+#include <sinew/viz/image.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -14,8 +14,6 @@
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <sinew/common/error.h>
 
 namespace sinew::viz {
 namespace {

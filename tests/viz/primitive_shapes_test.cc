@@ -1,7 +1,6 @@
 // The unit shapes must be closed-looking, outward facing, and the size their doc says.
-#include <sinew/viz/primitive_shapes.h>
-
 #include <gtest/gtest.h>
+#include <sinew/viz/primitive_shapes.h>
 
 namespace sinew::viz {
 namespace {

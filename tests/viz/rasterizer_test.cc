@@ -1,11 +1,9 @@
 // The software renderer against hand-computed projections.
+#include <gtest/gtest.h>
+#include <sinew/viz/primitive_shapes.h>
 #include <sinew/viz/rasterizer.h>
 
-#include <gtest/gtest.h>
-
 #include <cmath>
-
-#include <sinew/viz/primitive_shapes.h>
 
 namespace sinew::viz {
 namespace {

@@ -2,11 +2,11 @@
 // a mesh, an analytic sphere and a missing mesh, and a motion that swings it.
 #pragma once
 
-#include <string>
-
 #include <sinew/math/rotation.h>
 #include <sinew/model/model_spec.h>
 #include <sinew/viz/body_motion.h>
+
+#include <string>
 
 namespace sinew::viz::testing {
 

@@ -4,10 +4,10 @@
 // its children.
 #pragma once
 
-#include <vector>
-
 #include <sinew/math/types.h>
 #include <sinew/model/model_spec.h>
+
+#include <vector>
 
 namespace sinew::contact {
 

@@ -1,12 +1,11 @@
-#include <sinew/engine/assemble.h>
-
-#include <string>
-#include <vector>
-
 #include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
 #include <sinew/engine/direct_joint.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/projection.h>
+
+#include <string>
+#include <vector>
 
 namespace sinew::engine {
 namespace {

@@ -2,10 +2,10 @@
 // reading coordinates back from body poses.
 #pragma once
 
-#include <string_view>
-
 #include <sinew/engine/state.h>
 #include <sinew/engine/system.h>
+
+#include <string_view>
 
 namespace sinew::engine {
 

@@ -2,9 +2,9 @@
 // origin need not be the mass centre (the seed's ChBodyAuxRef).
 #pragma once
 
-#include <string>
-
 #include <sinew/math/types.h>
+
+#include <string>
 
 namespace sinew::engine {
 

@@ -3,9 +3,9 @@
 // acceleration right-hand side b = -Jdot v + dc/dt.
 #pragma once
 
-#include <vector>
-
 #include <sinew/math/types.h>
+
+#include <vector>
 
 namespace sinew::engine {
 

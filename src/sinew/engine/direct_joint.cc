@@ -1,9 +1,8 @@
 #include <sinew/engine/direct_joint.h>
+#include <sinew/math/rotation.h>
 
 #include <cmath>
 #include <numbers>
-
-#include <sinew/math/rotation.h>
 
 namespace sinew::engine {
 namespace {

@@ -2,10 +2,10 @@
 // velocity maps, used to place bodies, and the read-off of their coordinates from body poses.
 #pragma once
 
-#include <span>
-
 #include <sinew/engine/system.h>
 #include <sinew/math/transform.h>
+
+#include <span>
 
 namespace sinew::engine {
 

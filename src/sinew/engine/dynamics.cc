@@ -1,9 +1,8 @@
+#include <sinew/engine/direct_joint.h>
 #include <sinew/engine/dynamics.h>
+#include <sinew/engine/pose.h>
 
 #include <vector>
-
-#include <sinew/engine/direct_joint.h>
-#include <sinew/engine/pose.h>
 
 namespace sinew::engine {
 namespace {

@@ -1,4 +1,9 @@
+#include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/dynamics.h>
 #include <sinew/engine/integrator.h>
+#include <sinew/engine/pose.h>
+#include <sinew/engine/projection.h>
 
 #include <Eigen/LU>
 #include <algorithm>
@@ -6,12 +11,6 @@
 #include <cstdio>
 #include <string>
 #include <vector>
-
-#include <sinew/common/error.h>
-#include <sinew/engine/assemble.h>
-#include <sinew/engine/dynamics.h>
-#include <sinew/engine/pose.h>
-#include <sinew/engine/projection.h>
 
 namespace sinew::engine {
 

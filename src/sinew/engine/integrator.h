@@ -10,14 +10,14 @@
 //    differences, dense solve): stable for stiff springs and dampers on small models.
 #pragma once
 
-#include <memory>
-#include <string>
-
 #include <sinew/engine/kkt.h>
 #include <sinew/engine/loads.h>
 #include <sinew/engine/projection.h>
 #include <sinew/engine/state.h>
 #include <sinew/engine/system.h>
+
+#include <memory>
+#include <string>
 
 namespace sinew::engine {
 

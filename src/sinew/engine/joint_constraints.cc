@@ -1,12 +1,11 @@
 #include <sinew/engine/joint_constraints.h>
+#include <sinew/engine/pose.h>
+#include <sinew/engine/state.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
-
-#include <sinew/engine/pose.h>
-#include <sinew/engine/state.h>
 
 namespace sinew::engine {
 namespace {

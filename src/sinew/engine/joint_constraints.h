@@ -1,10 +1,10 @@
 // The constraints that impose joints and coordinate locks / prescribed motions.
 #pragma once
 
-#include <memory>
-
 #include <sinew/engine/constraint.h>
 #include <sinew/engine/system.h>
+
+#include <memory>
 
 namespace sinew::engine {
 

@@ -1,9 +1,8 @@
+#include <sinew/common/error.h>
 #include <sinew/engine/kkt.h>
 
 #include <cmath>
 #include <string>
-
-#include <sinew/common/error.h>
 
 namespace sinew::engine {
 namespace {

@@ -8,14 +8,14 @@
 // analysed once and only refactorized per evaluation (sparse LU, COLAMD ordering).
 #pragma once
 
+#include <sinew/engine/state.h>
+#include <sinew/engine/system.h>
+#include <sinew/engine/tree_solver.h>
+
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 #include <memory>
 #include <vector>
-
-#include <sinew/engine/state.h>
-#include <sinew/engine/system.h>
-#include <sinew/engine/tree_solver.h>
 
 namespace sinew::engine {
 

@@ -1,5 +1,4 @@
 #include <sinew/engine/loads.h>
-
 #include <sinew/engine/pose.h>
 #include <sinew/engine/state.h>
 

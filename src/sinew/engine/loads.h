@@ -2,9 +2,9 @@
 // ForceElement interface through which force models add them.
 #pragma once
 
-#include <vector>
-
 #include <sinew/math/types.h>
+
+#include <vector>
 
 namespace sinew::engine {
 

@@ -1,12 +1,11 @@
+#include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/pose.h>
 #include <sinew/engine/projection.h>
 
 #include <cmath>
 #include <limits>
 #include <vector>
-
-#include <sinew/common/error.h>
-#include <sinew/engine/assemble.h>
-#include <sinew/engine/pose.h>
 
 namespace sinew::engine {
 

@@ -1,6 +1,5 @@
-#include <sinew/engine/reactions.h>
-
 #include <sinew/engine/pose.h>
+#include <sinew/engine/reactions.h>
 
 namespace sinew::engine {
 

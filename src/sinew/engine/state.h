@@ -2,10 +2,10 @@
 // A State is a plain value: copy it to save it, assign it back to restore it.
 #pragma once
 
-#include <vector>
-
 #include <sinew/engine/body.h>
 #include <sinew/math/types.h>
+
+#include <vector>
 
 namespace sinew::engine {
 

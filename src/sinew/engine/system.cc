@@ -1,10 +1,9 @@
-#include <sinew/engine/system.h>
-
-#include <cmath>
-
 #include <sinew/common/error.h>
 #include <sinew/engine/direct_joint.h>
 #include <sinew/engine/joint_constraints.h>
+#include <sinew/engine/system.h>
+
+#include <cmath>
 
 namespace sinew::engine {
 

@@ -3,18 +3,18 @@
 // in an engine::State; algorithms are free functions over (System, State).
 #pragma once
 
-#include <algorithm>
-#include <memory>
-#include <string>
-#include <string_view>
-#include <vector>
-
 #include <sinew/engine/body.h>
 #include <sinew/engine/constraint.h>
 #include <sinew/engine/loads.h>
 #include <sinew/functions/function.h>
 #include <sinew/kinematics/joint_model.h>
 #include <sinew/math/transform.h>
+
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
 
 namespace sinew::engine {
 

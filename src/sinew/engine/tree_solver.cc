@@ -1,9 +1,8 @@
+#include <sinew/common/error.h>
+#include <sinew/engine/system.h>
 #include <sinew/engine/tree_solver.h>
 
 #include <string>
-
-#include <sinew/common/error.h>
-#include <sinew/engine/system.h>
 
 namespace sinew::engine {
 

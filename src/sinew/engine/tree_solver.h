@@ -6,10 +6,10 @@
 // are fine when their joints take away the directions without inertia).
 #pragma once
 
+#include <sinew/math/types.h>
+
 #include <Eigen/LU>
 #include <vector>
-
-#include <sinew/math/types.h>
 
 namespace sinew::engine {
 

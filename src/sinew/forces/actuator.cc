@@ -1,10 +1,9 @@
-#include <sinew/forces/actuator.h>
-
-#include <utility>
-
 #include <sinew/common/error.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/state.h>
+#include <sinew/forces/actuator.h>
+
+#include <utility>
 
 namespace sinew::forces {
 namespace {

@@ -5,12 +5,12 @@
 // such as Static Optimization and CMC).
 #pragma once
 
-#include <limits>
-#include <string>
-
 #include <sinew/engine/loads.h>
 #include <sinew/functions/function.h>
 #include <sinew/math/types.h>
+
+#include <limits>
+#include <string>
 
 namespace sinew::forces {
 

@@ -1,5 +1,4 @@
 #include <sinew/functions/constant.h>
-
 #include <sinew/functions/derivative_order.h>
 
 namespace sinew::functions {

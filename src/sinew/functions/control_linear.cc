@@ -1,9 +1,8 @@
+#include <sinew/common/error.h>
 #include <sinew/functions/control_linear.h>
 
 #include <algorithm>
 #include <utility>
-
-#include <sinew/common/error.h>
 
 namespace sinew::functions {
 

@@ -2,9 +2,9 @@
 // files (e.g. the Static Optimization controls that drive a forward simulation).
 #pragma once
 
-#include <vector>
-
 #include <sinew/functions/function.h>
+
+#include <vector>
 
 namespace sinew::functions {
 

@@ -1,6 +1,5 @@
-#include <sinew/functions/derivative_order.h>
-
 #include <sinew/common/error.h>
+#include <sinew/functions/derivative_order.h>
 
 namespace sinew::functions {
 

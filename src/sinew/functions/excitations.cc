@@ -1,11 +1,10 @@
+#include <sinew/common/error.h>
+#include <sinew/functions/derivative_order.h>
 #include <sinew/functions/excitations.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-
-#include <sinew/common/error.h>
-#include <sinew/functions/derivative_order.h>
 
 namespace sinew::functions {
 

@@ -3,9 +3,9 @@
 // e.g. std::make_shared<SimmSpline>(times, values).
 #pragma once
 
-#include <functional>
-
 #include <sinew/functions/function.h>
+
+#include <functional>
 
 namespace sinew::functions {
 

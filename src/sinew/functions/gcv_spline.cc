@@ -1,14 +1,13 @@
+#include <sinew/common/error.h>
+#include <sinew/functions/derivative_order.h>
 #include <sinew/functions/gcv_spline.h>
+#include <sinew/functions/knots.h>
 
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <sinew/common/error.h>
-#include <sinew/functions/derivative_order.h>
-#include <sinew/functions/knots.h>
 
 namespace sinew::functions {
 namespace {

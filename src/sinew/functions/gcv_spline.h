@@ -1,9 +1,9 @@
 // OpenSim's GCVSpline (Woltring's GCVSPL spline), for the interpolating case.
 #pragma once
 
-#include <vector>
-
 #include <sinew/functions/function.h>
+
+#include <vector>
 
 namespace sinew::functions {
 

@@ -1,8 +1,7 @@
+#include <sinew/common/error.h>
 #include <sinew/functions/knots.h>
 
 #include <cmath>
-
-#include <sinew/common/error.h>
 
 namespace sinew::functions {
 

@@ -1,6 +1,5 @@
-#include <sinew/functions/linear_function.h>
-
 #include <sinew/functions/derivative_order.h>
+#include <sinew/functions/linear_function.h>
 
 namespace sinew::functions {
 

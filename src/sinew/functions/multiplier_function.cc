@@ -1,6 +1,5 @@
-#include <sinew/functions/multiplier_function.h>
-
 #include <sinew/common/error.h>
+#include <sinew/functions/multiplier_function.h>
 
 namespace sinew::functions {
 

@@ -1,8 +1,7 @@
+#include <sinew/common/error.h>
 #include <sinew/functions/multivariate_polynomial_function.h>
 
 #include <array>
-
-#include <sinew/common/error.h>
 
 namespace sinew::functions {
 namespace {

@@ -1,9 +1,9 @@
 // OpenSim's MultivariatePolynomialFunction.
 #pragma once
 
-#include <vector>
-
 #include <sinew/functions/function.h>
+
+#include <vector>
 
 namespace sinew::functions {
 

@@ -1,9 +1,8 @@
+#include <sinew/functions/derivative_order.h>
+#include <sinew/functions/knots.h>
 #include <sinew/functions/piecewise_linear_function.h>
 
 #include <algorithm>
-
-#include <sinew/functions/derivative_order.h>
-#include <sinew/functions/knots.h>
 
 namespace sinew::functions {
 

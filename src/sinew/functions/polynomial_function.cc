@@ -1,6 +1,5 @@
-#include <sinew/functions/polynomial_function.h>
-
 #include <sinew/common/error.h>
+#include <sinew/functions/polynomial_function.h>
 
 namespace sinew::functions {
 

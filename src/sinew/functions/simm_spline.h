@@ -1,9 +1,9 @@
 // OpenSim's SimmSpline: the cubic spline of Forsythe, Malcolm & Moler.
 #pragma once
 
-#include <vector>
-
 #include <sinew/functions/function.h>
+
+#include <vector>
 
 namespace sinew::functions {
 

@@ -1,8 +1,7 @@
+#include <sinew/functions/derivative_order.h>
 #include <sinew/functions/sine.h>
 
 #include <cmath>
-
-#include <sinew/functions/derivative_order.h>
 
 namespace sinew::functions {
 

@@ -1,7 +1,6 @@
-#include <sinew/functions/step_function.h>
-
 #include <sinew/common/error.h>
 #include <sinew/functions/derivative_order.h>
+#include <sinew/functions/step_function.h>
 
 namespace sinew::functions {
 

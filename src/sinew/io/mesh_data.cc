@@ -1,8 +1,7 @@
+#include <sinew/common/error.h>
 #include <sinew/io/mesh_data.h>
 
 #include <string>
-
-#include <sinew/common/error.h>
 
 namespace sinew::io {
 

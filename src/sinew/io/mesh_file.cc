@@ -1,13 +1,12 @@
+#include <sinew/common/error.h>
 #include <sinew/io/mesh_file.h>
+#include <sinew/io/mesh_obj.h>
+#include <sinew/io/mesh_stl.h>
+#include <sinew/io/mesh_vtp.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-
-#include <sinew/common/error.h>
-#include <sinew/io/mesh_obj.h>
-#include <sinew/io/mesh_stl.h>
-#include <sinew/io/mesh_vtp.h>
 
 namespace sinew::io {
 

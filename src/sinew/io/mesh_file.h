@@ -1,11 +1,11 @@
 // Finding and reading mesh files the way OpenSim does.
 #pragma once
 
+#include <sinew/io/mesh_data.h>
+
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <sinew/io/mesh_data.h>
 
 namespace sinew::io {
 

@@ -1,3 +1,4 @@
+#include <sinew/common/error.h>
 #include <sinew/io/mesh_obj.h>
 
 #include <charconv>
@@ -5,8 +6,6 @@
 #include <map>
 #include <sstream>
 #include <tuple>
-
-#include <sinew/common/error.h>
 
 namespace sinew::io {
 namespace {

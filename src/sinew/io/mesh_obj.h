@@ -1,9 +1,9 @@
 // Reader for Wavefront .obj meshes (the geometry part: v, vn, f).
 #pragma once
 
-#include <string>
-
 #include <sinew/io/mesh_data.h>
+
+#include <string>
 
 namespace sinew::io {
 

@@ -1,3 +1,4 @@
+#include <sinew/common/error.h>
 #include <sinew/io/mesh_stl.h>
 
 #include <charconv>
@@ -5,8 +6,6 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-
-#include <sinew/common/error.h>
 
 namespace sinew::io {
 namespace {

@@ -1,10 +1,10 @@
 // Reader for STL meshes, ASCII and binary.
 #pragma once
 
+#include <sinew/io/mesh_data.h>
+
 #include <string>
 #include <string_view>
-
-#include <sinew/io/mesh_data.h>
 
 namespace sinew::io {
 

@@ -1,5 +1,6 @@
+#include <sinew/io/internal/xml_document.h>
+#include <sinew/io/mesh_base64.h>
 #include <sinew/io/mesh_vtp.h>
-
 #include <zlib.h>
 
 #include <algorithm>
@@ -8,9 +9,6 @@
 #include <limits>
 #include <optional>
 #include <sstream>
-
-#include <sinew/io/mesh_base64.h>
-#include <sinew/io/internal/xml_document.h>
 
 namespace sinew::io {
 namespace {

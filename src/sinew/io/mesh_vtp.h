@@ -1,9 +1,9 @@
 // Reader for VTK XML PolyData files (.vtp), the format of OpenSim's bone meshes.
 #pragma once
 
-#include <string>
-
 #include <sinew/io/mesh_data.h>
+
+#include <string>
 
 namespace sinew::io {
 

@@ -1,7 +1,7 @@
 // Ground, bodies (mass properties, geometry, wrap objects) and 4.x PhysicalOffsetFrames.
-#include <string_view>
-
 #include <sinew/io/internal/osim_context.h>
+
+#include <string_view>
 
 namespace sinew::io::internal {
 namespace {

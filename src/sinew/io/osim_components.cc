@@ -1,10 +1,10 @@
 // Constraints, markers, contact geometry, controllers, and everything else a model lists (probes,
 // components): typed common fields plus the full element tree.
-#include <sstream>
-#include <string_view>
-
 #include <sinew/io/internal/osim_context.h>
 #include <sinew/io/internal/read_function.h>
+
+#include <sstream>
+#include <string_view>
 
 namespace sinew::io::internal {
 namespace {

@@ -1,11 +1,11 @@
 // Forces, actuators and muscles with their geometry paths (path points, conditional and moving
 // path points, path wraps). Muscle parameters stay in ForceSpec::element.
-#include <cmath>
-#include <string_view>
-
 #include <sinew/functions/constant.h>
 #include <sinew/io/internal/osim_context.h>
 #include <sinew/io/internal/read_function.h>
+
+#include <cmath>
+#include <string_view>
 
 namespace sinew::io::internal {
 

@@ -1,9 +1,9 @@
 // Visual geometry: 4.x attached_geometry (Mesh, Sphere, Cylinder, Brick, ...) and 3.x
 // VisibleObject (geometry_files, or a GeometrySet of DisplayGeometry) with transform, scale and
 // appearance.
-#include <sstream>
-
 #include <sinew/io/internal/osim_context.h>
+
+#include <sstream>
 
 namespace sinew::io::internal {
 namespace {

@@ -14,17 +14,17 @@
 // after the 30505 step made the two offset frames. We do the same: the parent becomes the body
 // that owns the joint, with its (location, orientation) frame, and the child the body named by
 // `parent_body`, with the *_in_parent frame. JointSpec::reverse keeps the flag.
+#include <sinew/functions/constant.h>
+#include <sinew/functions/linear_function.h>
+#include <sinew/io/internal/osim_context.h>
+#include <sinew/io/internal/read_function.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <sstream>
 #include <string_view>
 #include <unordered_map>
-
-#include <sinew/functions/constant.h>
-#include <sinew/functions/linear_function.h>
-#include <sinew/io/internal/osim_context.h>
-#include <sinew/io/internal/read_function.h>
 
 namespace sinew::io::internal {
 namespace {

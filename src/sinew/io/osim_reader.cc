@@ -1,11 +1,10 @@
 // The .osim reader's entry points: parse, find the model, read its parts in dependency order
 // (bodies and frames, joints and coordinates, then everything that refers to them), validate.
+#include <sinew/io/internal/osim_context.h>
 #include <sinew/io/osim_reader.h>
 
 #include <charconv>
 #include <string_view>
-
-#include <sinew/io/internal/osim_context.h>
 
 namespace sinew::io {
 namespace {

@@ -1,9 +1,9 @@
 // Reading OpenSim model files (.osim, format versions 1.9 = 10901 to 4.6 = 40600) into the spec.
 #pragma once
 
-#include <string>
-
 #include <sinew/model/model_spec.h>
+
+#include <string>
 
 namespace sinew::io {
 

@@ -1,10 +1,10 @@
 // Checks on the assembled spec that no single element can make: every body reachable from ground
 // through joints, cycles of joints that never reach ground, closed loops (kept, with a note).
+#include <sinew/io/internal/osim_context.h>
+
 #include <map>
 #include <string>
 #include <vector>
-
-#include <sinew/io/internal/osim_context.h>
 
 namespace sinew::io::internal {
 

@@ -1,11 +1,10 @@
+#include <sinew/functions/control_linear.h>
+#include <sinew/io/internal/xml_document.h>
 #include <sinew/io/read_controls.h>
 
 #include <memory>
 #include <utility>
 #include <vector>
-
-#include <sinew/functions/control_linear.h>
-#include <sinew/io/internal/xml_document.h>
 
 namespace sinew::io {
 namespace {

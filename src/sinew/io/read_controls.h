@@ -1,10 +1,10 @@
 // Reading OpenSim ControlSet files (`*_controls.xml`) into excitation functions.
 #pragma once
 
+#include <sinew/functions/function.h>
+
 #include <map>
 #include <string>
-
-#include <sinew/functions/function.h>
 
 namespace sinew::io {
 

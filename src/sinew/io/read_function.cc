@@ -1,9 +1,3 @@
-#include <sinew/io/internal/read_function.h>
-
-#include <array>
-#include <cmath>
-#include <string_view>
-
 #include <sinew/functions/constant.h>
 #include <sinew/functions/gcv_spline.h>
 #include <sinew/functions/linear_function.h>
@@ -15,6 +9,11 @@
 #include <sinew/functions/simm_spline.h>
 #include <sinew/functions/sine.h>
 #include <sinew/functions/step_function.h>
+#include <sinew/io/internal/read_function.h>
+
+#include <array>
+#include <cmath>
+#include <string_view>
 
 namespace sinew::io::internal {
 namespace {

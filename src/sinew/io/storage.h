@@ -2,12 +2,12 @@
 // then rows of numbers. The first column is the independent variable (normally `time`).
 #pragma once
 
+#include <sinew/common/error.h>
+
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include <sinew/common/error.h>
 
 namespace sinew::io {
 

@@ -1,8 +1,7 @@
+#include <sinew/functions/gcv_spline.h>
 #include <sinew/io/storage_functions.h>
 
 #include <memory>
-
-#include <sinew/functions/gcv_spline.h>
 
 namespace sinew::io {
 

@@ -1,10 +1,10 @@
 // Functions of time fitted to the columns of a storage file, as OpenSim fits motions.
 #pragma once
 
-#include <vector>
-
 #include <sinew/functions/function.h>
 #include <sinew/io/storage.h>
+
+#include <vector>
 
 namespace sinew::io {
 

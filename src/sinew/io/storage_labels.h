@@ -1,13 +1,13 @@
 // Column labels of OpenSim storage files and the degree/radian conversion of their columns.
 #pragma once
 
+#include <sinew/io/storage.h>
+
 #include <functional>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
-
-#include <sinew/io/storage.h>
 
 namespace sinew::io {
 

@@ -1,9 +1,9 @@
 // Depth of each body in a model's joint tree: ground 0, its children 1, and so on.
 #pragma once
 
-#include <vector>
-
 #include <sinew/model/model_spec.h>
+
+#include <vector>
 
 namespace sinew::kinematics {
 

@@ -1,9 +1,8 @@
 #include <sinew/kinematics/body_kinematics.h>
-
-#include <numbers>
-
 #include <sinew/kinematics/forward_kinematics.h>
 #include <sinew/math/rotation.h>
+
+#include <numbers>
 
 namespace sinew::kinematics {
 namespace {

@@ -2,12 +2,12 @@
 // so Sinew's results can be compared column by column with OpenSim's.
 #pragma once
 
+#include <sinew/math/transform.h>
+#include <sinew/model/model_spec.h>
+
 #include <span>
 #include <string>
 #include <vector>
-
-#include <sinew/math/transform.h>
-#include <sinew/model/model_spec.h>
 
 namespace sinew::kinematics {
 

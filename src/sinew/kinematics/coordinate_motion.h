@@ -3,11 +3,11 @@
 // unknown columns are reported, not fatal.
 #pragma once
 
+#include <sinew/model/model_spec.h>
+
 #include <span>
 #include <string>
 #include <vector>
-
-#include <sinew/model/model_spec.h>
 
 namespace sinew::kinematics {
 

@@ -1,9 +1,8 @@
+#include <sinew/common/error.h>
 #include <sinew/kinematics/custom_joint_model.h>
+#include <sinew/kinematics/internal/joint_math.h>
 
 #include <utility>
-
-#include <sinew/common/error.h>
-#include <sinew/kinematics/internal/joint_math.h>
 
 namespace sinew::kinematics {
 

@@ -2,10 +2,10 @@
 // used for every joint that is a special case of it: Pin, Slider, Universal, Gimbal, Planar.
 #pragma once
 
+#include <sinew/kinematics/joint_model.h>
+
 #include <array>
 #include <vector>
-
-#include <sinew/kinematics/joint_model.h>
 
 namespace sinew::kinematics {
 
@@ -14,9 +14,9 @@ struct TransformAxisTerm {
   /// How s is computed: a constant, s = q[arg], a one-argument or a multi-argument function.
   enum class Kind { kConstant, kIdentity, kFunction1, kFunctionN };
   Kind kind = Kind::kConstant;
-  Vec3 axis = Vec3::UnitX();  ///< Unit axis in F.
-  double value = 0.0;         ///< For kConstant.
-  std::vector<int> args;      ///< Joint-local coordinate indices (kIdentity/kFunction1: one).
+  Vec3 axis = Vec3::UnitX();        ///< Unit axis in F.
+  double value = 0.0;               ///< For kConstant.
+  std::vector<int> args;            ///< Joint-local coordinate indices (kIdentity/kFunction1: one).
   functions::FunctionPtr function;  ///< For kFunction1 / kFunctionN.
 };
 

@@ -1,5 +1,4 @@
 #include <sinew/kinematics/euler_joint_models.h>
-
 #include <sinew/kinematics/internal/joint_math.h>
 
 namespace sinew::kinematics {

@@ -1,9 +1,8 @@
+#include <sinew/common/error.h>
 #include <sinew/kinematics/forward_kinematics.h>
 
 #include <array>
 #include <string>
-
-#include <sinew/common/error.h>
 
 namespace sinew::kinematics {
 namespace {

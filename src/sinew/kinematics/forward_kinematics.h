@@ -2,12 +2,12 @@
 // the ground positions of stations, mass centres and markers.
 #pragma once
 
-#include <span>
-#include <vector>
-
 #include <sinew/kinematics/kinematic_tree.h>
 #include <sinew/math/transform.h>
 #include <sinew/model/model_spec.h>
+
+#include <span>
+#include <vector>
 
 namespace sinew::kinematics {
 

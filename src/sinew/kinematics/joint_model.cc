@@ -1,12 +1,11 @@
-#include <sinew/kinematics/joint_model.h>
-
-#include <array>
-#include <string>
-
 #include <sinew/common/error.h>
 #include <sinew/kinematics/custom_joint_model.h>
 #include <sinew/kinematics/euler_joint_models.h>
+#include <sinew/kinematics/joint_model.h>
 #include <sinew/kinematics/scapulothoracic_joint_model.h>
+
+#include <array>
+#include <string>
 
 namespace sinew::kinematics {
 namespace {

@@ -3,12 +3,12 @@
 // acceleration Hdot u. Frames: F is the joint frame on the parent, M the one on the child.
 #pragma once
 
-#include <memory>
-#include <span>
-
 #include <sinew/math/transform.h>
 #include <sinew/math/types.h>
 #include <sinew/model/model_spec.h>
+
+#include <memory>
+#include <span>
 
 namespace sinew::kinematics {
 

@@ -1,8 +1,7 @@
+#include <sinew/common/error.h>
 #include <sinew/kinematics/kinematic_tree.h>
 
 #include <string>
-
-#include <sinew/common/error.h>
 
 namespace sinew::kinematics {
 

@@ -2,13 +2,13 @@
 // in which joints place bodies outward from ground, each joint's model and fixed frames.
 #pragma once
 
+#include <sinew/kinematics/joint_model.h>
+#include <sinew/model/model_spec.h>
+
 #include <array>
 #include <memory>
 #include <span>
 #include <vector>
-
-#include <sinew/kinematics/joint_model.h>
-#include <sinew/model/model_spec.h>
 
 namespace sinew::kinematics {
 

@@ -1,9 +1,8 @@
+#include <sinew/kinematics/internal/joint_math.h>
 #include <sinew/kinematics/scapulothoracic_joint_model.h>
 
 #include <cmath>
 #include <numbers>
-
-#include <sinew/kinematics/internal/joint_math.h>
 
 namespace sinew::kinematics {
 

@@ -3,12 +3,12 @@
 // Errors name the file, the property's line and the component.
 #pragma once
 
+#include <sinew/math/types.h>
+#include <sinew/model/element.h>
+
 #include <optional>
 #include <string>
 #include <string_view>
-
-#include <sinew/math/types.h>
-#include <sinew/model/element.h>
 
 namespace sinew::model {
 

@@ -3,17 +3,17 @@
 // vectors. Body index 0 is always ground. Units: SI (m, kg, s, rad, N).
 #pragma once
 
+#include <sinew/common/error.h>
+#include <sinew/functions/function.h>
+#include <sinew/math/transform.h>
+#include <sinew/model/element.h>
+
 #include <array>
 #include <map>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <sinew/common/error.h>
-#include <sinew/functions/function.h>
-#include <sinew/math/transform.h>
-#include <sinew/model/element.h>
 
 namespace sinew::model {
 
@@ -26,16 +26,16 @@ using NumberMap = std::map<std::string, std::vector<double>>;
 /// Visual geometry attached to a frame (4.x attached_geometry, 3.x VisibleObject).
 struct GeometrySpec {
   std::string name;
-  std::string type;     ///< "Mesh", "Sphere", "Cylinder", "Brick", "Ellipsoid", "Cone", ...
+  std::string type;  ///< "Mesh", "Sphere", "Cylinder", "Brick", "Ellipsoid", "Cone", ...
   int body = kGroundIndex;
-  std::string frame;    ///< Path of the frame it is attached to.
-  Transform X_BG;       ///< Pose of the geometry in the body frame.
-  std::string mesh_file;                ///< For meshes: the file name as written.
+  std::string frame;      ///< Path of the frame it is attached to.
+  Transform X_BG;         ///< Pose of the geometry in the body frame.
+  std::string mesh_file;  ///< For meshes: the file name as written.
   Vec3 scale_factors = Vec3::Ones();
-  Vec3 color = Vec3::Ones();            ///< RGB in [0, 1].
+  Vec3 color = Vec3::Ones();  ///< RGB in [0, 1].
   double opacity = 1.0;
   bool visible = true;
-  NumberMap dimensions;                 ///< radius, half_lengths, half_height, radii, ...
+  NumberMap dimensions;  ///< radius, half_lengths, half_height, radii, ...
 };
 
 /// A wrap object (WrapCylinder, WrapSphere, WrapEllipsoid, WrapTorus) fixed to a body.
@@ -43,20 +43,20 @@ struct WrapObjectSpec {
   std::string name;
   std::string type;
   int body = kGroundIndex;
-  Transform X_BW;         ///< Pose in the body frame (xyz_body_rotation, translation).
-  std::string quadrant;   ///< "all", "+x", "-y", ...
+  Transform X_BW;        ///< Pose in the body frame (xyz_body_rotation, translation).
+  std::string quadrant;  ///< "all", "+x", "-y", ...
   bool active = true;
-  NumberMap dimensions;   ///< radius, length, dimensions, inner_radius, outer_radius
+  NumberMap dimensions;  ///< radius, length, dimensions, inner_radius, outer_radius
   SourceLocation where;
 };
 
 /// A body: mass properties about its mass centre, in its own (generally non-centroidal) frame.
 struct BodySpec {
   std::string name;
-  std::string path;            ///< "/bodyset/femur_r" ("/ground" for ground).
-  double mass = 0.0;           ///< kg
-  Vec3 mass_center = Vec3::Zero();    ///< p_BCm, in the body frame (m).
-  Mat3 inertia = Mat3::Zero();        ///< About the mass centre, body axes (kg m^2).
+  std::string path;                 ///< "/bodyset/femur_r" ("/ground" for ground).
+  double mass = 0.0;                ///< kg
+  Vec3 mass_center = Vec3::Zero();  ///< p_BCm, in the body frame (m).
+  Mat3 inertia = Mat3::Zero();      ///< About the mass centre, body axes (kg m^2).
   std::vector<GeometrySpec> geometry;
   std::vector<WrapObjectSpec> wrap_objects;
   SourceLocation where;
@@ -65,9 +65,9 @@ struct BodySpec {
 /// A frame fixed to a body: PhysicalOffsetFrames (nested allowed) and 3.x joint frames.
 struct FrameSpec {
   std::string name;
-  std::string path;       ///< Full path, e.g. "/jointset/knee_r/femur_r_offset".
-  std::string parent;     ///< Path of the frame it is offset from.
-  Transform X_PF;         ///< Offset from that parent frame.
+  std::string path;         ///< Full path, e.g. "/jointset/knee_r/femur_r_offset".
+  std::string parent;       ///< Path of the frame it is offset from.
+  Transform X_PF;           ///< Offset from that parent frame.
   int body = kGroundIndex;  ///< The body it is fixed to after resolving all offsets.
   Transform X_BF;           ///< Its pose in that body's frame.
   SourceLocation where;
@@ -75,15 +75,26 @@ struct FrameSpec {
 
 /// OpenSim joint classes Sinew knows; kUnknown for anything else (e.g. a plugin's joint).
 enum class JointType {
-  kPin, kSlider, kUniversal, kGimbal, kBall, kFree, kPlanar, kEllipsoid, kWeld,
-  kScapulothoracic, kCustom, kConstantCurvature, kUnknown
+  kPin,
+  kSlider,
+  kUniversal,
+  kGimbal,
+  kBall,
+  kFree,
+  kPlanar,
+  kEllipsoid,
+  kWeld,
+  kScapulothoracic,
+  kCustom,
+  kConstantCurvature,
+  kUnknown
 };
 
 /// One of a CustomJoint's six axes: s = function(coordinates), along or about `axis` (in F).
 struct TransformAxisSpec {
-  std::string name;              ///< rotation1..3, translation1..3
-  std::vector<int> coordinates;  ///< Indices into ModelSpec::coordinates.
-  Vec3 axis = Vec3::UnitX();     ///< As written (normalized on use).
+  std::string name;                 ///< rotation1..3, translation1..3
+  std::vector<int> coordinates;     ///< Indices into ModelSpec::coordinates.
+  Vec3 axis = Vec3::UnitX();        ///< As written (normalized on use).
   functions::FunctionPtr function;  ///< Never null: defaults filled as OpenSim does.
 };
 
@@ -91,20 +102,20 @@ struct TransformAxisSpec {
 /// `child_body`): X_GB = X_GP * X_PF * X_FM(q) * inverse(X_BM).
 struct JointSpec {
   std::string name;
-  std::string path;            ///< "/jointset/knee_r"
-  std::string type;            ///< OpenSim class name as written.
+  std::string path;  ///< "/jointset/knee_r"
+  std::string type;  ///< OpenSim class name as written.
   JointType kind = JointType::kUnknown;
   int parent_body = kGroundIndex;
   int child_body = kGroundIndex;
-  std::string parent_frame;    ///< Path of F.
-  std::string child_frame;     ///< Path of M.
-  Transform X_PF;              ///< F in the parent body frame.
-  Transform X_BM;              ///< M in the child body frame.
-  bool reverse = false;        ///< 3.x `reverse`: parent and child roles swapped in the file.
+  std::string parent_frame;      ///< Path of F.
+  std::string child_frame;       ///< Path of M.
+  Transform X_PF;                ///< F in the parent body frame.
+  Transform X_BM;                ///< M in the child body frame.
+  bool reverse = false;          ///< 3.x `reverse`: parent and child roles swapped in the file.
   std::vector<int> coordinates;  ///< Indices into ModelSpec::coordinates, in joint order.
   std::vector<TransformAxisSpec> spatial_transform;  ///< CustomJoint: 6 axes, else empty.
-  NumberMap parameters;        ///< Other numeric properties (radii_x_y_z, ...).
-  Element element;             ///< Everything the file said about the joint.
+  NumberMap parameters;  ///< Other numeric properties (radii_x_y_z, ...).
+  Element element;       ///< Everything the file said about the joint.
   SourceLocation where;
 };
 
@@ -113,8 +124,8 @@ enum class MotionType { kRotational, kTranslational, kCoupled };
 /// A generalized coordinate of a joint.
 struct CoordinateSpec {
   std::string name;
-  std::string path;            ///< "/jointset/knee_r/knee_angle_r"
-  int joint = kNone;           ///< Index into ModelSpec::joints.
+  std::string path;   ///< "/jointset/knee_r/knee_angle_r"
+  int joint = kNone;  ///< Index into ModelSpec::joints.
   MotionType motion_type = MotionType::kRotational;
   double default_value = 0.0;        ///< rad or m
   double default_speed_value = 0.0;  ///< rad/s or m/s (Ball/Free: angular velocity component)
@@ -129,7 +140,7 @@ struct CoordinateSpec {
 /// A point of a geometry path. Location is in the body frame (resolved through its frame).
 struct PathPointSpec {
   std::string name;
-  std::string type;            ///< PathPoint, ConditionalPathPoint, MovingPathPoint
+  std::string type;  ///< PathPoint, ConditionalPathPoint, MovingPathPoint
   int body = kGroundIndex;
   std::string frame;
   Vec3 location = Vec3::Zero();  ///< p_BP in the body frame (fixed points).
@@ -138,13 +149,13 @@ struct PathPointSpec {
   std::array<functions::FunctionPtr, 3>
       location_functions;  ///< MovingPathPoint x, y, z (in frame F)
   std::array<int, 3> location_coordinates{kNone, kNone, kNone};
-  Transform X_BF;              ///< The frame's pose in the body (for moving points).
+  Transform X_BF;  ///< The frame's pose in the body (for moving points).
 };
 
 /// A wrap object used by a path.
 struct PathWrapSpec {
   std::string wrap_object;
-  std::string method;          ///< "hybrid", "midpoint", "axial"
+  std::string method;  ///< "hybrid", "midpoint", "axial"
   std::array<int, 2> range{-1, -1};
 };
 
@@ -158,7 +169,7 @@ struct GeometryPathSpec {
 struct ForceSpec {
   std::string name;
   std::string path;
-  std::string type;            ///< OpenSim class name
+  std::string type;  ///< OpenSim class name
   bool applies_force = true;
   std::optional<GeometryPathSpec> geometry_path;
   Element element;
@@ -191,8 +202,8 @@ struct ContactGeometrySpec {
   std::string type;
   int body = kGroundIndex;
   std::string frame;
-  Transform X_BC;              ///< Pose in the body frame.
-  NumberMap dimensions;        ///< radius, ...
+  Transform X_BC;        ///< Pose in the body frame.
+  NumberMap dimensions;  ///< radius, ...
   std::string mesh_file;
   Element element;
   SourceLocation where;
@@ -212,8 +223,8 @@ struct ControllerSpec {
 /// Everything an .osim file says about a model.
 struct ModelSpec {
   std::string name;
-  std::string file;            ///< The file it was read from.
-  int version = 0;             ///< OpenSimDocument Version, e.g. 30000, 40000.
+  std::string file;  ///< The file it was read from.
+  int version = 0;   ///< OpenSimDocument Version, e.g. 30000, 40000.
   Vec3 gravity = Vec3(0, -9.80665, 0);
   std::vector<BodySpec> bodies;  ///< [0] is ground.
   std::vector<FrameSpec> frames;

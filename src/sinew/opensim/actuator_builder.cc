@@ -1,8 +1,7 @@
+#include <sinew/model/element_values.h>
 #include <sinew/opensim/internal/actuator_builder.h>
 
 #include <limits>
-
-#include <sinew/model/element_values.h>
 
 namespace sinew::opensim::internal {
 namespace {
@@ -94,8 +93,7 @@ std::shared_ptr<forces::Actuator> MakeActuator(const model::ModelSpec& spec,
     values.Fail("'" + force.type + "' is not an ideal actuator");
   }
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  actuator->SetControlRange(values.Bound("min_control", -kInf),
-                            values.Bound("max_control", kInf));
+  actuator->SetControlRange(values.Bound("min_control", -kInf), values.Bound("max_control", kInf));
   return actuator;
 }
 

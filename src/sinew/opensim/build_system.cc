@@ -1,10 +1,9 @@
+#include <sinew/kinematics/joint_model.h>
 #include <sinew/opensim/build_system.h>
 
 #include <cmath>
 #include <string>
 #include <vector>
-
-#include <sinew/kinematics/joint_model.h>
 
 namespace sinew::opensim {
 namespace {

@@ -2,12 +2,12 @@
 // engine::System. The full OpenSim parser (forces, constraints, its Report) builds on this.
 #pragma once
 
-#include <memory>
-#include <vector>
-
 #include <sinew/common/error.h>
 #include <sinew/engine/system.h>
 #include <sinew/model/model_spec.h>
+
+#include <memory>
+#include <vector>
 
 namespace sinew::opensim {
 

@@ -1,14 +1,13 @@
-#include <sinew/opensim/parser.h>
-
-#include <iostream>
-
-#include <sinew/opensim/internal/actuator_builder.h>
-#include <sinew/opensim/build_system.h>
-#include <sinew/opensim/support.h>
 #include <sinew/functions/constant.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/read_controls.h>
 #include <sinew/kinematics/body_depths.h>
+#include <sinew/opensim/build_system.h>
+#include <sinew/opensim/internal/actuator_builder.h>
+#include <sinew/opensim/parser.h>
+#include <sinew/opensim/support.h>
+
+#include <iostream>
 
 namespace sinew::opensim {
 namespace {
@@ -27,9 +26,10 @@ std::vector<bool> ReplaceUnknownJoints(model::ModelSpec& spec, Report& report) {
   for (const StandIn& standin : ReplaceWithStandIns(spec)) {
     const model::JointSpec& joint = spec.joints[standin.joint];
     replaced[standin.joint] = true;
-    report.AddWarning({joint.where, joint.path,
-                       "joint type '" + joint.type +
-                           "' cannot be simulated: replaced by a spherical stand-in at its frames"});
+    report.AddWarning(
+        {joint.where, joint.path,
+         "joint type '" + joint.type +
+             "' cannot be simulated: replaced by a spherical stand-in at its frames"});
     for (int c : standin.coordinates) {
       report.AddNotSimulated(spec.coordinates[c].path + ": coordinate of stand-in joint");
     }

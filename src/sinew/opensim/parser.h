@@ -4,16 +4,16 @@
 // visualization and collision.
 #pragma once
 
-#include <map>
-#include <memory>
-#include <string>
-
-#include <sinew/opensim/report.h>
 #include <sinew/contact/collision_model.h>
 #include <sinew/engine/system.h>
 #include <sinew/functions/function.h>
 #include <sinew/model/model_spec.h>
+#include <sinew/opensim/report.h>
 #include <sinew/viz/visual_scene.h>
+
+#include <map>
+#include <memory>
+#include <string>
 
 namespace sinew::opensim {
 

@@ -2,14 +2,14 @@
 // every body, joint and force of the file, by name, and every decision worth knowing.
 #pragma once
 
+#include <sinew/common/error.h>
+#include <sinew/engine/system.h>
+
 #include <map>
 #include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
-
-#include <sinew/common/error.h>
-#include <sinew/engine/system.h>
 
 namespace sinew::forces {
 class Actuator;

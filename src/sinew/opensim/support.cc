@@ -1,9 +1,8 @@
+#include <sinew/kinematics/joint_model.h>
+#include <sinew/opensim/internal/actuator_builder.h>
 #include <sinew/opensim/support.h>
 
 #include <array>
-
-#include <sinew/kinematics/joint_model.h>
-#include <sinew/opensim/internal/actuator_builder.h>
 
 namespace sinew::opensim {
 

@@ -1,9 +1,9 @@
 // Body poses over time: what exporters and the renderer animate.
 #pragma once
 
-#include <vector>
-
 #include <sinew/math/transform.h>
+
+#include <vector>
 
 namespace sinew::viz {
 

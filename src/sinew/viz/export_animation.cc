@@ -1,10 +1,9 @@
 #include <sinew/viz/export_animation.h>
+#include <sinew/viz/gltf_writer.h>
+#include <sinew/viz/html_viewer.h>
 
 #include <algorithm>
 #include <filesystem>
-
-#include <sinew/viz/gltf_writer.h>
-#include <sinew/viz/html_viewer.h>
 
 namespace sinew::viz {
 

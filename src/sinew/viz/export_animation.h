@@ -2,12 +2,12 @@
 // and `sinew simulate --export`.
 #pragma once
 
-#include <string>
-
 #include <sinew/common/error.h>
 #include <sinew/model/model_spec.h>
 #include <sinew/viz/body_motion.h>
 #include <sinew/viz/visual_scene.h>
+
+#include <string>
 
 namespace sinew::viz {
 

@@ -1,11 +1,10 @@
+#include <sinew/common/error.h>
 #include <sinew/viz/gltf_writer.h>
 
 #include <cstring>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-
-#include <sinew/common/error.h>
 
 namespace sinew::viz {
 namespace {

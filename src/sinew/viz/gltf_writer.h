@@ -1,12 +1,12 @@
 // Binary glTF 2.0 (.glb) export of a visual scene, with body motion as an animation.
 #pragma once
 
+#include <sinew/viz/body_motion.h>
+#include <sinew/viz/visual_scene.h>
+
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <sinew/viz/body_motion.h>
-#include <sinew/viz/visual_scene.h>
 
 namespace sinew::viz {
 

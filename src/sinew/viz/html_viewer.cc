@@ -1,10 +1,9 @@
-#include <sinew/viz/html_viewer.h>
-
-#include <nlohmann/json.hpp>
-
 #include <sinew/common/error.h>
 #include <sinew/io/mesh_base64.h>
+#include <sinew/viz/html_viewer.h>
 #include <sinew/viz/internal/viewer_assets.h>
+
+#include <nlohmann/json.hpp>
 
 namespace sinew::viz {
 namespace {

@@ -1,13 +1,11 @@
+#include <sinew/common/error.h>
 #include <sinew/viz/image.h>
-
 #include <zlib.h>
 
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
-
-#include <sinew/common/error.h>
 
 namespace sinew::viz {
 namespace {

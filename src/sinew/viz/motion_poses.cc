@@ -1,10 +1,9 @@
-#include <sinew/viz/motion_poses.h>
-
-#include <algorithm>
-
 #include <sinew/kinematics/coordinate_motion.h>
 #include <sinew/kinematics/forward_kinematics.h>
 #include <sinew/kinematics/kinematic_tree.h>
+#include <sinew/viz/motion_poses.h>
+
+#include <algorithm>
 
 namespace sinew::viz {
 namespace {

@@ -2,11 +2,11 @@
 // states table (.mot/.sto) frame by frame, or one instant of it.
 #pragma once
 
-#include <string>
-
 #include <sinew/io/storage.h>
 #include <sinew/model/model_spec.h>
 #include <sinew/viz/body_motion.h>
+
+#include <string>
 
 namespace sinew::viz {
 

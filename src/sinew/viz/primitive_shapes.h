@@ -3,9 +3,9 @@
 // scaled into place by the part's scale factors, so one tessellation serves every instance.
 #pragma once
 
-#include <memory>
-
 #include <sinew/io/mesh_data.h>
+
+#include <memory>
 
 namespace sinew::viz {
 

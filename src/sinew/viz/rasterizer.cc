@@ -1,10 +1,9 @@
+#include <sinew/common/error.h>
 #include <sinew/viz/rasterizer.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <sinew/common/error.h>
 
 namespace sinew::viz {
 namespace {

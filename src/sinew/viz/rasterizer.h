@@ -2,12 +2,12 @@
 // `sinew render` makes pictures without a display, a GPU or a browser.
 #pragma once
 
-#include <string>
-#include <vector>
-
 #include <sinew/math/transform.h>
 #include <sinew/viz/image.h>
 #include <sinew/viz/visual_scene.h>
+
+#include <string>
+#include <vector>
 
 namespace sinew::viz {
 

@@ -1,12 +1,11 @@
+#include <sinew/io/mesh_file.h>
+#include <sinew/kinematics/body_depths.h>
+#include <sinew/viz/primitive_shapes.h>
 #include <sinew/viz/visual_scene.h>
 
 #include <algorithm>
 #include <map>
 #include <set>
-
-#include <sinew/io/mesh_file.h>
-#include <sinew/kinematics/body_depths.h>
-#include <sinew/viz/primitive_shapes.h>
 
 namespace sinew::viz {
 namespace {

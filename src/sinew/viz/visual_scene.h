@@ -2,14 +2,14 @@
 // Built once from the spec; exporters and the renderer then only need body poses X_GB.
 #pragma once
 
-#include <memory>
-#include <string>
-#include <vector>
-
 #include <sinew/common/error.h>
 #include <sinew/io/mesh_data.h>
 #include <sinew/math/transform.h>
 #include <sinew/model/model_spec.h>
+
+#include <memory>
+#include <string>
+#include <vector>
 
 namespace sinew::viz {
 

@@ -2,6 +2,9 @@
 // document, the spec being filled, the frame table that resolves socket paths) and small helpers.
 #pragma once
 
+#include <sinew/io/internal/xml_document.h>
+#include <sinew/model/model_spec.h>
+
 #include <pugixml.hpp>
 #include <set>
 #include <string>
@@ -11,24 +14,21 @@
 #include <utility>
 #include <vector>
 
-#include <sinew/io/internal/xml_document.h>
-#include <sinew/model/model_spec.h>
-
 namespace sinew::io::internal {
 
 /// A physical frame known by its absolute component path: a body, ground, or an offset frame
 /// (4.x PhysicalOffsetFrame or a frame the 3.x upgrade creates).
 struct FrameEntry {
-  pugi::xml_node node;           ///< The element that defines it (for messages).
-  std::string component;         ///< Component path used in messages.
-  std::string parent_path;       ///< Offset frames: the parent frame's path (absolute).
-  pugi::xml_node parent_node;    ///< The socket element naming the parent (for messages).
-  Transform X_PF;                ///< Offset frames: pose in the parent frame.
-  int body = model::kNone;       ///< Resolved body index (kNone until resolved).
-  Transform X_BF;                ///< Resolved pose in that body's frame.
-  int state = 0;                 ///< 0 unresolved, 1 being resolved, 2 resolved.
+  pugi::xml_node node;            ///< The element that defines it (for messages).
+  std::string component;          ///< Component path used in messages.
+  std::string parent_path;        ///< Offset frames: the parent frame's path (absolute).
+  pugi::xml_node parent_node;     ///< The socket element naming the parent (for messages).
+  Transform X_PF;                 ///< Offset frames: pose in the parent frame.
+  int body = model::kNone;        ///< Resolved body index (kNone until resolved).
+  Transform X_BF;                 ///< Resolved pose in that body's frame.
+  int state = 0;                  ///< 0 unresolved, 1 being resolved, 2 resolved.
   int spec_frame = model::kNone;  ///< Index into ModelSpec::frames for offset frames.
-  pugi::xml_node station_frame;  ///< A 4.5 StationDefinedFrame (else empty).
+  pugi::xml_node station_frame;   ///< A 4.5 StationDefinedFrame (else empty).
 };
 
 /// Everything the reader's parts share while reading one document.

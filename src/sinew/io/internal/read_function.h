@@ -1,12 +1,11 @@
 // Reading OpenSim Function elements into sinew::Function objects.
 #pragma once
 
-#include <string>
-
-#include <pugixml.hpp>
-
 #include <sinew/functions/function.h>
 #include <sinew/io/internal/xml_document.h>
+
+#include <pugixml.hpp>
+#include <string>
 
 namespace sinew::io::internal {
 

@@ -3,15 +3,15 @@
 // component.
 #pragma once
 
+#include <sinew/common/error.h>
+#include <sinew/common/text.h>
+#include <sinew/math/types.h>
+
 #include <memory>
 #include <pugixml.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <sinew/common/error.h>
-#include <sinew/common/text.h>
-#include <sinew/math/types.h>
 
 namespace sinew::io::internal {
 
@@ -43,8 +43,7 @@ class XmlDocument {
   /// finite unless `range` allows infinities (bounds); NaN is always an error. This is where
   /// every number of a model file is checked.
   std::vector<double> ReadNumbers(const pugi::xml_node& node, const std::string& component,
-                                  int count = -1,
-                                  NumberRange range = NumberRange::kFinite) const;
+                                  int count = -1, NumberRange range = NumberRange::kFinite) const;
   /// Exactly three finite numbers.
   Vec3 ReadVec3(const pugi::xml_node& node, const std::string& component) const;
   /// "true"/"false" (also "1"/"0"); throws on anything else.

@@ -2,9 +2,9 @@
 // body-fixed X-Y-Z angle kinematics. Internal to the kinematics layer.
 #pragma once
 
-#include <cmath>
-
 #include <sinew/math/types.h>
+
+#include <cmath>
 
 namespace sinew::kinematics::internal {
 

@@ -2,11 +2,11 @@
 // CoordinateActuator).
 #pragma once
 
-#include <memory>
-#include <vector>
-
 #include <sinew/forces/actuator.h>
 #include <sinew/model/model_spec.h>
+
+#include <memory>
+#include <vector>
 
 namespace sinew::opensim::internal {
 
