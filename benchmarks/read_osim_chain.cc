@@ -42,8 +42,11 @@ void BM_ReadOsimChain(benchmark::State& state) {
   state.SetComplexityN(n);
 }
 BENCHMARK(BM_ReadOsimChain)
-    ->RangeMultiplier(2)
-    ->Range(1000, 16000)
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Arg(4000)
+    ->Arg(8000)
+    ->Arg(16000)
     ->Unit(benchmark::kMillisecond)
     ->Complexity();
 

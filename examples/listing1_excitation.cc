@@ -3,16 +3,16 @@
 // and the closed form differ by more than the integrator's error bound (so ctest fails).
 //
 //   example_listing1_excitation [MODEL.osim]   (default: chrono's torque-actuator.osim)
-#include <sinew/engine/assemble.h>
-#include <sinew/engine/integrator.h>
-#include <sinew/functions/excitations.h>
-#include <sinew/opensim/parser.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
+
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/functions/excitations.h>
+#include <sinew/opensim/parser.h>
 
 int main(int argc, char** argv) {
   const std::string model =

@@ -4,16 +4,16 @@
 // integrator's error bound (so ctest fails).
 //
 //   example_listing2_parse [MODEL.osim]   (default: chrono's double_pendulum.osim)
-#include <sinew/engine/assemble.h>
-#include <sinew/engine/energy.h>
-#include <sinew/engine/integrator.h>
-#include <sinew/opensim/parser.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
+
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/energy.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/opensim/parser.h>
 
 namespace {
 
