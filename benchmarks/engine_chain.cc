@@ -1,5 +1,5 @@
 // N-link pendulum chain (tests/engine/chain_model.h: direct pins alternating about z and x,
-// 0.1 m links): the cost of one acceleration evaluation (KKT assembly + sparse LU + solve) and
+// 0.1 m links): the cost of one acceleration evaluation (KKT assembly + tree solve) and
 // of one fixed step, for N = 10, 100, 1000. Tree-structured, so the cost should grow linearly with
 // N.
 //
@@ -53,6 +53,24 @@ void BM_ChainAccelerations(benchmark::State& bench) {
   bench.SetComplexityN(bench.range(0));
 }
 BENCHMARK(BM_ChainAccelerations)
+    ->Arg(10)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Unit(benchmark::kMicrosecond)
+    ->Complexity(benchmark::oN);
+
+// The same with parameterized pins and 4 couplers (q[i] = 0.5 q[i + N/2]) solved by the
+// Schur complement beside the tree elimination: still linear in N.
+void BM_CoupledChainAccelerations(benchmark::State& bench) {
+  const System system = MakeChain(static_cast<int>(bench.range(0)), JointForm::kParameterized, 4);
+  const State state = MakeDefaultState(system);
+  KktSolver kkt(system);
+  for (auto _ : bench) {
+    benchmark::DoNotOptimize(CalcAccelerations(system, state, nullptr, kkt));
+  }
+  bench.SetComplexityN(bench.range(0));
+}
+BENCHMARK(BM_CoupledChainAccelerations)
     ->Arg(10)
     ->Arg(100)
     ->Arg(1000)

@@ -6,6 +6,7 @@
 // copies in tests/data (gait2354 in opensim-core's test version of the file).
 #include <benchmark/benchmark.h>
 #include <sinew/engine/assemble.h>
+#include <sinew/engine/dynamics.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/opensim/build_system.h>
@@ -53,5 +54,21 @@ void BM_Rajagopal2016OneSecond(benchmark::State& bench) {
   RunSkeleton(bench, kData + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
 }
 BENCHMARK(BM_Rajagopal2016OneSecond)->Unit(benchmark::kMillisecond);
+
+// One acceleration evaluation (loads, KKT factorization, solve) of the tumbling gait2354
+// skeleton: the figure the engine's speed goal (10 us on a gait2392-size skeleton) is about.
+void BM_Gait2354Accelerations(benchmark::State& bench) {
+  const sinew::model::ModelSpec spec = sinew::io::ReadOsim(
+      kData + "/opensim-org/opensim-core/OpenSim/Simulation/Test/gait2354_simbody.osim");
+  const auto system = sinew::opensim::BuildSystem(spec);
+  sinew::engine::State state = sinew::engine::MakeDefaultState(*system);
+  for (int c = 0; c < system->num_coordinates(); ++c) state.u[c] = std::sin(c + 1.0);
+  sinew::engine::PlaceBodies(*system, state);
+  sinew::engine::KktSolver kkt(*system);
+  for (auto _ : bench) {
+    benchmark::DoNotOptimize(sinew::engine::CalcAccelerations(*system, state, nullptr, kkt));
+  }
+}
+BENCHMARK(BM_Gait2354Accelerations)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

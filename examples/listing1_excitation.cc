@@ -3,16 +3,16 @@
 // and the closed form differ by more than the integrator's error bound (so ctest fails).
 //
 //   example_listing1_excitation [MODEL.osim]   (default: chrono's torque-actuator.osim)
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/functions/excitations.h>
+#include <sinew/opensim/parser.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
-
-#include <sinew/engine/assemble.h>
-#include <sinew/engine/integrator.h>
-#include <sinew/functions/excitations.h>
-#include <sinew/opensim/parser.h>
 
 int main(int argc, char** argv) {
   const std::string model =
@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
     sinew::engine::IntegratorSettings settings;
     settings.accuracy = 1e-9;
     auto integrator = sinew::engine::MakeIntegrator("rk45", *system, settings);
+    // The excitations live in the parser's controller, not in the system.
+    integrator->SetController(parser.GetController());
     sinew::engine::State state = sinew::engine::MakeDefaultState(*system);
     const double q0 = sinew::engine::GetCoordinateValue(*system, state, "q1");
     // The closed form. rod1 (1 kg, inertia 1 kg m^2 about its mass centre) turns about the pin

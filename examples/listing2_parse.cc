@@ -4,16 +4,16 @@
 // integrator's error bound (so ctest fails).
 //
 //   example_listing2_parse [MODEL.osim]   (default: chrono's double_pendulum.osim)
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/energy.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/opensim/parser.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
-
-#include <sinew/engine/assemble.h>
-#include <sinew/engine/energy.h>
-#include <sinew/engine/integrator.h>
-#include <sinew/opensim/parser.h>
 
 namespace {
 
@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
 
     const sinew::engine::IntegratorSettings settings;
     auto integrator = sinew::engine::MakeIntegrator("rk45", my_system, settings);
+    integrator->SetController(parser.GetController());  // the actuators' excitations, if any
     sinew::engine::State state = sinew::engine::MakeDefaultState(my_system);
     const double e0 = sinew::engine::CalcMechanicalEnergy(my_system, state);
     // Step in tenths of a second to record the largest body speeds seen (for the bound).

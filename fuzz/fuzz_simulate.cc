@@ -38,6 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     settings.min_step = 1e-6;
     const auto integrator =
         sinew::engine::MakeIntegrator(rk45 ? "rk45" : "euler", *system, settings);
+    integrator->SetController(parser.GetController());
     integrator->StepTo(state, 5e-3);
   } catch (const sinew::Error&) {
     // Rejected with a message: fine.

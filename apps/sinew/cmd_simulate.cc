@@ -3,16 +3,21 @@
 //  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--strict] [--export FILE] [--verbose]
 //  [--quiet] --out DIR`: a forward simulation of what the OpenSim parser builds (skeleton, ideal
 // actuators and their excitations). Writes DIR/states.sto (every coordinate's value and speed,
-// OpenSim 4 labels, radians and metres) and DIR/bodies.sto (OpenSim BodyKinematics positions).
+// OpenSim 4 labels, radians and metres) and DIR/bodies.sto (OpenSim BodyKinematics positions),
+// both streamed as rows are computed. SIGINT or SIGTERM stops the run cleanly: the rows so far
+// are kept, in files whose header says status=partial, and the exit code is 128 + the signal.
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/pose.h>
+#include <sinew/engine/simulation.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
 #include <sinew/io/storage_labels.h>
+#include <sinew/io/storage_writer.h>
 #include <sinew/kinematics/body_kinematics.h>
 #include <sinew/opensim/parser.h>
+#include <sinew/opensim/states_table.h>
 #include <sinew/opensim/support.h>
 #include <sinew/viz/export_animation.h>
 #include <unistd.h>
@@ -27,6 +32,7 @@
 
 #include "apps/sinew/commands.h"
 #include "apps/sinew/excitation_option.h"
+#include "apps/sinew/interrupt_guard.h"
 #include "apps/sinew/notices.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
@@ -94,8 +100,12 @@ void ShowProgress(double fraction, double t) {
 }
 
 void RunSimulate(const SimulateOptions& options) {
-  if (!(options.duration >= 0.0)) throw Error("--duration must be >= 0");
-  if (!(options.report_interval > 0.0)) throw Error("--report-interval must be > 0");
+  if (!(options.duration >= 0.0) || !std::isfinite(options.duration)) {
+    throw Error("--duration must be a finite number >= 0");
+  }
+  if (!(options.report_interval > 0.0) || !std::isfinite(options.report_interval)) {
+    throw Error("--report-interval must be a finite number > 0");
+  }
   model::ModelSpec spec = io::ReadOsim(options.model);
   double t0 = 0.0;
   if (!options.initial_states.empty()) {
@@ -124,53 +134,55 @@ void RunSimulate(const SimulateOptions& options) {
   settings.accuracy = options.accuracy;
   settings.step = options.step;
   const auto integrator = engine::MakeIntegrator(options.integrator, *system, settings);
+  integrator->SetController(parser.GetController());
   CreateFolder(options.out);
   if (!options.export_file.empty()) CreateParentFolder(options.export_file);
 
-  io::Storage states, bodies;
-  states.name = "states";
-  // The system's coordinates, in its order (a stand-in joint's are its own, not the file's).
-  for (const engine::Coordinate& c : system->coordinates()) {
-    const std::string base = "/jointset/" + system->joints()[c.joint].name + "/" + c.name;
-    states.labels.push_back(base + "/value");
-    states.labels.push_back(base + "/speed");
-  }
+  // Both tables are streamed to disk as the run computes them (bounded memory).
+  io::Storage states_header, bodies_header;
+  states_header.name = "states";
+  states_header.labels = opensim::StatesLabels(*system);
   // bodies.sto as `sinew kinematics` writes it (OpenSim BodyKinematics positions; the angles
   // are degrees, and the header says so).
-  bodies.name = "Positions";
-  bodies.labels = kinematics::BodyKinematicsLabels(spec);
-  bodies.in_degrees = true;
+  bodies_header.name = "Positions";
+  bodies_header.labels = kinematics::BodyKinematicsLabels(spec);
+  bodies_header.in_degrees = true;
+  io::StorageWriter states(options.out + "/states.sto", states_header);
+  io::StorageWriter bodies(options.out + "/bodies.sto", bodies_header);
   // A fresh system holds the spec's bodies in spec order (stand-ins add none).
   std::vector<Transform> X_GB(system->num_bodies());
+  std::vector<double> row;
   viz::BodyMotion motion;
-  auto record = [&]() {
-    std::vector<double> row;
-    for (int c = 0; c < system->num_coordinates(); ++c) {
-      row.push_back(state.q[c]);
-      row.push_back(state.u[c]);
-    }
-    states.AppendRow(state.t, row);
-    for (int b = 0; b < system->num_bodies(); ++b) X_GB[b] = engine::PoseOf(state.bodies[b]);
-    bodies.AppendRow(state.t, kinematics::CalcBodyKinematicsRow(spec, X_GB));
+  auto record = [&](const engine::State& s) {
+    opensim::StatesRow(*system, s, row);
+    states.AppendRow(s.t, row);
+    for (int b = 0; b < system->num_bodies(); ++b) X_GB[b] = engine::PoseOf(s.bodies[b]);
+    bodies.AppendRow(s.t, kinematics::CalcBodyKinematicsRow(spec, X_GB));
     if (!options.export_file.empty()) {
-      motion.times.push_back(state.t);
+      motion.times.push_back(s.t);
       motion.X_GB.push_back(X_GB);
     }
   };
 
-  const bool progress = !options.quiet && isatty(fileno(stderr));
-  const double t_end = t0 + options.duration;
-  const long n = static_cast<long>(std::ceil(options.duration / options.report_interval - 1e-9));
-  record();
-  for (long i = 1; i <= n; ++i) {
-    const double t = std::min(t0 + i * options.report_interval, t_end);
-    integrator->StepTo(state, t);
-    record();
-    if (progress) ShowProgress(static_cast<double>(i) / n, state.t);
+  engine::SimulationOptions run;
+  run.duration = options.duration;
+  run.report_interval = options.report_interval;
+  const InterruptGuard interrupt;
+  run.stop = &interrupt.flag();
+  if (!options.quiet && isatty(fileno(stderr))) run.progress = ShowProgress;
+  const engine::SimulationResult result = engine::Simulate(*integrator, state, run, record);
+  if (run.progress) std::fprintf(stderr, "\n");
+  std::string partial;
+  if (!result.completed) {
+    partial = "stopped by " + interrupt.SignalName() + " at t = " + std::to_string(state.t) + " s";
   }
-  if (progress) std::fprintf(stderr, "\n");
-  io::WriteStorage(states, options.out + "/states.sto");
-  io::WriteStorage(bodies, options.out + "/bodies.sto");
+  states.Finish(partial);
+  bodies.Finish(partial);
+  if (!result.completed) {
+    std::cerr << "sinew: " << partial << ": kept the " << states.rows() << " rows computed in "
+              << options.out << "/states.sto and bodies.sto (their headers say status=partial)\n";
+    throw ExitRequest{128 + interrupt.Signal()};
+  }
   if (!options.export_file.empty()) {
     viz::ExportOptions export_options;
     export_options.visual.mode = viz::ParseVisType(options.vis);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "apps/sinew/commands.h"
+#include "apps/sinew/interrupt_guard.h"
 
 namespace {
 
@@ -51,6 +52,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? sinew::cli::kExitOk : sinew::cli::kExitUsage;
+  } catch (const sinew::cli::ExitRequest& request) {
+    return request.code;
   } catch (const sinew::Error& e) {
     std::cerr << "sinew: error: " << e.what() << "\n";
     return sinew::cli::kExitBadInput;

@@ -6,12 +6,17 @@
 #include <sinew/engine/system.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
+
+#include "engine/test_models.h"
 
 namespace sinew::engine::testing {
 
-/// Builds and finalizes the chain of `n` links with joints of form `form`.
-inline System MakeChain(int n, JointForm form = JointForm::kPin) {
+/// Builds and finalizes the chain of `n` links with joints of form `form`. With `couplers` > 0
+/// (parameterized joints only), that many levers q[i] = 0.5 q[i + n/2] couple joints half a
+/// chain apart (i = 0, n/(2 couplers), ...): extra constraints solved by the Schur complement.
+inline System MakeChain(int n, JointForm form = JointForm::kPin, int couplers = 0) {
   System system(Vec3(0, -9.81, 0));
   const Mat3 y_to_z = Eigen::AngleAxisd(M_PI / 2, Vec3::UnitY()).toRotationMatrix();
   int parent = 0;
@@ -29,9 +34,15 @@ inline System MakeChain(int n, JointForm form = JointForm::kPin) {
     c.name = "q" + std::to_string(i);
     c.default_value = 0.1;
     c.default_speed = 0.2;
-    system.AddJoint("pin" + std::to_string(i), parent, X_PF, b, Transform::Rotation(R), form,
-                    nullptr, {c});
+    std::shared_ptr<const kinematics::JointModel> model;
+    if (form == JointForm::kParameterized) model = std::make_shared<RevoluteModel>(Vec3::UnitZ());
+    system.AddJoint("pin" + std::to_string(i), parent, X_PF, b, Transform::Rotation(R), form, model,
+                    {c});
     parent = b;
+  }
+  for (int k = 0; k < couplers; ++k) {
+    const int a = k * n / (2 * couplers);
+    system.AddConstraint(std::make_shared<LeverConstraint>(a, a + n / 2, 0.5));
   }
   system.Finalize();
   return system;

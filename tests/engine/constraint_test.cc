@@ -14,6 +14,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "engine/test_models.h"
@@ -25,29 +26,7 @@ using testing::Coord;
 using testing::MakeBody;
 using testing::SliderModel;
 
-// phi = q[a] - ratio q[b] = 0 on two integrated slider coordinates (qdot = u):
-// J = [1, -ratio] on their speeds, c = 0, b = -Jdot u = 0.
-class LeverConstraint final : public Constraint {
- public:
-  LeverConstraint(int a, int b, double ratio) : a_(a), b_(b), ratio_(ratio) {}
-  int NumEquations() const override { return 1; }
-  std::vector<int> Bodies() const override { return {}; }
-  std::vector<int> Coordinates() const override { return {a_, b_}; }
-  void CalcPositionError(const System&, const State& state, Eigen::Ref<VecX> phi) const override {
-    phi[0] = state.q[a_] - ratio_ * state.q[b_];
-  }
-  void CalcJacobian(const System&, const State&, Eigen::Ref<MatX> J) const override {
-    J(0, 0) = 1.0;
-    J(0, 1) = -ratio_;
-  }
-  void CalcAccelerationRhs(const System&, const State&, Eigen::Ref<VecX> b) const override {
-    b[0] = 0.0;
-  }
-
- private:
-  int a_, b_;
-  double ratio_;
-};
+using testing::LeverConstraint;
 
 constexpr double kG = 9.80665;
 constexpr double kM1 = 2.0, kM2 = 0.5, kRatio = 3.0;
@@ -113,6 +92,76 @@ TEST(AddConstraintTest, LeverCouplesTwoSlidersAsTheClosedForm) {
   }
   std::cout << "x2 error " << worst_x2 << " m, lever residual " << worst_phi
             << " m, multiplier error " << worst_lambda << " N (lambda = " << lambda << " N)\n";
+}
+
+// A 12-link chain of parameterized pins (alternating about z and x) with two levers coupling
+// coordinates of distant joints, q2 = 0.5 q7 and q4 = -q9.
+std::unique_ptr<System> MakeCoupledChain() {
+  auto system = std::make_unique<System>(Vec3(0, -9.81, 0));
+  const Mat3 y_to_z = Eigen::AngleAxisd(M_PI / 2, Vec3::UnitY()).toRotationMatrix();
+  int parent = 0;
+  for (int i = 0; i < 12; ++i) {
+    const int b = system->AddBody(MakeBody("link" + std::to_string(i), 0.5, Vec3(0, -0.05, 0),
+                                           Vec3(4e-4, 1e-4, 4e-4).asDiagonal()));
+    const Mat3 R = (i % 2 == 0) ? Mat3::Identity() : y_to_z;
+    system->AddJoint("pin" + std::to_string(i), parent,
+                     Transform(R, parent == 0 ? Vec3::Zero() : Vec3(0, -0.1, 0)), b,
+                     Transform::Rotation(R), JointForm::kParameterized,
+                     std::make_shared<testing::RevoluteModel>(Vec3::UnitZ()),
+                     {Coord("q" + std::to_string(i), 0.1 * i, 0.2)});
+    parent = b;
+  }
+  system->AddConstraint(std::make_shared<LeverConstraint>(2, 7, 0.5));
+  system->AddConstraint(std::make_shared<LeverConstraint>(4, 9, -1.0));
+  system->Finalize();
+  return system;
+}
+
+TEST(AddConstraintTest, CouplersOnTheTreePathEqualTheDenseSolve) {
+  const auto system = MakeCoupledChain();
+  State state = MakeDefaultState(*system);  // projected onto the levers
+  VecX phi(1);
+  system->constraints().back()->CalcPositionError(*system, state, phi);
+  EXPECT_LT(std::abs(phi[0]), 1e-12);
+  for (int c = 0; c < system->num_coordinates(); ++c) state.u[c] = std::cos(1.0 + c);
+  PlaceBodies(*system, state);
+  KktSolver tree(*system), dense(*system, KktSolver::Method::kDense);
+  EXPECT_EQ(tree.num_extra_equations(), 2);  // the levers; the joints stay in the tree
+  const Accelerations a = CalcAccelerations(*system, state, nullptr, tree);
+  const Accelerations b = CalcAccelerations(*system, state, nullptr, dense);
+  EXPECT_LT((a.vdot - b.vdot).lpNorm<Eigen::Infinity>(), 1e-10 * (1 + b.vdot.norm()));
+  EXPECT_LT((a.lambda - b.lambda).lpNorm<Eigen::Infinity>(), 1e-10 * (1 + b.lambda.norm()));
+  // The coupled accelerations obey the levers: q2'' = 0.5 q7'', q4'' = -q9''.
+  EXPECT_NEAR(a.vdot[tree.SpeedColumn(2)], 0.5 * a.vdot[tree.SpeedColumn(7)],
+              1e-10 * (1 + a.vdot.norm()));
+  EXPECT_NEAR(a.vdot[tree.SpeedColumn(4)], -a.vdot[tree.SpeedColumn(9)],
+              1e-10 * (1 + a.vdot.norm()));
+}
+
+TEST(AddConstraintTest, RedundantCouplerIsSolvable) {
+  // The same lever twice: the Schur complement is singular, the multipliers split the load
+  // (minimum norm), and the motion is that of one lever.
+  auto twice = std::make_unique<System>(Vec3(-kG, 0, 0));
+  const Mat3 I = 0.01 * Mat3::Identity();
+  const int b1 = twice->AddBody(MakeBody("b1", kM1, Vec3::Zero(), I));
+  const int b2 = twice->AddBody(MakeBody("b2", kM2, Vec3::Zero(), I));
+  twice->AddJoint("s1", 0, Transform(), b1, Transform(), JointForm::kParameterized,
+                  std::make_shared<SliderModel>(), {Coord("x1", kRatio * 0.1, kRatio * 0.2)});
+  twice->AddJoint("s2", 0, Transform::Translation(Vec3(0, 1, 0)), b2, Transform(),
+                  JointForm::kParameterized, std::make_shared<SliderModel>(),
+                  {Coord("x2", 0.1, 0.2)});
+  twice->AddConstraint(std::make_shared<LeverConstraint>(0, 1, kRatio));
+  twice->AddConstraint(std::make_shared<LeverConstraint>(0, 1, kRatio));
+  twice->Finalize();
+  const auto once = MakeLever();
+  State s2 = MakeDefaultState(*twice), s1 = MakeDefaultState(*once);
+  KktSolver k2(*twice), k1(*once);
+  const Accelerations a2 = CalcAccelerations(*twice, s2, nullptr, k2);
+  const Accelerations a1 = CalcAccelerations(*once, s1, nullptr, k1);
+  EXPECT_NEAR(a2.vdot[k2.SpeedColumn(1)], a1.vdot[k1.SpeedColumn(1)], 1e-12 * kG);
+  EXPECT_NEAR(a2.lambda[k2.EquationRow(2)], a2.lambda[k2.EquationRow(3)], 1e-9 * kM1 * kG);
+  EXPECT_NEAR(a2.lambda[k2.EquationRow(2)] + a2.lambda[k2.EquationRow(3)],
+              a1.lambda[k1.EquationRow(2)], 1e-9 * kM1 * kG);
 }
 
 TEST(AddConstraintTest, OnlyBeforeFinalize) {

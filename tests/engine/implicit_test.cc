@@ -18,7 +18,8 @@ namespace {
 class SpringDamper final : public ForceElement {
  public:
   SpringDamper(double k, double c) : k_(k), c_(c) {}
-  void AddLoads(const System&, const State& state, Loads& loads) const override {
+  void AddLoads(const ForceContext& context, Loads& loads) const override {
+    const State& state = context.state;
     loads.AddGeneralizedForce(0, -k_ * state.q[0] - c_ * state.u[0]);
   }
 

@@ -2,6 +2,7 @@
 // engine be tested independently of the kinematics layer.
 #pragma once
 
+#include <sinew/engine/constraint.h>
 #include <sinew/engine/system.h>
 #include <sinew/kinematics/joint_model.h>
 #include <sinew/math/rotation.h>
@@ -202,6 +203,30 @@ class FreeModel final : public kinematics::JointModel {
 
  private:
   BallModel ball_;
+};
+
+/// phi = q[a] - ratio q[b] = 0 on two integrated coordinates with qdot = u (sliders, pins):
+/// J = [1, -ratio] on their speeds, c = 0, b = -Jdot u = 0.
+class LeverConstraint final : public Constraint {
+ public:
+  LeverConstraint(int a, int b, double ratio) : a_(a), b_(b), ratio_(ratio) {}
+  int NumEquations() const override { return 1; }
+  std::vector<int> Bodies() const override { return {}; }
+  std::vector<int> Coordinates() const override { return {a_, b_}; }
+  void CalcPositionError(const System&, const State& state, Eigen::Ref<VecX> phi) const override {
+    phi[0] = state.q[a_] - ratio_ * state.q[b_];
+  }
+  void CalcJacobian(const System&, const State&, Eigen::Ref<MatX> J) const override {
+    J(0, 0) = 1.0;
+    J(0, 1) = -ratio_;
+  }
+  void CalcAccelerationRhs(const System&, const State&, Eigen::Ref<VecX> b) const override {
+    b[0] = 0.0;
+  }
+
+ private:
+  int a_, b_;
+  double ratio_;
 };
 
 /// A free coordinate named `name` with default value q and speed u.

@@ -45,12 +45,14 @@ TEST(ClosedFormTest, CoordinateActuatorBeyondMaxControlIsNotClamped) {
   // optimal_force, with no bounds applied) the excitation 1.5 acts in full.
   EXPECT_EQ(lift->actuator->min_control(), -0.5);
   EXPECT_EQ(lift->actuator->max_control(), 0.5);
-  EXPECT_EQ(lift->actuator->CalcActuation(0.7), 1.5 * 40.0);
+  EXPECT_EQ(parser.GetController()->Calc(lift->input, 0.7) * lift->actuator->optimal_force(),
+            1.5 * 40.0);
   // height'' = F / m - g with F = 1.5 x 40 N, m = 2 kg: height = 0.3 + (30 - g) t^2 / 2.
   // (With the excitation clamped to 0.5 it would be 0.3 + (10 - g) t^2 / 2.)
   const double acceleration = 1.5 * 40.0 / 2.0 - kGravity;
   const engine::IntegratorSettings settings = Settings();
   auto integrator = engine::MakeIntegrator("rk45", *system, settings);
+  integrator->SetController(parser.GetController());
   engine::State state = engine::MakeDefaultState(*system);
   double worst = 0.0, bound = 0.0;
   for (double t : {0.25, 0.5, 0.75, 1.0}) {
@@ -77,6 +79,7 @@ TEST(ClosedFormTest, PrescribedCoordinateFollowsItsFunctionAndDrivesTheRider) {
   EXPECT_EQ(system->coordinates()[cart].motion, engine::CoordinateMotion::kPrescribed);
   const engine::IntegratorSettings settings = Settings();
   auto integrator = engine::MakeIntegrator("rk45", *system, settings);
+  integrator->SetController(parser.GetController());
   engine::State state = engine::MakeDefaultState(*system);
   // The default state puts the prescribed coordinate on its function (not its default 0).
   EXPECT_NEAR(state.q[cart], Cart(0.0), 1e-15);

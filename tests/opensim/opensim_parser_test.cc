@@ -28,11 +28,14 @@ constexpr double kPinInertia = 1.0 + 1.0 * 0.5 * 0.5;  // parallel axis: Izz + m
 constexpr double kAccuracy = 1e-11;
 constexpr double kAngleTolerance = 1e-7;
 
-// Simulates `system` from its default state to each time in `times`, returning q1 there.
-std::vector<double> SimulateQ1(const engine::System& system, const std::vector<double>& times) {
+// Simulates `system` from its default state, its excitations set by the controller of
+// `parser`, to each time in `times`, returning q1 there.
+std::vector<double> SimulateQ1(const engine::System& system, const opensim::OpenSimParser& parser,
+                               const std::vector<double>& times) {
   engine::IntegratorSettings settings;
   settings.accuracy = kAccuracy;
   auto integrator = engine::MakeIntegrator("rk45", system, settings);
+  integrator->SetController(parser.GetController());
   engine::State state = engine::MakeDefaultState(system);
   std::vector<double> q;
   for (double t : times) {
@@ -50,7 +53,7 @@ TEST(OpenSimParserTest, TorqueActuatorWithConstantExcitationGivesParabola) {
   EXPECT_EQ(parser.GetReport().GetForce("grav")->excitation_source,
             "PrescribedController prescribedcontroller_");
   const std::vector<double> times = {0.25, 0.5, 1.0};
-  const std::vector<double> q = SimulateQ1(*system, times);
+  const std::vector<double> q = SimulateQ1(*system, parser, times);
   for (size_t i = 0; i < times.size(); ++i) {
     const double t = times[i];
     EXPECT_NEAR(q[i], kQ0 - 0.5 * 9.8 / kPinInertia * t * t, kAngleTolerance) << "t = " << t;
@@ -64,7 +67,7 @@ TEST(OpenSimParserTest, TorqueActuatorWithRampExcitationGivesCubic) {
   parser.SetExcitationFunction("grav", std::make_shared<functions::Ramp>(0.0, 1.0));
   EXPECT_EQ(parser.GetReport().GetForce("grav")->excitation_source, "set by user");
   const std::vector<double> times = {0.5, 1.0};
-  const std::vector<double> q = SimulateQ1(*system, times);
+  const std::vector<double> q = SimulateQ1(*system, parser, times);
   for (size_t i = 0; i < times.size(); ++i) {
     const double t = times[i];
     EXPECT_NEAR(q[i], kQ0 - 9.8 / (6 * kPinInertia) * t * t * t, kAngleTolerance);
@@ -77,7 +80,7 @@ TEST(OpenSimParserTest, ControlsFileDrivesItsActuator) {
   parser.SetControlsFile(std::string(SINEW_TEST_DATA_DIR) + "/sinew/grav_ramp_controls.xml");
   auto system = parser.Parse(kChronoDir + "torque-actuator.osim");
   EXPECT_EQ(parser.GetReport().GetForce("grav")->excitation_source, "controls file");
-  const double q = SimulateQ1(*system, {1.0})[0];
+  const double q = SimulateQ1(*system, parser, {1.0})[0];
   EXPECT_NEAR(q, kQ0 - 9.8 / (6 * kPinInertia), kAngleTolerance);
 }
 
@@ -102,7 +105,7 @@ TEST(OpenSimParserTest, PointActuatorWithConstantExcitationIsAnExactPendulum) {
   auto system = parser.Parse(kChronoDir + "point-actuator.osim");
   const double w = std::sqrt(1.5 * 9.8 / kPinInertia);
   const double period = 4.0 * EllipticK(std::sin(std::abs(kQ0) / 2)) / w;
-  const std::vector<double> q = SimulateQ1(*system, {period / 4, period / 2, period});
+  const std::vector<double> q = SimulateQ1(*system, parser, {period / 4, period / 2, period});
   EXPECT_NEAR(q[0], 0.0, kAngleTolerance);
   EXPECT_NEAR(q[1], -kQ0, kAngleTolerance);
   EXPECT_NEAR(q[2], kQ0, kAngleTolerance);
@@ -114,7 +117,7 @@ TEST(OpenSimParserTest, PointActuatorWithRampExcitationMatchesItsEquationOfMotio
   opensim::OpenSimParser parser;
   auto system = parser.Parse(kChronoDir + "point-actuator.osim");
   parser.SetExcitationFunction("grav", std::make_shared<functions::LinearFunction>(1.0, 0.0));
-  const double q_sinew = SimulateQ1(*system, {2.0})[0];
+  const double q_sinew = SimulateQ1(*system, parser, {2.0})[0];
 
   auto accel = [](double t, double q) { return -1.5 * t * std::sin(q) / kPinInertia; };
   double t = 0, q = kQ0, u = 0;
@@ -138,13 +141,13 @@ TEST(OpenSimParserTest, DefaultExcitationIsZeroAndActivateActuatorsMakesItOne) {
   opensim::OpenSimParser parser;
   auto system = parser.Parse(kChronoDir + "torque-actuator.osim");
   parser.SetExcitationFunction("grav", nullptr);
-  EXPECT_NEAR(SimulateQ1(*system, {1.0})[0], kQ0, 1e-12);
+  EXPECT_NEAR(SimulateQ1(*system, parser, {1.0})[0], kQ0, 1e-12);
 
   opensim::OpenSimParser active;
   active.ActivateActuators(true);
   auto system2 = active.Parse(kChronoDir + "torque-actuator.osim");
   EXPECT_EQ(active.GetReport().GetForce("grav")->excitation_source, "ActivateActuators");
-  EXPECT_NEAR(SimulateQ1(*system2, {1.0})[0], kQ0 - 4.9 / kPinInertia, kAngleTolerance);
+  EXPECT_NEAR(SimulateQ1(*system2, active, {1.0})[0], kQ0 - 4.9 / kPinInertia, kAngleTolerance);
 }
 
 TEST(OpenSimParserTest, EverySeedModelParsesWithAFullReportAndNoStandIns) {

@@ -41,19 +41,48 @@ State MakeDefaultState(const System& system, double t) {
       state.u[c] = coordinate.motion == CoordinateMotion::kLocked ? 0.0 : coordinate.default_speed;
     }
   }
+  state.inputs = VecX::Zero(system.num_inputs());
+  state.z = VecX::Zero(system.num_state_variables());
   PlaceBodies(system, state);
-  // Joints that close loops were not used to place bodies: assemble them by projection.
-  if (system.HasLoops()) ProjectState(system, state);
+  // Joints that close loops were not used to place bodies, and extra constraints (couplers,
+  // ...) need not hold at the default values: assemble them by projection.
+  if (system.HasLoops() || system.HasExtraConstraints()) ProjectState(system, state);
+  for (int k = 0; k < static_cast<int>(system.force_elements().size()); ++k) {
+    const int n = system.NumStateVariables(k);
+    if (n > 0) {
+      system.force_elements()[k]->SetDefaultStateVariables(
+          state.z.segment(system.StateVariableBegin(k), n));
+    }
+  }
+  InitializeStateVariables(system, state);
   return state;
+}
+
+void InitializeStateVariables(const System& system, State& state) {
+  CheckState(system, state);
+  for (int k = 0; k < static_cast<int>(system.force_elements().size()); ++k) {
+    const int n = system.NumStateVariables(k);
+    if (n == 0) continue;
+    // The element reads a copy of the state, so what it writes cannot alias what it reads.
+    const State before = state;
+    system.force_elements()[k]->InitializeStateVariables(
+        system.MakeForceContext(k, before), state.z.segment(system.StateVariableBegin(k), n));
+  }
 }
 
 void CheckState(const System& system, const State& state) {
   if (static_cast<int>(state.bodies.size()) != system.num_bodies() ||
-      state.q.size() != system.num_coordinates() || state.u.size() != system.num_coordinates()) {
+      state.q.size() != system.num_coordinates() || state.u.size() != system.num_coordinates() ||
+      state.z.size() != system.num_state_variables() ||
+      state.inputs.size() != system.num_inputs()) {
     throw Error("engine: the state does not belong to this system (" +
                 std::to_string(state.bodies.size()) + " bodies, " + std::to_string(state.q.size()) +
-                " coordinates; the system has " + std::to_string(system.num_bodies()) + " and " +
-                std::to_string(system.num_coordinates()) + ")");
+                " coordinates, " + std::to_string(state.z.size()) + " state variables, " +
+                std::to_string(state.inputs.size()) + " inputs; the system has " +
+                std::to_string(system.num_bodies()) + ", " +
+                std::to_string(system.num_coordinates()) + ", " +
+                std::to_string(system.num_state_variables()) + " and " +
+                std::to_string(system.num_inputs()) + ")");
   }
 }
 

@@ -10,10 +10,18 @@
 namespace sinew::engine {
 
 /// The state at time `t` with every coordinate at its default value and speed (prescribed
-/// coordinates at f(t), f'(t)); bodies placed and moving accordingly.
+/// coordinates at f(t), f'(t)); bodies placed and moving accordingly, then projected onto the
+/// constraints when there are loops or extra constraints; state variables at their
+/// elements' defaults, then initialized (InitializeStateVariables); inputs zero.
 State MakeDefaultState(const System& system, double t = 0.0);
 
-/// Throws sinew::Error unless `state` has the sizes of `system` (bodies, coordinates).
+/// Gives every force element the chance to set its auxiliary state variables from the rest of
+/// `state` (ForceElement::InitializeStateVariables, e.g. muscle equilibrium). MakeDefaultState
+/// calls it; call it again after setting coordinates or loading states.
+void InitializeStateVariables(const System& system, State& state);
+
+/// Throws sinew::Error unless `state` has the sizes of `system` (bodies, coordinates, state
+/// variables, inputs).
 void CheckState(const System& system, const State& state);
 
 /// Places every body (pose and twist) from the coordinates q and speeds u of `state`, walking

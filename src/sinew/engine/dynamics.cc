@@ -40,12 +40,26 @@ void CalcLoads(const System& system, const State& state, const Loads* external, 
     loads.body[b].head<3>() += c_G.cross(f_G);
     loads.body[b].tail<3>() += f_G;
   }
-  for (const auto& force : system.force_elements()) force->AddLoads(system, state, loads);
+  const auto& forces = system.force_elements();
+  for (size_t k = 0; k < forces.size(); ++k) {
+    forces[k]->AddLoads(system.MakeForceContext(static_cast<int>(k), state), loads);
+  }
   if (external) {
     for (int b = 0; b < system.num_bodies(); ++b) loads.body[b] += external->body[b];
     loads.mobility += external->mobility;
   }
   MapDirectJointForces(system, state, loads);
+}
+
+void CalcStateVariableDerivatives(const System& system, const State& state, Eigen::Ref<VecX> zdot) {
+  const auto& forces = system.force_elements();
+  for (size_t k = 0; k < forces.size(); ++k) {
+    const int n = system.NumStateVariables(static_cast<int>(k));
+    if (n == 0) continue;
+    const int begin = system.StateVariableBegin(static_cast<int>(k));
+    forces[k]->CalcStateVariableDerivatives(system.MakeForceContext(static_cast<int>(k), state),
+                                            zdot.segment(begin, n));
+  }
 }
 
 Accelerations CalcAccelerations(const System& system, const State& state, const Loads* external,

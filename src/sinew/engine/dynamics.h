@@ -21,6 +21,9 @@ struct Accelerations {
 /// Generalized forces on coordinates of direct Cartesian joints are turned into body torques.
 void CalcLoads(const System& system, const State& state, const Loads* external, Loads& loads);
 
+/// dz/dt of every auxiliary state variable at `state` (System::num_state_variables() entries).
+void CalcStateVariableDerivatives(const System& system, const State& state, Eigen::Ref<VecX> zdot);
+
 /// The accelerations of `state` under the loads of CalcLoads. `kkt` must belong to `system`;
 /// it is refactorized at `state`. Throws sinew::Error for a singular system.
 Accelerations CalcAccelerations(const System& system, const State& state, const Loads* external,

@@ -1,4 +1,5 @@
 #include <sinew/engine/energy.h>
+#include <sinew/engine/loads.h>
 
 namespace sinew::engine {
 
@@ -26,8 +27,31 @@ double CalcGravityPotentialEnergy(const System& system, const State& state) {
   return V;
 }
 
+double CalcForcePotentialEnergy(const System& system, const State& state) {
+  double V = 0.0;
+  const auto& forces = system.force_elements();
+  for (size_t k = 0; k < forces.size(); ++k) {
+    V += forces[k]->CalcPotentialEnergy(system.MakeForceContext(static_cast<int>(k), state));
+  }
+  return V;
+}
+
 double CalcMechanicalEnergy(const System& system, const State& state) {
-  return CalcKineticEnergy(system, state) + CalcGravityPotentialEnergy(system, state);
+  return CalcKineticEnergy(system, state) + CalcGravityPotentialEnergy(system, state) +
+         CalcForcePotentialEnergy(system, state);
+}
+
+double CalcForcePower(const System& system, const State& state, int k) {
+  Loads loads(system.num_bodies(), system.num_coordinates());
+  system.force_elements()[k]->AddLoads(system.MakeForceContext(k, state), loads);
+  double P = 0.0;
+  for (int b = 1; b < system.num_bodies(); ++b) {
+    const BodyState& s = state.bodies[b];
+    P += loads.body[b].head<3>().dot(s.w_GB) + loads.body[b].tail<3>().dot(s.v_GB);
+  }
+  // Every coordinate's speed is current (direct joints' are read off the poses), so the
+  // generalized forces' power is the same whichever form the joint has.
+  return P + loads.mobility.dot(state.u);
 }
 
 }  // namespace sinew::engine

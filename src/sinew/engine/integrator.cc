@@ -20,6 +20,35 @@ Integrator::Integrator(const System& system, const IntegratorSettings& settings)
   if (settings.step < 0.0) throw Error("integrator: step must be >= 0");
 }
 
+void Integrator::StepTo(State& state, double t_final) {
+  CheckState(system_, state);
+  if (!(t_final >= state.t)) throw Error("integrator: cannot step backwards in time");
+  while (state.t < t_final) TakeStep(state, t_final);
+  ApplyController(state);
+}
+
+void Integrator::Advance(State& state, double t_limit) {
+  CheckState(system_, state);
+  if (!(t_limit > state.t)) throw Error("integrator: Advance needs a time after the state's");
+  TakeStep(state, t_limit);
+  ApplyController(state);
+}
+
+void Integrator::Interpolate(double, State&) {
+  throw Error("integrator: this scheme has no dense output; step to each time instead");
+}
+
+void Integrator::ApplyController(State& state) const {
+  if (controller_) controller_->CalcInputs(system_, state, state.inputs);
+}
+
+Accelerations Integrator::Evaluate(State& state, Eigen::Ref<VecX> zdot) {
+  ApplyController(state);
+  ++stats_.evaluations;
+  if (zdot.size() > 0) CalcStateVariableDerivatives(system_, state, zdot);
+  return CalcAccelerations(system_, state, external_, kkt_);
+}
+
 double Integrator::ConstraintTolerance() const {
   return settings_.constraint_tolerance > 0.0 ? settings_.constraint_tolerance
                                               : std::min(1e-3 * settings_.accuracy, 1e-10);
@@ -34,16 +63,19 @@ std::string FormatNumber(double value) {
   return buffer;
 }
 
-// The integrated vector y = [positions; velocities]: per moving body p_GB and quat_GB
-// (w, x, y, z), then the integrated q; then the KKT velocities.
+// The integrated vector y = [positions; velocities; z]: per moving body p_GB and quat_GB
+// (w, x, y, z), then the integrated q; then the KKT velocities; then the auxiliary state
+// variables.
 class StateVector {
  public:
   StateVector(const System& system, const KktSolver& kkt) : system_(system), kkt_(kkt) {
     nb_ = system.num_bodies() - 1;
     np_ = 7 * nb_ + system.num_integrated();
     nv_ = kkt.num_velocities();
+    nz_ = system.num_state_variables();
   }
-  int size() const { return np_ + nv_; }
+  int size() const { return np_ + nv_ + nz_; }
+  int num_state_variables() const { return nz_; }
 
   VecX Pack(const State& state) const {
     VecX y(size());
@@ -55,7 +87,8 @@ class StateVector {
     for (int c = 0; c < system_.num_coordinates(); ++c) {
       if (system_.IsIntegrated(c)) y[7 * nb_ + system_.SpeedIndex(c)] = state.q[c];
     }
-    y.tail(nv_) = GatherVelocities(system_, kkt_, state);
+    y.segment(np_, nv_) = GatherVelocities(system_, kkt_, state);
+    y.tail(nz_) = state.z;
     return y;
   }
 
@@ -71,12 +104,14 @@ class StateVector {
     for (int c = 0; c < system_.num_coordinates(); ++c) {
       if (system_.IsIntegrated(c)) state.q[c] = y[7 * nb_ + system_.SpeedIndex(c)];
     }
-    ScatterVelocities(system_, kkt_, y.tail(nv_), state);
+    ScatterVelocities(system_, kkt_, y.segment(np_, nv_), state);
+    state.z = y.tail(nz_);
     UpdateDirectCoordinates(system_, state);
   }
 
-  // ydot at the state (whose quaternions are those of y, unnormalized kept in y).
-  VecX Derivative(const VecX& y, const State& state, const VecX& vdot) const {
+  // ydot at the state (whose quaternions are those of y, unnormalized kept in y), given the
+  // accelerations and the state variables' derivatives.
+  VecX Derivative(const VecX& y, const State& state, const VecX& vdot, const VecX& zdot) const {
     VecX yd(size());
     for (int b = 1; b <= nb_; ++b) {
       const BodyState& s = state.bodies[b];
@@ -101,14 +136,15 @@ class StateVector {
         yd[7 * nb_ + system_.SpeedIndex(joint.coordinates[i])] = qdot[i];
       }
     }
-    yd.tail(nv_) = vdot;
+    yd.segment(np_, nv_) = vdot;
+    yd.tail(nz_) = zdot;
     return yd;
   }
 
  private:
   const System& system_;
   const KktSolver& kkt_;
-  int nb_ = 0, np_ = 0, nv_ = 0;
+  int nb_ = 0, np_ = 0, nv_ = 0, nz_ = 0;
 };
 
 // Dormand-Prince 5(4) with projection after every accepted step.
@@ -117,11 +153,13 @@ class RungeKutta45 final : public Integrator {
   RungeKutta45(const System& system, const IntegratorSettings& settings)
       : Integrator(system, settings), vector_(system, kkt_) {}
 
-  void StepTo(State& state, double t_final) override {
-    CheckState(system_, state);
-    if (t_final < state.t) throw Error("integrator: cannot step backwards in time");
+  bool HasDenseOutput() const override { return true; }
+  void Interpolate(double t, State& out) override;
+
+ protected:
+  void TakeStep(State& state, double t_final) override {
     if (h_ <= 0.0) h_ = settings_.step > 0.0 ? std::min(settings_.step, 1e-3) : 1e-3;
-    while (state.t < t_final) {
+    for (;;) {
       const double remaining = t_final - state.t;
       double h = std::min(h_, remaining);
       if (settings_.step > 0.0) h = std::min(h, settings_.step);
@@ -130,16 +168,16 @@ class RungeKutta45 final : public Integrator {
       const bool lands = h >= remaining;
       if (TryStep(state, lands ? remaining : h, lands ? t_final : state.t + h)) {
         ++stats_.steps;
-      } else {
-        ++stats_.rejected;
-        if (h_ < settings_.min_step) {
-          throw Error("integrator 'rk45': the step size fell below " +
-                      FormatNumber(settings_.min_step) + " s at t = " + FormatNumber(state.t) +
-                      " s (" + std::to_string(stats_.rejected) + " steps rejected, " +
-                      std::to_string(stats_.projection_failures) +
-                      " of them because the position projection did not converge): the motion "
-                      "may be singular there; try a looser accuracy or check the model");
-        }
+        return;
+      }
+      ++stats_.rejected;
+      if (h_ < settings_.min_step) {
+        throw Error("integrator 'rk45': the step size fell below " +
+                    FormatNumber(settings_.min_step) + " s at t = " + FormatNumber(state.t) +
+                    " s (" + std::to_string(stats_.rejected) + " steps rejected, " +
+                    std::to_string(stats_.projection_failures) +
+                    " of them because the position projection did not converge): the motion "
+                    "may be singular there; try a looser accuracy or check the model");
       }
     }
   }
@@ -147,9 +185,9 @@ class RungeKutta45 final : public Integrator {
  private:
   VecX Eval(const VecX& y, double t, State& scratch) {
     vector_.Unpack(y, t, scratch);
-    ++stats_.evaluations;
-    return vector_.Derivative(y, scratch,
-                              CalcAccelerations(system_, scratch, external_, kkt_).vdot);
+    zdot_.resize(vector_.num_state_variables());
+    const Accelerations acc = Evaluate(scratch, zdot_);
+    return vector_.Derivative(y, scratch, acc.vdot, zdot_);
   }
 
   // One attempt; on success `state` advances and h_ is updated for the next step.
@@ -194,6 +232,24 @@ class RungeKutta45 final : public Integrator {
       just_rejected_ = true;
       return false;
     }
+    // Dense output (Hairer's fourth-order continuous extension of Dormand-Prince), kept for
+    // Interpolate: y(t0 + theta h) = y0 + theta (d1 + (1 - theta) (d2 + theta (d3 +
+    // (1 - theta) d4))), from the step's stages and the unprojected fifth-order solution.
+    static constexpr double d[7] = {-12715105075.0 / 11282082432.0,  0,
+                                    87487479700.0 / 32700410799.0,   -10690763975.0 / 1880347072.0,
+                                    701980252875.0 / 199316789632.0, -1453857185.0 / 822651844.0,
+                                    69997945.0 / 29380423.0};
+    dense_.t0 = state.t;
+    dense_.h = h;
+    dense_.y0 = y0;
+    dense_.d1 = y - y0;
+    dense_.d2 = h * k[0] - dense_.d1;
+    dense_.d3 = dense_.d1 - h * k[6] - dense_.d2;
+    dense_.d4 = VecX::Zero(y0.size());
+    for (int s = 0; s < 7; ++s) {
+      if (d[s] != 0.0) dense_.d4 += (h * d[s]) * k[s];
+    }
+    dense_.start = state;
     State next = state;
     vector_.Unpack(y, t_new, next);
     if (!ProjectPositions(system_, next, ConstraintTolerance(), kkt_, 10,
@@ -214,27 +270,59 @@ class RungeKutta45 final : public Integrator {
     return true;
   }
 
+  // The last accepted step, for Interpolate.
+  struct DenseOutput {
+    double t0 = 0.0, h = 0.0;
+    VecX y0, d1, d2, d3, d4;
+    State start;  // the state the step started from (inputs, direct-joint angle branches)
+  };
+
   StateVector vector_;
+  DenseOutput dense_;
+  VecX zdot_;
   double h_ = 0.0;
   bool just_rejected_ = false;
 };
+
+void RungeKutta45::Interpolate(double t, State& out) {
+  const double h = dense_.h;
+  if (!(h > 0.0) || !(t >= dense_.t0 - 1e-12 * h && t <= dense_.t0 + h * (1 + 1e-12))) {
+    throw Error("integrator 'rk45': Interpolate at t = " + FormatNumber(t) +
+                " s, outside the last step");
+  }
+  const double theta = std::clamp((t - dense_.t0) / h, 0.0, 1.0);
+  const VecX y =
+      dense_.y0 +
+      theta *
+          (dense_.d1 + (1 - theta) * (dense_.d2 + theta * (dense_.d3 + (1 - theta) * dense_.d4)));
+  out = dense_.start;
+  vector_.Unpack(y, t, out);
+  if (!system_.constraints().empty()) {
+    // The interpolant is as accurate as the steps, but not on the constraints: project it, as
+    // every accepted step is.
+    if (!ProjectPositions(system_, out, ConstraintTolerance(), kkt_, 10,
+                          &stats_.projection_factorizations)) {
+      throw Error("integrator 'rk45': the interpolated state at t = " + FormatNumber(t) +
+                  " s could not be projected onto the constraints");
+    }
+    ProjectVelocities(system_, out, kkt_);
+    UpdateDirectCoordinates(system_, out);
+  }
+  ApplyController(out);
+}
 
 // The schemes that advance by a fixed step `settings.step` (the last step of a StepTo call
 // shortened to land exactly on t_final).
 class FixedStepIntegrator : public Integrator {
  public:
-  void StepTo(State& state, double t_final) override {
-    CheckState(system_, state);
-    if (t_final < state.t) throw Error("integrator: cannot step backwards in time");
-    while (state.t < t_final) {
-      const double remaining = t_final - state.t;
-      const double h = remaining < 1.0001 * settings_.step ? remaining : settings_.step;
-      Step(state, h, h == remaining ? t_final : state.t + h);
-      ++stats_.steps;
-    }
+ protected:
+  void TakeStep(State& state, double t_final) override {
+    const double remaining = t_final - state.t;
+    const double h = remaining < 1.0001 * settings_.step ? remaining : settings_.step;
+    Step(state, h, h == remaining ? t_final : state.t + h);
+    ++stats_.steps;
   }
 
- protected:
   FixedStepIntegrator(const System& system, const IntegratorSettings& settings, const char* name)
       : Integrator(system, settings), name_(name) {
     if (!(settings.step > 0.0)) {
@@ -281,8 +369,8 @@ class SemiImplicitEuler final : public FixedStepIntegrator {
   void Step(State& state, double h, double t_new) override {
     const int nv = kkt_.num_velocities();
     // Accelerations' right-hand side f at (x, v); the same matrix serves the velocity solve.
-    ++stats_.evaluations;
-    const Accelerations acc = CalcAccelerations(system_, state, external_, kkt_);
+    VecX zdot(system_.num_state_variables());
+    const Accelerations acc = Evaluate(state, zdot);
     // M vdot + J^T lambda = f  =>  f = M vdot + J^T lambda; the new velocities solve
     // M v+ + J^T (h lambda+) = M v + h f, J v+ = c(t+h).
     const VecX v0 = GatherVelocities(system_, kkt_, state);
@@ -300,6 +388,7 @@ class SemiImplicitEuler final : public FixedStepIntegrator {
     // Positions move with the new velocities.
     ScatterVelocities(system_, kkt_, v1, later);
     ApplyPositionDisplacement(system_, kkt_, h * v1, later);
+    later.z += h * zdot;
     ProjectAfterStep(later, state.t);
     state = std::move(later);
   }
@@ -332,8 +421,8 @@ class LinearizedImplicitEuler final : public FixedStepIntegrator {
 
   void Step(State& state, double h, double t_new) override {
     const int nv = kkt_.num_velocities(), nc = kkt_.num_equations();
-    ++stats_.evaluations;
-    const Accelerations acc = CalcAccelerations(system_, state, external_, kkt_);
+    VecX zdot(system_.num_state_variables());
+    const Accelerations acc = Evaluate(state, zdot);
     const VecX v0 = GatherVelocities(system_, kkt_, state);
     const VecX f0 = LoadVector(state);
     MatX D(nv, nv), K(nv, nv);
@@ -373,6 +462,7 @@ class LinearizedImplicitEuler final : public FixedStepIntegrator {
     const VecX v1 = x.head(nv);
     ScatterVelocities(system_, kkt_, v1, later);
     ApplyPositionDisplacement(system_, kkt_, h * v1, later);
+    later.z += h * zdot;  // explicit in z (the loads' z-dependence is not linearized yet)
     ProjectAfterStep(later, state.t);
     state = std::move(later);
   }

@@ -1,4 +1,6 @@
 // Time stepping. Three schemes share one interface:
+// Auxiliary state variables z are integrated with the positions and velocities (under rk45's
+// error control; by an explicit Euler step in the fixed-step schemes).
 //  - "rk45": Dormand-Prince 5(4) with error control on positions and velocities and, after each
 //    accepted step, projection of positions (Newton) and velocities (least squares) onto the
 //    constraints. Used to match OpenSim's results.
@@ -10,6 +12,8 @@
 //    differences, dense solve): stable for stiff springs and dampers on small models.
 #pragma once
 
+#include <sinew/engine/controller.h>
+#include <sinew/engine/dynamics.h>
 #include <sinew/engine/kkt.h>
 #include <sinew/engine/loads.h>
 #include <sinew/engine/projection.h>
@@ -49,20 +53,44 @@ class Integrator {
  public:
   virtual ~Integrator() = default;
   /// Advances `state` to exactly `t_final` (>= state.t). Throws sinew::Error on failure.
-  virtual void StepTo(State& state, double t_final) = 0;
+  void StepTo(State& state, double t_final);
+  /// Takes one step from state.t, ending at or before `t_limit` (> state.t); steps are not
+  /// shortened to land on intermediate times (see Interpolate). Throws sinew::Error on failure.
+  void Advance(State& state, double t_limit);
+  /// True when Interpolate can give states inside the last step (rk45: dense output).
+  virtual bool HasDenseOutput() const { return false; }
+  /// The state at time `t` inside the last step taken by Advance or StepTo (between its start
+  /// and end), moved onto the constraints, written into `out` (any state of the system).
+  /// Throws sinew::Error when the integrator has no dense output or t is outside the step.
+  virtual void Interpolate(double t, State& out);
   /// Loads held constant and added to every evaluation (may be null; not owned).
   void SetExternalLoads(const Loads* loads) { external_ = loads; }
+  /// A controller that sets the inputs from time and state at every evaluation (null: the
+  /// inputs keep the values the state holds). After each StepTo the state's inputs are the
+  /// controller's at the final time.
+  void SetController(std::shared_ptr<const Controller> controller) {
+    controller_ = std::move(controller);
+  }
+  const std::shared_ptr<const Controller>& controller() const { return controller_; }
   const IntegratorStats& stats() const { return stats_; }
   const IntegratorSettings& settings() const { return settings_; }
 
  protected:
   Integrator(const System& system, const IntegratorSettings& settings);
+  /// One step from state.t ending at or before t_limit (Advance without the checks).
+  virtual void TakeStep(State& state, double t_limit) = 0;
   double ConstraintTolerance() const;
+  /// Sets `state`'s inputs from the controller (if any).
+  void ApplyController(State& state) const;
+  /// One evaluation at `state`: inputs from the controller, then the accelerations (counted in
+  /// stats().evaluations) and, into `zdot`, the state variables' derivatives.
+  Accelerations Evaluate(State& state, Eigen::Ref<VecX> zdot);
 
   const System& system_;
   IntegratorSettings settings_;
   KktSolver kkt_;
   const Loads* external_ = nullptr;
+  std::shared_ptr<const Controller> controller_;
   IntegratorStats stats_;
 };
 

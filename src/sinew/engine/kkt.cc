@@ -6,8 +6,24 @@
 
 namespace sinew::engine {
 namespace {
-// Constraint compliance of the sparse path (see Factorize).
-constexpr double kCompliance = 1e-12;
+// Pivots of the Schur complement below this fraction of the largest are treated as zero
+// (redundant constraints).
+constexpr double kSchurThreshold = 1e-10;
+
+// True when constraint k belongs to the tree elimination: the equations of a joint that places
+// a body, or a constraint on the coordinates of one such joint and nothing else.
+bool IsTreeConstraint(const System& system, int k) {
+  const int num_joints = static_cast<int>(system.joints().size());
+  if (k < num_joints) return !system.IsLoop(k);
+  const Constraint& c = *system.constraints()[k];
+  const std::vector<int> coordinates = c.Coordinates();
+  if (!c.Bodies().empty() || coordinates.empty()) return false;
+  const int joint = system.coordinates()[coordinates[0]].joint;
+  for (int q : coordinates) {
+    if (system.coordinates()[q].joint != joint) return false;
+  }
+  return !system.IsLoop(joint);
+}
 }  // namespace
 
 Eigen::Matrix<double, 6, 6> CalcBodyMassMatrix(const Body& body, const Quat& quat_GB) {
@@ -24,7 +40,7 @@ Eigen::Matrix<double, 6, 6> CalcBodyMassMatrix(const Body& body, const Quat& qua
   return M;
 }
 
-KktSolver::KktSolver(const System& system, bool allow_tree) : system_(system) {
+KktSolver::KktSolver(const System& system, Method method) : system_(system), method_(method) {
   if (!system.finalized()) throw Error("engine: the System must be finalized before use");
   nv_ = 6 * (system.num_bodies() - 1) + system.num_integrated();
   const auto& constraints = system.constraints();
@@ -47,85 +63,106 @@ KktSolver::KktSolver(const System& system, bool allow_tree) : system_(system) {
     columns_.push_back(std::move(cols));
   }
   mass_.assign(system.num_bodies(), Eigen::Matrix<double, 6, 6>::Zero());
-  matrix_.resize(nv_ + nc_, nv_ + nc_);
-  // Without loop constraints the tree elimination applies: constraints are the joints', then
-  // coordinate constraints that touch one coordinate's speed only.
-  bool tree = allow_tree && !system.HasLoops();
-  for (size_t k = system.joints().size(); k < constraints.size() && tree; ++k) {
-    const std::vector<int> coordinates = constraints[k]->Coordinates();
-    tree = constraints[k]->Bodies().empty() && !coordinates.empty();
-    for (int c : coordinates) {
-      tree = tree && system.coordinates()[c].joint == system.coordinates()[coordinates[0]].joint;
+  tree_row_.assign(constraints.size(), -1);
+  extra_row_.assign(constraints.size(), -1);
+  for (size_t k = 0; k < constraints.size(); ++k) {
+    const int n = constraints[k]->NumEquations();
+    if (IsTreeConstraint(system, static_cast<int>(k))) {
+      tree_constraints_.push_back(static_cast<int>(k));
+      tree_row_[k] = nc_tree_;
+      nc_tree_ += n;
+    } else {
+      extra_constraints_.push_back(static_cast<int>(k));
+      extra_row_[k] = ne_;
+      ne_ += n;
     }
   }
-  if (tree) {
+  if (method_ == Method::kTree) {
     std::vector<int> body_columns(system.num_bodies()), speed_columns(system.num_coordinates(), -1);
     for (int b = 0; b < system.num_bodies(); ++b) body_columns[b] = BodyColumn(b);
     for (int c = 0; c < system.num_coordinates(); ++c) {
       if (system.IsIntegrated(c)) speed_columns[c] = SpeedColumn(c);
     }
-    try {
-      tree_ =
-          std::make_unique<TreeKktSolver>(system, nv_, body_columns, speed_columns, row_, columns_);
-    } catch (const Error&) {
-      tree_.reset();  // a structure the tree solver does not take: the sparse LU does
-    }
+    tree_ = std::make_unique<TreeKktSolver>(system, nv_, body_columns, speed_columns,
+                                            tree_constraints_, tree_row_, columns_);
+    G_ = MatX::Zero(ne_, nv_);
+    Y_ = MatX::Zero(nv_ + nc_tree_, ne_);
   }
 }
 
 void KktSolver::Factorize(const State& state) {
   const auto& constraints = system_.constraints();
-  triplets_.clear();
   for (int b = 1; b < system_.num_bodies(); ++b) {
     mass_[b] = CalcBodyMassMatrix(system_.bodies()[b], state.bodies[b].quat_GB);
-    const int c0 = BodyColumn(b);
-    for (int i = 0; i < 6; ++i) {
-      for (int k = 0; k < 6; ++k) triplets_.emplace_back(c0 + i, c0 + k, mass_[b](i, k));
-    }
   }
   for (size_t k = 0; k < constraints.size(); ++k) {
     constraints[k]->CalcJacobian(system_, state, jacobian_[k]);
   }
-  if (tree_) {
-    tree_->Factorize(mass_, jacobian_);
+  if (method_ == Method::kDense) {
+    dense_.compute(AssembleDense());
     return;
   }
-  for (size_t k = 0; k < constraints.size(); ++k) {
+  tree_->Factorize(mass_, jacobian_);
+  if (ne_ == 0) return;
+  // The extra rows G over the velocity unknowns, then Y = K_T^-1 G^T and S = G Y.
+  G_.setZero();
+  for (int k : extra_constraints_) {
     const MatX& J = jacobian_[k];
-    const auto& cols = columns_[k];
-    for (int i = 0; i < J.rows(); ++i) {
-      const int row = nv_ + row_[k] + i;
-      for (int j = 0; j < J.cols(); ++j) {
-        if (cols[j] < 0) continue;
-        triplets_.emplace_back(row, cols[j], J(i, j));
-        triplets_.emplace_back(cols[j], row, J(i, j));
-      }
+    for (int j = 0; j < J.cols(); ++j) {
+      if (columns_[k][j] >= 0) G_.block(extra_row_[k], columns_[k][j], J.rows(), 1) += J.col(j);
     }
   }
-  // A tiny compliance -eps on the constraint diagonal keeps redundant (consistent) loop
-  // constraints solvable, as with planar loops of pins; it changes J x = g by eps * lambda.
-  for (int r = 0; r < nc_; ++r) triplets_.emplace_back(nv_ + r, nv_ + r, -kCompliance);
-  matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
-  if (!analyzed_) {
-    lu_.analyzePattern(matrix_);
-    analyzed_ = true;
+  VecX column = VecX::Zero(nv_ + nc_tree_);
+  for (int i = 0; i < ne_; ++i) {
+    column.head(nv_) = G_.row(i).transpose();
+    Y_.col(i) = tree_->Solve(column);
   }
-  lu_.factorize(matrix_);
-  if (lu_.info() != Eigen::Success) {
-    throw Error(
-        "engine: the equations of motion are singular (bodies without mass or inertia in "
-        "a direction no joint constrains?): " +
-        lu_.lastErrorMessage());
+  schur_.setThreshold(kSchurThreshold);
+  schur_.compute(G_ * Y_.topRows(nv_));
+}
+
+void KktSolver::GatherTreeRhs(const VecX& rhs, VecX& tree_rhs) const {
+  tree_rhs.resize(nv_ + nc_tree_);
+  tree_rhs.head(nv_) = rhs.head(nv_);
+  const auto& constraints = system_.constraints();
+  for (int k : tree_constraints_) {
+    const int n = constraints[k]->NumEquations();
+    tree_rhs.segment(nv_ + tree_row_[k], n) = rhs.segment(nv_ + row_[k], n);
   }
 }
 
 VecX KktSolver::Solve(const VecX& rhs) const {
-  VecX x = tree_ ? tree_->Solve(rhs) : VecX(lu_.solve(rhs));
+  VecX x(nv_ + nc_);
+  if (method_ == Method::kDense) {
+    x = dense_.solve(rhs);
+  } else {
+    VecX tree_rhs;
+    GatherTreeRhs(rhs, tree_rhs);
+    VecX y = tree_->Solve(tree_rhs);
+    const auto& constraints = system_.constraints();
+    if (ne_ > 0) {
+      VecX g(ne_);
+      for (int k : extra_constraints_) {
+        const int n = constraints[k]->NumEquations();
+        g.segment(extra_row_[k], n) = rhs.segment(nv_ + row_[k], n);
+      }
+      const VecX mu = schur_.solve(G_ * y.head(nv_) - g);
+      y -= Y_ * mu;
+      for (int k : extra_constraints_) {
+        const int n = constraints[k]->NumEquations();
+        x.segment(nv_ + row_[k], n) = mu.segment(extra_row_[k], n);
+      }
+    }
+    x.head(nv_) = y.head(nv_);
+    for (int k : tree_constraints_) {
+      const int n = constraints[k]->NumEquations();
+      x.segment(nv_ + row_[k], n) = y.segment(nv_ + tree_row_[k], n);
+    }
+  }
   VecX residual(rhs.size());
   residual.head(nv_) =
       MultiplyMass(x.head(nv_)) + MultiplyJacobianTranspose(x.tail(nc_)) - rhs.head(nv_);
   residual.tail(nc_) = MultiplyJacobian(x.head(nv_)) - rhs.tail(nc_);
-  if (!tree_) residual.tail(nc_) -= kCompliance * x.tail(nc_);
   const double scale = 1.0 + rhs.lpNorm<Eigen::Infinity>();
   if (!x.allFinite() || residual.lpNorm<Eigen::Infinity>() > 1e-6 * scale) {
     throw Error("engine: the equations of motion are singular or ill-conditioned (residual " +
@@ -169,7 +206,6 @@ MatX KktSolver::AssembleDense() const {
       }
     }
   }
-  if (!tree_) K.bottomRightCorner(nc_, nc_).diagonal().array() -= kCompliance;
   return K;
 }
 

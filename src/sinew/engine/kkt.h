@@ -4,16 +4,25 @@
 // over the velocity unknowns (body twists [w_GB; v_GB] in G, then the integrated joint speeds)
 // and the constraint equations. M is the block-diagonal body mass matrix about each body origin
 // (zero for joint speeds, possibly singular for massless bodies); the system as a whole is
-// nonsingular when the model is well posed. The sparsity pattern never changes, so it is
-// analysed once and only refactorized per evaluation (sparse LU, COLAMD ordering).
+// nonsingular when the model is well posed.
+//
+// Solved in linear time: the tree constraints (the joints that place bodies, and locks and
+// prescribed motions of their coordinates) by the tree elimination of TreeKktSolver; every
+// other constraint (loop joints, couplers, welds, any extra rows G x = g) by a Schur
+// complement: Y = K_T^-1 G^T (one tree solve per extra row), S = G Y, then
+//   y0 = K_T^-1 r,  S mu = G y0 - g,  x = y0 - Y mu.
+// S is symmetric positive semidefinite; it is factorized by a complete orthogonal
+// decomposition that treats pivots below 1e-10 of the largest as zero, so redundant but
+// consistent constraints (a planar loop of pins) get the minimum-norm multipliers instead of
+// failing.
 #pragma once
 
 #include <sinew/engine/state.h>
 #include <sinew/engine/system.h>
 #include <sinew/engine/tree_solver.h>
 
-#include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
+#include <Eigen/LU>
+#include <Eigen/QR>
 #include <memory>
 #include <vector>
 
@@ -27,8 +36,10 @@ Eigen::Matrix<double, 6, 6> CalcBodyMassMatrix(const Body& body, const Quat& qua
 /// System, which must outlive it.
 class KktSolver {
  public:
-  /// `allow_tree` false forces the general sparse LU (used to cross-check the two).
-  explicit KktSolver(const System& system, bool allow_tree = true);
+  /// kTree: the linear-time solve above. kDense: a dense LU with full pivoting of the whole
+  /// matrix, O(n^3), to cross-check the tree solve in tests.
+  enum class Method { kTree, kDense };
+  explicit KktSolver(const System& system, Method method = Method::kTree);
 
   int num_velocities() const { return nv_; }
   int num_equations() const { return nc_; }
@@ -44,9 +55,10 @@ class KktSolver {
   /// solution is not accurate (singular system).
   VecX Solve(const VecX& rhs) const;
 
-  /// True when the linear-time tree elimination is used (no loop constraints); otherwise a
-  /// sparse LU of the whole matrix.
-  bool uses_tree_solver() const { return tree_ != nullptr; }
+  /// The method in use.
+  Method method() const { return method_; }
+  /// Number of constraint equations solved by the Schur complement (not tree rows).
+  int num_extra_equations() const { return ne_; }
 
   /// M * x (x has nv entries) with the M of the last Factorize.
   VecX MultiplyMass(const VecX& x) const;
@@ -58,17 +70,27 @@ class KktSolver {
   VecX MultiplyJacobianTranspose(const VecX& y) const;
 
  private:
+  // Fills the tree solver's right-hand side [f; g_T] from a global one [f; g].
+  void GatherTreeRhs(const VecX& rhs, VecX& tree_rhs) const;
+
   const System& system_;
+  Method method_;
   int nv_ = 0, nc_ = 0;
   std::vector<int> row_;
   std::vector<std::vector<int>> columns_;  // per constraint: column of each J column (-1 = ground)
   std::vector<MatX> jacobian_;             // per constraint
   std::vector<Eigen::Matrix<double, 6, 6>> mass_;  // per body (index 0 unused)
-  std::vector<Eigen::Triplet<double>> triplets_;
-  Eigen::SparseMatrix<double> matrix_;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
-  bool analyzed_ = false;
+  // Tree part: constraints and their first rows in the tree solver's layout.
+  std::vector<int> tree_constraints_, tree_row_;  // tree_row_ per constraint (-1: extra)
+  int nc_tree_ = 0;
   std::unique_ptr<TreeKktSolver> tree_;
+  // Schur part: the extra constraints, G (ne x nv), Y = K_T^-1 G^T, S = G Y.
+  std::vector<int> extra_constraints_, extra_row_;  // extra_row_ per constraint (-1: tree)
+  int ne_ = 0;
+  MatX G_, Y_;
+  Eigen::CompleteOrthogonalDecomposition<MatX> schur_;
+  // Dense method.
+  Eigen::FullPivLU<MatX> dense_;
 };
 
 /// Packs the velocity unknowns of `state` (body twists, integrated speeds) in KKT order.

@@ -1,7 +1,8 @@
-// Applied loads: forces and torques on bodies, generalized forces on coordinates; and the
-// ForceElement interface through which force models add them.
+// Applied loads: forces and torques on bodies, generalized forces on coordinates. Force
+// elements (force_element.h) add to them.
 #pragma once
 
+#include <sinew/engine/force_element.h>
 #include <sinew/math/types.h>
 
 #include <vector>
@@ -38,14 +39,6 @@ class Loads {
   std::vector<SpatialVec> body;
   /// Per coordinate: generalized force.
   VecX mobility;
-};
-
-/// A force model that adds loads depending on the state (springs, muscles, contact, ...).
-class ForceElement {
- public:
-  virtual ~ForceElement() = default;
-  /// Adds this element's loads for `state` to `loads`.
-  virtual void AddLoads(const System& system, const State& state, Loads& loads) const = 0;
 };
 
 }  // namespace sinew::engine

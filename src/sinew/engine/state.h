@@ -1,4 +1,5 @@
-// The changing data of a simulation: time, body poses and twists, joint coordinates and speeds.
+// The changing data of a simulation: time, body poses and twists, joint coordinates and speeds,
+// auxiliary state variables z, and the inputs (controls) an evaluation reads.
 // A State is a plain value: copy it to save it, assign it back to restore it.
 #pragma once
 
@@ -18,6 +19,14 @@ struct State {
   /// joints are read off the body poses after every step (see UpdateDirectCoordinates).
   VecX q;
   VecX u;
+  /// Auxiliary continuous state variables (muscle activations, fiber lengths, ...), declared by
+  /// force elements and laid out by System::Finalize (names: System::state_variable_names()).
+  /// Integrated with q and u, under the same error control.
+  VecX z;
+  /// Inputs (controls, excitations) read by every evaluation, declared by force elements
+  /// (names: System::input_names()). They hold their value during a step unless a Controller
+  /// given to the integrator sets them from time and state at every evaluation.
+  VecX inputs;
 };
 
 }  // namespace sinew::engine

@@ -4,6 +4,8 @@
 #include <sinew/engine/system.h>
 
 #include <cmath>
+#include <set>
+#include <string>
 
 namespace sinew::engine {
 
@@ -85,9 +87,19 @@ void System::AddConstraint(std::shared_ptr<const Constraint> constraint) {
   extra_constraints_.push_back(std::move(constraint));
 }
 
-void System::AddForceElement(std::shared_ptr<const ForceElement> force) {
+int System::AddForceElement(std::shared_ptr<const ForceElement> force) {
   RequireNotFinalized();
+  if (!force) throw Error("engine::System: null force element");
+  const std::vector<std::string> z_names = force->StateVariableNames();
+  const std::vector<std::string> input_names = force->InputNames();
+  force_layout_.push_back({num_state_variables(), static_cast<int>(z_names.size()), num_inputs(),
+                           static_cast<int>(input_names.size())});
+  const std::string prefix =
+      force->name().empty() ? "force" + std::to_string(forces_.size()) : force->name();
+  for (const std::string& v : z_names) z_names_.push_back(prefix + "/" + v);
+  for (const std::string& v : input_names) input_names_.push_back(prefix + "/" + v);
   forces_.push_back(std::move(force));
+  return static_cast<int>(forces_.size()) - 1;
 }
 
 void System::Finalize() {
@@ -139,6 +151,16 @@ void System::Finalize() {
         "every body has zero mass: forward dynamics is singular (a kinematics-only "
         "model cannot be simulated)");
   }
+  for (const auto* names : {&z_names_, &input_names_}) {
+    std::set<std::string_view> seen;
+    for (const std::string& n : *names) {
+      if (!seen.insert(n).second) {
+        throw Error({}, n,
+                    "two force elements declare this state variable or input: give them "
+                    "different names");
+      }
+    }
+  }
   // Speeds of parameterized joints are integrated unknowns.
   u_column_.assign(coordinates_.size(), -1);
   num_integrated_ = 0;
@@ -180,5 +202,20 @@ int System::FindCoordinate(std::string_view name) const {
   }
   return -1;
 }
+
+namespace {
+int FindName(const std::vector<std::string>& names, std::string_view name) {
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+}  // namespace
+
+int System::FindStateVariable(std::string_view name) const { return FindName(z_names_, name); }
+int System::FindInput(std::string_view name) const { return FindName(input_names_, name); }
+
+double ForceContext::z(int i) const { return state.z[z_begin + i]; }
+double ForceContext::input(int i) const { return state.inputs[input_begin + i]; }
 
 }  // namespace sinew::engine

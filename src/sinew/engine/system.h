@@ -5,7 +5,9 @@
 
 #include <sinew/engine/body.h>
 #include <sinew/engine/constraint.h>
+#include <sinew/engine/force_element.h>
 #include <sinew/engine/loads.h>
+#include <sinew/engine/state.h>
 #include <sinew/functions/function.h>
 #include <sinew/kinematics/joint_model.h>
 #include <sinew/math/transform.h>
@@ -80,8 +82,10 @@ class System {
                const std::vector<CoordinateDesc>& coordinates);
   /// Adds an extra constraint (loop closures, couplers, ...).
   void AddConstraint(std::shared_ptr<const Constraint> constraint);
-  /// Adds a force element evaluated with every acceleration computation.
-  void AddForceElement(std::shared_ptr<const ForceElement> force);
+  /// Adds a force element evaluated with every acceleration computation; returns its index.
+  /// Its state variables and inputs get their places in State::z and State::inputs now, after
+  /// those of the elements added before it (see StateVariableBegin, InputBegin).
+  int AddForceElement(std::shared_ptr<const ForceElement> force);
   void SetGravity(const Vec3& gravity) { gravity_ = gravity; }
 
   /// Checks the system (tree, masses, coordinates) and lays out the unknowns. Throws
@@ -97,6 +101,23 @@ class System {
   /// prescribed motions, then the extra ones. Valid after Finalize().
   const std::vector<std::shared_ptr<const Constraint>>& constraints() const { return constraints_; }
   const std::vector<std::shared_ptr<const ForceElement>>& force_elements() const { return forces_; }
+  /// First entry of force element k's state variables in State::z, and of its inputs in
+  /// State::inputs.
+  int StateVariableBegin(int k) const { return force_layout_[k].z_begin; }
+  int InputBegin(int k) const { return force_layout_[k].input_begin; }
+  /// Number of force element k's state variables and inputs.
+  int NumStateVariables(int k) const { return force_layout_[k].num_z; }
+  int NumInputs(int k) const { return force_layout_[k].num_inputs; }
+  /// The context force element k reads in an evaluation of `state`.
+  ForceContext MakeForceContext(int k, const State& state) const {
+    return ForceContext{*this, state, force_layout_[k].z_begin, force_layout_[k].input_begin};
+  }
+  /// Names of every auxiliary state variable ("<element>/<variable>", State::z order) and of
+  /// every input ("<element>/<input>", State::inputs order).
+  const std::vector<std::string>& state_variable_names() const { return z_names_; }
+  const std::vector<std::string>& input_names() const { return input_names_; }
+  int num_state_variables() const { return static_cast<int>(z_names_.size()); }
+  int num_inputs() const { return static_cast<int>(input_names_.size()); }
   int num_bodies() const { return static_cast<int>(bodies_.size()); }
   int num_coordinates() const { return static_cast<int>(coordinates_.size()); }
 
@@ -115,12 +136,17 @@ class System {
   bool IsLoop(int j) const { return loop_[j]; }
   /// Whether any joint closes a loop.
   bool HasLoops() const { return std::find(loop_.begin(), loop_.end(), true) != loop_.end(); }
+  /// Whether constraints were added with AddConstraint (couplers, welds, ...).
+  bool HasExtraConstraints() const { return !extra_constraints_.empty(); }
   /// The joint that places body `b` from ground outward, or -1 (ground).
   int JointOfBody(int b) const { return joint_of_body_[b]; }
 
   int FindBody(std::string_view name) const;
   int FindJoint(std::string_view name) const;
   int FindCoordinate(std::string_view name) const;
+  /// Index of a state variable or input by its full name ("<element>/<variable>"), or -1.
+  int FindStateVariable(std::string_view name) const;
+  int FindInput(std::string_view name) const;
 
  private:
   void RequireNotFinalized() const;
@@ -132,6 +158,15 @@ class System {
   std::vector<std::shared_ptr<const Constraint>> extra_constraints_;
   std::vector<std::shared_ptr<const Constraint>> constraints_;
   std::vector<std::shared_ptr<const ForceElement>> forces_;
+  struct ForceLayout {
+    int z_begin = 0;
+    int num_z = 0;
+    int input_begin = 0;
+    int num_inputs = 0;
+  };
+  std::vector<ForceLayout> force_layout_;
+  std::vector<std::string> z_names_;
+  std::vector<std::string> input_names_;
   std::vector<int> u_column_;
   std::vector<int> tree_order_;
   std::vector<int> joint_of_body_;

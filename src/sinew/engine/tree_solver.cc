@@ -8,6 +8,7 @@ namespace sinew::engine {
 
 TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int>& body_columns,
                              const std::vector<int>& speed_columns,
+                             const std::vector<int>& tree_constraints,
                              const std::vector<int>& equation_rows,
                              const std::vector<std::vector<int>>& columns)
     : system_(system) {
@@ -29,10 +30,10 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
     nodes_.push_back(std::move(node));
   }
   // Constraint rows: joint j's own, and coordinate constraints of its coordinates.
-  for (size_t k = 0; k < constraints.size(); ++k) {
+  for (int k : tree_constraints) {
     int joint = -1;
-    if (k < static_cast<size_t>(num_joints)) {
-      joint = static_cast<int>(k);
+    if (k < num_joints) {
+      joint = k;
     } else {
       const std::vector<int> coords = constraints[k]->Coordinates();
       if (!constraints[k]->Bodies().empty() || coords.empty()) {
@@ -40,8 +41,9 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
       }
       joint = system.coordinates()[coords[0]].joint;
     }
+    if (node_of_joint[joint] < 0) throw Error("engine: TreeKktSolver cannot take loop joints");
     Node& node = nodes_[node_of_joint[joint]];
-    node.constraints.push_back(static_cast<int>(k));
+    node.constraints.push_back(k);
     const int first_row = static_cast<int>(node.global.size());
     for (int r = 0; r < constraints[k]->NumEquations(); ++r) {
       node.global.push_back(nv + equation_rows[k] + r);

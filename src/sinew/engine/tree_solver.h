@@ -15,20 +15,25 @@ namespace sinew::engine {
 
 class System;
 
-/// Tree-ordered block elimination of [M J^T; J 0] (see KktSolver for the global layout).
+/// Tree-ordered block elimination of [M J_T^T; J_T 0] over the velocity unknowns and the rows of
+/// the tree constraints only (the joints that place bodies and constraints on one such joint's
+/// coordinates); KktSolver adds the other constraints by a Schur complement.
 class TreeKktSolver {
  public:
-  /// `body_column(b)`, `speed_column(c)`, `equation_row(k)` give global indices; `columns[k]`
-  /// the global column of each Jacobian column of constraint k (-1 for ground).
+  /// `body_columns[b]`, `speed_columns[c]` give velocity indices; `tree_constraints` the
+  /// constraints (indices into System::constraints()) it takes, `equation_rows[k]` the first
+  /// row of constraint k among them (the solver's vectors are [velocities; their rows]);
+  /// `columns[k]` the velocity column of each Jacobian column of constraint k (-1 for ground).
   TreeKktSolver(const System& system, int nv, const std::vector<int>& body_columns,
-                const std::vector<int>& speed_columns, const std::vector<int>& equation_rows,
+                const std::vector<int>& speed_columns, const std::vector<int>& tree_constraints,
+                const std::vector<int>& equation_rows,
                 const std::vector<std::vector<int>>& columns);
 
   /// Factorizes with body mass matrices `mass[b]` and constraint Jacobians `jacobian[k]`.
   /// Throws sinew::Error when a pivot block is singular.
   void Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& mass,
                  const std::vector<MatX>& jacobian);
-  /// Solves with the last factorization (global layout).
+  /// Solves with the last factorization: rhs and result are [velocities; tree rows].
   VecX Solve(const VecX& rhs) const;
 
  private:

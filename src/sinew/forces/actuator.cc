@@ -30,9 +30,8 @@ void Actuator::SetControlRange(double min_control, double max_control) {
   max_control_ = max_control;
 }
 
-double Actuator::CalcActuation(double t) const {
-  const double e = excitation_ ? excitation_->Calc(t) : 0.0;
-  return optimal_force_ * e;
+double Actuator::CalcActuation(const engine::ForceContext& context) const {
+  return optimal_force_ * context.input(0);
 }
 
 PointActuator::PointActuator(std::string name, double optimal_force, int body, const Vec3& point,
@@ -44,9 +43,9 @@ PointActuator::PointActuator(std::string name, double optimal_force, int body, c
       unit_direction_(UnitOrThrow(direction, this->name(), "direction")),
       force_is_global_(force_is_global) {}
 
-void PointActuator::AddLoads(const engine::System& /*system*/, const engine::State& state,
-                             engine::Loads& loads) const {
-  const double f = CalcActuation(state.t);
+void PointActuator::AddLoads(const engine::ForceContext& context, engine::Loads& loads) const {
+  const engine::State& state = context.state;
+  const double f = CalcActuation(context);
   if (f == 0.0) return;
   const Transform X_GB = engine::PoseOf(state.bodies[body_]);
   const Vec3 f_G = f * (force_is_global_ ? unit_direction_ : Vec3(X_GB.R * unit_direction_));
@@ -62,9 +61,9 @@ TorqueActuator::TorqueActuator(std::string name, double optimal_force, int body_
       unit_axis_(UnitOrThrow(axis, this->name(), "axis")),
       torque_is_global_(torque_is_global) {}
 
-void TorqueActuator::AddLoads(const engine::System& /*system*/, const engine::State& state,
-                              engine::Loads& loads) const {
-  const double torque = CalcActuation(state.t);
+void TorqueActuator::AddLoads(const engine::ForceContext& context, engine::Loads& loads) const {
+  const engine::State& state = context.state;
+  const double torque = CalcActuation(context);
   if (torque == 0.0) return;
   const Vec3 axis_G =
       torque_is_global_ ? unit_axis_ : Vec3(engine::PoseOf(state.bodies[body_a_]).R * unit_axis_);
@@ -75,9 +74,8 @@ void TorqueActuator::AddLoads(const engine::System& /*system*/, const engine::St
 CoordinateActuator::CoordinateActuator(std::string name, double optimal_force, int coordinate)
     : Actuator(std::move(name), optimal_force), coordinate_(coordinate) {}
 
-void CoordinateActuator::AddLoads(const engine::System& /*system*/, const engine::State& state,
-                                  engine::Loads& loads) const {
-  const double f = CalcActuation(state.t);
+void CoordinateActuator::AddLoads(const engine::ForceContext& context, engine::Loads& loads) const {
+  const double f = CalcActuation(context);
   if (f != 0.0) loads.AddGeneralizedForce(coordinate_, f);
 }
 

@@ -1,45 +1,43 @@
 // OpenSim's ideal actuators: a force, torque or generalized force equal to
-// optimal_force x excitation(t). As in OpenSim, min_control and max_control do not clamp the
-// excitation in a forward simulation (OpenSim's CoordinateActuator, PointActuator and
-// TorqueActuator::computeActuation return control x optimal_force; the bounds serve solvers
-// such as Static Optimization and CMC).
+// optimal_force x excitation, the excitation being the actuator's input. As in OpenSim, min_control
+// and max_control do not clamp the excitation in a forward simulation (OpenSim's
+// CoordinateActuator, PointActuator and TorqueActuator::computeActuation return control x
+// optimal_force; the bounds serve solvers such as Static Optimization and CMC).
 #pragma once
 
 #include <sinew/engine/loads.h>
-#include <sinew/functions/function.h>
 #include <sinew/math/types.h>
 
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace sinew::forces {
 
-/// The part every actuator shares: a name, a gain and a settable excitation function of time.
-/// The excitation may be replaced after the system is built (the seed's
-/// SetExcitationFunction); the change is seen by the next evaluation.
+/// The part every actuator shares: a name, a gain, and one input, its excitation (control)
+/// e, read from State::inputs at every evaluation (set by a Controller such as
+/// ExcitationController, or held in the state).
 class Actuator : public engine::ForceElement {
  public:
   Actuator(std::string name, double optimal_force);
 
-  const std::string& name() const { return name_; }
+  std::string name() const override { return name_; }
+  /// One input, "excitation" (dimensionless).
+  std::vector<std::string> InputNames() const override { return {"excitation"}; }
   double optimal_force() const { return optimal_force_; }
 
-  /// The excitation e(t) (dimensionless); null means the constant 0.
-  void SetExcitation(functions::FunctionPtr excitation) { excitation_ = std::move(excitation); }
-  const functions::FunctionPtr& excitation() const { return excitation_; }
   /// OpenSim's min_control / max_control (dimensionless): kept for reporting, not applied to
-  /// e(t) (see the file comment). Throws sinew::Error when min_control > max_control.
+  /// e (see the file comment). Throws sinew::Error when min_control > max_control.
   void SetControlRange(double min_control, double max_control);
   double min_control() const { return min_control_; }
   double max_control() const { return max_control_; }
 
-  /// optimal_force * e(t) at time t (s): N for forces, N m for torques.
-  double CalcActuation(double t) const;
+  /// optimal_force * e, with e the actuator's input in `context`: N for forces, N m for torques.
+  double CalcActuation(const engine::ForceContext& context) const;
 
  private:
   std::string name_;
   double optimal_force_;
-  functions::FunctionPtr excitation_;
   double min_control_ = -std::numeric_limits<double>::infinity();
   double max_control_ = std::numeric_limits<double>::infinity();
 };
@@ -52,8 +50,7 @@ class PointActuator : public Actuator {
  public:
   PointActuator(std::string name, double optimal_force, int body, const Vec3& point,
                 bool point_is_global, const Vec3& direction, bool force_is_global);
-  void AddLoads(const engine::System& system, const engine::State& state,
-                engine::Loads& loads) const override;
+  void AddLoads(const engine::ForceContext& context, engine::Loads& loads) const override;
 
  private:
   int body_;
@@ -70,8 +67,7 @@ class TorqueActuator : public Actuator {
  public:
   TorqueActuator(std::string name, double optimal_force, int body_a, int body_b, const Vec3& axis,
                  bool torque_is_global);
-  void AddLoads(const engine::System& system, const engine::State& state,
-                engine::Loads& loads) const override;
+  void AddLoads(const engine::ForceContext& context, engine::Loads& loads) const override;
 
  private:
   int body_a_;
@@ -85,8 +81,7 @@ class TorqueActuator : public Actuator {
 class CoordinateActuator : public Actuator {
  public:
   CoordinateActuator(std::string name, double optimal_force, int coordinate);
-  void AddLoads(const engine::System& system, const engine::State& state,
-                engine::Loads& loads) const override;
+  void AddLoads(const engine::ForceContext& context, engine::Loads& loads) const override;
 
  private:
   int coordinate_;

@@ -1,3 +1,4 @@
+#include <sinew/io/internal/number_text.h>
 #include <sinew/io/storage.h>
 
 #include <cctype>
@@ -65,12 +66,6 @@ bool ParseNumber(std::string_view token, double* value) {
   const char* end = token.data() + token.size();
   auto [ptr, ec] = std::from_chars(token.data(), end, *value);
   return ec == std::errc() && ptr == end;
-}
-
-void AppendNumber(std::string& out, double value) {
-  char buffer[32];
-  auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  out.append(buffer, ec == std::errc() ? ptr : buffer);
 }
 
 // The file's version=N (OpenSim reads it with atoi: 0 when absent or not a number).
@@ -280,10 +275,10 @@ std::string FormatStorage(const Storage& storage) {
   }
   out += '\n';
   for (int row = 0; row < storage.NumRows(); ++row) {
-    AppendNumber(out, storage.time[row]);
+    internal::AppendNumber(out, storage.time[row]);
     for (int column = 0; column < storage.NumColumns(); ++column) {
       out += '\t';
-      AppendNumber(out, storage.Value(row, column));
+      internal::AppendNumber(out, storage.Value(row, column));
     }
     out += '\n';
   }

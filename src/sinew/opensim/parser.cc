@@ -3,7 +3,7 @@
 #include <sinew/io/read_controls.h>
 #include <sinew/kinematics/body_depths.h>
 #include <sinew/opensim/build_system.h>
-#include <sinew/opensim/internal/actuator_builder.h>
+#include <sinew/opensim/internal/force_registry.h>
 #include <sinew/opensim/parser.h>
 #include <sinew/opensim/support.h>
 
@@ -85,7 +85,7 @@ void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
     report_.AddJoint({ReportName(built.joints[j].path, built.joints[j].name), built.joints[j].type,
                       engine_joint, system.joints()[engine_joint].form, standin[j]});
   }
-  BuildActuators(system, map.bodies, map.coordinates);
+  BuildForces(system, map.bodies, map.coordinates);
   AssignExcitations();
   for (std::string& line : ListNotSimulated(spec_)) report_.AddNotSimulated(std::move(line));
   if (collision_enabled_) {
@@ -104,45 +104,50 @@ void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
   CheckStrict();
 }
 
-void OpenSimParser::BuildActuators(engine::System& system, const std::vector<int>& body_map,
-                                   const std::vector<int>& coordinate_map) {
+void OpenSimParser::BuildForces(engine::System& system, const std::vector<int>& body_map,
+                                const std::vector<int>& coordinate_map) {
   for (const model::ForceSpec& force : spec_.forces) {
-    ForceInfo info{ReportName(force.path, force.name), force.type, nullptr, nullptr, ""};
+    ForceInfo info{ReportName(force.path, force.name), force.type, nullptr, nullptr, -1, ""};
     if (IsForceSimulated(force)) {
-      info.actuator = internal::MakeActuator(spec_, force, body_map, coordinate_map);
-      info.load = info.actuator;
-      system.AddForceElement(info.actuator);
-      info.excitation_source = "default 0";
+      auto element = internal::BuildForce(spec_, force, body_map, coordinate_map);
+      const int k = system.AddForceElement(element);
+      info.load = element;
+      if (internal::FindForceType(force.type)->actuator) {
+        info.actuator = std::static_pointer_cast<const forces::Actuator>(element);
+        info.input = system.InputBegin(k);
+        info.excitation_source = "default 0";
+      }
     }
     report_.AddForce(std::move(info));
   }
 }
 
 void OpenSimParser::AssignExcitations() {
+  auto controller = std::make_shared<forces::ExcitationController>();
   // Lowest precedence first; each source overrides the previous ones.
-  for (const model::ControllerSpec& controller : spec_.controllers) {
-    if (!IsControllerSimulated(controller)) continue;
-    for (size_t i = 0; i < controller.actuators.size(); ++i) {
+  for (const model::ControllerSpec& spec_controller : spec_.controllers) {
+    if (!IsControllerSimulated(spec_controller)) continue;
+    for (size_t i = 0; i < spec_controller.actuators.size(); ++i) {
       // 3.x files list actuator names (actuator_list); 4.x files socket paths
       // (socket_actuators, e.g. /forceset/act): the Report key is the path's last segment.
-      const std::string& entry = controller.actuators[i];
+      const std::string& entry = spec_controller.actuators[i];
       ForceInfo* info = report_.MutableForce(entry);
       if (!info) info = report_.MutableForce(ReportName(entry, entry));
       if (!info || !info->actuator) {
-        report_.AddWarning({controller.where, "/controllerset/" + controller.name,
-                            "controls '" + controller.actuators[i] +
+        report_.AddWarning({spec_controller.where, "/controllerset/" + spec_controller.name,
+                            "controls '" + spec_controller.actuators[i] +
                                 "', which is not a simulated actuator: ignored"});
         continue;
       }
-      info->actuator->SetExcitation(controller.functions[i]);
-      info->excitation_source = "PrescribedController " + controller.name;
+      controller->Set(info->input, spec_controller.functions[i]);
+      info->excitation_source = "PrescribedController " + spec_controller.name;
     }
   }
   if (activate_actuators_) {
     auto one = std::make_shared<functions::Constant>(1.0);
     for (const auto& [key, info] : report_.forces()) {
       if (!info.actuator) continue;
-      info.actuator->SetExcitation(one);
+      controller->Set(info.input, one);
       report_.MutableForce(key)->excitation_source = "ActivateActuators";
     }
   }
@@ -155,10 +160,11 @@ void OpenSimParser::AssignExcitations() {
                                 "', which is not a simulated actuator: ignored"});
         continue;
       }
-      info->actuator->SetExcitation(function);
+      controller->Set(info->input, function);
       info->excitation_source = "controls file";
     }
   }
+  controller_ = std::move(controller);
 }
 
 void OpenSimParser::SetExcitationFunction(const std::string& actuator_name,
@@ -169,7 +175,11 @@ void OpenSimParser::SetExcitationFunction(const std::string& actuator_name,
                 info ? "is not a simulated actuator (" + info->type + ")"
                      : "no actuator of this name was parsed");
   }
-  info->actuator->SetExcitation(std::move(excitation));
+  // A new controller: one already handed out (GetController) never changes under a running
+  // simulation.
+  auto controller = std::make_shared<forces::ExcitationController>(*controller_);
+  controller->Set(info->input, std::move(excitation));
+  controller_ = std::move(controller);
   info->excitation_source = "set by user";
 }
 

@@ -6,6 +6,8 @@
 
 #include <sinew/contact/collision_model.h>
 #include <sinew/engine/system.h>
+#include <sinew/forces/actuator.h>
+#include <sinew/forces/excitation_controller.h>
 #include <sinew/functions/function.h>
 #include <sinew/model/model_spec.h>
 #include <sinew/opensim/report.h>
@@ -61,7 +63,14 @@ class OpenSimParser {
 
   /// Sets the excitation of the actuator named `actuator_name` (its name in the file, or its
   /// Report key for a repeated name). Call after Parse. Throws sinew::Error for an unknown name.
+  /// The System is not changed: the excitations live in the controller GetController returns.
   void SetExcitationFunction(const std::string& actuator_name, functions::FunctionPtr excitation);
+  /// The controller that sets the actuators' excitations (engine::State::inputs) from time:
+  /// the model's PrescribedControllers, ActivateActuators, the controls file and
+  /// SetExcitationFunction, in that order of precedence. Give it to the integrator
+  /// (Integrator::SetController) or the Simulation. A later SetExcitationFunction makes a new
+  /// controller; the one returned here never changes.
+  std::shared_ptr<const forces::ExcitationController> GetController() const { return controller_; }
 
   /// What the last Parse built.
   const Report& GetReport() const { return report_; }
@@ -76,8 +85,8 @@ class OpenSimParser {
   ContactMethod GetContactMethod() const { return contact_method_; }
 
  private:
-  void BuildActuators(engine::System& system, const std::vector<int>& body_map,
-                      const std::vector<int>& coordinate_map);
+  void BuildForces(engine::System& system, const std::vector<int>& body_map,
+                   const std::vector<int>& coordinate_map);
   void AssignExcitations();
   void CheckStrict() const;
 
@@ -96,6 +105,8 @@ class OpenSimParser {
   Report report_;
   contact::CollisionModel collision_;
   viz::VisualScene scene_;
+  std::shared_ptr<forces::ExcitationController> controller_ =
+      std::make_shared<forces::ExcitationController>();
 };
 
 }  // namespace sinew::opensim

@@ -38,9 +38,11 @@ struct ForceInfo {
   std::string name;  ///< The name in the file.
   std::string type;  ///< The OpenSim class, as written in the file.
   /// The engine force element made for it; null when the type is not simulated (yet).
-  std::shared_ptr<engine::ForceElement> load;
-  /// For actuators: the same object as `load`, for setting excitations; else null.
-  std::shared_ptr<forces::Actuator> actuator;
+  std::shared_ptr<const engine::ForceElement> load;
+  /// For actuators: the same object as `load`; else null.
+  std::shared_ptr<const forces::Actuator> actuator;
+  /// For actuators: the index of its excitation in engine::State::inputs; else -1.
+  int input = -1;
   /// Where the actuator's excitation comes from ("default 0", "ActivateActuators",
   /// "PrescribedController <name>", "controls file", "set by user").
   std::string excitation_source;

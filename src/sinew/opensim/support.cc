@@ -1,5 +1,5 @@
 #include <sinew/kinematics/joint_model.h>
-#include <sinew/opensim/internal/actuator_builder.h>
+#include <sinew/opensim/internal/force_registry.h>
 #include <sinew/opensim/support.h>
 
 #include <array>
@@ -10,7 +10,7 @@ bool IsJointSimulated(const model::JointSpec& joint) {
   return kinematics::IsJointTypeModeled(joint.kind);
 }
 bool IsForceSimulated(const model::ForceSpec& force) {
-  return force.applies_force && internal::IsIdealActuator(force.type);
+  return force.applies_force && internal::FindForceType(force.type) != nullptr;
 }
 bool IsConstraintSimulated(const model::ConstraintSpec& /*constraint*/) { return false; }
 bool IsControllerSimulated(const model::ControllerSpec& controller) {

@@ -13,7 +13,7 @@ namespace sinew::opensim {
 /// True if the engine can build this joint (a type the kinematics models; see
 /// kinematics::IsJointTypeModeled). A joint that is not is replaced by a stand-in.
 bool IsJointSimulated(const model::JointSpec& joint);
-/// True if the engine simulates this force (PointActuator, TorqueActuator, CoordinateActuator).
+/// True if the engine simulates this force (its class is in the force registry and it is on).
 bool IsForceSimulated(const model::ForceSpec& force);
 /// True if the engine enforces constraints of this OpenSim class (none yet).
 bool IsConstraintSimulated(const model::ConstraintSpec& constraint);

@@ -1,0 +1,75 @@
+// The ForceElement interface: a force model (actuator, spring, muscle, contact, ...) that adds
+// loads for a state, may own auxiliary state variables z and inputs, and reports its potential
+// energy. How to add a force type: docs/engine.md, "Adding a force".
+#pragma once
+
+#include <sinew/math/types.h>
+
+#include <string>
+#include <vector>
+
+namespace sinew::engine {
+
+class System;
+class Loads;
+struct State;
+
+/// What one force element reads in one evaluation: the system, the state, and the element's
+/// own slices of the auxiliary states z and of the inputs (offsets given by System::Finalize).
+struct ForceContext {
+  const System& system;
+  const State& state;
+  int z_begin = 0;      ///< first entry of this element's z in State::z
+  int input_begin = 0;  ///< first entry of this element's inputs in State::inputs
+
+  /// The element's auxiliary state variable i.
+  double z(int i) const;
+  /// The element's input i.
+  double input(int i) const;
+};
+
+/// A force model. Stateless itself (a finalized System is shared, read-only, by many threads):
+/// everything that changes lives in the State (z, inputs).
+class ForceElement {
+ public:
+  virtual ~ForceElement() = default;
+
+  /// A name, unique among the system's force elements when the element declares state
+  /// variables or inputs (their names are "<name>/<variable>").
+  virtual std::string name() const { return {}; }
+
+  /// Names of this element's auxiliary state variables (e.g. {"activation",
+  /// "fiber_length"}); declared once, when the System is finalized.
+  virtual std::vector<std::string> StateVariableNames() const { return {}; }
+  /// Names of this element's inputs (e.g. {"excitation"}).
+  virtual std::vector<std::string> InputNames() const { return {}; }
+
+  /// Default values of the auxiliary state variables (StateVariableNames().size() entries;
+  /// zero unless overridden).
+  virtual void SetDefaultStateVariables(Eigen::Ref<VecX> z) const { z.setZero(); }
+  /// Called when a default state is made or states are loaded, after the bodies are placed:
+  /// may set this element's z from the rest of the state (e.g. muscle-tendon equilibrium).
+  /// `z` is this element's slice of state.z. Default: leaves z as it is.
+  virtual void InitializeStateVariables(const ForceContext& context, Eigen::Ref<VecX> z) const {
+    (void)context, (void)z;
+  }
+  /// dz/dt of this element's state variables (zdot has StateVariableNames().size() entries).
+  virtual void CalcStateVariableDerivatives(const ForceContext& context,
+                                            Eigen::Ref<VecX> zdot) const {
+    (void)context;
+    zdot.setZero();
+  }
+
+  /// Adds this element's loads for the context's state to `loads`.
+  virtual void AddLoads(const ForceContext& context, Loads& loads) const = 0;
+
+  /// Potential energy stored in the element (J), zero for non-conservative elements. With it,
+  /// CalcMechanicalEnergy covers springs: d/dt (T + V) equals the power of the
+  /// non-conservative loads.
+  virtual double CalcPotentialEnergy(const ForceContext& context) const {
+    (void)context;
+    return 0.0;
+  }
+};
+
+}  // namespace sinew::engine

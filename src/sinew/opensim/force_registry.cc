@@ -1,0 +1,105 @@
+#include <sinew/forces/actuator.h>
+#include <sinew/model/element_values.h>
+#include <sinew/opensim/internal/force_registry.h>
+
+#include <limits>
+#include <map>
+
+namespace sinew::opensim::internal {
+namespace {
+
+// Files older than 1.9.5 name actuator bodies and directions differently; OpenSim renames
+// them on load and flips the direction (see PointActuator / TorqueActuator updateFromXMLNode).
+constexpr int kRenamedActuatorVersion = 10905;
+
+// The last segment of a socket path ("/bodyset/rod1" -> "rod1"), or the name itself.
+std::string LastPathSegment(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+int MapBody(const model::ModelSpec& spec, const model::ElementValues& values,
+            const std::string& name, const std::vector<int>& body_map, const char* property) {
+  const int b = spec.FindBody(LastPathSegment(name));
+  if (b == model::kNone)
+    values.Fail(std::string(property) + " '" + name + "' is not a body of the model");
+  return body_map[b];
+}
+
+std::shared_ptr<forces::Actuator> MakePointActuator(const ForceBuildInput& in) {
+  const model::ModelSpec& spec = in.spec;
+  const model::ElementValues& v = in.values;
+  const std::vector<int>& body_map = in.body_map;
+  const bool renamed = spec.version < kRenamedActuatorVersion && v.Has("body_B");
+  const std::string body = renamed ? v.String("body_B") : v.String("body");
+  Vec3 direction = v.Vector3(renamed ? "direction_A" : "direction", Vec3::Zero());
+  if (renamed) direction = -direction;
+  return std::make_shared<forces::PointActuator>(
+      in.force.name, v.Double("optimal_force", 1.0), MapBody(spec, v, body, body_map, "body"),
+      v.Vector3(renamed ? "point_B" : "point", Vec3::Zero()), v.Bool("point_is_global", false),
+      direction, renamed ? true : v.Bool("force_is_global", false));
+}
+
+std::shared_ptr<forces::Actuator> MakeTorqueActuator(const ForceBuildInput& in) {
+  const model::ModelSpec& spec = in.spec;
+  const model::ElementValues& v = in.values;
+  const std::vector<int>& body_map = in.body_map;
+  const bool renamed = spec.version < kRenamedActuatorVersion && v.Has("body_A");
+  std::string body_a, body_b;
+  if (renamed) {
+    body_a = v.String("body_B");
+    body_b = v.String("body_A");
+  } else {
+    body_a = v.FirstString({"bodyA", "socket_bodyA"}).value_or("");
+    body_b = v.FirstString({"bodyB", "socket_bodyB"}).value_or("");
+  }
+  Vec3 axis = v.Vector3(renamed ? "direction_A" : "axis", Vec3(0, 0, 1));
+  if (renamed) axis = -axis;
+  return std::make_shared<forces::TorqueActuator>(
+      in.force.name, v.Double("optimal_force", 1.0), MapBody(spec, v, body_a, body_map, "bodyA"),
+      MapBody(spec, v, body_b, body_map, "bodyB"), axis, v.Bool("torque_is_global", true));
+}
+
+std::shared_ptr<forces::Actuator> MakeCoordinateActuator(const ForceBuildInput& in) {
+  const model::ElementValues& v = in.values;
+  const std::string name =
+      LastPathSegment(v.FirstString({"coordinate", "socket_coordinate"}).value_or(""));
+  const int c = in.spec.FindCoordinate(name);
+  if (c == model::kNone) v.Fail("coordinate '" + name + "' is not a coordinate of the model");
+  return std::make_shared<forces::CoordinateActuator>(in.force.name, v.Double("optimal_force", 1.0),
+                                                      in.coordinate_map[c]);
+}
+
+// OpenSim's min_control / max_control, kept on the actuator for reporting.
+template <std::shared_ptr<forces::Actuator> (*make)(const ForceBuildInput&)>
+std::shared_ptr<engine::ForceElement> BuildActuator(const ForceBuildInput& in) {
+  std::shared_ptr<forces::Actuator> actuator = make(in);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  actuator->SetControlRange(in.values.Bound("min_control", -kInf),
+                            in.values.Bound("max_control", kInf));
+  return actuator;
+}
+
+}  // namespace
+
+const ForceType* FindForceType(const std::string& opensim_class) {
+  static const std::map<std::string, ForceType, std::less<>> registry = {
+      {"PointActuator", {&BuildActuator<MakePointActuator>, true}},
+      {"TorqueActuator", {&BuildActuator<MakeTorqueActuator>, true}},
+      {"CoordinateActuator", {&BuildActuator<MakeCoordinateActuator>, true}},
+  };
+  const auto it = registry.find(opensim_class);
+  return it == registry.end() ? nullptr : &it->second;
+}
+
+std::shared_ptr<engine::ForceElement> BuildForce(const model::ModelSpec& spec,
+                                                 const model::ForceSpec& force,
+                                                 const std::vector<int>& body_map,
+                                                 const std::vector<int>& coordinate_map) {
+  const model::ElementValues values(force.element, spec.file, force.path);
+  const ForceType* type = FindForceType(force.type);
+  if (!type) values.Fail("'" + force.type + "' is not a force type Sinew simulates");
+  return type->build(ForceBuildInput{spec, force, values, body_map, coordinate_map});
+}
+
+}  // namespace sinew::opensim::internal

@@ -1,0 +1,20 @@
+// The states table of a simulation in OpenSim 4's layout: one column per coordinate value and
+// speed ("/jointset/<joint>/<coordinate>/value", ".../speed") and one per auxiliary state
+// variable ("/forceset/<element>/<variable>", e.g. /forceset/soleus_r/activation).
+#pragma once
+
+#include <sinew/engine/state.h>
+#include <sinew/engine/system.h>
+
+#include <string>
+#include <vector>
+
+namespace sinew::opensim {
+
+/// The column labels of `system`'s states, in StatesRow order.
+std::vector<std::string> StatesLabels(const engine::System& system);
+
+/// The values of `state` in StatesLabels order (radians, metres), written into `row` (resized).
+void StatesRow(const engine::System& system, const engine::State& state, std::vector<double>& row);
+
+}  // namespace sinew::opensim

@@ -1,0 +1,84 @@
+// `sinew simulate` output: rows streamed to disk, the row count and status in the header, a
+// clean stop on SIGINT that keeps the rows computed so far (marked partial), no temporary
+// files left behind, and a symlink at an output name replaced, never followed.
+#include <gtest/gtest.h>
+#include <sinew/io/storage.h>
+#include <sys/wait.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "apps/cli_test_util.h"
+
+namespace sinew {
+namespace {
+
+const std::string kSinglePin = std::string(SINEW_TEST_DATA_DIR) +
+                               "/opensim-org/opensim-core/Applications/Analyze/tests/resources/"
+                               "SinglePin.osim";
+
+using testing::CliTest;
+
+// Files in `dir` whose names start with '.' (temporary files of unfinished writes).
+int HiddenFiles(const std::filesystem::path& dir) {
+  int n = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().filename().string().front() == '.') ++n;
+  }
+  return n;
+}
+
+class SimulateOutputTest : public CliTest {};
+
+TEST_F(SimulateOutputTest, CompleteRunSaysSoInItsHeader) {
+  const auto run = Run("simulate " + kSinglePin + " --duration 1 --quiet --out " + Path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const io::Storage states = io::ReadStorage(Path("out") + "/states.sto");
+  EXPECT_EQ(states.NumRows(), 101);
+  EXPECT_TRUE(states.notes.empty());  // nRows agrees with the rows present
+  EXPECT_EQ(states.Metadata("status"), "complete");
+  EXPECT_EQ(io::ReadStorage(Path("out") + "/bodies.sto").Metadata("status"), "complete");
+  EXPECT_EQ(HiddenFiles(Path("out")), 0);
+}
+
+TEST_F(SimulateOutputTest, InterruptKeepsTheRowsComputedSoFar) {
+  // A run of 10^6 s cannot end in the second before SIGINT arrives.
+  const std::string command = "timeout --preserve-status -s INT 1.5 " +
+                              std::string(SINEW_CLI_PATH) + " simulate " + kSinglePin +
+                              " --duration 1e6 --report-interval 0.5 --quiet --out " + Path("out") +
+                              " 2>" + Path("err.txt");
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
+  const std::string err = testing::ReadText(Path("err.txt"));
+  EXPECT_NE(err.find("stopped by SIGINT"), std::string::npos) << err;
+  for (const char* name : {"/states.sto", "/bodies.sto"}) {
+    const io::Storage table = io::ReadStorage(Path("out") + name);
+    EXPECT_GT(table.NumRows(), 2) << name;
+    EXPECT_TRUE(table.notes.empty()) << name;  // the header's nRows is the rows present
+    EXPECT_EQ(table.Metadata("status").rfind("partial (stopped by SIGINT at t = ", 0), 0u)
+        << table.Metadata("status");
+    EXPECT_LT(table.time.back(), 1e6);
+  }
+  EXPECT_EQ(HiddenFiles(Path("out")), 0);
+}
+
+TEST_F(SimulateOutputTest, SymlinkAtAnOutputNameIsReplacedNotFollowed) {
+  std::filesystem::create_directories(Path("out"));
+  {
+    std::ofstream outside(Path("outside.txt"));
+    outside << "must stay\n";
+  }
+  std::filesystem::create_symlink(Path("outside.txt"), Path("out") + "/states.sto");
+  const auto run = Run("simulate " + kSinglePin + " --duration 0.1 --quiet --out " + Path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(testing::ReadText(Path("outside.txt")), "must stay\n");
+  EXPECT_FALSE(std::filesystem::is_symlink(Path("out") + "/states.sto"));
+  EXPECT_EQ(io::ReadStorage(Path("out") + "/states.sto").NumRows(), 11);
+}
+
+}  // namespace
+}  // namespace sinew

@@ -1,0 +1,303 @@
+// The force interface against closed forms and conservation laws: auxiliary state variables z
+// integrated under error control, inputs read at every evaluation (also from two threads
+// sharing one System), the initialization hook, and the potential energy and power of a spring.
+#include <gtest/gtest.h>
+#include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/controller.h>
+#include <sinew/engine/energy.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/engine/kkt.h>
+#include <sinew/engine/pose.h>
+#include <sinew/engine/projection.h>
+#include <sinew/engine/system.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "engine/test_models.h"
+
+namespace sinew::engine {
+namespace {
+
+using testing::Coord;
+using testing::MakeBody;
+
+// A first-order lag x' = (r - x) / tau towards its input r, pushing coordinate 0 with the
+// generalized force k x. x starts at x0 unless `follow_q` (then at q of coordinate 0).
+class Lag final : public ForceElement {
+ public:
+  Lag(std::string name, double tau, double k, double x0, bool follow_q = false)
+      : name_(std::move(name)), tau_(tau), k_(k), x0_(x0), follow_q_(follow_q) {}
+  std::string name() const override { return name_; }
+  std::vector<std::string> StateVariableNames() const override { return {"x"}; }
+  std::vector<std::string> InputNames() const override { return {"target"}; }
+  void SetDefaultStateVariables(Eigen::Ref<VecX> z) const override { z[0] = x0_; }
+  void InitializeStateVariables(const ForceContext& context, Eigen::Ref<VecX> z) const override {
+    if (follow_q_) z[0] = context.state.q[0];
+  }
+  void CalcStateVariableDerivatives(const ForceContext& context,
+                                    Eigen::Ref<VecX> zdot) const override {
+    zdot[0] = (context.input(0) - context.z(0)) / tau_;
+  }
+  void AddLoads(const ForceContext& context, Loads& loads) const override {
+    loads.AddGeneralizedForce(0, k_ * context.z(0));
+  }
+
+ private:
+  std::string name_;
+  double tau_, k_, x0_;
+  bool follow_q_;
+};
+
+// A slider of mass 1 kg without gravity, starting at q = 0.1 m at rest, pushed by a Lag.
+System MakeLaggedSlider(double tau, double k, double x0) {
+  System system(Vec3::Zero());
+  const int b = system.AddBody(MakeBody("block", 1.0, Vec3::Zero(), 0.1 * Mat3::Identity()));
+  system.AddJoint("slider", 0, Transform::Identity(), b, Transform::Identity(),
+                  JointForm::kParameterized, std::make_shared<testing::SliderModel>(),
+                  {Coord("x", 0.1)});
+  system.AddForceElement(std::make_shared<Lag>("lag", tau, k, x0));
+  system.Finalize();
+  return system;
+}
+
+// Closed forms for x' = (r - x) / tau, x(0) = x0, and q'' = k x, q(0) = q0, q'(0) = 0.
+double LagValue(double t, double tau, double x0, double r) {
+  return r + (x0 - r) * std::exp(-t / tau);
+}
+double LaggedPosition(double t, double tau, double k, double x0, double r, double q0) {
+  return q0 + k * (0.5 * r * t * t + (x0 - r) * tau * (t - tau * (1.0 - std::exp(-t / tau))));
+}
+
+TEST(ForceInterfaceTest, StateVariablesAndInputsAreNamedAndLaidOut) {
+  System system = MakeLaggedSlider(0.2, 3.0, 0.5);
+  EXPECT_EQ(system.state_variable_names(), std::vector<std::string>{"lag/x"});
+  EXPECT_EQ(system.input_names(), std::vector<std::string>{"lag/target"});
+  EXPECT_EQ(system.FindStateVariable("lag/x"), 0);
+  EXPECT_EQ(system.FindInput("lag/target"), 0);
+  EXPECT_EQ(system.FindInput("lag/x"), -1);
+  const State state = MakeDefaultState(system);
+  ASSERT_EQ(state.z.size(), 1);
+  EXPECT_EQ(state.z[0], 0.5);  // the element's default
+  EXPECT_EQ(state.inputs, VecX::Zero(1));
+
+  // Two elements that declare the same names cannot be told apart in a states file.
+  System twice(Vec3::Zero());
+  const int b = twice.AddBody(MakeBody("block", 1.0, Vec3::Zero(), Mat3::Identity()));
+  twice.AddJoint("slider", 0, Transform::Identity(), b, Transform::Identity(),
+                 JointForm::kParameterized, std::make_shared<testing::SliderModel>(), {Coord("x")});
+  twice.AddForceElement(std::make_shared<Lag>("lag", 1, 1, 0));
+  twice.AddForceElement(std::make_shared<Lag>("lag", 1, 1, 0));
+  EXPECT_THROW(twice.Finalize(), Error);
+
+  // A state of another layout is refused.
+  State wrong = state;
+  wrong.z.resize(0);
+  EXPECT_THROW(CheckState(system, wrong), Error);
+}
+
+TEST(ForceInterfaceTest, StateVariableIsIntegratedUnderErrorControl) {
+  const double tau = 0.2, k = 3.0, x0 = 0.5, r = -1.0, q0 = 0.1;
+  const System system = MakeLaggedSlider(tau, k, x0);
+  State state = MakeDefaultState(system);
+  state.inputs[0] = r;  // held: no controller
+  IntegratorSettings settings;
+  settings.accuracy = 1e-10;
+  auto integrator = MakeIntegrator("rk45", system, settings);
+  double worst_x = 0.0, worst_q = 0.0;
+  for (double t : {0.1, 0.3, 0.6, 1.0}) {
+    integrator->StepTo(state, t);
+    worst_x = std::max(worst_x, std::abs(state.z[0] - LagValue(t, tau, x0, r)));
+    worst_q = std::max(worst_q, std::abs(state.q[0] - LaggedPosition(t, tau, k, x0, r, q0)));
+  }
+  // rk45 keeps each step's local error below accuracy (unit floor): the global error of the
+  // contracting lag stays below steps x accuracy; q integrates it twice over at most 1 s.
+  const double bound = static_cast<double>(integrator->stats().steps) * settings.accuracy;
+  EXPECT_LT(worst_x, bound);
+  EXPECT_LT(worst_q, 3.0 * bound);
+  // The state variable is error-controlled: a looser accuracy must take fewer steps and
+  // still stay within its own bound.
+  State loose = MakeDefaultState(system);
+  loose.inputs[0] = r;
+  settings.accuracy = 1e-6;
+  auto coarse = MakeIntegrator("rk45", system, settings);
+  coarse->StepTo(loose, 1.0);
+  EXPECT_LT(coarse->stats().steps, integrator->stats().steps);
+  EXPECT_LT(std::abs(loose.z[0] - LagValue(1.0, tau, x0, r)),
+            static_cast<double>(coarse->stats().steps) * settings.accuracy);
+}
+
+TEST(ForceInterfaceTest, FixedStepSchemesIntegrateStateVariablesToFirstOrder) {
+  const double tau = 0.2, k = 3.0, x0 = 0.5, r = -1.0;
+  const System system = MakeLaggedSlider(tau, k, x0);
+  for (const char* name : {"euler", "implicit-euler"}) {
+    double error[2];
+    for (int i = 0; i < 2; ++i) {
+      IntegratorSettings settings;
+      settings.step = i == 0 ? 2e-3 : 1e-3;
+      State state = MakeDefaultState(system);
+      state.inputs[0] = r;
+      MakeIntegrator(name, system, settings)->StepTo(state, 0.5);
+      error[i] = std::abs(state.z[0] - LagValue(0.5, tau, x0, r));
+    }
+    // Explicit Euler in z: the error halves with the step.
+    EXPECT_NEAR(error[0] / error[1], 2.0, 0.1) << name;
+    EXPECT_LT(error[1], 1e-2) << name;
+  }
+}
+
+TEST(ForceInterfaceTest, InitializationHookSetsStateVariablesFromTheState) {
+  System system(Vec3::Zero());
+  const int b = system.AddBody(MakeBody("block", 1.0, Vec3::Zero(), Mat3::Identity()));
+  system.AddJoint("slider", 0, Transform::Identity(), b, Transform::Identity(),
+                  JointForm::kParameterized, std::make_shared<testing::SliderModel>(),
+                  {Coord("x", 0.25)});
+  system.AddForceElement(std::make_shared<Lag>("follower", 1.0, 1.0, 9.0, true));
+  system.Finalize();
+  State state = MakeDefaultState(system);
+  EXPECT_EQ(state.z[0], 0.25);  // from q, not the default 9
+  SetCoordinateValue(system, state, "x", -0.75);
+  InitializeStateVariables(system, state);
+  EXPECT_EQ(state.z[0], -0.75);
+}
+
+// The controller r(t) = sin(w t).
+class SineController final : public Controller {
+ public:
+  explicit SineController(double w) : w_(w) {}
+  void CalcInputs(const System&, const State& state, Eigen::Ref<VecX> inputs) const override {
+    inputs[0] = std::sin(w_ * state.t);
+  }
+
+ private:
+  double w_;
+};
+
+TEST(ForceInterfaceTest, ControllerSetsInputsAtEveryEvaluation) {
+  // A lag so fast it follows its input closely is not needed: with k = 1 and tau = 1 the
+  // closed form of x' = sin(w t) - x, x(0) = 0 is
+  //   x = (sin(w t) - w cos(w t) + w e^-t) / (1 + w^2).
+  // Inputs held over a step instead of read per stage would be off by O(h) there.
+  const double w = 5.0;
+  const System system = MakeLaggedSlider(1.0, 1.0, 0.0);
+  State state = MakeDefaultState(system);
+  IntegratorSettings settings;
+  settings.accuracy = 1e-10;
+  auto integrator = MakeIntegrator("rk45", system, settings);
+  integrator->SetController(std::make_shared<SineController>(w));
+  integrator->StepTo(state, 1.0);
+  const double exact = (std::sin(w) - w * std::cos(w) + w * std::exp(-1.0)) / (1 + w * w);
+  EXPECT_LT(std::abs(state.z[0] - exact),
+            static_cast<double>(integrator->stats().steps) * settings.accuracy);
+  EXPECT_EQ(state.inputs[0], std::sin(w * 1.0));  // the controller's value at the end
+}
+
+TEST(ForceInterfaceTest, TwoThreadsShareOneSystemWithDifferentInputs) {
+  const System system = MakeLaggedSlider(0.2, 3.0, 0.5);
+  IntegratorSettings settings;
+  settings.accuracy = 1e-9;
+  auto run = [&](double r, State& out) {
+    State state = MakeDefaultState(system);
+    state.inputs[0] = r;
+    MakeIntegrator("rk45", system, settings)->StepTo(state, 1.0);
+    out = state;
+  };
+  State sequential[2], threaded[2];
+  run(2.0, sequential[0]);
+  run(-3.0, sequential[1]);
+  std::thread a([&] { run(2.0, threaded[0]); });
+  std::thread b([&] { run(-3.0, threaded[1]); });
+  a.join();
+  b.join();
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(threaded[i].q, sequential[i].q);
+    EXPECT_EQ(threaded[i].u, sequential[i].u);
+    EXPECT_EQ(threaded[i].z, sequential[i].z);
+  }
+  EXPECT_GT(std::abs(sequential[0].q[0] - sequential[1].q[0]), 0.1);  // inputs mattered
+}
+
+// A linear spring of stiffness k and rest length L0 between point p_BQ of body b and the
+// ground point p_GP.
+class Spring final : public ForceElement {
+ public:
+  Spring(int b, const Vec3& p_BQ, const Vec3& p_GP, double k, double L0)
+      : b_(b), p_BQ_(p_BQ), p_GP_(p_GP), k_(k), L0_(L0) {}
+  void AddLoads(const ForceContext& context, Loads& loads) const override {
+    const Vec3 d = p_GP_ - PoseOf(context.state.bodies[b_]) * p_BQ_;  // from Q to P
+    const double L = d.norm();
+    loads.AddForceAtPoint(context.state, b_, p_BQ_, k_ * (L - L0_) * d / L);
+  }
+  double CalcPotentialEnergy(const ForceContext& context) const override {
+    const double L = (p_GP_ - PoseOf(context.state.bodies[b_]) * p_BQ_).norm();
+    return 0.5 * k_ * (L - L0_) * (L - L0_);
+  }
+
+ private:
+  int b_;
+  Vec3 p_BQ_, p_GP_;
+  double k_, L0_;
+};
+
+// A pendulum (pin about z at the origin, rod 1 kg, mass centre 0.5 m below) tied by a spring
+// from its tip to the ground point (0.6, -0.4, 0): gravity and the spring are both
+// conservative.
+System MakeSpringPendulum(JointForm form) {
+  System system(Vec3(0, -9.80665, 0));
+  const int rod = system.AddBody(MakeBody("rod", 1.0, Vec3(0, -0.5, 0), 0.02 * Mat3::Identity()));
+  system.AddJoint("pin", 0, Transform::Identity(), rod, Transform::Identity(), form,
+                  std::make_shared<testing::RevoluteModel>(Vec3::UnitZ()),
+                  {Coord("angle", 0.9, 0.5)});
+  system.AddForceElement(
+      std::make_shared<Spring>(rod, Vec3(0, -1.0, 0), Vec3(0.6, -0.4, 0), 40.0, 0.2));
+  system.Finalize();
+  return system;
+}
+
+TEST(ForceInterfaceTest, SpringEnergyIsConservedWithItsPotential) {
+  for (JointForm form : {JointForm::kParameterized, JointForm::kPin}) {
+    const System system = MakeSpringPendulum(form);
+    State state = MakeDefaultState(system);
+    const double e0 = CalcMechanicalEnergy(system, state);
+    const double v0 = CalcForcePotentialEnergy(system, state);
+    IntegratorSettings settings;
+    settings.accuracy = 1e-10;
+    auto integrator = MakeIntegrator("rk45", system, settings);
+    double drift = 0.0, swing = 0.0;
+    for (int i = 1; i <= 20; ++i) {
+      integrator->StepTo(state, 0.1 * i);
+      drift = std::max(drift, std::abs(CalcMechanicalEnergy(system, state) - e0));
+      swing = std::max(swing, std::abs(CalcForcePotentialEnergy(system, state) - v0));
+    }
+    // Energies of order 10 J; each step's local error is below 1e-10 of the unknowns.
+    const double bound = 10.0 * static_cast<double>(integrator->stats().steps) * settings.accuracy;
+    EXPECT_LT(drift, bound);
+    EXPECT_GT(swing, 0.5);  // the spring's energy really changes: leaving it out would show
+  }
+}
+
+TEST(ForceInterfaceTest, SpringPowerIsMinusTheRateOfItsPotential) {
+  const System system = MakeSpringPendulum(JointForm::kParameterized);
+  const State state = MakeDefaultState(system);
+  KktSolver kkt(system);
+  const VecX v = GatherVelocities(system, kkt, state);
+  // dV/dt along the motion by a central difference of V over a displacement +-dt v.
+  const double dt = 1e-6;
+  State ahead = state, behind = state;
+  ApplyPositionDisplacement(system, kkt, dt * v, ahead);
+  ApplyPositionDisplacement(system, kkt, -dt * v, behind);
+  const double rate =
+      (CalcForcePotentialEnergy(system, ahead) - CalcForcePotentialEnergy(system, behind)) /
+      (2 * dt);
+  const double power = CalcForcePower(system, state, 0);
+  EXPECT_GT(std::abs(power), 0.1);  // the spring does work here
+  EXPECT_NEAR(power, -rate, 1e-6 * std::abs(power));
+}
+
+}  // namespace
+}  // namespace sinew::engine
