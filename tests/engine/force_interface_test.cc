@@ -5,7 +5,9 @@
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/controller.h>
+#include <sinew/engine/dynamics.h>
 #include <sinew/engine/energy.h>
+#include <sinew/engine/force_jacobian.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/kkt.h>
 #include <sinew/engine/pose.h>
@@ -15,6 +17,8 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <string>
 #include <thread>
 #include <vector>
@@ -297,6 +301,116 @@ TEST(ForceInterfaceTest, SpringPowerIsMinusTheRateOfItsPotential) {
   const double power = CalcForcePower(system, state, 0);
   EXPECT_GT(std::abs(power), 0.1);  // the spring does work here
   EXPECT_NEAR(power, -rate, 1e-6 * std::abs(power));
+}
+
+// Generalized spring-damper -k q - c u on coordinate `coordinate`, with its analytic Jacobian
+// (K = -k, D = -c) unless `analytic` is false; with `declared` false it names no support.
+class CoordinateSpringDamper final : public ForceElement {
+ public:
+  CoordinateSpringDamper(int coordinate, double k, double c, bool analytic, bool declared)
+      : coordinate_(coordinate), k_(k), c_(c), analytic_(analytic), declared_(declared) {}
+  void AddLoads(const ForceContext& context, Loads& loads) const override {
+    loads.AddGeneralizedForce(coordinate_, -k_ * context.state.q[coordinate_] -
+                                               c_ * context.state.u[coordinate_]);
+  }
+  std::optional<ForceSupport> Support() const override {
+    if (!declared_) return std::nullopt;
+    return ForceSupport{{}, {coordinate_}};
+  }
+  bool CalcLoadJacobians(const ForceContext&, Eigen::Ref<MatX> K,
+                         Eigen::Ref<MatX> D) const override {
+    if (!analytic_) return false;
+    K(0, 0) = -k_;
+    D(0, 0) = -c_;
+    return true;
+  }
+
+ private:
+  int coordinate_;
+  double k_, c_;
+  bool analytic_, declared_;
+};
+
+System MakeDampedSpringPendulum(bool analytic, bool declared) {
+  System system(Vec3(0, -9.80665, 0));
+  const int rod =
+      system.AddBody(MakeBody("rod", 1.0, Vec3(0, -0.5, 0), 0.02 * Mat3::Identity()));
+  system.AddJoint("pin", 0, Transform::Identity(), rod, Transform::Identity(),
+                  JointForm::kParameterized,
+                  std::make_shared<testing::RevoluteModel>(Vec3::UnitZ()),
+                  {Coord("angle", 0.9, 0.5)});
+  system.AddForceElement(
+      std::make_shared<CoordinateSpringDamper>(0, 30.0, 0.7, analytic, declared));
+  system.Finalize();
+  return system;
+}
+
+TEST(ForceInterfaceTest, AnalyticJacobianBlocksEqualFiniteDifferences) {
+  const System system = MakeDampedSpringPendulum(true, true);
+  const State state = MakeDefaultState(system);
+  KktSolver kkt(system);
+  const std::vector<int> columns = CalcSupportColumns(system, kkt, 0);
+  ASSERT_EQ(columns, std::vector<int>{kkt.SpeedColumn(0)});
+  MatX K(1, 1), D(1, 1), K_fd, D_fd;
+  ASSERT_TRUE(system.force_elements()[0]->CalcLoadJacobians(system.MakeForceContext(0, state), K,
+                                                            D));
+  CalcForceJacobiansByFiniteDifference(system, kkt, state, 0, columns, K_fd, D_fd);
+  // Central differences of a linear force: exact up to rounding of f / step (~1e-10).
+  EXPECT_NEAR(K_fd(0, 0), K(0, 0), 1e-7 * 30.0);
+  EXPECT_NEAR(D_fd(0, 0), D(0, 0), 1e-7 * 30.0);
+}
+
+TEST(ForceInterfaceTest, JacobiansFromSupportEqualThoseOverEveryUnknown) {
+  // The same element, once with its support and analytic blocks, once with its support and
+  // finite differences, once with no support (differenced over every unknown): the assembled
+  // K and D agree; gravity's analytic block is in all three.
+  MatX K[3], D[3];
+  int i = 0;
+  for (auto [analytic, declared] : {std::pair{true, true}, {false, true}, {false, false}}) {
+    const System system = MakeDampedSpringPendulum(analytic, declared);
+    const State state = MakeDefaultState(system);
+    KktSolver kkt(system);
+    CalcLoadJacobians(system, kkt, state, K[i], D[i]);
+    ++i;
+  }
+  for (int j = 1; j < 3; ++j) {
+    EXPECT_LT((K[j] - K[0]).lpNorm<Eigen::Infinity>(), 1e-6) << j;
+    EXPECT_LT((D[j] - D[0]).lpNorm<Eigen::Infinity>(), 1e-6) << j;
+  }
+}
+
+TEST(ForceInterfaceTest, GravityJacobianEqualsFiniteDifferencesOfTheLoads) {
+  // A body hung off-centre, turned: gravity's torque about its origin changes with its
+  // orientation, as the analytic block [f]x [c]x says.
+  System system(Vec3(0, -9.80665, 0));
+  const int b = system.AddBody(MakeBody("b", 2.0, Vec3(0.3, -0.4, 0.2), Mat3::Identity()));
+  system.AddJoint("ball", 0, Transform::Identity(), b, Transform::Identity(), JointForm::kBall,
+                  nullptr, {Coord("x", 0.3), Coord("y", -0.2), Coord("z", 0.5)});
+  system.Finalize();
+  const State state = MakeDefaultState(system);
+  KktSolver kkt(system);
+  MatX K, D;
+  CalcLoadJacobians(system, kkt, state, K, D);
+  const double step = 1e-6;
+  for (int j = 0; j < 3; ++j) {
+    Loads plus, minus;
+    State moved = state;
+    VecX dx = VecX::Zero(kkt.num_velocities());
+    dx[kkt.BodyColumn(b) + j] = step;
+    ApplyPositionDisplacement(system, kkt, dx, moved);
+    CalcLoads(system, moved, nullptr, plus);
+    moved = state;
+    dx[kkt.BodyColumn(b) + j] = -step;
+    ApplyPositionDisplacement(system, kkt, dx, moved);
+    CalcLoads(system, moved, nullptr, minus);
+    const SpatialVec column = (plus.body[b] - minus.body[b]) / (2 * step);
+    EXPECT_LT((column - K.block<6, 1>(kkt.BodyColumn(b), kkt.BodyColumn(b) + j))
+                  .lpNorm<Eigen::Infinity>(),
+              1e-7 * 2.0 * 9.81)
+        << "rotation about axis " << j;
+  }
+  EXPECT_GT(K.lpNorm<Eigen::Infinity>(), 1.0);  // the block is not trivially zero
+  EXPECT_EQ(D.lpNorm<Eigen::Infinity>(), 0.0);  // gravity does not depend on velocities
 }
 
 }  // namespace

@@ -5,10 +5,7 @@
 #include <vector>
 
 namespace sinew::engine {
-namespace {
 
-// Generalized forces on a direct joint's coordinates act as torques along the columns of
-// H_FM (in F): tau on the child, -tau on the parent.
 void MapDirectJointForces(const System& system, const State& state, Loads& loads) {
   for (const Joint& joint : system.joints()) {
     if (joint.form == JointForm::kParameterized || joint.coordinates.empty()) continue;
@@ -27,8 +24,6 @@ void MapDirectJointForces(const System& system, const State& state, Loads& loads
     }
   }
 }
-
-}  // namespace
 
 void CalcLoads(const System& system, const State& state, const Loads* external, Loads& loads) {
   loads = Loads(system.num_bodies(), system.num_coordinates());

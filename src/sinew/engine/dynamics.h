@@ -17,6 +17,10 @@ struct Accelerations {
   VecX lambda;
 };
 
+/// Turns generalized forces on coordinates of direct Cartesian joints into the body torques they
+/// are (along the columns of H_FM, in F: tau on the child, -tau on the parent).
+void MapDirectJointForces(const System& system, const State& state, Loads& loads);
+
 /// Adds gravity, every force element of `system` and `external` (may be null) for `state`.
 /// Generalized forces on coordinates of direct Cartesian joints are turned into body torques.
 void CalcLoads(const System& system, const State& state, const Loads* external, Loads& loads);

@@ -5,6 +5,7 @@
 
 #include <sinew/math/types.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,13 @@ struct ForceContext {
   double z(int i) const;
   /// The element's input i.
   double input(int i) const;
+};
+
+/// Where a force element's loads act and what they depend on: bodies (their poses and twists)
+/// and coordinates (q and u). Its Jacobian blocks live on these.
+struct ForceSupport {
+  std::vector<int> bodies;       ///< indices into System::bodies() (not ground)
+  std::vector<int> coordinates;  ///< indices into System::coordinates()
 };
 
 /// A force model. Stateless itself (a finalized System is shared, read-only, by many threads):
@@ -62,6 +70,22 @@ class ForceElement {
 
   /// Adds this element's loads for the context's state to `loads`.
   virtual void AddLoads(const ForceContext& context, Loads& loads) const = 0;
+
+  /// The bodies and coordinates the loads act on and depend on, or nullopt when unknown (then
+  /// the implicit integrator differentiates the element over every unknown).
+  virtual std::optional<ForceSupport> Support() const { return std::nullopt; }
+  /// Analytic Jacobian blocks of the element's loads f with respect to position displacements
+  /// (K = df/dx) and velocities (D = df/dv), for implicit integration. Rows and columns follow
+  /// Support(): per body its twist [w_GB; v_GB] (rows: [torque about Bo; force], in G; columns:
+  /// rotation vector and displacement of Bo, in G), then per coordinate its speed (rows:
+  /// generalized force). Called only when every coordinate of the support belongs to a
+  /// parameterized joint. Return false (the default) to have the engine use central finite
+  /// differences of AddLoads over the support instead.
+  virtual bool CalcLoadJacobians(const ForceContext& context, Eigen::Ref<MatX> K,
+                                 Eigen::Ref<MatX> D) const {
+    (void)context, (void)K, (void)D;
+    return false;
+  }
 
   /// Potential energy stored in the element (J), zero for non-conservative elements. With it,
   /// CalcMechanicalEnergy covers springs: d/dt (T + V) equals the power of the

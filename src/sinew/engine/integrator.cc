@@ -1,6 +1,7 @@
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/dynamics.h>
+#include <sinew/engine/force_jacobian.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/projection.h>
@@ -395,52 +396,25 @@ class SemiImplicitEuler final : public FixedStepIntegrator {
 };
 
 // Linearized implicit Euler (fixed step): the applied loads f(x, v) are linearized about the
-// step's start with K = df/dx and D = df/dv (finite differences over every velocity unknown),
+// step's start with K = df/dx and D = df/dv (CalcLoadJacobians: gravity analytic, each force
+// element's own blocks or central differences over its support),
 //   [M - h D - h^2 K   J^T] [v+ ]   [M (v + h vdot) - h D v]
 //   [J                  0 ] [mu ] = [c(t + h)              ]
 // then positions move with v+ and are projected. Stable for stiff springs and dampers; the
-// dense solve and the O(n) load evaluations per Jacobian column make it O(n^2)-O(n^3): meant
-// for small stiff models.
+// dense solve makes it O(n^3): meant for small stiff models.
 class LinearizedImplicitEuler final : public FixedStepIntegrator {
  public:
   LinearizedImplicitEuler(const System& system, const IntegratorSettings& settings)
       : FixedStepIntegrator(system, settings, "implicit-euler") {}
 
  private:
-  // The applied loads in KKT velocity layout (body rows, integrated speeds' rows).
-  VecX LoadVector(const State& state) const {
-    Loads loads;
-    CalcLoads(system_, state, external_, loads);
-    VecX f = VecX::Zero(kkt_.num_velocities());
-    for (int b = 1; b < system_.num_bodies(); ++b) f.segment<6>(kkt_.BodyColumn(b)) = loads.body[b];
-    for (int c = 0; c < system_.num_coordinates(); ++c) {
-      if (system_.IsIntegrated(c)) f[kkt_.SpeedColumn(c)] = loads.mobility[c];
-    }
-    return f;
-  }
-
   void Step(State& state, double h, double t_new) override {
     const int nv = kkt_.num_velocities(), nc = kkt_.num_equations();
     VecX zdot(system_.num_state_variables());
     const Accelerations acc = Evaluate(state, zdot);
     const VecX v0 = GatherVelocities(system_, kkt_, state);
-    const VecX f0 = LoadVector(state);
-    MatX D(nv, nv), K(nv, nv);
-    const double eps = 1e-7;
-    for (int k = 0; k < nv; ++k) {
-      State moved = state;
-      VecX v = v0;
-      v[k] += eps;
-      ScatterVelocities(system_, kkt_, v, moved);
-      UpdateDirectCoordinates(system_, moved);  // force elements may read their q, u
-      D.col(k) = (LoadVector(moved) - f0) / eps;
-      moved = state;
-      VecX dx = VecX::Zero(nv);
-      dx[k] = eps;
-      ApplyPositionDisplacement(system_, kkt_, dx, moved);
-      UpdateDirectCoordinates(system_, moved);
-      K.col(k) = (LoadVector(moved) - f0) / eps;
-    }
+    MatX D, K;
+    CalcLoadJacobians(system_, kkt_, state, K, D);
     MatX A = kkt_.AssembleDense();
     A.topLeftCorner(nv, nv) -= h * D + h * h * K;
     VecX rhs(nv + nc);
