@@ -18,9 +18,9 @@
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <utility>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "engine/test_models.h"
@@ -310,8 +310,8 @@ class CoordinateSpringDamper final : public ForceElement {
   CoordinateSpringDamper(int coordinate, double k, double c, bool analytic, bool declared)
       : coordinate_(coordinate), k_(k), c_(c), analytic_(analytic), declared_(declared) {}
   void AddLoads(const ForceContext& context, Loads& loads) const override {
-    loads.AddGeneralizedForce(coordinate_, -k_ * context.state.q[coordinate_] -
-                                               c_ * context.state.u[coordinate_]);
+    loads.AddGeneralizedForce(
+        coordinate_, -k_ * context.state.q[coordinate_] - c_ * context.state.u[coordinate_]);
   }
   std::optional<ForceSupport> Support() const override {
     if (!declared_) return std::nullopt;
@@ -333,12 +333,10 @@ class CoordinateSpringDamper final : public ForceElement {
 
 System MakeDampedSpringPendulum(bool analytic, bool declared) {
   System system(Vec3(0, -9.80665, 0));
-  const int rod =
-      system.AddBody(MakeBody("rod", 1.0, Vec3(0, -0.5, 0), 0.02 * Mat3::Identity()));
-  system.AddJoint("pin", 0, Transform::Identity(), rod, Transform::Identity(),
-                  JointForm::kParameterized,
-                  std::make_shared<testing::RevoluteModel>(Vec3::UnitZ()),
-                  {Coord("angle", 0.9, 0.5)});
+  const int rod = system.AddBody(MakeBody("rod", 1.0, Vec3(0, -0.5, 0), 0.02 * Mat3::Identity()));
+  system.AddJoint(
+      "pin", 0, Transform::Identity(), rod, Transform::Identity(), JointForm::kParameterized,
+      std::make_shared<testing::RevoluteModel>(Vec3::UnitZ()), {Coord("angle", 0.9, 0.5)});
   system.AddForceElement(
       std::make_shared<CoordinateSpringDamper>(0, 30.0, 0.7, analytic, declared));
   system.Finalize();
@@ -352,8 +350,8 @@ TEST(ForceInterfaceTest, AnalyticJacobianBlocksEqualFiniteDifferences) {
   const std::vector<int> columns = CalcSupportColumns(system, kkt, 0);
   ASSERT_EQ(columns, std::vector<int>{kkt.SpeedColumn(0)});
   MatX K(1, 1), D(1, 1), K_fd, D_fd;
-  ASSERT_TRUE(system.force_elements()[0]->CalcLoadJacobians(system.MakeForceContext(0, state), K,
-                                                            D));
+  ASSERT_TRUE(
+      system.force_elements()[0]->CalcLoadJacobians(system.MakeForceContext(0, state), K, D));
   CalcForceJacobiansByFiniteDifference(system, kkt, state, 0, columns, K_fd, D_fd);
   // Central differences of a linear force: exact up to rounding of f / step (~1e-10).
   EXPECT_NEAR(K_fd(0, 0), K(0, 0), 1e-7 * 30.0);

@@ -126,8 +126,8 @@ void CalcLoadJacobians(const System& system, const KktSolver& kkt, const State& 
     if (HasPlainSupport(system, k)) {
       Kk.setZero(n, n);
       Dk.setZero(n, n);
-      analytic = system.force_elements()[k]->CalcLoadJacobians(system.MakeForceContext(k, state),
-                                                               Kk, Dk);
+      analytic =
+          system.force_elements()[k]->CalcLoadJacobians(system.MakeForceContext(k, state), Kk, Dk);
     }
     if (!analytic) CalcForceJacobiansByFiniteDifference(system, kkt, state, k, columns, Kk, Dk);
     for (int i = 0; i < n; ++i) {
