@@ -46,9 +46,9 @@ bool TimeSteps(benchmark::State& bench, Integrator& integrator, const State& sta
 void BM_ChainAccelerations(benchmark::State& bench) {
   const System system = MakeChain(static_cast<int>(bench.range(0)), JointForm::kPin);
   const State state = MakeDefaultState(system);
-  KktSolver kkt(system);
+  Data data(system);
   for (auto _ : bench) {
-    benchmark::DoNotOptimize(CalcAccelerations(system, state, nullptr, kkt));
+    benchmark::DoNotOptimize(CalcAccelerations(system, state, nullptr, data));
   }
   bench.SetComplexityN(bench.range(0));
 }
@@ -64,9 +64,9 @@ BENCHMARK(BM_ChainAccelerations)
 void BM_CoupledChainAccelerations(benchmark::State& bench) {
   const System system = MakeChain(static_cast<int>(bench.range(0)), JointForm::kParameterized, 4);
   const State state = MakeDefaultState(system);
-  KktSolver kkt(system);
+  Data data(system);
   for (auto _ : bench) {
-    benchmark::DoNotOptimize(CalcAccelerations(system, state, nullptr, kkt));
+    benchmark::DoNotOptimize(CalcAccelerations(system, state, nullptr, data));
   }
   bench.SetComplexityN(bench.range(0));
 }

@@ -64,9 +64,9 @@ void BM_Gait2354Accelerations(benchmark::State& bench) {
   sinew::engine::State state = sinew::engine::MakeDefaultState(*system);
   for (int c = 0; c < system->num_coordinates(); ++c) state.u[c] = std::sin(c + 1.0);
   sinew::engine::PlaceBodies(*system, state);
-  sinew::engine::KktSolver kkt(*system);
+  sinew::engine::Data data(*system);
   for (auto _ : bench) {
-    benchmark::DoNotOptimize(sinew::engine::CalcAccelerations(*system, state, nullptr, kkt));
+    benchmark::DoNotOptimize(sinew::engine::CalcAccelerations(*system, state, nullptr, data));
   }
 }
 BENCHMARK(BM_Gait2354Accelerations)->Unit(benchmark::kMicrosecond);

@@ -64,7 +64,8 @@ TEST(AddConstraintTest, LeverCouplesTwoSlidersAsTheClosedForm) {
   settings.accuracy = 1e-10;
   auto integrator = MakeIntegrator("rk45", *system, settings);
   State state = MakeDefaultState(*system);
-  KktSolver kkt(*system);
+  Data data(*system);
+  const KktSolver& kkt = data.kkt;
   const std::shared_ptr<const Constraint> lever = system->constraints().back();
   // Error bounds: x2'' is constant, so errors grow at most linearly: after N steps x2 is within
   // 2 N accuracy max(1, |x2|) (1 s horizon) and the positions are projected onto the lever to
@@ -82,7 +83,7 @@ TEST(AddConstraintTest, LeverCouplesTwoSlidersAsTheClosedForm) {
     EXPECT_LE(std::abs(phi[0]), projection_tolerance) << t;
     EXPECT_NEAR(state.q[0] - kRatio * state.q[1], phi[0], 1e-15);
     EXPECT_NEAR(state.u[0] - kRatio * state.u[1], 0.0, 1e-13) << t;
-    const Accelerations acc = CalcAccelerations(*system, state, nullptr, kkt);
+    const Accelerations acc = CalcAccelerations(*system, state, nullptr, data);
     const double lambda_t = acc.lambda[kkt.EquationRow(2)];
     EXPECT_NEAR(lambda_t, lambda, 1e-12 * kM1 * kG) << t;
     EXPECT_NEAR(acc.vdot[kkt.SpeedColumn(1)], a, 1e-12 * kG) << t;
@@ -125,9 +126,10 @@ TEST(AddConstraintTest, CouplersOnTheTreePathEqualTheDenseSolve) {
   EXPECT_LT(std::abs(phi[0]), 1e-12);
   for (int c = 0; c < system->num_coordinates(); ++c) state.u[c] = std::cos(1.0 + c);
   PlaceBodies(*system, state);
-  KktSolver tree(*system), dense(*system, KktSolver::Method::kDense);
+  Data tree_data(*system), dense(*system, KktSolver::Method::kDense);
+  const KktSolver& tree = tree_data.kkt;
   EXPECT_EQ(tree.num_extra_equations(), 2);  // the levers; the joints stay in the tree
-  const Accelerations a = CalcAccelerations(*system, state, nullptr, tree);
+  const Accelerations a = CalcAccelerations(*system, state, nullptr, tree_data);
   const Accelerations b = CalcAccelerations(*system, state, nullptr, dense);
   EXPECT_LT((a.vdot - b.vdot).lpNorm<Eigen::Infinity>(), 1e-10 * (1 + b.vdot.norm()));
   EXPECT_LT((a.lambda - b.lambda).lpNorm<Eigen::Infinity>(), 1e-10 * (1 + b.lambda.norm()));
@@ -155,9 +157,10 @@ TEST(AddConstraintTest, RedundantCouplerIsSolvable) {
   twice->Finalize();
   const auto once = MakeLever();
   State s2 = MakeDefaultState(*twice), s1 = MakeDefaultState(*once);
-  KktSolver k2(*twice), k1(*once);
-  const Accelerations a2 = CalcAccelerations(*twice, s2, nullptr, k2);
-  const Accelerations a1 = CalcAccelerations(*once, s1, nullptr, k1);
+  Data d2(*twice), d1(*once);
+  const KktSolver &k2 = d2.kkt, &k1 = d1.kkt;
+  const Accelerations a2 = CalcAccelerations(*twice, s2, nullptr, d2);
+  const Accelerations a1 = CalcAccelerations(*once, s1, nullptr, d1);
   EXPECT_NEAR(a2.vdot[k2.SpeedColumn(1)], a1.vdot[k1.SpeedColumn(1)], 1e-12 * kG);
   EXPECT_NEAR(a2.lambda[k2.EquationRow(2)], a2.lambda[k2.EquationRow(3)], 1e-9 * kM1 * kG);
   EXPECT_NEAR(a2.lambda[k2.EquationRow(2)] + a2.lambda[k2.EquationRow(3)],

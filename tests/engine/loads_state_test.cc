@@ -37,8 +37,8 @@ TEST(LoadsTest, LoadsThatBalanceGravityGiveNoAcceleration) {
   for (JointForm form : {JointForm::kParameterized, JointForm::kPin}) {
     const System system = MakeRod(form);
     const State state = MakeDefaultState(system);
-    KktSolver kkt(system);
-    const double free_fall = CalcAccelerations(system, state, nullptr, kkt).vdot.head<3>().norm();
+    Data data(system);
+    const double free_fall = CalcAccelerations(system, state, nullptr, data).vdot.head<3>().norm();
     EXPECT_NEAR(free_fall, gravity_torque / (0.02 + 2.0 * 0.25), 1e-12);
     // Generalized force on the coordinate.
     Loads generalized(system.num_bodies(), system.num_coordinates());
@@ -56,7 +56,7 @@ TEST(LoadsTest, LoadsThatBalanceGravityGiveNoAcceleration) {
     Loads push(system.num_bodies(), system.num_coordinates());
     push.AddForceAtPoint(state, 1, Vec3(0, -1.0, 0), Vec3(gravity_torque / std::cos(0.8), 0, 0));
     for (const Loads* loads : {&generalized, &torque, &between, &lift, &push}) {
-      const Accelerations a = CalcAccelerations(system, state, loads, kkt);
+      const Accelerations a = CalcAccelerations(system, state, loads, data);
       EXPECT_LT(a.vdot.lpNorm<Eigen::Infinity>(), 1e-12);
     }
   }
@@ -192,8 +192,8 @@ TEST(LoadsTest, GeneralizedForcesOnDirectAndParameterizedJointsAgree) {
       const State state = MakeDefaultState(system);
       Loads loads(system.num_bodies(), system.num_coordinates());
       for (int c = 0; c < system.num_coordinates(); ++c) loads.AddGeneralizedForce(c, 1.0 + c);
-      KktSolver kkt(system);
-      vdot[k] = CalcAccelerations(system, state, &loads, kkt).vdot.head<6>();
+      Data data(system);
+      vdot[k] = CalcAccelerations(system, state, &loads, data).vdot.head<6>();
     }
     EXPECT_LT((vdot[0] - vdot[1]).norm(), 1e-12 * (1 + vdot[0].norm()));
   }
@@ -213,9 +213,9 @@ TEST(LoadsTest, PinReactionAtTheBottomOfTheSwing) {
     State state = MakeDefaultState(system);
     SetCoordinateValue(system, state, "q", 0.0);
     SetCoordinateSpeed(system, state, "q", 3.0);
-    KktSolver kkt(system);
-    const Accelerations a = CalcAccelerations(system, state, nullptr, kkt);
-    const SpatialVec reaction = CalcJointReaction(system, state, a, kkt, 0);
+    Data data(system);
+    const Accelerations a = CalcAccelerations(system, state, nullptr, data);
+    const SpatialVec reaction = CalcJointReaction(system, state, a, data.kkt, 0);
     EXPECT_NEAR(reaction[4], 2.0 * (9.81 + 9.0 * 0.5), 1e-10);
     EXPECT_NEAR(reaction[3], 0.0, 1e-10);
     EXPECT_NEAR(reaction[5], 0.0, 1e-10);

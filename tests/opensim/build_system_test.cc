@@ -170,10 +170,10 @@ TEST(BuildSystemTest, TreeEliminationEqualsDenseLu) {
       state.u[c] = std::cos(2.0 * c);
     }
     engine::PlaceBodies(*system, state);
-    engine::KktSolver tree(*system), sparse(*system, engine::KktSolver::Method::kDense);
-    ASSERT_EQ(tree.num_extra_equations(), 0);
+    engine::Data tree(*system), dense(*system, engine::KktSolver::Method::kDense);
+    ASSERT_EQ(tree.kkt.num_extra_equations(), 0);
     const engine::Accelerations a = engine::CalcAccelerations(*system, state, nullptr, tree);
-    const engine::Accelerations b = engine::CalcAccelerations(*system, state, nullptr, sparse);
+    const engine::Accelerations b = engine::CalcAccelerations(*system, state, nullptr, dense);
     EXPECT_LT((a.vdot - b.vdot).lpNorm<Eigen::Infinity>(), 1e-9 * (1 + b.vdot.norm()));
     EXPECT_LT((a.lambda - b.lambda).lpNorm<Eigen::Infinity>(), 1e-9 * (1 + b.lambda.norm()));
   }

@@ -1,5 +1,6 @@
 #include <sinew/engine/direct_joint.h>
 #include <sinew/engine/dynamics.h>
+#include <sinew/engine/joint_values.h>
 #include <sinew/engine/pose.h>
 
 #include <vector>
@@ -9,13 +10,10 @@ namespace sinew::engine {
 void MapDirectJointForces(const System& system, const State& state, Loads& loads) {
   for (const Joint& joint : system.joints()) {
     if (joint.form == JointForm::kParameterized || joint.coordinates.empty()) continue;
-    std::vector<double> q;
     bool any = false;
-    for (int c : joint.coordinates) {
-      q.push_back(state.q[c]);
-      any = any || loads.mobility[c] != 0.0;
-    }
+    for (int c : joint.coordinates) any = any || loads.mobility[c] != 0.0;
     if (!any) continue;
+    const JointValues q(state.q, joint.coordinates);
     const Mat6X H = CalcDirectH_FM(joint.form, q);
     const Mat3 R_GF = (PoseOf(state.bodies[joint.parent]) * joint.X_PF).R;
     for (size_t i = 0; i < joint.coordinates.size(); ++i) {
@@ -26,7 +24,12 @@ void MapDirectJointForces(const System& system, const State& state, Loads& loads
 }
 
 void CalcLoads(const System& system, const State& state, const Loads* external, Loads& loads) {
-  loads = Loads(system.num_bodies(), system.num_coordinates());
+  if (static_cast<int>(loads.body.size()) == system.num_bodies() &&
+      loads.mobility.size() == system.num_coordinates()) {
+    loads.SetZero();  // reused: no heap use
+  } else {
+    loads = Loads(system.num_bodies(), system.num_coordinates());
+  }
   for (int b = 1; b < system.num_bodies(); ++b) {
     const Body& body = system.bodies()[b];
     if (body.mass == 0.0) continue;
@@ -57,13 +60,23 @@ void CalcStateVariableDerivatives(const System& system, const State& state, Eige
   }
 }
 
-Accelerations CalcAccelerations(const System& system, const State& state, const Loads* external,
-                                KktSolver& kkt) {
-  Loads loads;
+Data::Data(const System& system, KktSolver::Method method)
+    : kkt(system, method), loads(system.num_bodies(), system.num_coordinates()) {
+  rhs = VecX::Zero(kkt.num_velocities() + kkt.num_equations());
+  solution = rhs;
+  accelerations.vdot = VecX::Zero(kkt.num_velocities());
+  accelerations.lambda = VecX::Zero(kkt.num_equations());
+}
+
+const Accelerations& CalcAccelerations(const System& system, const State& state,
+                                       const Loads* external, Data& data) {
+  Loads& loads = data.loads;
+  KktSolver& kkt = data.kkt;
   CalcLoads(system, state, external, loads);
   kkt.Factorize(state);
   const int nv = kkt.num_velocities();
-  VecX rhs = VecX::Zero(nv + kkt.num_equations());
+  VecX& rhs = data.rhs;
+  rhs.setZero();
   // Body rows: applied loads minus the velocity-dependent (gyroscopic, centripetal) terms of
   // the Newton-Euler equations about the body origin.
   for (int b = 1; b < system.num_bodies(); ++b) {
@@ -87,11 +100,10 @@ Accelerations CalcAccelerations(const System& system, const State& state, const 
     constraints[k]->CalcAccelerationRhs(
         system, state, rhs.segment(nv + kkt.EquationRow(k), constraints[k]->NumEquations()));
   }
-  const VecX x = kkt.Solve(rhs);
-  Accelerations a;
-  a.vdot = x.head(nv);
-  a.lambda = x.tail(kkt.num_equations());
-  return a;
+  kkt.Solve(rhs, data.solution);
+  data.accelerations.vdot = data.solution.head(nv);
+  data.accelerations.lambda = data.solution.tail(kkt.num_equations());
+  return data.accelerations;
 }
 
 }  // namespace sinew::engine

@@ -28,9 +28,24 @@ void CalcLoads(const System& system, const State& state, const Loads* external, 
 /// dz/dt of every auxiliary state variable at `state` (System::num_state_variables() entries).
 void CalcStateVariableDerivatives(const System& system, const State& state, Eigen::Ref<VecX> zdot);
 
-/// The accelerations of `state` under the loads of CalcLoads. `kkt` must belong to `system`;
-/// it is refactorized at `state`. Throws sinew::Error for a singular system.
-Accelerations CalcAccelerations(const System& system, const State& state, const Loads* external,
-                                KktSolver& kkt);
+/// The workspace of one thread's evaluations of a System: what an evaluation computes, kept so
+/// that nothing is allocated on the heap per evaluation (`DataTest.EvaluationAllocatesNothing`).
+/// Stages: the body poses and twists are the State itself in the Cartesian form; `loads` (the
+/// applied loads), then `kkt` (mass matrices, constraint Jacobians and their factors), then
+/// `accelerations`. Force elements will find cached geometry here (muscle paths) as it comes.
+/// Not shareable between threads: make one per thread (a System is shared).
+struct Data {
+  explicit Data(const System& system, KktSolver::Method method = KktSolver::Method::kTree);
+  KktSolver kkt;                ///< the constrained mass matrix of the last evaluation, factorized
+  Loads loads;                  ///< applied loads of the last evaluation
+  VecX rhs;                     ///< KKT right-hand side [f - bias; b]
+  VecX solution;                ///< KKT solution [vdot; lambda]
+  Accelerations accelerations;  ///< the last evaluation's results
+};
+
+/// The accelerations of `state` under the loads of CalcLoads, into data.accelerations (also
+/// returned). `data` must belong to `system`. Throws sinew::Error for a singular system.
+const Accelerations& CalcAccelerations(const System& system, const State& state,
+                                       const Loads* external, Data& data);
 
 }  // namespace sinew::engine

@@ -3,6 +3,7 @@
 #include <sinew/engine/dynamics.h>
 #include <sinew/engine/force_jacobian.h>
 #include <sinew/engine/integrator.h>
+#include <sinew/engine/joint_values.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/projection.h>
 
@@ -16,7 +17,7 @@
 namespace sinew::engine {
 
 Integrator::Integrator(const System& system, const IntegratorSettings& settings)
-    : system_(system), settings_(settings), kkt_(system) {
+    : system_(system), settings_(settings), data_(system), kkt_(data_.kkt) {
   if (!(settings.accuracy > 0.0)) throw Error("integrator: accuracy must be > 0");
   if (settings.step < 0.0) throw Error("integrator: step must be >= 0");
 }
@@ -43,11 +44,11 @@ void Integrator::ApplyController(State& state) const {
   if (controller_) controller_->CalcInputs(system_, state, state.inputs);
 }
 
-Accelerations Integrator::Evaluate(State& state, Eigen::Ref<VecX> zdot) {
+const Accelerations& Integrator::Evaluate(State& state, Eigen::Ref<VecX> zdot) {
   ApplyController(state);
   ++stats_.evaluations;
   if (zdot.size() > 0) CalcStateVariableDerivatives(system_, state, zdot);
-  return CalcAccelerations(system_, state, external_, kkt_);
+  return CalcAccelerations(system_, state, external_, data_);
 }
 
 double Integrator::ConstraintTolerance() const {
@@ -112,8 +113,9 @@ class StateVector {
 
   // ydot at the state (whose quaternions are those of y, unnormalized kept in y), given the
   // accelerations and the state variables' derivatives.
-  VecX Derivative(const VecX& y, const State& state, const VecX& vdot, const VecX& zdot) const {
-    VecX yd(size());
+  void Derivative(const VecX& y, const State& state, const VecX& vdot, const VecX& zdot,
+                  VecX& yd) const {
+    yd.resize(size());
     for (int b = 1; b <= nb_; ++b) {
       const BodyState& s = state.bodies[b];
       yd.segment<3>(7 * (b - 1)) = s.v_GB;
@@ -127,11 +129,8 @@ class StateVector {
     for (const Joint& joint : system_.joints()) {
       if (joint.form != JointForm::kParameterized || joint.coordinates.empty()) continue;
       const size_t n = joint.coordinates.size();
-      std::vector<double> q(n), u(n), qdot(n);
-      for (size_t i = 0; i < n; ++i) {
-        q[i] = state.q[joint.coordinates[i]];
-        u[i] = state.u[joint.coordinates[i]];
-      }
+      const JointValues q(state.q, joint.coordinates), u(state.u, joint.coordinates);
+      JointValues qdot(n);
       joint.model->CalcQDot(q, u, qdot);
       for (size_t i = 0; i < n; ++i) {
         yd[7 * nb_ + system_.SpeedIndex(joint.coordinates[i])] = qdot[i];
@@ -139,7 +138,6 @@ class StateVector {
     }
     yd.segment(np_, nv_) = vdot;
     yd.tail(nz_) = zdot;
-    return yd;
   }
 
  private:
@@ -184,11 +182,12 @@ class RungeKutta45 final : public Integrator {
   }
 
  private:
-  VecX Eval(const VecX& y, double t, State& scratch) {
+  // ydot at (y, t) into `ydot`.
+  void Eval(const VecX& y, double t, State& scratch, VecX& ydot) {
     vector_.Unpack(y, t, scratch);
     zdot_.resize(vector_.num_state_variables());
-    const Accelerations acc = Evaluate(scratch, zdot_);
-    return vector_.Derivative(y, scratch, acc.vdot, zdot_);
+    const Accelerations& acc = Evaluate(scratch, zdot_);
+    vector_.Derivative(y, scratch, acc.vdot, zdot_, ydot);
   }
 
   // One attempt; on success `state` advances and h_ is updated for the next step.
@@ -207,15 +206,15 @@ class RungeKutta45 final : public Integrator {
                                     -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
     State scratch = state;
     const VecX y0 = vector_.Pack(state);
-    VecX k[7];
-    k[0] = Eval(y0, state.t, scratch);
+    VecX* k = k_;
+    Eval(y0, state.t, scratch, k[0]);
     VecX y;
     for (int s = 1; s < 7; ++s) {
       y = y0;
       for (int j = 0; j < s; ++j) {
         if (a[s][j] != 0.0) y += (h * a[s][j]) * k[j];
       }
-      k[s] = Eval(y, s == 6 ? t_new : state.t + c[s] * h, scratch);
+      Eval(y, s == 6 ? t_new : state.t + c[s] * h, scratch, k[s]);
     }
     // y holds the fifth-order solution (the last stage is evaluated at it).
     VecX err = VecX::Zero(y0.size());
@@ -281,6 +280,7 @@ class RungeKutta45 final : public Integrator {
   StateVector vector_;
   DenseOutput dense_;
   VecX zdot_;
+  VecX k_[7];  // the stages' derivatives
   double h_ = 0.0;
   bool just_rejected_ = false;
 };
@@ -371,7 +371,7 @@ class SemiImplicitEuler final : public FixedStepIntegrator {
     const int nv = kkt_.num_velocities();
     // Accelerations' right-hand side f at (x, v); the same matrix serves the velocity solve.
     VecX zdot(system_.num_state_variables());
-    const Accelerations acc = Evaluate(state, zdot);
+    const Accelerations& acc = Evaluate(state, zdot);
     // M vdot + J^T lambda = f  =>  f = M vdot + J^T lambda; the new velocities solve
     // M v+ + J^T (h lambda+) = M v + h f, J v+ = c(t+h).
     const VecX v0 = GatherVelocities(system_, kkt_, state);
@@ -411,7 +411,7 @@ class LinearizedImplicitEuler final : public FixedStepIntegrator {
   void Step(State& state, double h, double t_new) override {
     const int nv = kkt_.num_velocities(), nc = kkt_.num_equations();
     VecX zdot(system_.num_state_variables());
-    const Accelerations acc = Evaluate(state, zdot);
+    const Accelerations& acc = Evaluate(state, zdot);
     const VecX v0 = GatherVelocities(system_, kkt_, state);
     MatX D, K;
     CalcLoadJacobians(system_, kkt_, state, K, D);

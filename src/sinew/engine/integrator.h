@@ -84,11 +84,12 @@ class Integrator {
   void ApplyController(State& state) const;
   /// One evaluation at `state`: inputs from the controller, then the accelerations (counted in
   /// stats().evaluations) and, into `zdot`, the state variables' derivatives.
-  Accelerations Evaluate(State& state, Eigen::Ref<VecX> zdot);
+  const Accelerations& Evaluate(State& state, Eigen::Ref<VecX> zdot);
 
   const System& system_;
   IntegratorSettings settings_;
-  KktSolver kkt_;
+  Data data_;       // the evaluations' workspace
+  KktSolver& kkt_;  // data_.kkt
   const Loads* external_ = nullptr;
   std::shared_ptr<const Controller> controller_;
   IntegratorStats stats_;

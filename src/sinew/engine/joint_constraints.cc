@@ -1,4 +1,5 @@
 #include <sinew/engine/joint_constraints.h>
+#include <sinew/engine/joint_values.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/state.h>
 
@@ -36,7 +37,7 @@ class ParameterizedJointConstraint final : public Constraint {
   void CalcPositionError(const System&, const State& state, Eigen::Ref<VecX> phi) const override {
     const JointFrames f = CalcJointFrames(joint_, state);
     const Transform X_FM_actual = f.X_GF.Inverse() * f.X_GM;
-    const Transform X_FM = joint_.model->CalcX_FM(Q(state));
+    const Transform X_FM = joint_.model->CalcX_FM(JointValues(state.q, joint_.coordinates));
     phi.head<3>() = RotationVector(X_FM_actual.R * X_FM.R.transpose());
     phi.tail<3>() = X_FM_actual.p - X_FM.p;
   }
@@ -55,7 +56,7 @@ class ParameterizedJointConstraint final : public Constraint {
     J.block<3, 3>(3, 6) = -Rt * Skew(r_BM);
     J.block<3, 3>(3, 9) = Rt;
     const int n = static_cast<int>(joint_.coordinates.size());
-    if (n > 0) J.rightCols(n) = -joint_.model->CalcH_FM(Q(state));
+    if (n > 0) J.rightCols(n) = -joint_.model->CalcH_FM(JointValues(state.q, joint_.coordinates));
   }
 
   void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
@@ -73,21 +74,14 @@ class ParameterizedJointConstraint final : public Constraint {
     bias.tail<3>() =
         Rt * (B.w_GB.cross(B.w_GB.cross(r_BM)) - P.w_GB.cross(d_dot) - P.w_GB.cross(y));
     SpatialVec hdot_u = SpatialVec::Zero();
-    if (!joint_.coordinates.empty()) hdot_u = joint_.model->CalcHDotU(Q(state), U(state));
+    if (!joint_.coordinates.empty()) {
+      hdot_u = joint_.model->CalcHDotU(JointValues(state.q, joint_.coordinates),
+                                       JointValues(state.u, joint_.coordinates));
+    }
     b = hdot_u - bias;
   }
 
  private:
-  std::vector<double> Q(const State& state) const {
-    std::vector<double> q;
-    for (int c : joint_.coordinates) q.push_back(state.q[c]);
-    return q;
-  }
-  std::vector<double> U(const State& state) const {
-    std::vector<double> u;
-    for (int c : joint_.coordinates) u.push_back(state.u[c]);
-    return u;
-  }
   Joint joint_;
 };
 
@@ -175,8 +169,8 @@ class CoordinateMotionConstraint final : public Constraint {
     phi[0] = state.q[coordinate_] - Value(state.t, 0);
   }
   void CalcJacobian(const System&, const State& state, Eigen::Ref<MatX> J) const override {
-    const std::vector<double> q = Gather(state.q);
-    std::vector<double> u(q.size(), 0.0), qdot(q.size());
+    const JointValues q(state.q, joint_.coordinates);
+    JointValues u(q.size()), qdot(q.size());
     for (size_t k = 0; k < q.size(); ++k) {
       u[k] = 1.0;
       joint_.model->CalcQDot(q, u, qdot);
@@ -188,12 +182,12 @@ class CoordinateMotionConstraint final : public Constraint {
     c[0] = Value(state.t, 1);
   }
   void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
-    const std::vector<double> q = Gather(state.q), u = Gather(state.u);
+    const JointValues q(state.q, joint_.coordinates), u(state.u, joint_.coordinates);
     const size_t n = q.size();
-    std::vector<double> qdot(n), q_plus(n), q_minus(n), a(n), c(n);
+    JointValues qdot(n), q_plus(n), q_minus(n), a(n), c(n);
     joint_.model->CalcQDot(q, u, qdot);
     double speed = 0.0;
-    for (double x : qdot) speed = std::max(speed, std::abs(x));
+    for (size_t k = 0; k < n; ++k) speed = std::max(speed, std::abs(qdot[k]));
     const double delta = 1e-5 / std::max(1.0, speed);
     for (size_t k = 0; k < n; ++k) {
       q_plus[k] = q[k] + delta * qdot[k];
@@ -206,11 +200,6 @@ class CoordinateMotionConstraint final : public Constraint {
   }
 
  private:
-  std::vector<double> Gather(const VecX& x) const {
-    std::vector<double> out;
-    for (int c : joint_.coordinates) out.push_back(x[c]);
-    return out;
-  }
   double Value(double t, int order) const {
     if (spec_.motion == CoordinateMotion::kPrescribed && spec_.prescribed) {
       return order == 0 ? spec_.prescribed->Calc(t) : spec_.prescribed->CalcDerivative(t, order);

@@ -112,13 +112,15 @@ void KktSolver::Factorize(const State& state) {
       if (columns_[k][j] >= 0) G_.block(extra_row_[k], columns_[k][j], J.rows(), 1) += J.col(j);
     }
   }
-  VecX column = VecX::Zero(nv_ + nc_tree_);
+  tree_rhs_.setZero(nv_ + nc_tree_);
   for (int i = 0; i < ne_; ++i) {
-    column.head(nv_) = G_.row(i).transpose();
-    Y_.col(i) = tree_->Solve(column);
+    tree_rhs_.head(nv_) = G_.row(i).transpose();
+    tree_->Solve(tree_rhs_, y_);
+    Y_.col(i) = y_;
   }
   schur_.setThreshold(kSchurThreshold);
   schur_.compute(G_ * Y_.topRows(nv_));
+  schur_inverse_ = schur_.pseudoInverse();
 }
 
 void KktSolver::GatherTreeRhs(const VecX& rhs, VecX& tree_rhs) const {
@@ -132,44 +134,68 @@ void KktSolver::GatherTreeRhs(const VecX& rhs, VecX& tree_rhs) const {
 }
 
 VecX KktSolver::Solve(const VecX& rhs) const {
-  VecX x(nv_ + nc_);
+  VecX x;
+  Solve(rhs, x);
+  return x;
+}
+
+void KktSolver::Solve(const VecX& rhs, VecX& x) const {
+  x.resize(nv_ + nc_);
   if (method_ == Method::kDense) {
     x = dense_.solve(rhs);
-  } else {
-    VecX tree_rhs;
-    GatherTreeRhs(rhs, tree_rhs);
-    VecX y = tree_->Solve(tree_rhs);
-    const auto& constraints = system_.constraints();
-    if (ne_ > 0) {
-      VecX g(ne_);
-      for (int k : extra_constraints_) {
-        const int n = constraints[k]->NumEquations();
-        g.segment(extra_row_[k], n) = rhs.segment(nv_ + row_[k], n);
-      }
-      const VecX mu = schur_.solve(G_ * y.head(nv_) - g);
-      y -= Y_ * mu;
-      for (int k : extra_constraints_) {
-        const int n = constraints[k]->NumEquations();
-        x.segment(nv_ + row_[k], n) = mu.segment(extra_row_[k], n);
-      }
-    }
-    x.head(nv_) = y.head(nv_);
-    for (int k : tree_constraints_) {
+    CheckResidual(rhs, x);
+    return;
+  }
+  GatherTreeRhs(rhs, tree_rhs_);
+  tree_->Solve(tree_rhs_, y_);
+  const auto& constraints = system_.constraints();
+  if (ne_ > 0) {
+    g_.resize(ne_);
+    for (int k : extra_constraints_) {
       const int n = constraints[k]->NumEquations();
-      x.segment(nv_ + row_[k], n) = y.segment(nv_ + tree_row_[k], n);
+      g_.segment(extra_row_[k], n) = -rhs.segment(nv_ + row_[k], n);
+    }
+    g_.noalias() += G_ * y_.head(nv_);
+    mu_.resize(ne_);
+    mu_.noalias() = schur_inverse_ * g_;
+    y_.noalias() -= Y_ * mu_;
+    for (int k : extra_constraints_) {
+      const int n = constraints[k]->NumEquations();
+      x.segment(nv_ + row_[k], n) = mu_.segment(extra_row_[k], n);
     }
   }
-  VecX residual(rhs.size());
-  residual.head(nv_) =
-      MultiplyMass(x.head(nv_)) + MultiplyJacobianTranspose(x.tail(nc_)) - rhs.head(nv_);
-  residual.tail(nc_) = MultiplyJacobian(x.head(nv_)) - rhs.tail(nc_);
+  x.head(nv_) = y_.head(nv_);
+  for (int k : tree_constraints_) {
+    const int n = constraints[k]->NumEquations();
+    x.segment(nv_ + row_[k], n) = y_.segment(nv_ + tree_row_[k], n);
+  }
+  CheckResidual(rhs, x);
+}
+
+void KktSolver::CheckResidual(const VecX& rhs, const VecX& x) const {
+  // [M x_v + J^T lambda - f; J x_v - g], accumulated in place.
+  residual_.resize(nv_ + nc_);
+  residual_ = -rhs;
+  for (int b = 1; b < system_.num_bodies(); ++b) {
+    residual_.segment<6>(BodyColumn(b)).noalias() += mass_[b] * x.segment<6>(BodyColumn(b));
+  }
+  for (size_t k = 0; k < jacobian_.size(); ++k) {
+    const MatX& J = jacobian_[k];
+    for (int j = 0; j < J.cols(); ++j) {
+      const int col = columns_[k][j];
+      if (col < 0) continue;
+      for (int i = 0; i < J.rows(); ++i) {
+        residual_[col] += J(i, j) * x[nv_ + row_[k] + i];
+        residual_[nv_ + row_[k] + i] += J(i, j) * x[col];
+      }
+    }
+  }
   const double scale = 1.0 + rhs.lpNorm<Eigen::Infinity>();
-  if (!x.allFinite() || residual.lpNorm<Eigen::Infinity>() > 1e-6 * scale) {
+  if (!x.allFinite() || residual_.lpNorm<Eigen::Infinity>() > 1e-6 * scale) {
     throw Error("engine: the equations of motion are singular or ill-conditioned (residual " +
-                std::to_string(residual.lpNorm<Eigen::Infinity>()) +
+                std::to_string(residual_.lpNorm<Eigen::Infinity>()) +
                 "); check for bodies without mass or inertia");
   }
-  return x;
 }
 
 VecX KktSolver::MultiplyMass(const VecX& x) const {
@@ -232,7 +258,8 @@ VecX GatherVelocities(const System& system, const KktSolver& kkt, const State& s
   return v;
 }
 
-void ScatterVelocities(const System& system, const KktSolver& kkt, const VecX& v, State& state) {
+void ScatterVelocities(const System& system, const KktSolver& kkt, Eigen::Ref<const VecX> v,
+                       State& state) {
   for (int b = 1; b < system.num_bodies(); ++b) {
     state.bodies[b].w_GB = v.segment<3>(kkt.BodyColumn(b));
     state.bodies[b].v_GB = v.segment<3>(kkt.BodyColumn(b) + 3);

@@ -51,8 +51,11 @@ class KktSolver {
 
   /// Evaluates M and J at `state` and factorizes. Throws sinew::Error when singular.
   void Factorize(const State& state);
-  /// Solves with the last factorization: rhs = [f; g] (nv + nc). Throws sinew::Error when the
-  /// solution is not accurate (singular system).
+  /// Solves with the last factorization: rhs = [f; g] (nv + nc), into x (resized; no heap use
+  /// once it has its size). Throws sinew::Error when the solution is not accurate (singular
+  /// system).
+  void Solve(const VecX& rhs, VecX& x) const;
+  /// Solve, returning the solution.
   VecX Solve(const VecX& rhs) const;
 
   /// The method in use.
@@ -72,6 +75,8 @@ class KktSolver {
  private:
   // Fills the tree solver's right-hand side [f; g_T] from a global one [f; g].
   void GatherTreeRhs(const VecX& rhs, VecX& tree_rhs) const;
+  // Throws unless x solves the system for rhs to 1e-6 (relative).
+  void CheckResidual(const VecX& rhs, const VecX& x) const;
 
   const System& system_;
   Method method_;
@@ -89,6 +94,9 @@ class KktSolver {
   int ne_ = 0;
   MatX G_, Y_;
   Eigen::CompleteOrthogonalDecomposition<MatX> schur_;
+  MatX schur_inverse_;  // the pseudo-inverse of S (ne x ne, small)
+  // Buffers of Solve, so that it allocates nothing.
+  mutable VecX tree_rhs_, y_, g_, mu_, residual_;
   // Dense method.
   Eigen::FullPivLU<MatX> dense_;
 };
@@ -96,6 +104,7 @@ class KktSolver {
 /// Packs the velocity unknowns of `state` (body twists, integrated speeds) in KKT order.
 VecX GatherVelocities(const System& system, const KktSolver& kkt, const State& state);
 /// Writes velocity unknowns back into `state` (body twists, integrated speeds).
-void ScatterVelocities(const System& system, const KktSolver& kkt, const VecX& v, State& state);
+void ScatterVelocities(const System& system, const KktSolver& kkt, Eigen::Ref<const VecX> v,
+                       State& state);
 
 }  // namespace sinew::engine

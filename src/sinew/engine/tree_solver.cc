@@ -115,12 +115,12 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
     }
     if (node.parent >= 0) {
       node.W = node.lu.solve(node.C);
-      nodes_[node.parent].K.topLeftCorner<6, 6>() -= node.C.transpose() * node.W;
+      nodes_[node.parent].K.topLeftCorner<6, 6>().noalias() -= node.C.transpose() * node.W;
     }
   }
 }
 
-VecX TreeKktSolver::Solve(const VecX& rhs) const {
+void TreeKktSolver::Solve(const VecX& rhs, VecX& x) const {
   std::vector<NodeVector>& r = scratch_;
   r.resize(nodes_.size());
   for (size_t k = 0; k < nodes_.size(); ++k) {
@@ -131,16 +131,15 @@ VecX TreeKktSolver::Solve(const VecX& rhs) const {
   for (size_t k = nodes_.size(); k-- > 0;) {
     r[k] = nodes_[k].lu.solve(r[k]);
     if (nodes_[k].parent >= 0) {
-      r[nodes_[k].parent].head<6>() -= nodes_[k].C.transpose() * r[k];
+      r[nodes_[k].parent].head<6>().noalias() -= nodes_[k].C.transpose() * r[k];
     }
   }
   // Backward: x_k = z_k - W_k x_parent.
-  VecX x(rhs.size());
+  x.resize(rhs.size());
   for (size_t k = 0; k < nodes_.size(); ++k) {
-    if (nodes_[k].parent >= 0) r[k] -= nodes_[k].W * r[nodes_[k].parent].head<6>();
+    if (nodes_[k].parent >= 0) r[k].noalias() -= nodes_[k].W * r[nodes_[k].parent].head<6>();
     for (size_t i = 0; i < nodes_[k].global.size(); ++i) x[nodes_[k].global[i]] = r[k][i];
   }
-  return x;
 }
 
 }  // namespace sinew::engine

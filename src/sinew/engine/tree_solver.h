@@ -33,8 +33,9 @@ class TreeKktSolver {
   /// Throws sinew::Error when a pivot block is singular.
   void Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& mass,
                  const std::vector<MatX>& jacobian);
-  /// Solves with the last factorization: rhs and result are [velocities; tree rows].
-  VecX Solve(const VecX& rhs) const;
+  /// Solves with the last factorization: rhs and x are [velocities; tree rows] (x is resized;
+  /// no heap use once it has its size).
+  void Solve(const VecX& rhs, VecX& x) const;
 
  private:
   struct Entry {
@@ -59,10 +60,10 @@ class TreeKktSolver {
     std::vector<int> global;  // global index of each local variable
     std::vector<int> constraints;
     std::vector<std::vector<Entry>> entries;  // per constraint: where its J entries go
-    MatX K;                                   // pivot block (n x n)
-    MatX C;                                   // coupling to the inboard body's twist (n x 6)
-    MatX W;                                   // K^-1 C
-    Eigen::PartialPivLU<MatX> lu;
+    NodeMatrix K;                             // pivot block (n x n)
+    NodeCoupling C;                           // coupling to the inboard body's twist (n x 6)
+    NodeCoupling W;                           // K^-1 C
+    Eigen::PartialPivLU<NodeMatrix> lu;
   };
   const System& system_;
   std::vector<Node> nodes_;  // in tree order (a node after its parent)

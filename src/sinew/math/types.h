@@ -14,7 +14,8 @@ using Vec6 = Eigen::Matrix<double, 6, 1>;
 using SpatialVec = Vec6;  ///< [angular; linear]
 using VecX = Eigen::VectorXd;
 using MatX = Eigen::MatrixXd;
-using Mat6X = Eigen::Matrix<double, 6, Eigen::Dynamic>;
+/// 6 x n with n <= 6 (a joint's H_FM): fixed capacity, so it never touches the heap.
+using Mat6X = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
 
 /// The matrix [v]x with [v]x * u = v x u.
 inline Mat3 Skew(const Vec3& v) {
