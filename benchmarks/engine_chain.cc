@@ -43,14 +43,18 @@ bool TimeSteps(benchmark::State& bench, Integrator& integrator, const State& sta
   return true;
 }
 
-void BM_ChainAccelerations(benchmark::State& bench) {
-  const System system = MakeChain(static_cast<int>(bench.range(0)), JointForm::kPin);
+// Times one acceleration evaluation of `system` from its default state.
+void TimeAccelerations(benchmark::State& bench, const System& system) {
   const State state = MakeDefaultState(system);
   Data data(system);
   for (auto _ : bench) {
     benchmark::DoNotOptimize(CalcAccelerations(system, state, nullptr, data));
   }
   bench.SetComplexityN(bench.range(0));
+}
+
+void BM_ChainAccelerations(benchmark::State& bench) {
+  TimeAccelerations(bench, MakeChain(static_cast<int>(bench.range(0)), JointForm::kPin));
 }
 BENCHMARK(BM_ChainAccelerations)
     ->Arg(10)
@@ -62,13 +66,8 @@ BENCHMARK(BM_ChainAccelerations)
 // The same with parameterized pins and 4 couplers (q[i] = 0.5 q[i + N/2]) solved by the
 // Schur complement beside the tree elimination: still linear in N.
 void BM_CoupledChainAccelerations(benchmark::State& bench) {
-  const System system = MakeChain(static_cast<int>(bench.range(0)), JointForm::kParameterized, 4);
-  const State state = MakeDefaultState(system);
-  Data data(system);
-  for (auto _ : bench) {
-    benchmark::DoNotOptimize(CalcAccelerations(system, state, nullptr, data));
-  }
-  bench.SetComplexityN(bench.range(0));
+  TimeAccelerations(bench,
+                    MakeChain(static_cast<int>(bench.range(0)), JointForm::kParameterized, 4));
 }
 BENCHMARK(BM_CoupledChainAccelerations)
     ->Arg(10)

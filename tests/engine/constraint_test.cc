@@ -33,7 +33,8 @@ constexpr double kM1 = 2.0, kM2 = 0.5, kRatio = 3.0;
 
 // Two bodies on sliders along ground x (1 m apart in y), gravity along -x, coupled by
 // x1 = 3 x2 through AddConstraint. Start: x2 = 0.1 m, u2 = 0.2 m/s (x1, u1 consistent).
-std::unique_ptr<System> MakeLever() {
+// With `levers` = 2 the same lever is added twice (a redundant constraint).
+std::unique_ptr<System> MakeLever(int levers = 1) {
   auto system = std::make_unique<System>(Vec3(-kG, 0, 0));
   const Mat3 I = 0.01 * Mat3::Identity();
   const int b1 = system->AddBody(MakeBody("b1", kM1, Vec3::Zero(), I));
@@ -43,7 +44,9 @@ std::unique_ptr<System> MakeLever() {
   system->AddJoint("s2", 0, Transform::Translation(Vec3(0, 1, 0)), b2, Transform(),
                    JointForm::kParameterized, std::make_shared<SliderModel>(),
                    {Coord("x2", 0.1, 0.2)});
-  system->AddConstraint(std::make_shared<LeverConstraint>(0, 1, kRatio));
+  for (int i = 0; i < levers; ++i) {
+    system->AddConstraint(std::make_shared<LeverConstraint>(0, 1, kRatio));
+  }
   system->Finalize();
   return system;
 }
@@ -143,18 +146,7 @@ TEST(AddConstraintTest, CouplersOnTheTreePathEqualTheDenseSolve) {
 TEST(AddConstraintTest, RedundantCouplerIsSolvable) {
   // The same lever twice: the Schur complement is singular, the multipliers split the load
   // (minimum norm), and the motion is that of one lever.
-  auto twice = std::make_unique<System>(Vec3(-kG, 0, 0));
-  const Mat3 I = 0.01 * Mat3::Identity();
-  const int b1 = twice->AddBody(MakeBody("b1", kM1, Vec3::Zero(), I));
-  const int b2 = twice->AddBody(MakeBody("b2", kM2, Vec3::Zero(), I));
-  twice->AddJoint("s1", 0, Transform(), b1, Transform(), JointForm::kParameterized,
-                  std::make_shared<SliderModel>(), {Coord("x1", kRatio * 0.1, kRatio * 0.2)});
-  twice->AddJoint("s2", 0, Transform::Translation(Vec3(0, 1, 0)), b2, Transform(),
-                  JointForm::kParameterized, std::make_shared<SliderModel>(),
-                  {Coord("x2", 0.1, 0.2)});
-  twice->AddConstraint(std::make_shared<LeverConstraint>(0, 1, kRatio));
-  twice->AddConstraint(std::make_shared<LeverConstraint>(0, 1, kRatio));
-  twice->Finalize();
+  const auto twice = MakeLever(2);
   const auto once = MakeLever();
   State s2 = MakeDefaultState(*twice), s1 = MakeDefaultState(*once);
   Data d2(*twice), d1(*once);
