@@ -2,7 +2,9 @@
 #include <sinew/engine/direct_joint.h>
 #include <sinew/engine/joint_constraints.h>
 #include <sinew/engine/system.h>
+#include <sinew/kinematics/joint_tree_order.h>
 
+#include <array>
 #include <cmath>
 #include <set>
 #include <string>
@@ -105,37 +107,17 @@ int System::AddForceElement(std::shared_ptr<const ForceElement> force) {
 void System::Finalize() {
   RequireNotFinalized();
   // Tree: walking the joints outward from ground places every body exactly once. A joint whose
-  // child is nearer to ground is used reversed (the constraint itself is the same).
-  joint_of_body_.assign(bodies_.size(), -1);
-  reversed_.assign(joints_.size(), false);
-  loop_.assign(joints_.size(), false);
-  tree_order_.clear();
-  std::vector<bool> placed_body(bodies_.size(), false);
-  placed_body[0] = true;
-  std::vector<bool> placed(joints_.size(), false);
-  for (bool progress = true; progress;) {
-    progress = false;
-    for (size_t j = 0; j < joints_.size(); ++j) {
-      if (placed[j]) continue;
-      const Joint& joint = joints_[j];
-      if (placed_body[joint.parent] && placed_body[joint.child]) {
-        // Both bodies are already placed: this joint closes a loop. It stays a constraint
-        // (solved with the others) but places no body.
-        loop_[j] = true;
-        placed[j] = true;
-        progress = true;
-        continue;
-      }
-      if (!placed_body[joint.parent] && !placed_body[joint.child]) continue;
-      reversed_[j] = placed_body[joint.child];
-      const int outboard = reversed_[j] ? joint.parent : joint.child;
-      placed_body[outboard] = true;
-      joint_of_body_[outboard] = static_cast<int>(j);
-      placed[j] = true;
-      tree_order_.push_back(static_cast<int>(j));
-      progress = true;
-    }
-  }
+  // child is nearer to ground is used reversed (the constraint itself is the same); a joint
+  // between two bodies placed by others closes a loop: it stays a constraint (solved with the
+  // others) but places no body.
+  std::vector<std::array<int, 2>> bodies_of_joint;
+  for (const Joint& joint : joints_) bodies_of_joint.push_back({joint.parent, joint.child});
+  kinematics::JointTreeOrder order = kinematics::OrderJointTree(num_bodies(), bodies_of_joint);
+  tree_order_ = std::move(order.order);
+  reversed_ = std::move(order.reversed);
+  loop_ = std::move(order.loop);
+  joint_of_body_ = std::move(order.joint_of_body);
+  const std::vector<bool>& placed_body = order.placed;
   bool any_mass = false;
   for (int b = 1; b < num_bodies(); ++b) {
     if (!placed_body[b]) {
@@ -143,9 +125,7 @@ void System::Finalize() {
     }
     any_mass = any_mass || bodies_[b].mass > 0.0;
   }
-  for (size_t j = 0; j < joints_.size(); ++j) {
-    if (!placed[j]) throw Error({}, joints_[j].name, "joint is not connected to ground");
-  }
+  // With every body placed, every joint either placed one or closes a loop.
   if (num_bodies() > 1 && !any_mass) {
     throw Error(
         "every body has zero mass: forward dynamics is singular (a kinematics-only "

@@ -1,7 +1,10 @@
 #include <sinew/common/error.h>
+#include <sinew/kinematics/joint_tree_order.h>
 #include <sinew/kinematics/kinematic_tree.h>
 
+#include <array>
 #include <string>
+#include <vector>
 
 namespace sinew::kinematics {
 
@@ -32,45 +35,36 @@ KinematicTree::KinematicTree(const model::ModelSpec& spec)
       throw Error(joint.where, component, "more than 6 coordinates");
   }
 
-  // Place bodies outward from ground: a joint with exactly one placed body places the other.
-  std::vector<bool> placed(num_bodies_, false), used(num_joints, false);
-  placed[model::kGroundIndex] = true;
-  bool progress = true;
-  while (progress) {
-    progress = false;
-    for (int j = 0; j < num_joints; ++j) {
-      if (used[j]) continue;
-      const model::JointSpec& joint = spec.joints[j];
-      const bool parent_placed = placed[joint.parent_body];
-      const bool child_placed = placed[joint.child_body];
-      if (parent_placed == child_placed) continue;
-      TreeJoint t;
-      t.joint = j;
-      t.reversed = child_placed;
-      t.inboard = t.reversed ? joint.child_body : joint.parent_body;
-      t.outboard = t.reversed ? joint.parent_body : joint.child_body;
-      t.X_IJ = t.reversed ? joint.X_BM : joint.X_PF;
-      t.X_JO = t.reversed ? joint.X_PF.Inverse() : joint.X_BM.Inverse();
-      t.nq = static_cast<int>(joint.coordinates.size());
-      for (int k = 0; k < t.nq; ++k) t.q_index[k] = joint.coordinates[k];
-      t.model = MakeJointModel(spec, j);
-      if (t.model->nq() != t.nq) {
-        throw Error(joint.where, joint.path, "joint model and spec disagree on coordinates");
-      }
-      placed[t.outboard] = true;
-      used[j] = true;
-      joints_.push_back(std::move(t));
-      progress = true;
+  // Place bodies outward from ground (OrderJointTree), then make each placing joint's model.
+  std::vector<std::array<int, 2>> bodies_of_joint;
+  for (const model::JointSpec& joint : spec.joints) {
+    bodies_of_joint.push_back({joint.parent_body, joint.child_body});
+  }
+  const JointTreeOrder order = OrderJointTree(num_bodies_, bodies_of_joint);
+  for (int j : order.order) {
+    const model::JointSpec& joint = spec.joints[j];
+    TreeJoint t;
+    t.joint = j;
+    t.reversed = order.reversed[j];
+    t.inboard = t.reversed ? joint.child_body : joint.parent_body;
+    t.outboard = t.reversed ? joint.parent_body : joint.child_body;
+    t.X_IJ = t.reversed ? joint.X_BM : joint.X_PF;
+    t.X_JO = t.reversed ? joint.X_PF.Inverse() : joint.X_BM.Inverse();
+    t.nq = static_cast<int>(joint.coordinates.size());
+    for (int k = 0; k < t.nq; ++k) t.q_index[k] = joint.coordinates[k];
+    t.model = MakeJointModel(spec, j);
+    if (t.model->nq() != t.nq) {
+      throw Error(joint.where, joint.path, "joint model and spec disagree on coordinates");
     }
+    joints_.push_back(std::move(t));
   }
   for (int j = 0; j < num_joints; ++j) {
-    if (used[j]) continue;
-    const model::JointSpec& joint = spec.joints[j];
-    if (placed[joint.parent_body] && placed[joint.child_body]) {
+    if (order.loop[j]) {
       MakeJointModel(spec, j);  // still a joint Sinew must be able to model
       loop_joints_.push_back(j);
     }
   }
+  const std::vector<bool>& placed = order.placed;
   for (int b = 0; b < num_bodies_; ++b) {
     if (!placed[b]) {
       const model::BodySpec& body = spec.bodies[b];
