@@ -44,8 +44,19 @@ void ReadConstraints(ReadContext& ctx, const pugi::xml_node& model) {
     for (const char* tag : {"dependent_coordinate_name", "independent_coordinate_names"}) {
       pugi::xml_node names = node.child(tag);
       std::istringstream list(names ? std::string(XmlDocument::Text(names)) : std::string());
+      const bool dependent = std::string_view(tag) == "dependent_coordinate_name";
       std::string name;
-      while (list >> name) ResolveCoordinateName(ctx, names, name, c.path);
+      while (list >> name) {
+        const int coordinate = ResolveCoordinateName(ctx, names, name, c.path);
+        if (dependent) {
+          c.dependent_coordinate = coordinate;
+        } else {
+          c.independent_coordinates.push_back(coordinate);
+        }
+      }
+    }
+    if (c.type == "CoordinateCouplerConstraint") {
+      c.function = ReadFunctionProperty(doc, node, "coupled_coordinates_function", c.path);
     }
     c.element = ToElement(doc, node);
     c.where = doc.Where(node);

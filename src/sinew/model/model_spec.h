@@ -182,6 +182,12 @@ struct ConstraintSpec {
   std::string path;
   std::string type;
   bool enabled = true;
+  /// CoordinateCouplerConstraint: the coordinates of independent_coordinate_names and
+  /// dependent_coordinate_name (indices into ModelSpec::coordinates; empty / kNone for other
+  /// types) and coupled_coordinates_function (null when absent or for other types).
+  std::vector<int> independent_coordinates;
+  int dependent_coordinate = kNone;
+  functions::FunctionPtr function;
   Element element;
   SourceLocation where;
 };

@@ -1,5 +1,7 @@
 #include <sinew/kinematics/joint_model.h>
 #include <sinew/opensim/build_system.h>
+#include <sinew/opensim/internal/constraint_registry.h>
+#include <sinew/opensim/support.h>
 
 #include <cmath>
 #include <string>
@@ -28,6 +30,17 @@ void Note(Diagnostics* notes, const SourceLocation& where, const std::string& co
   if (notes) notes->push_back({where, component, message});
 }
 
+// Per spec coordinate: whether a simulated constraint uses its speed (then its joint must be
+// parameterized: the engine refuses constraints on coordinates of direct joints).
+std::vector<bool> ConstrainedCoordinates(const model::ModelSpec& spec) {
+  std::vector<bool> used(spec.coordinates.size(), false);
+  for (const model::ConstraintSpec& c : spec.constraints) {
+    if (!IsConstraintSimulated(c)) continue;
+    for (int k : internal::FindConstraintType(c.type)->coordinates(c)) used[k] = true;
+  }
+  return used;
+}
+
 }  // namespace
 
 SpecToSystem BuildInto(const model::ModelSpec& spec, engine::System& system,
@@ -52,11 +65,13 @@ SpecToSystem BuildInto(const model::ModelSpec& spec, engine::System& system,
       throw Error(body.where, body.path, error.message());
     }
   }
+  const std::vector<bool> coupled = ConstrainedCoordinates(spec);
   for (size_t j = 0; j < spec.joints.size(); ++j) {
     const model::JointSpec& joint = spec.joints[j];
     std::vector<engine::CoordinateDesc> coordinates;
     bool constrained_coordinate = false;
     for (int c : joint.coordinates) {
+      constrained_coordinate = constrained_coordinate || coupled[c];
       const model::CoordinateSpec& cs = spec.coordinates[c];
       engine::CoordinateDesc d;
       d.name = cs.name;

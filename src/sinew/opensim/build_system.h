@@ -15,7 +15,8 @@ namespace sinew::opensim {
 struct BuildOptions {
   /// Impose PinJoint, BallJoint, UniversalJoint and WeldJoint with their direct Cartesian
   /// constraints (no joint unknowns); otherwise every joint uses the exact coordinate-
-  /// parameterized form. Joints with locked or prescribed coordinates always use the latter.
+  /// parameterized form. Joints with locked or prescribed coordinates, or with coordinates a
+  /// simulated constraint uses (a CoordinateCouplerConstraint), always use the latter.
   bool direct_joints = true;
 };
 

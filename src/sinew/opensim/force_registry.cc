@@ -1,4 +1,7 @@
 #include <sinew/forces/actuator.h>
+#include <sinew/forces/coordinate_limit_force.h>
+#include <sinew/forces/point_to_point_spring.h>
+#include <sinew/forces/spring_generalized_force.h>
 #include <sinew/model/element_values.h>
 #include <sinew/opensim/internal/force_registry.h>
 
@@ -60,14 +63,58 @@ std::shared_ptr<forces::Actuator> MakeTorqueActuator(const ForceBuildInput& in) 
       MapBody(spec, v, body_b, body_map, "bodyB"), axis, v.Bool("torque_is_global", true));
 }
 
-std::shared_ptr<forces::Actuator> MakeCoordinateActuator(const ForceBuildInput& in) {
+// The spec index of the coordinate a force names in `coordinate` (3.x and 4.x) or
+// `socket_coordinate`; fails when it is not in the model or not simulated.
+int SpecCoordinate(const ForceBuildInput& in) {
   const model::ElementValues& v = in.values;
   const std::string name =
       LastPathSegment(v.FirstString({"coordinate", "socket_coordinate"}).value_or(""));
   const int c = in.spec.FindCoordinate(name);
   if (c == model::kNone) v.Fail("coordinate '" + name + "' is not a coordinate of the model");
-  return std::make_shared<forces::CoordinateActuator>(in.force.name, v.Double("optimal_force", 1.0),
-                                                      in.coordinate_map[c]);
+  if (in.coordinate_map[c] == model::kNone)
+    v.Fail("coordinate '" + name + "' belongs to no simulated joint");
+  return c;
+}
+
+std::shared_ptr<forces::Actuator> MakeCoordinateActuator(const ForceBuildInput& in) {
+  return std::make_shared<forces::CoordinateActuator>(
+      in.force.name, in.values.Double("optimal_force", 1.0), in.coordinate_map[SpecCoordinate(in)]);
+}
+
+std::shared_ptr<engine::ForceElement> BuildSpringGeneralizedForce(const ForceBuildInput& in) {
+  const model::ElementValues& v = in.values;
+  return std::make_shared<forces::SpringGeneralizedForce>(
+      in.force.name, in.coordinate_map[SpecCoordinate(in)], v.Double("stiffness", 0.0),
+      v.Double("rest_length", 0.0), v.Double("viscosity", 0.0));
+}
+
+std::shared_ptr<engine::ForceElement> BuildPointToPointSpring(const ForceBuildInput& in) {
+  const model::ElementValues& v = in.values;
+  const std::string body1 = v.FirstString({"socket_body1", "body1"}).value_or("");
+  const std::string body2 = v.FirstString({"socket_body2", "body2"}).value_or("");
+  return std::make_shared<forces::PointToPointSpring>(
+      in.force.name, MapBody(in.spec, v, body1, in.body_map, "body1"),
+      v.Vector3("point1", Vec3::Zero()), MapBody(in.spec, v, body2, in.body_map, "body2"),
+      v.Vector3("point2", Vec3::Zero()), v.Double("stiffness", 1.0), v.Double("rest_length", 0.0));
+}
+
+std::shared_ptr<engine::ForceElement> BuildCoordinateLimitForce(const ForceBuildInput& in) {
+  const model::ElementValues& v = in.values;
+  const int c = SpecCoordinate(in);
+  forces::CoordinateLimitParameters p;
+  p.upper_stiffness = v.Double("upper_stiffness", p.upper_stiffness);
+  p.upper_limit = v.Double("upper_limit", p.upper_limit);
+  p.lower_stiffness = v.Double("lower_stiffness", p.lower_stiffness);
+  p.lower_limit = v.Double("lower_limit", p.lower_limit);
+  p.damping = v.Double("damping", p.damping);
+  p.transition = v.Double("transition", p.transition);
+  const bool rotational = in.spec.coordinates[c].motion_type == model::MotionType::kRotational;
+  try {
+    return std::make_shared<forces::CoordinateLimitForce>(in.force.name, in.coordinate_map[c],
+                                                          rotational, p);
+  } catch (const Error& error) {
+    v.Fail(error.message());
+  }
 }
 
 // OpenSim's min_control / max_control, kept on the actuator for reporting.
@@ -87,6 +134,9 @@ const ForceType* FindForceType(const std::string& opensim_class) {
       {"PointActuator", {&BuildActuator<MakePointActuator>, true}},
       {"TorqueActuator", {&BuildActuator<MakeTorqueActuator>, true}},
       {"CoordinateActuator", {&BuildActuator<MakeCoordinateActuator>, true}},
+      {"CoordinateLimitForce", {&BuildCoordinateLimitForce, false}},
+      {"PointToPointSpring", {&BuildPointToPointSpring, false}},
+      {"SpringGeneralizedForce", {&BuildSpringGeneralizedForce, false}},
   };
   const auto it = registry.find(opensim_class);
   return it == registry.end() ? nullptr : &it->second;

@@ -3,6 +3,7 @@
 #include <sinew/io/read_controls.h>
 #include <sinew/kinematics/body_depths.h>
 #include <sinew/opensim/build_system.h>
+#include <sinew/opensim/internal/constraint_registry.h>
 #include <sinew/opensim/internal/force_registry.h>
 #include <sinew/opensim/parser.h>
 #include <sinew/opensim/support.h>
@@ -85,6 +86,7 @@ void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
     report_.AddJoint({ReportName(built.joints[j].path, built.joints[j].name), built.joints[j].type,
                       engine_joint, system.joints()[engine_joint].form, standin[j]});
   }
+  BuildConstraints(system, map.bodies, map.coordinates);
   BuildForces(system, map.bodies, map.coordinates);
   AssignExcitations();
   for (std::string& line : ListNotSimulated(spec_)) report_.AddNotSimulated(std::move(line));
@@ -102,6 +104,19 @@ void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
   }
   if (verbose_) report_.Print(std::cerr);
   CheckStrict();
+}
+
+void OpenSimParser::BuildConstraints(engine::System& system, const std::vector<int>& body_map,
+                                     const std::vector<int>& coordinate_map) {
+  for (const model::ConstraintSpec& constraint : spec_.constraints) {
+    ConstraintInfo info{ReportName(constraint.path, constraint.name), constraint.type, nullptr};
+    if (IsConstraintSimulated(constraint)) {
+      auto built = internal::BuildConstraint(spec_, constraint, body_map, coordinate_map);
+      system.AddConstraint(built);
+      info.constraint = std::move(built);
+    }
+    report_.AddConstraint(std::move(info));
+  }
 }
 
 void OpenSimParser::BuildForces(engine::System& system, const std::vector<int>& body_map,

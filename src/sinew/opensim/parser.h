@@ -85,6 +85,8 @@ class OpenSimParser {
   ContactMethod GetContactMethod() const { return contact_method_; }
 
  private:
+  void BuildConstraints(engine::System& system, const std::vector<int>& body_map,
+                        const std::vector<int>& coordinate_map);
   void BuildForces(engine::System& system, const std::vector<int>& body_map,
                    const std::vector<int>& coordinate_map);
   void AssignExcitations();

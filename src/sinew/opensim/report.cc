@@ -36,10 +36,16 @@ std::string Report::AddJoint(JointInfo info) {
 std::string Report::AddForce(ForceInfo info) {
   return AddUnique(forces_, std::move(info), "force", warnings_);
 }
+std::string Report::AddConstraint(ConstraintInfo info) {
+  return AddUnique(constraints_, std::move(info), "constraint", warnings_);
+}
 
 const BodyInfo* Report::GetBody(const std::string& name) const { return Find(bodies_, name); }
 const JointInfo* Report::GetJoint(const std::string& name) const { return Find(joints_, name); }
 const ForceInfo* Report::GetForce(const std::string& name) const { return Find(forces_, name); }
+const ConstraintInfo* Report::GetConstraint(const std::string& name) const {
+  return Find(constraints_, name);
+}
 
 ForceInfo* Report::MutableForce(const std::string& name) {
   auto it = forces_.find(name);
@@ -78,6 +84,11 @@ void Report::Print(std::ostream& out) const {
         << (info.load ? "simulated" : "not simulated");
     if (info.actuator) out << ", excitation: " << info.excitation_source;
     out << "\n";
+  }
+  if (!constraints_.empty()) out << "Constraints (" << constraints_.size() << ")\n";
+  for (const auto& [key, info] : constraints_) {
+    out << "  " << std::left << std::setw(27) << key << " " << std::setw(21) << info.type << " "
+        << (info.constraint ? "simulated" : "not simulated") << "\n";
   }
   if (!not_simulated_.empty()) {
     out << "Not simulated (" << not_simulated_.size() << ")\n";

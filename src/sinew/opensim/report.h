@@ -1,5 +1,6 @@
 // The Report of the OpenSim parser (the seed's ChParserOpenSim::Report): what was built for
-// every body, joint and force of the file, by name, and every decision worth knowing.
+// every body, joint, force and constraint of the
+// file, by name, and every decision worth knowing.
 #pragma once
 
 #include <sinew/common/error.h>
@@ -48,6 +49,15 @@ struct ForceInfo {
   std::string excitation_source;
 };
 
+/// A constraint read from the file and what was made of it.
+struct ConstraintInfo {
+  std::string name;  ///< The name in the file.
+  std::string type;  ///< The OpenSim class, as written in the file.
+  /// The engine constraint made for it; null when the type is not simulated (yet) or the
+  /// constraint is not enforced (isEnforced false).
+  std::shared_ptr<const engine::Constraint> constraint;
+};
+
 /// Everything one Parse call built, by name. A name repeated within a kind (chrono's
 /// newton_cradle.osim names five joints `sph1`) is reported under the unique path name the
 /// reader gave it (`sph1`, `sph1_2`, ... with a warning from the reader); should two entries
@@ -61,10 +71,12 @@ class Report {
   const BodyInfo* GetBody(const std::string& name) const;
   const JointInfo* GetJoint(const std::string& name) const;
   const ForceInfo* GetForce(const std::string& name) const;
+  const ConstraintInfo* GetConstraint(const std::string& name) const;
 
   const std::map<std::string, BodyInfo>& bodies() const { return bodies_; }
   const std::map<std::string, JointInfo>& joints() const { return joints_; }
   const std::map<std::string, ForceInfo>& forces() const { return forces_; }
+  const std::map<std::string, ConstraintInfo>& constraints() const { return constraints_; }
   /// Approximations, substitutions, renamed duplicates, ignored elements.
   const Diagnostics& warnings() const { return warnings_; }
   /// Elements read from the file that the simulation does not include.
@@ -74,6 +86,7 @@ class Report {
   std::string AddBody(BodyInfo info);
   std::string AddJoint(JointInfo info);
   std::string AddForce(ForceInfo info);
+  std::string AddConstraint(ConstraintInfo info);
   ForceInfo* MutableForce(const std::string& name);
   void AddWarning(Diagnostic warning) { warnings_.push_back(std::move(warning)); }
   void AddNotSimulated(std::string what) { not_simulated_.push_back(std::move(what)); }
@@ -82,6 +95,7 @@ class Report {
   std::map<std::string, BodyInfo> bodies_;
   std::map<std::string, JointInfo> joints_;
   std::map<std::string, ForceInfo> forces_;
+  std::map<std::string, ConstraintInfo> constraints_;
   Diagnostics warnings_;
   std::vector<std::string> not_simulated_;
 };

@@ -1,4 +1,5 @@
 #include <sinew/kinematics/joint_model.h>
+#include <sinew/opensim/internal/constraint_registry.h>
 #include <sinew/opensim/internal/force_registry.h>
 #include <sinew/opensim/support.h>
 
@@ -12,7 +13,9 @@ bool IsJointSimulated(const model::JointSpec& joint) {
 bool IsForceSimulated(const model::ForceSpec& force) {
   return force.applies_force && internal::FindForceType(force.type) != nullptr;
 }
-bool IsConstraintSimulated(const model::ConstraintSpec& /*constraint*/) { return false; }
+bool IsConstraintSimulated(const model::ConstraintSpec& constraint) {
+  return constraint.enabled && internal::FindConstraintType(constraint.type) != nullptr;
+}
 bool IsControllerSimulated(const model::ControllerSpec& controller) {
   return controller.type == "PrescribedController";
 }

@@ -15,7 +15,8 @@ namespace sinew::opensim {
 bool IsJointSimulated(const model::JointSpec& joint);
 /// True if the engine simulates this force (its class is in the force registry and it is on).
 bool IsForceSimulated(const model::ForceSpec& force);
-/// True if the engine enforces constraints of this OpenSim class (none yet).
+/// True if the engine enforces this constraint (its class is in the constraint registry, e.g.
+/// CoordinateCouplerConstraint, and it is enforced).
 bool IsConstraintSimulated(const model::ConstraintSpec& constraint);
 /// True if the engine runs controllers of this OpenSim class (PrescribedController).
 bool IsControllerSimulated(const model::ControllerSpec& controller);

@@ -1,0 +1,52 @@
+#include <sinew/engine/loads.h>
+#include <sinew/engine/pose.h>
+#include <sinew/engine/state.h>
+#include <sinew/forces/point_to_point_spring.h>
+
+#include <utility>
+
+namespace sinew::forces {
+
+PointToPointSpring::PointToPointSpring(std::string name, int body1, const Vec3& point1, int body2,
+                                       const Vec3& point2, double stiffness, double rest_length)
+    : name_(std::move(name)),
+      body1_(body1),
+      body2_(body2),
+      point1_(point1),
+      point2_(point2),
+      stiffness_(stiffness),
+      rest_length_(rest_length) {}
+
+namespace {
+// The vector from point1 to point2, in G.
+Vec3 Span(const engine::State& s, int b1, const Vec3& p1, int b2, const Vec3& p2) {
+  return engine::PoseOf(s.bodies[b2]) * p2 - engine::PoseOf(s.bodies[b1]) * p1;
+}
+}  // namespace
+
+double PointToPointSpring::CalcLength(const engine::ForceContext& context) const {
+  return Span(context.state, body1_, point1_, body2_, point2_).norm();
+}
+
+void PointToPointSpring::AddLoads(const engine::ForceContext& context, engine::Loads& loads) const {
+  const Vec3 r = Span(context.state, body1_, point1_, body2_, point2_);
+  const double d = r.norm();
+  if (!(d > 0.0)) return;
+  const Vec3 f_G = stiffness_ * (d - rest_length_) / d * r;
+  loads.AddForceAtPoint(context.state, body1_, point1_, f_G);
+  loads.AddForceAtPoint(context.state, body2_, point2_, -f_G);
+}
+
+std::optional<engine::ForceSupport> PointToPointSpring::Support() const {
+  engine::ForceSupport support;
+  if (body1_ != 0) support.bodies.push_back(body1_);
+  if (body2_ != 0 && body2_ != body1_) support.bodies.push_back(body2_);
+  return support;
+}
+
+double PointToPointSpring::CalcPotentialEnergy(const engine::ForceContext& context) const {
+  const double stretch = CalcLength(context) - rest_length_;
+  return 0.5 * stiffness_ * stretch * stretch;
+}
+
+}  // namespace sinew::forces
