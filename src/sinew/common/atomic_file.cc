@@ -1,0 +1,77 @@
+#include <fcntl.h>
+#include <sinew/common/atomic_file.h>
+#include <sinew/common/error.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+namespace sinew {
+namespace {
+
+[[noreturn]] void Fail(const std::string& path, const std::string& what, int error) {
+  throw Error(SourceLocation{path, 0}, "",
+              "cannot write the file: " + what +
+                  (error ? ": " + std::string(std::strerror(error)) : std::string()));
+}
+
+// Creates a new, empty temporary file beside `path` (O_EXCL: never an existing file or link)
+// with the permissions an ordinary new file gets (0666 less the umask). Returns its name.
+std::string CreateTemporary(const std::string& path) {
+  static std::atomic<unsigned> counter{0};
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const std::string name =
+        path + ".tmp." + std::to_string(getpid()) + "." + std::to_string(counter++);
+    const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+      ::close(fd);
+      return name;
+    }
+    if (errno != EEXIST) Fail(path, "cannot create a temporary file beside it", errno);
+  }
+  Fail(path, "cannot find a free temporary file name beside it", 0);
+}
+
+// Flushes the file's data to the disk, so that a crash after the rename cannot leave an empty
+// or partial file under the final name.
+void Sync(const std::string& temporary, const std::string& path) {
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) Fail(path, "cannot reopen the temporary file", errno);
+  const bool synced = ::fsync(fd) == 0;
+  const int error = errno;
+  if (::close(fd) != 0 || !synced) Fail(path, "cannot sync the temporary file", error);
+}
+
+}  // namespace
+
+void WriteFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  if (path.empty()) throw Error("cannot write a file with an empty name");
+  const std::string temporary = CreateTemporary(path);
+  try {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) Fail(path, "cannot open the temporary file " + temporary, errno);
+    write(out);
+    out.flush();
+    if (!out) Fail(path, "the data could not all be written (disk full?)", errno);
+    out.close();
+    if (out.fail()) Fail(path, "the data could not all be written (disk full?)", errno);
+    Sync(temporary, path);
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+      Fail(path, "cannot rename the temporary file to it", errno);
+    }
+  } catch (...) {
+    std::remove(temporary.c_str());
+    throw;
+  }
+}
+
+void WriteFileAtomically(const std::string& path, std::string_view bytes) {
+  WriteFileAtomically(path, [bytes](std::ostream& out) {
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  });
+}
+
+}  // namespace sinew
