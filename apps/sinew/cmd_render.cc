@@ -14,6 +14,7 @@
 
 #include "apps/sinew/commands.h"
 #include "apps/sinew/notices.h"
+#include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
 
@@ -38,6 +39,7 @@ struct RenderArgs {
 
 void RunRender(const RenderArgs& args) {
   RequireExtension(args.out, ".png", "PNG");
+  PrepareOutputFile(args.out);
   model::ModelSpec spec = io::ReadOsim(args.model);
   UseStandIns(spec, args.model);
   viz::VisualOptions visual;
@@ -62,7 +64,6 @@ void RunRender(const RenderArgs& args) {
   const viz::Camera camera =
       viz::FrameCamera(viz::SceneBounds(scene, X_GB), viz::ParseViewDirection(args.view),
                        static_cast<double>(args.width) / args.height);
-  CreateParentFolder(args.out);
   viz::WriteFileBytes(args.out, viz::EncodePng(viz::RenderScene(scene, X_GB, camera, options)));
   std::cout << "wrote " << args.out << " (" << args.width << "x" << args.height << ")\n";
 }
@@ -77,8 +78,9 @@ void AddRenderCommand(CLI::App& app) {
   auto* states = cmd->add_option("--states", args->states, "States over time (.sto)");
   motion->excludes(states);
   cmd->add_option_function<double>(
-      "--time", [args](double t) { args->time = t, args->has_time = true; },
-      "Time (s) in the table to show (default: its first row)");
+         "--time", [args](double t) { args->time = t, args->has_time = true; },
+         "Time (s) in the table to show (default: its first row)")
+      ->check(FiniteNumber());
   cmd->add_option("--vis", args->vis, "Visualization: primitives, mesh or none")
       ->check(CLI::IsMember({"primitives", "mesh", "none"}));
   cmd->add_option("--view", args->view, "Camera: iso, front, back, right, left or top")

@@ -28,6 +28,7 @@
 #include "apps/sinew/commands.h"
 #include "apps/sinew/excitation_option.h"
 #include "apps/sinew/notices.h"
+#include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
 
@@ -94,8 +95,13 @@ void ShowProgress(double fraction, double t) {
 }
 
 void RunSimulate(const SimulateOptions& options) {
-  if (!(options.duration >= 0.0)) throw Error("--duration must be >= 0");
-  if (!(options.report_interval > 0.0)) throw Error("--report-interval must be > 0");
+  // Before any work: a run of absurd size, or outputs that cannot be written, is a usage error.
+  CheckSimulationSize(options.duration, options.report_interval, options.step);
+  PrepareOutputFolder(options.out);
+  if (!options.export_file.empty()) {
+    viz::ExportFormatOf(options.export_file);
+    PrepareOutputFile(options.export_file, "--export");
+  }
   model::ModelSpec spec = io::ReadOsim(options.model);
   double t0 = 0.0;
   if (!options.initial_states.empty()) {
@@ -193,13 +199,18 @@ void AddSimulateCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Forward simulation of a model (skeleton and ideal actuators)");
   cmd->add_option("model", options->model, "The .osim file")->required();
-  cmd->add_option("--duration", options->duration, "Simulated time (s)")->required();
-  cmd->add_option("--accuracy", options->accuracy, "Integrator accuracy (default 1e-6)");
+  cmd->add_option("--duration", options->duration, "Simulated time (s)")
+      ->required()
+      ->check(FiniteNumber(0.0));
+  cmd->add_option("--accuracy", options->accuracy, "Integrator accuracy (default 1e-6)")
+      ->check(FiniteNumber(0.0, true));
   cmd->add_option("--integrator", options->integrator,
                   "rk45 (error-controlled, default), euler or implicit-euler (fixed step)");
-  cmd->add_option("--step", options->step, "Fixed step for euler; largest step for rk45 (s)");
+  cmd->add_option("--step", options->step, "Fixed step for euler; largest step for rk45 (s)")
+      ->check(FiniteNumber(0.0));
   cmd->add_option("--report-interval", options->report_interval,
-                  "Time between output rows (s, default 0.01)");
+                  "Time between output rows (s, default 0.01)")
+      ->check(FiniteNumber(0.0, true));
   cmd->add_option("--initial-states", options->initial_states,
                   "Storage file whose first row gives the initial coordinates and speeds");
   cmd->add_option("--out", options->out, "Output folder")->required();
