@@ -39,6 +39,7 @@ struct RenderArgs {
 
 void RunRender(const RenderArgs& args) {
   RequireExtension(args.out, ".png", "PNG");
+  viz::CheckRenderSize(args.width, args.height);
   PrepareOutputFile(args.out);
   model::ModelSpec spec = io::ReadOsim(args.model);
   UseStandIns(spec, args.model);
@@ -85,7 +86,9 @@ void AddRenderCommand(CLI::App& app) {
       ->check(CLI::IsMember({"primitives", "mesh", "none"}));
   cmd->add_option("--view", args->view, "Camera: iso, front, back, right, left or top")
       ->check(CLI::IsMember({"iso", "front", "back", "right", "left", "top"}));
-  cmd->add_option("--width", args->width, "Image width (pixels)")->check(CLI::Range(1, 8192));
+  cmd->add_option("--width", args->width,
+                  "Image width (pixels; at most 8192, and about 9 million pixels in all)")
+      ->check(CLI::Range(1, 8192));
   cmd->add_option("--height", args->height, "Image height (pixels)")->check(CLI::Range(1, 8192));
   cmd->add_option("--geometry-dir", args->geometry_dirs,
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");

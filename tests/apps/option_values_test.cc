@@ -72,6 +72,12 @@ TEST_F(OptionValuesTest, RenderTimeAndExportFpsMustBeFinite) {
                 "--fps: expects a finite number >= 0, not 'inf'");
 }
 
+TEST_F(OptionValuesTest, RenderRefusesAnImageTooLargeForMemoryUpFront) {
+  ExpectRefused("render", "--width 8192 --height 8192 --out " + Path("big.png"),
+                "render: a 8192 x 8192 image needs 7360 MiB of frame buffers");
+  EXPECT_FALSE(std::filesystem::exists(dir() / "big.png"));
+}
+
 TEST_F(OptionValuesTest, AnOrdinaryRunIsAccepted) {
   const CliRun run =
       Run("simulate " + kModel + " --duration 0.02 --step 1e-3 --quiet --out " + Path("out"));
