@@ -74,7 +74,9 @@ void AddExportCommand(CLI::App& app) {
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
   cmd->add_option("--fps", args->fps, "Keep at most this many frames per second (default: all)")
       ->check(FiniteNumber(0.0));
-  cmd->add_flag("--verbose", args->verbose, "List every missing mesh file, not just how many");
+  cmd->add_flag(
+      "--verbose", args->verbose,
+      "List every missing mesh file, not just how many, and where each mesh was read from");
   cmd->add_option("--out,-o", args->out, "Output file: .glb or .html (folders are created)")
       ->required();
   cmd->callback([args] { RunExport(*args); });

@@ -93,7 +93,9 @@ void AddRenderCommand(CLI::App& app) {
   cmd->add_option("--geometry-dir", args->geometry_dirs,
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
   cmd->add_flag("--no-floor", args->no_floor, "Leave out the floor and the model's shadow");
-  cmd->add_flag("--verbose", args->verbose, "List every missing mesh file, not just how many");
+  cmd->add_flag(
+      "--verbose", args->verbose,
+      "List every missing mesh file, not just how many, and where each mesh was read from");
   cmd->add_option("--out,-o", args->out, "Output PNG file (.png; folders are created)")->required();
   cmd->callback([args] { RunRender(*args); });
 }

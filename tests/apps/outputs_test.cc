@@ -109,5 +109,31 @@ TEST_F(OutputsTest, AFolderThatCannotBeCreatedIsRefused) {
                 "/proc/sinew-out: cannot create folder");
 }
 
+// Mesh names are resolved as OpenSim resolves them: a relative name (".." included) against the
+// model's folder and then Geometry/ and the extra folders, an absolute name as given. --verbose
+// says which file was read for each.
+TEST_F(OutputsTest, VerboseExportSaysWhereEachMeshWasRead) {
+  std::string model = testing::ReadText(kModel);
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  fs::create_directories(dir() / "models");
+  fs::create_directories(dir() / "shared");
+  std::ofstream(dir() / "shared" / "cube.obj") << triangle;
+  std::ofstream(dir() / "cone.obj") << triangle;
+  const std::string absolute = Path("cone.obj");
+  model.replace(model.find("cuboid.vtp"), 10, "../shared/cube.obj");
+  model.replace(model.find("ConePendulum.vtp"), 16, absolute);
+  std::ofstream(dir() / "models" / "pin.osim") << model;
+  const CliRun run = Run("export " + Path("models/pin.osim") + " --verbose --out " + Path("m.glb"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("sinew: note: mesh '../shared/cube.obj' read from " + Path("models") +
+                         "/../shared/cube.obj\n"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("sinew: note: mesh '" + absolute + "' read from " + absolute + "\n"),
+            std::string::npos)
+      << run.err;
+  EXPECT_EQ(run.err.find("not found"), std::string::npos) << run.err;
+}
+
 }  // namespace
 }  // namespace sinew
