@@ -46,11 +46,7 @@ void RunExport(const ExportArgs& args) {
   } else {
     Diagnostics notes;
     motion = viz::MotionFromTable(spec, ReadTableFor(table_file, spec), &notes);
-    if (!notes.empty()) {
-      std::cerr << "sinew: note: " << notes.size()
-                << " coordinates or columns not matched between model and table; first: "
-                << notes.front().Format() << "\n";
-    }
+    PrintTableNotes(notes);
   }
   PrintSceneWarnings(viz::ExportAnimation(spec, motion, args.out, options), args.verbose);
   std::cout << "wrote " << args.out << " (" << spec.bodies.size() << " bodies, "

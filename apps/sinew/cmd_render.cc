@@ -54,7 +54,9 @@ void RunRender(const RenderArgs& args) {
   } else {
     const io::Storage table = ReadTableFor(table_file, spec);
     const double t = args.has_time || table.time.empty() ? args.time : table.time.front();
-    X_GB = viz::PosesAtTime(spec, table, t);
+    Diagnostics notes;
+    X_GB = viz::PosesAtTime(spec, table, t, &notes);
+    PrintTableNotes(notes);
   }
   const viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
   PrintSceneWarnings(scene, args.verbose);

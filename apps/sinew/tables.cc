@@ -113,4 +113,11 @@ void WarnUnusedColumns(const std::vector<std::string>& labels, const std::string
   std::cerr << "sinew: warning: " << path << ": " << message << "\n";
 }
 
+void PrintTableNotes(const Diagnostics& notes) {
+  if (notes.empty()) return;
+  std::cerr << "sinew: note: " << notes.size()
+            << " coordinates or columns not matched between model and table; first: "
+            << notes.front().Format() << "\n";
+}
+
 }  // namespace sinew::cli

@@ -25,4 +25,8 @@ io::Storage ReadTableFor(const std::string& path, const model::ModelSpec& spec);
 void WarnUnusedColumns(const std::vector<std::string>& labels, const std::string& path,
                        const std::string& reason, bool strict = false);
 
+/// One note line for what a table and a model did not match (viz::MotionFromTable's or
+/// viz::PosesAtTime's notes): their count and the first. Nothing when `notes` is empty.
+void PrintTableNotes(const Diagnostics& notes);
+
 }  // namespace sinew::cli

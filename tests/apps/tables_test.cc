@@ -95,5 +95,19 @@ TEST_F(TablesTest, ARepeatedLabelIsAWarningAndTheFirstColumnIsUsed) {
       << run.err;
 }
 
+TEST_F(TablesTest, ExportAndRenderNoteAColumnNamingNoCoordinate) {
+  const std::string table = Table("time\tr1_z\tbogus", "0\t0.1\t1\n");
+  const std::string note =
+      "sinew: note: 1 coordinates or columns not matched between model and table; first: column "
+      "'bogus' names no coordinate; ignored\n";
+  for (const std::string& command :
+       {"export " + kModel + " --vis none --motion " + table + " --out " + Path("m.glb"),
+        "render " + kModel + " --vis none --motion " + table + " --out " + Path("m.png")}) {
+    const CliRun run = Run(command);
+    EXPECT_EQ(run.exit_code, 0) << command << "\n" << run.err;
+    EXPECT_NE(run.err.find(note), std::string::npos) << command << "\n" << run.err;
+  }
+}
+
 }  // namespace
 }  // namespace sinew
