@@ -72,6 +72,21 @@ TEST_F(OptionValuesTest, RenderTimeAndExportFpsMustBeFinite) {
                 "--fps: expects a finite number >= 0, not 'inf'");
 }
 
+TEST_F(OptionValuesTest, ExcitationValuesMustBeFinite) {
+  // Before, nan ran into "equations of motion are singular ... without mass or inertia".
+  const std::string model =
+      std::string(SINEW_TEST_DATA_DIR) + "/projectchrono/chrono/data/opensim/torque-actuator.osim";
+  for (const char* value : {"constant:nan", "constant:inf", "ramp:0,1e400", "sine:1,nan,0"}) {
+    const CliRun run = Run("simulate " + model + " --duration 0.01 --excitation grav=" + value +
+                           " --out " + Path("out"));
+    EXPECT_EQ(run.exit_code, 2) << value << "\n" << run.err;
+    EXPECT_NE(run.err.find("sinew: error: --excitation grav=" + std::string(value) + ": '"),
+              std::string::npos)
+        << run.err;
+    EXPECT_NE(run.err.find("' is not a finite number"), std::string::npos) << run.err;
+  }
+}
+
 TEST_F(OptionValuesTest, RenderRefusesAnImageTooLargeForMemoryUpFront) {
   ExpectRefused("render", "--width 8192 --height 8192 --out " + Path("big.png"),
                 "render: a 8192 x 8192 image needs 7360 MiB of frame buffers");
