@@ -52,6 +52,13 @@ TEST_F(AtomicFileTest, WritesTheWholeContentAndLeavesNoTemporary) {
   EXPECT_EQ(NumEntries(), 1);
 }
 
+TEST_F(AtomicFileTest, ANameAsLongAsTheSystemAllowsIsWritten) {
+  const fs::path file = dir_ / std::string(255, 'n');  // the temporary's name must stay shorter
+  WriteFileAtomically(file.string(), std::string_view("long"));
+  EXPECT_EQ(Read(file), "long");
+  EXPECT_EQ(NumEntries(), 1);
+}
+
 TEST_F(AtomicFileTest, ReplacesASymbolicLinkInsteadOfFollowingIt) {
   const fs::path outside = dir_ / "outside.txt";
   WriteFileAtomically(outside.string(), std::string_view("precious"));

@@ -3,6 +3,7 @@
 #include <sinew/common/error.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -23,8 +24,13 @@ namespace {
 std::string CreateTemporary(const std::string& path) {
   static std::atomic<unsigned> counter{0};
   for (int attempt = 0; attempt < 100; ++attempt) {
+    // NAME.tmp.PID.N, with NAME cut to 200 bytes so that the suffix never makes a name longer
+    // than the 255 bytes file systems allow when the destination's own name fits.
+    const size_t slash = path.rfind('/');
+    const size_t name_start = slash == std::string::npos ? 0 : slash + 1;
     const std::string name =
-        path + ".tmp." + std::to_string(getpid()) + "." + std::to_string(counter++);
+        path.substr(0, name_start + std::min<size_t>(path.size() - name_start, 200)) + ".tmp." +
+        std::to_string(getpid()) + "." + std::to_string(counter++);
     const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
       ::close(fd);

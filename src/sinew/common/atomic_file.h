@@ -10,13 +10,13 @@
 namespace sinew {
 
 /// Writes `path` through `write`, which fills the stream it is given. The stream is a new file
-/// `<path>.tmp.<pid>.<n>` in the same folder; after `write` returns, the stream is flushed,
-/// closed and synced, and every step is checked (a full disk is an error, not a short file).
-/// Only then is the temporary renamed to `path`: a reader sees the old file or the whole new one,
-/// never a part. An existing `path` that is a symbolic link is replaced by the new file, not
-/// followed, so a link cannot make Sinew overwrite a file elsewhere. On any failure (including
-/// an exception from `write`, which is rethrown) the temporary is removed and `path` is left as
-/// it was. Throws sinew::Error naming `path` when the file cannot be written.
+/// `<path>.tmp.<pid>.<n>` in the same folder (the name part cut to 200 bytes); after `write`
+/// returns, the stream is flushed, closed and synced, and every step is checked (a full disk is an
+/// error, not a short file). Only then is the temporary renamed to `path`: a reader sees the old
+/// file or the whole new one, never a part. An existing `path` that is a symbolic link is replaced
+/// by the new file, not followed, so a link cannot make Sinew overwrite a file elsewhere. On any
+/// failure (including an exception from `write`, which is rethrown) the temporary is removed and
+/// `path` is left as it was. Throws sinew::Error naming `path` when the file cannot be written.
 void WriteFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 /// WriteFileAtomically with the whole content at hand.
