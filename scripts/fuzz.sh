@@ -3,8 +3,8 @@
 # in turn, the fuzzing time SECONDS (default 60) split evenly between them (at least 1 s each);
 # the build does not count. Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
 #   targets: osim_reader storage_reader mesh_reader controls_reader simulate (default: all)
-# Seeds: the small files of tests/data (.osim, .sto/.mot, .vtp, ControlSet .xml) plus the
-# generated ones fuzz_seeds writes; corpora grow across runs in build/fuzz/corpus/<target>.
+# Seeds: the small files of tests/data (.osim, .sto/.mot, .vtp, ControlSet .xml), the bad inputs
+# in fuzz/seeds/<target>/, plus the generated ones fuzz_seeds writes; corpora grow across runs in build/fuzz/corpus/<target>.
 # Findings go to build/fuzz/artifacts/, each run's log to build/fuzz/logs/<target>.log.
 # Exit status is non-zero when any target finds a crash, a leak, a timeout or an out-of-memory.
 set -euo pipefail
@@ -38,6 +38,11 @@ copy_seeds "$seeds/osim_reader" osim "" ""
 copy_seeds "$seeds/storage_reader" sto "" ""
 copy_seeds "$seeds/storage_reader" mot "" ""
 copy_seeds "$seeds/mesh_reader" vtp "" "0"
+# Hand-made bad inputs, one per check of issue #9 (fuzz/seeds/<target>/, see fuzz/CMakeLists.txt).
+for dir in "$root"/fuzz/seeds/*/; do
+  mkdir -p "$seeds/$(basename "$dir")"
+  cp "$dir"* "$seeds/$(basename "$dir")/"
+done
 "$build/fuzz/fuzz_seeds" "$seeds/mesh_reader"
 mkdir -p "$seeds/controls_reader"
 grep -rlZ --include='*.xml' '<ControlSet' "$root/tests/data" | xargs -0 -I{} cp {} "$seeds/controls_reader/"

@@ -12,6 +12,7 @@
 
 #include "apps/sinew/commands.h"
 #include "apps/sinew/notices.h"
+#include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
 
@@ -30,6 +31,8 @@ struct ExportArgs {
 };
 
 void RunExport(const ExportArgs& args) {
+  viz::ExportFormatOf(args.out);
+  PrepareOutputFile(args.out);
   model::ModelSpec spec = io::ReadOsim(args.model);
   UseStandIns(spec, args.model);
   viz::ExportOptions options;
@@ -43,13 +46,8 @@ void RunExport(const ExportArgs& args) {
   } else {
     Diagnostics notes;
     motion = viz::MotionFromTable(spec, ReadTableFor(table_file, spec), &notes);
-    if (!notes.empty()) {
-      std::cerr << "sinew: note: " << notes.size()
-                << " coordinates or columns not matched between model and table; first: "
-                << notes.front().Format() << "\n";
-    }
+    PrintTableNotes(notes);
   }
-  CreateParentFolder(args.out);
   PrintSceneWarnings(viz::ExportAnimation(spec, motion, args.out, options), args.verbose);
   std::cout << "wrote " << args.out << " (" << spec.bodies.size() << " bodies, "
             << motion.times.size() << " frames)\n";
@@ -71,8 +69,10 @@ void AddExportCommand(CLI::App& app) {
   cmd->add_option("--geometry-dir", args->geometry_dirs,
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
   cmd->add_option("--fps", args->fps, "Keep at most this many frames per second (default: all)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_flag("--verbose", args->verbose, "List every missing mesh file, not just how many");
+      ->check(FiniteNumber(0.0));
+  cmd->add_flag(
+      "--verbose", args->verbose,
+      "List every missing mesh file, not just how many, and where each mesh was read from");
   cmd->add_option("--out,-o", args->out, "Output file: .glb or .html (folders are created)")
       ->required();
   cmd->callback([args] { RunExport(*args); });

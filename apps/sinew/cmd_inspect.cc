@@ -227,7 +227,8 @@ void AddInspectCommand(CLI::App& app) {
     if (options->json) {
       nlohmann::json out = ToJson(spec);
       out["build"] = ReportToJson(*build);
-      std::cout << out.dump(2) << "\n";
+      // Names are bytes from the file: invalid UTF-8 is shown as U+FFFD, not an internal error.
+      std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     } else {
       PrintText(spec, std::cout);
       PrintReport(*build, std::cout);

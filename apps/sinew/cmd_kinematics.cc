@@ -31,6 +31,7 @@ struct Options {
 };
 
 void Run(const Options& options) {
+  PrepareOutputFolder(options.out);
   model::ModelSpec spec = io::ReadOsim(options.model);
   UseStandIns(spec, options.model);
   const kinematics::KinematicTree tree(spec);
@@ -85,7 +86,6 @@ void Run(const Options& options) {
     markers.AppendRow(motion.time[r], kinematics::CalcMarkerLocationRow(spec, X_GB));
   }
 
-  CreateFolder(options.out);
   const std::filesystem::path dir(options.out);
   io::WriteStorage(bodies, (dir / "bodies.sto").string());
   if (!spec.markers.empty()) io::WriteStorage(markers, (dir / "markers.sto").string());

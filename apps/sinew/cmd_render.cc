@@ -14,6 +14,7 @@
 
 #include "apps/sinew/commands.h"
 #include "apps/sinew/notices.h"
+#include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
 
@@ -38,6 +39,8 @@ struct RenderArgs {
 
 void RunRender(const RenderArgs& args) {
   RequireExtension(args.out, ".png", "PNG");
+  viz::CheckRenderSize(args.width, args.height);
+  PrepareOutputFile(args.out);
   model::ModelSpec spec = io::ReadOsim(args.model);
   UseStandIns(spec, args.model);
   viz::VisualOptions visual;
@@ -51,7 +54,9 @@ void RunRender(const RenderArgs& args) {
   } else {
     const io::Storage table = ReadTableFor(table_file, spec);
     const double t = args.has_time || table.time.empty() ? args.time : table.time.front();
-    X_GB = viz::PosesAtTime(spec, table, t);
+    Diagnostics notes;
+    X_GB = viz::PosesAtTime(spec, table, t, &notes);
+    PrintTableNotes(notes);
   }
   const viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
   PrintSceneWarnings(scene, args.verbose);
@@ -62,7 +67,6 @@ void RunRender(const RenderArgs& args) {
   const viz::Camera camera =
       viz::FrameCamera(viz::SceneBounds(scene, X_GB), viz::ParseViewDirection(args.view),
                        static_cast<double>(args.width) / args.height);
-  CreateParentFolder(args.out);
   viz::WriteFileBytes(args.out, viz::EncodePng(viz::RenderScene(scene, X_GB, camera, options)));
   std::cout << "wrote " << args.out << " (" << args.width << "x" << args.height << ")\n";
 }
@@ -77,18 +81,23 @@ void AddRenderCommand(CLI::App& app) {
   auto* states = cmd->add_option("--states", args->states, "States over time (.sto)");
   motion->excludes(states);
   cmd->add_option_function<double>(
-      "--time", [args](double t) { args->time = t, args->has_time = true; },
-      "Time (s) in the table to show (default: its first row)");
+         "--time", [args](double t) { args->time = t, args->has_time = true; },
+         "Time (s) in the table to show (default: its first row)")
+      ->check(FiniteNumber());
   cmd->add_option("--vis", args->vis, "Visualization: primitives, mesh or none")
       ->check(CLI::IsMember({"primitives", "mesh", "none"}));
   cmd->add_option("--view", args->view, "Camera: iso, front, back, right, left or top")
       ->check(CLI::IsMember({"iso", "front", "back", "right", "left", "top"}));
-  cmd->add_option("--width", args->width, "Image width (pixels)")->check(CLI::Range(1, 8192));
+  cmd->add_option("--width", args->width,
+                  "Image width (pixels; at most 8192, and about 9 million pixels in all)")
+      ->check(CLI::Range(1, 8192));
   cmd->add_option("--height", args->height, "Image height (pixels)")->check(CLI::Range(1, 8192));
   cmd->add_option("--geometry-dir", args->geometry_dirs,
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
   cmd->add_flag("--no-floor", args->no_floor, "Leave out the floor and the model's shadow");
-  cmd->add_flag("--verbose", args->verbose, "List every missing mesh file, not just how many");
+  cmd->add_flag(
+      "--verbose", args->verbose,
+      "List every missing mesh file, not just how many, and where each mesh was read from");
   cmd->add_option("--out,-o", args->out, "Output PNG file (.png; folders are created)")->required();
   cmd->callback([args] { RunRender(*args); });
 }

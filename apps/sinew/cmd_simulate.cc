@@ -34,6 +34,7 @@
 #include "apps/sinew/excitation_option.h"
 #include "apps/sinew/interrupt_guard.h"
 #include "apps/sinew/notices.h"
+#include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
 
@@ -100,11 +101,12 @@ void ShowProgress(double fraction, double t) {
 }
 
 void RunSimulate(const SimulateOptions& options) {
-  if (!(options.duration >= 0.0) || !std::isfinite(options.duration)) {
-    throw Error("--duration must be a finite number >= 0");
-  }
-  if (!(options.report_interval > 0.0) || !std::isfinite(options.report_interval)) {
-    throw Error("--report-interval must be a finite number > 0");
+  // Before any work: a run of absurd size, or outputs that cannot be written, is a usage error.
+  CheckSimulationSize(options.duration, options.report_interval, options.step);
+  PrepareOutputFolder(options.out);
+  if (!options.export_file.empty()) {
+    viz::ExportFormatOf(options.export_file);
+    PrepareOutputFile(options.export_file, "--export");
   }
   model::ModelSpec spec = io::ReadOsim(options.model);
   double t0 = 0.0;
@@ -135,8 +137,6 @@ void RunSimulate(const SimulateOptions& options) {
   settings.step = options.step;
   const auto integrator = engine::MakeIntegrator(options.integrator, *system, settings);
   integrator->SetController(parser.GetController());
-  CreateFolder(options.out);
-  if (!options.export_file.empty()) CreateParentFolder(options.export_file);
 
   // Both tables are streamed to disk as the run computes them (bounded memory).
   io::Storage states_header, bodies_header;
@@ -205,13 +205,18 @@ void AddSimulateCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Forward simulation of a model (skeleton and ideal actuators)");
   cmd->add_option("model", options->model, "The .osim file")->required();
-  cmd->add_option("--duration", options->duration, "Simulated time (s)")->required();
-  cmd->add_option("--accuracy", options->accuracy, "Integrator accuracy (default 1e-6)");
+  cmd->add_option("--duration", options->duration, "Simulated time (s)")
+      ->required()
+      ->check(FiniteNumber(0.0));
+  cmd->add_option("--accuracy", options->accuracy, "Integrator accuracy (default 1e-6)")
+      ->check(FiniteNumber(0.0, true));
   cmd->add_option("--integrator", options->integrator,
                   "rk45 (error-controlled, default), euler or implicit-euler (fixed step)");
-  cmd->add_option("--step", options->step, "Fixed step for euler; largest step for rk45 (s)");
+  cmd->add_option("--step", options->step, "Fixed step for euler; largest step for rk45 (s)")
+      ->check(FiniteNumber(0.0));
   cmd->add_option("--report-interval", options->report_interval,
-                  "Time between output rows (s, default 0.01)");
+                  "Time between output rows (s, default 0.01)")
+      ->check(FiniteNumber(0.0, true));
   cmd->add_option("--initial-states", options->initial_states,
                   "Storage file whose first row gives the initial coordinates and speeds");
   cmd->add_option("--out", options->out, "Output folder")->required();

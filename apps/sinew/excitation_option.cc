@@ -5,6 +5,7 @@
 #include <sinew/functions/constant.h>
 #include <sinew/functions/excitations.h>
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -20,8 +21,8 @@ std::vector<double> Numbers(const std::string& option, const std::string& args, 
     const std::string token =
         args.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     double value = 0;
-    if (!ParseNumber(TrimSpace(token), &value)) {
-      throw Error("--excitation " + option + ": '" + token + "' is not a number");
+    if (!ParseNumber(TrimSpace(token), &value) || !std::isfinite(value)) {
+      throw Error("--excitation " + option + ": '" + token + "' is not a finite number");
     }
     values.push_back(value);
     if (comma == std::string::npos) break;

@@ -85,6 +85,11 @@ void UseStandIns(model::ModelSpec& spec, const std::string& model_path) {
 }
 
 void PrintSceneWarnings(const viz::VisualScene& scene, bool verbose) {
+  if (verbose) {
+    for (const viz::ReadMeshFile& mesh : scene.read_meshes) {
+      std::cerr << "sinew: note: mesh '" << mesh.file << "' read from " << mesh.path << "\n";
+    }
+  }
   std::set<size_t> missing_warnings;
   std::vector<std::string> files;
   std::set<std::string> seen;

@@ -29,7 +29,7 @@ void UseStandIns(model::ModelSpec& spec, const std::string& model_path);
 /// Prints the warnings of a visual scene: missing mesh files as ONE line (count, first few
 /// names, the folders searched, and how to add one with --geometry-dir or
 /// $SINEW_GEOMETRY_PATH), each missing mesh on its own line when `verbose`, and every other
-/// warning as it is.
+/// warning as it is. With `verbose`, first one note per mesh file read saying where from.
 void PrintSceneWarnings(const viz::VisualScene& scene, bool verbose);
 
 }  // namespace sinew::cli

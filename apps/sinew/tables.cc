@@ -5,16 +5,74 @@
 
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <numbers>
 #include <optional>
+#include <sstream>
 
 #include "apps/sinew/notices.h"
 
 namespace sinew::cli {
+namespace {
+
+std::string Show(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+// What every command needs of a table before it makes poses from it: a finite, increasing time
+// column and finite values in every column that names a coordinate (NaN would reach bodies.sto
+// and the .glb). A repeated label is a warning: the first such column is the one used.
+void CheckTable(const io::Storage& table, const std::string& path, const model::ModelSpec& spec) {
+  const auto fail = [&path](const std::string& message) {
+    throw Error(SourceLocation{path, 0}, "", message);
+  };
+  for (int row = 0; row < table.NumRows(); ++row) {
+    const double t = table.time[row];
+    if (!std::isfinite(t)) {
+      fail("column '" + table.time_label + "', row " + std::to_string(row + 1) + ": " + Show(t) +
+           " is not a finite time");
+    }
+    if (row > 0 && !(t > table.time[row - 1])) {
+      fail("column '" + table.time_label + "' must increase, but row " + std::to_string(row + 1) +
+           " has " + Show(t) + (t == table.time[row - 1] ? ", the same as" : ", less than") +
+           " row " + std::to_string(row) + " (" + Show(table.time[row - 1]) + ")");
+    }
+  }
+  std::map<std::string, int> first_column;
+  std::vector<std::string> repeated;
+  for (int column = 0; column < table.NumColumns(); ++column) {
+    if (!first_column.emplace(table.labels[column], column).second) {
+      repeated.push_back(table.labels[column]);
+    }
+  }
+  if (!repeated.empty()) {
+    std::cerr << "sinew: warning: " << path << ": " << repeated.size()
+              << (repeated.size() == 1 ? " column label is" : " column labels are") << " repeated ("
+              << FirstFew(repeated) << "); the first column of each is used\n";
+  }
+  std::vector<std::string> names;
+  for (const model::CoordinateSpec& c : spec.coordinates) names.push_back(c.name);
+  for (int column = 0; column < table.NumColumns(); ++column) {
+    if (!io::ParseColumnLabel(table.labels[column], names)) continue;
+    for (int row = 0; row < table.NumRows(); ++row) {
+      const double value = table.Value(row, column);
+      if (!std::isfinite(value)) {
+        fail("column '" + table.labels[column] + "', row " + std::to_string(row + 1) + " (" +
+             table.time_label + " " + Show(table.time[row]) + "): " + Show(value) +
+             " is not a finite number, and the column names a coordinate");
+      }
+    }
+  }
+}
+
+}  // namespace
 
 io::Storage ReadTableFor(const std::string& path, const model::ModelSpec& spec) {
   io::Storage table = io::ReadStorage(path);
   for (const Diagnostic& note : table.notes) std::cerr << "sinew: note: " << note.Format() << "\n";
+  CheckTable(table, path, spec);
   if (table.in_degrees_stated || table.in_degrees) return table;
   std::vector<std::string> rotational;
   for (const model::CoordinateSpec& c : spec.coordinates) {
@@ -53,6 +111,13 @@ void WarnUnusedColumns(const std::vector<std::string>& labels, const std::string
                               FirstFew(labels) + "): " + reason;
   if (strict) throw Error(SourceLocation{path, 0}, "", "--strict: " + message);
   std::cerr << "sinew: warning: " << path << ": " << message << "\n";
+}
+
+void PrintTableNotes(const Diagnostics& notes) {
+  if (notes.empty()) return;
+  std::cerr << "sinew: note: " << notes.size()
+            << " coordinates or columns not matched between model and table; first: "
+            << notes.front().Format() << "\n";
 }
 
 }  // namespace sinew::cli

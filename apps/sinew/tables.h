@@ -10,7 +10,10 @@
 
 namespace sinew::cli {
 
-/// Reads `path` for `spec`: prints the reader's notes, and one warning when the file has no
+/// Reads `path` for `spec` and checks it: a time column that is not finite or not increasing,
+/// or a column naming a coordinate of `spec` with a NaN or infinite value, is a sinew::Error
+/// naming the file, the column and the row; a repeated column label is a warning (the first
+/// column is used). Prints the reader's notes, and one warning when the file has no
 /// inDegrees line, so that its angles are read as radians (as OpenSim reads such a file), yet
 /// a rotational coordinate's values go beyond 2*pi rad in magnitude, which looks like degrees.
 /// Throws sinew::Error for an unreadable file.
@@ -21,5 +24,9 @@ io::Storage ReadTableFor(const std::string& path, const model::ModelSpec& spec);
 /// `strict`, a sinew::Error instead (exit code 2). Nothing when `labels` is empty.
 void WarnUnusedColumns(const std::vector<std::string>& labels, const std::string& path,
                        const std::string& reason, bool strict = false);
+
+/// One note line for what a table and a model did not match (viz::MotionFromTable's or
+/// viz::PosesAtTime's notes): their count and the first. Nothing when `notes` is empty.
+void PrintTableNotes(const Diagnostics& notes);
 
 }  // namespace sinew::cli

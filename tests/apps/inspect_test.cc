@@ -72,5 +72,17 @@ TEST_F(Inspect, BadInputExitsWithTwo) {
       << missing.err;
 }
 
+TEST_F(Inspect, InvalidUtf8InANameIsEscapedInJson) {
+  std::string model = testing::ReadText(kArm26);
+  const std::string from = "<Model name=\"arm26\">";
+  ASSERT_NE(model.find(from), std::string::npos);
+  model.replace(model.find(from), from.size(), "<Model name=\"ar\xFF\xFEm26\">");
+  std::ofstream(Path("bytes.osim"), std::ios::binary) << model;
+  const CliRun run = Run("inspect --json " + Path("bytes.osim"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json j = nlohmann::json::parse(run.out);  // valid UTF-8 JSON
+  EXPECT_EQ(j["name"], "ar\uFFFD\uFFFDm26");
+}
+
 }  // namespace
 }  // namespace sinew

@@ -22,11 +22,11 @@ const std::string kSinglePin = std::string(SINEW_TEST_DATA_DIR) +
 
 using testing::CliTest;
 
-// Files in `dir` whose names start with '.' (temporary files of unfinished writes).
-int HiddenFiles(const std::filesystem::path& dir) {
+// Temporary files (NAME.tmp.PID.N, see sinew::AtomicFile) left in `dir`.
+int TemporaryFiles(const std::filesystem::path& dir) {
   int n = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().filename().string().front() == '.') ++n;
+    if (entry.path().filename().string().find(".tmp.") != std::string::npos) ++n;
   }
   return n;
 }
@@ -41,7 +41,7 @@ TEST_F(SimulateOutputTest, CompleteRunSaysSoInItsHeader) {
   EXPECT_TRUE(states.notes.empty());  // nRows agrees with the rows present
   EXPECT_EQ(states.Metadata("status"), "complete");
   EXPECT_EQ(io::ReadStorage(Path("out") + "/bodies.sto").Metadata("status"), "complete");
-  EXPECT_EQ(HiddenFiles(Path("out")), 0);
+  EXPECT_EQ(TemporaryFiles(Path("out")), 0);
 }
 
 TEST_F(SimulateOutputTest, InterruptKeepsTheRowsComputedSoFar) {
@@ -63,7 +63,7 @@ TEST_F(SimulateOutputTest, InterruptKeepsTheRowsComputedSoFar) {
         << table.Metadata("status");
     EXPECT_LT(table.time.back(), 1e6);
   }
-  EXPECT_EQ(HiddenFiles(Path("out")), 0);
+  EXPECT_EQ(TemporaryFiles(Path("out")), 0);
 }
 
 TEST_F(SimulateOutputTest, SymlinkAtAnOutputNameIsReplacedNotFollowed) {

@@ -40,7 +40,8 @@ TEST_F(UsageTest, MistakesExitWithTwoAndTheUsage) {
                    "The following argument was not expected: --bogus", "sinew simulate",
                    simulate_usage);
   ExpectUsageError("simulate " + kModel + " --duration abc --out " + Path("out"),
-                   "Could not convert: --duration = abc", "sinew simulate", simulate_usage);
+                   "--duration: expects a finite number >= 0, not 'abc'", "sinew simulate",
+                   simulate_usage);
   ExpectUsageError("simulate " + kModel + " --out " + Path("out"), "--duration is required",
                    "sinew simulate", simulate_usage);
   ExpectUsageError("render " + kModel + " --vis shiny --out " + Path("x.png"),

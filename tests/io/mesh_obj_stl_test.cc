@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 
 namespace sinew {
@@ -80,6 +81,26 @@ TEST(StlTest, TruncatedOrMalformedFilesThrow) {
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_EQ(e.where().line, 5);
+  }
+}
+
+TEST(MeshNonFinite, ANaNOrInfiniteVertexIsAnErrorNamingTheFile) {
+  // A NaN vertex would make the exported .glb invalid glTF: every reader refuses it.
+  for (const char* value : {"nan", "inf", "1e39"}) {
+    try {
+      io::ParseObj(std::string("v 0 0 0\nv 1 0 0\nv 0 ") + value + " 0\nf 1 2 3\n", "n.obj");
+      ADD_FAILURE() << value << " was read";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.where().file, "n.obj") << e.what();
+    }
+  }
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  try {
+    io::ParseStl(BinaryStl({{0, 0, 0, 1, 0, 0, 0, nan, 0}}), "n.stl");
+    FAIL() << "a NaN vertex was read";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "n.stl: vertex 2 has a coordinate that is not a finite number");
   }
 }
 

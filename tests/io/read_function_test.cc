@@ -197,7 +197,15 @@ TEST(ReadFunctionTest, ErrorsNameFileLineAndComponent) {
   ExpectError("<function>\n\n  <Spline3000><x>1 2</x></Spline3000>\n</function>", 3, "Spline3000");
   ExpectError("<SimmSpline>\n<x>0 1 2</x>\n<y>0 1</y>\n</SimmSpline>", 1, "x has 3 values");
   ExpectError("<SimmSpline>\n<x>0 1 2</x>\n</SimmSpline>", 1, "<y>");
-  ExpectError("<SimmSpline>\n<x>0 2 1</x>\n<y>0 1 2</y></SimmSpline>", 1, "non-decreasing");
+  // Unsorted or repeated x: an error at <x>, naming the function.
+  ExpectError("<SimmSpline>\n<x>0 2 1</x>\n<y>0 1 2</y></SimmSpline>", 2,
+              "<SimmSpline>: x must be strictly increasing, but x[2] = 1 is below x[1] = 2");
+  ExpectError("<SimmSpline name=\"f\">\n<x>0 1 1 2</x>\n<y>0 1 2 3</y></SimmSpline>", 2,
+              "<SimmSpline name=\"f\">: x must be strictly increasing, but x[2] = 1 repeats x[1]");
+  ExpectError("<PiecewiseLinearFunction>\n<x>0 0</x>\n<y>0 1</y></PiecewiseLinearFunction>", 2,
+              "x[1] = 0 repeats x[0] = 0");
+  ExpectError("<GCVSpline>\n<half_order>1</half_order><x>0 1 1</x>\n<y>0 1 2</y></GCVSpline>", 2,
+              "<GCVSpline>: x must be strictly increasing");
   ExpectError("<SimmSpline>\n<x>0 1 2</x>\n<y>0 one 2</y></SimmSpline>", 3, "'one'");
   ExpectError("<SimmSpline>\n<x>0</x>\n<y>0</y></SimmSpline>", 1, "at least 2");
   ExpectError("<LinearFunction>\n<coefficients>1 2 3</coefficients></LinearFunction>", 2,

@@ -4,6 +4,7 @@
 #include <sinew/viz/rasterizer.h>
 
 #include <cmath>
+#include <string>
 
 namespace sinew::viz {
 namespace {
@@ -121,6 +122,23 @@ TEST(RasterizerTest, FloorAndShadowAppearWhenAsked) {
   options.floor = false;
   image = RenderScene(scene, {Transform()}, camera, options);
   EXPECT_EQ(image.At(0, image.height - 1)[0], 245);  // no floor in the corner
+}
+
+TEST(RasterizerTest, MemoryIsCappedNotOnlyPixels) {
+  // 4 samples of a float depth and a Vec3 colour, and 3 bytes of the final image, per pixel.
+  EXPECT_EQ(RenderBytes(800, 600), 800u * 600u * (4u * (4u + 24u) + 3u));
+  EXPECT_NO_THROW(CheckRenderSize(3840, 2160));  // 4K: about 950 MB
+  EXPECT_LE(RenderBytes(3840, 2160), kMaxRenderBytes);
+  try {
+    CheckRenderSize(8192, 8192);  // allowed by the pixel limits; 7.4 GB of buffers
+    FAIL() << "8192 x 8192 must be refused";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "render: a 8192 x 8192 image needs 7360 MiB of frame buffers (2x2 supersampled), "
+              "more than the cap of 1024 MiB; ask for fewer pixels (about 9 million at most)");
+  }
+  EXPECT_THROW(CheckRenderSize(0, 10), Error);
+  EXPECT_THROW(CheckRenderSize(20000, 1), Error);
 }
 
 }  // namespace

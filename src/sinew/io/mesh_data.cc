@@ -21,6 +21,13 @@ void ComputeVertexNormals(TriangleMesh& mesh) {
 
 void ValidateMesh(const TriangleMesh& mesh, const std::string& file) {
   const size_t n = mesh.positions.size();
+  // A NaN or infinite vertex would reach the .glb (invalid glTF) and the scene bounds.
+  for (size_t i = 0; i < n; ++i) {
+    if (!mesh.positions[i].allFinite()) {
+      throw Error(SourceLocation{file, 0}, "",
+                  "vertex " + std::to_string(i) + " has a coordinate that is not a finite number");
+    }
+  }
   for (size_t i = 0; i < mesh.triangles.size(); ++i) {
     for (uint32_t v : mesh.triangles[i]) {
       if (v >= n) {

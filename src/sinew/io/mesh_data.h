@@ -26,8 +26,8 @@ struct TriangleMesh {
 /// Fills `mesh.normals` with area-weighted averages of the adjacent face normals.
 void ComputeVertexNormals(TriangleMesh& mesh);
 
-/// Checks that every index is in range and normals (if any) match positions; throws
-/// sinew::Error naming `file` otherwise.
+/// Checks that every vertex is finite, every index is in range and normals (if any) match
+/// positions; throws sinew::Error naming `file` otherwise. Every mesh reader ends with it.
 void ValidateMesh(const TriangleMesh& mesh, const std::string& file);
 
 }  // namespace sinew::io

@@ -10,11 +10,18 @@
 namespace sinew::io {
 namespace {
 
-// Merges corners with identical coordinates into one vertex.
+// Merges corners with identical coordinates into one vertex. A NaN corner would compare equal
+// to any other (and break the map's ordering), so non-finite corners are refused here, before
+// ValidateMesh could see them; `line` (0 for binary files) says where.
 class VertexWelder {
  public:
-  explicit VertexWelder(TriangleMesh& mesh) : mesh_(mesh) {}
-  uint32_t Add(const Vec3f& p) {
+  VertexWelder(TriangleMesh& mesh, const std::string& file) : mesh_(mesh), file_(file) {}
+  uint32_t Add(const Vec3f& p, int line = 0) {
+    if (!p.allFinite()) {
+      throw Error(SourceLocation{file_, line}, "",
+                  "vertex " + std::to_string(mesh_.positions.size()) +
+                      " has a coordinate that is not a finite number");
+    }
     auto [it, inserted] =
         index_.try_emplace({p.x(), p.y(), p.z()}, static_cast<uint32_t>(mesh_.positions.size()));
     if (inserted) mesh_.positions.push_back(p);
@@ -23,6 +30,7 @@ class VertexWelder {
 
  private:
   TriangleMesh& mesh_;
+  const std::string& file_;
   std::map<std::array<float, 3>, uint32_t> index_;
 };
 
@@ -43,7 +51,7 @@ TriangleMesh ParseBinary(std::string_view bytes, const std::string& file) {
                     std::to_string(bytes.size()) + " bytes");
   }
   TriangleMesh mesh;
-  VertexWelder welder(mesh);
+  VertexWelder welder(mesh, file);
   for (uint32_t t = 0; t < n; ++t) {
     const char* rec = bytes.data() + 84 + 50 * static_cast<size_t>(t);
     std::array<uint32_t, 3> tri;
@@ -59,7 +67,7 @@ TriangleMesh ParseBinary(std::string_view bytes, const std::string& file) {
 
 TriangleMesh ParseAscii(std::string_view text, const std::string& file) {
   TriangleMesh mesh;
-  VertexWelder welder(mesh);
+  VertexWelder welder(mesh, file);
   std::array<uint32_t, 3> tri{};
   int corner = 0;
   int line_number = 1;
@@ -88,7 +96,7 @@ TriangleMesh ParseAscii(std::string_view text, const std::string& file) {
         }
       }
       if (corner == 3) fail("a facet has more than three vertices");
-      tri[corner++] = welder.Add(p);
+      tri[corner++] = welder.Add(p, line_number);
     } else if (tok == "endloop") {
       if (corner != 3) fail("a facet needs three vertices");
       mesh.triangles.push_back(tri);

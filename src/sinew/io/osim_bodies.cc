@@ -1,6 +1,9 @@
 // Ground, bodies (mass properties, geometry, wrap objects) and 4.x PhysicalOffsetFrames.
 #include <sinew/io/internal/osim_context.h>
 
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <sstream>
 #include <string_view>
 
 namespace sinew::io::internal {
@@ -19,20 +22,62 @@ bool IsKnownBodyProperty(std::string_view tag) {
   return false;
 }
 
+std::string ShowMoments(const Vec3& moments) {
+  std::ostringstream text;
+  text << moments.x() << ", " << moments.y() << ", " << moments.z();
+  return text.str();
+}
+
+// A physical inertia has moments >= 0 and is positive semi-definite, each principal moment at
+// most the sum of the other two (the triangle inequality). A negative moment on the diagonal is
+// an error: no rounding explains it, and the engine would divide by it. An indefinite matrix with
+// a non-negative diagonal, and a triangle-inequality violation, are warnings: OpenSim accepts
+// both and real models have them (ThoracoscapularShoulderModel's radius is indefinite,
+// SoccerKickingModel's toes break the triangle). Tests allow for rounding, relative to the
+// largest moment.
+void CheckInertia(ReadContext& ctx, const pugi::xml_node& where, const std::string& component,
+                  const Mat3& inertia) {
+  const Eigen::SelfAdjointEigenSolver<Mat3> solver(inertia, Eigen::EigenvaluesOnly);
+  const Vec3 moments = solver.eigenvalues();  // ascending
+  const double tolerance = 1e-9 * moments.cwiseAbs().maxCoeff();
+  if (inertia.diagonal().minCoeff() < 0) {
+    ctx.doc().Fail(where, component,
+                   "negative moment of inertia (the diagonal is " +
+                       ShowMoments(inertia.diagonal()) +
+                       "); moments of inertia cannot be negative");
+  }
+  if (moments[0] < -tolerance) {
+    ctx.Warn(where, component,
+             "indefinite inertia matrix (principal moments " + ShowMoments(moments) +
+                 "): no rigid body has a negative principal moment; read as written, as OpenSim "
+                 "does");
+  } else if (moments[0] + moments[1] < moments[2] - tolerance) {
+    ctx.Warn(where, component,
+             "inertia violates the triangle inequality (principal moments " + ShowMoments(moments) +
+                 ": the largest exceeds the sum of the other two); no rigid body has such an "
+                 "inertia; read as written, as OpenSim does");
+  }
+}
+
 // Inertia about the mass centre: `inertia` [Ixx Iyy Izz Ixy Ixz Iyz] or the older
-// inertia_xx ... inertia_yz.
-Mat3 ReadInertia(const XmlDocument& doc, const pugi::xml_node& body, const std::string& component) {
+// inertia_xx ... inertia_yz. Checked by CheckInertia.
+Mat3 ReadInertia(ReadContext& ctx, const pugi::xml_node& body, const std::string& component) {
+  const XmlDocument& doc = ctx.doc();
   double m[6] = {0, 0, 0, 0, 0, 0};
+  pugi::xml_node where = body;
   if (pugi::xml_node node = body.child("inertia")) {
     std::vector<double> v = doc.ReadNumbers(node, component, 6);
     for (int i = 0; i < 6; ++i) m[i] = v[i];
+    where = node;
   } else {
     const char* tags[6] = {"inertia_xx", "inertia_yy", "inertia_zz",
                            "inertia_xy", "inertia_xz", "inertia_yz"};
     for (int i = 0; i < 6; ++i) m[i] = ReadDoubleOr(doc, body, tags[i], component, 0.0);
+    if (pugi::xml_node first = body.child("inertia_xx")) where = first;
   }
   Mat3 inertia;
   inertia << m[0], m[3], m[4], m[3], m[1], m[5], m[4], m[5], m[2];
+  CheckInertia(ctx, where, component, inertia);
   return inertia;
 }
 
@@ -170,7 +215,7 @@ void ReadBodies(ReadContext& ctx, const pugi::xml_node& model) {
       body.mass = mass ? doc.ReadDouble(mass, component) : 0.0;
       if (body.mass < 0) doc.Fail(mass, component, "negative mass");
       body.mass_center = ReadVec3Or(doc, node, "mass_center", component, Vec3::Zero());
-      body.inertia = ReadInertia(doc, node, component);
+      body.inertia = ReadInertia(ctx, node, component);
       body.where = doc.Where(node);
       index = static_cast<int>(spec.bodies.size());
       spec.bodies.push_back(std::move(body));

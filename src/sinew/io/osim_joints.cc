@@ -354,6 +354,12 @@ class JointReader {
       c.range_min = r[0];
       c.range_max = r[1];
       if (r[0] > r[1]) doc_.Fail(range, component, "<range> minimum exceeds maximum");
+      if (c.default_value < r[0] || c.default_value > r[1]) {
+        std::ostringstream text;
+        text << "<default_value> " << c.default_value << " is outside <range> [" << r[0] << ", "
+             << r[1] << "]; the coordinate starts there, beyond its range";
+        ctx_.Warn(range, component, text.str());
+      }
     }
     c.clamped = ReadBoolOr(doc_, node, "clamped", component, false);
     c.locked = ReadBoolOr(doc_, node, "locked", component, false);

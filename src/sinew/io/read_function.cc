@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <string_view>
 
 namespace sinew::io::internal {
@@ -82,10 +83,32 @@ functions::FunctionPtr Build(const XmlDocument& doc, const pugi::xml_node& eleme
   }
 }
 
+// How messages name a function: "<SimmSpline name=\"knee_tx\">", or the tag alone.
+std::string FunctionName(const pugi::xml_node& element) {
+  const std::string name = element.attribute("name").value();
+  return "<" + std::string(element.name()) + (name.empty() ? "" : " name=\"" + name + "\"") + ">";
+}
+
+// A spline or piecewise linear function needs x strictly increasing: unsorted x has no meaning,
+// and a repeated x makes a slope of (y step) / 1e-7 (OpenSim's smallest spacing), which stalls
+// an integrator far from here. A step function (PiecewiseConstantFunction) may repeat an x.
+void CheckIncreasing(const XmlDocument& doc, const pugi::xml_node& element,
+                     const std::string& component, const std::vector<double>& x) {
+  for (size_t i = 1; i < x.size(); ++i) {
+    if (x[i] > x[i - 1]) continue;
+    std::ostringstream text;
+    text << FunctionName(element) << ": x must be strictly increasing, but x[" << i
+         << "] = " << x[i] << (x[i] == x[i - 1] ? " repeats" : " is below") << " x[" << i - 1
+         << "] = " << x[i - 1];
+    doc.Fail(element.child("x"), component, text.str());
+  }
+}
+
 functions::FunctionPtr ReadKnotFunction(const XmlDocument& doc, const pugi::xml_node& element,
                                         const std::string& component, std::string_view type) {
   std::vector<double> x = ReadList(doc, element, "x", component);
   std::vector<double> y = ReadList(doc, element, "y", component);
+  if (type != "PiecewiseConstantFunction") CheckIncreasing(doc, element, component, x);
   return Build(doc, element, component, [&]() -> functions::FunctionPtr {
     if (type == "PiecewiseLinearFunction") {
       return std::make_shared<functions::PiecewiseLinearFunction>(std::move(x), std::move(y));
@@ -165,6 +188,7 @@ functions::FunctionPtr ReadFunction(const XmlDocument& doc, const pugi::xml_node
     const double error_variance = ReadScalar(doc, element, "error_variance", component, 0.0);
     std::vector<double> x = ReadList(doc, element, "x", component);
     std::vector<double> y = ReadList(doc, element, "y", component);
+    CheckIncreasing(doc, element, component, x);
     return Build(doc, element, component, [&]() -> functions::FunctionPtr {
       return std::make_shared<functions::GCVSpline>(half_order, std::move(x), std::move(y),
                                                     error_variance);

@@ -1,3 +1,4 @@
+#include <sinew/common/atomic_file.h>
 #include <sinew/io/internal/number_text.h>
 #include <sinew/io/storage.h>
 
@@ -286,11 +287,7 @@ std::string FormatStorage(const Storage& storage) {
 }
 
 void WriteStorage(const Storage& storage, const std::string& file) {
-  std::ofstream out(file, std::ios::binary);
-  if (!out) throw Error(SourceLocation{file, 0}, "", "cannot open file for writing");
-  const std::string text = FormatStorage(storage);
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  if (!out) throw Error(SourceLocation{file, 0}, "", "write failed");
+  WriteFileAtomically(file, FormatStorage(storage));
 }
 
 }  // namespace sinew::io

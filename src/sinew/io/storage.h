@@ -69,8 +69,9 @@ Storage ParseStorage(std::string_view text, const std::string& file);
 /// Writes `storage` in OpenSim's layout: name line ("UNKNOWN" when empty), version=1 (unless
 /// metadata has a version), nRows, nColumns (including time), inDegrees, remaining metadata,
 /// endheader, tab-separated labels, then tab-separated rows. Numbers are written in the shortest
-/// form that reads back to the same double (full precision). Throws sinew::Error if the file cannot
-/// be written.
+/// form that reads back to the same double (full precision). The file is written atomically
+/// (sinew::WriteFileAtomically: complete or not at all, a symbolic link replaced, not followed).
+/// Throws sinew::Error if the file cannot be written.
 void WriteStorage(const Storage& storage, const std::string& file);
 
 /// The text WriteStorage writes.

@@ -4,8 +4,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
-#include <random>
 
 namespace sinew::io {
 namespace {
@@ -19,20 +17,11 @@ std::string Padded(std::string text, size_t width) {
   return text;
 }
 
-// A temporary name beside `file`: same folder (so the final rename is atomic), hidden.
-std::string TemporaryName(const std::string& file) {
-  const std::filesystem::path path(file);
-  std::random_device device;
-  const std::string tag = std::to_string(device() % 1000000000u);
-  return (path.parent_path() / ("." + path.filename().string() + ".tmp-" + tag)).string();
-}
-
 }  // namespace
 
 StorageWriter::StorageWriter(const std::string& file, const Storage& header)
-    : file_(file), temp_(TemporaryName(file)), columns_(header.labels.size()) {
-  // "wx": fail rather than follow or reuse anything already at the temporary name.
-  out_ = std::fopen(temp_.c_str(), "wx");
+    : file_(file), atomic_(file), columns_(header.labels.size()) {
+  out_ = std::fopen(atomic_.temporary().c_str(), "wb");
   if (!out_) {
     throw Error(SourceLocation{file_, 0}, "",
                 std::string("cannot create the file: ") + std::strerror(errno));
@@ -54,10 +43,7 @@ StorageWriter::StorageWriter(const std::string& file, const Storage& header)
 }
 
 StorageWriter::~StorageWriter() {
-  if (out_) {
-    std::fclose(out_);
-    std::remove(temp_.c_str());
-  }
+  if (out_) std::fclose(out_);  // the AtomicFile removes the unfinished temporary
 }
 
 void StorageWriter::Check(bool ok, const char* what) {
@@ -65,7 +51,6 @@ void StorageWriter::Check(bool ok, const char* what) {
   const std::string reason = std::strerror(errno);
   if (out_) std::fclose(out_);
   out_ = nullptr;
-  std::remove(temp_.c_str());
   throw Error(SourceLocation{file_, 0}, "",
               std::string("cannot ") + what + ": " + reason + " (nothing was written)");
 }
@@ -102,15 +87,9 @@ void StorageWriter::Finish(const std::string& partial_reason) {
   const int closed = std::fclose(out_);
   out_ = nullptr;
   if (closed != 0) {
-    std::remove(temp_.c_str());
     throw Error(SourceLocation{file_, 0}, "", "cannot close the file (nothing was written)");
   }
-  std::error_code ec;
-  std::filesystem::rename(temp_, file_, ec);
-  if (ec) {
-    std::remove(temp_.c_str());
-    throw Error(SourceLocation{file_, 0}, "", "cannot move the file into place: " + ec.message());
-  }
+  atomic_.Commit();
 }
 
 }  // namespace sinew::io

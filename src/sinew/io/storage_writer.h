@@ -5,6 +5,7 @@
 // followed). An unfinished writer removes its temporary file.
 #pragma once
 
+#include <sinew/common/atomic_file.h>
 #include <sinew/io/storage.h>
 
 #include <cstdio>
@@ -40,7 +41,7 @@ class StorageWriter {
   void Check(bool ok, const char* what);
 
   std::string file_;
-  std::string temp_;
+  AtomicFile atomic_;  // the temporary beside file_, moved into place by Finish
   std::FILE* out_ = nullptr;
   size_t columns_ = 0;
   long rows_ = 0;

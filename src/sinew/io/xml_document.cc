@@ -79,6 +79,79 @@ void MergeNestedComments(std::string& text) {
   }
 }
 
+// Appends code point `c` to `out` as UTF-8.
+void AppendUtf8(char32_t c, std::string& out) {
+  if (c < 0x80) {
+    out += static_cast<char>(c);
+  } else if (c < 0x800) {
+    out += static_cast<char>(0xC0 | (c >> 6));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  } else if (c < 0x10000) {
+    out += static_cast<char>(0xE0 | (c >> 12));
+    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (c >> 18));
+    out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  }
+}
+
+// A file that starts with a UTF-16 byte order mark (as some Windows editors save XML) becomes
+// UTF-8 without it, so the parser, the line index and every message see one encoding. Each
+// newline stays one newline, so line numbers do not move; a lone surrogate becomes U+FFFD.
+// Other text is returned unchanged.
+std::string ConvertUtf16(std::string text, const std::string& file) {
+  const auto byte = [&text](size_t i) { return static_cast<unsigned char>(text[i]); };
+  if (text.size() < 2) return text;
+  const bool little = byte(0) == 0xFF && byte(1) == 0xFE;
+  const bool big = byte(0) == 0xFE && byte(1) == 0xFF;
+  if (!little && !big) return text;
+  if (text.size() % 2 != 0) {
+    throw Error(SourceLocation{file, 0}, "",
+                "a UTF-16 file (it starts with a byte order mark) "
+                "has an odd number of bytes");
+  }
+  const auto unit = [&](size_t i) -> char32_t {
+    return little ? byte(i) | (byte(i + 1) << 8) : (byte(i) << 8) | byte(i + 1);
+  };
+  std::string out;
+  out.reserve(text.size() / 2);
+  for (size_t i = 2; i < text.size(); i += 2) {
+    char32_t c = unit(i);
+    if (c >= 0xD800 && c < 0xDC00 && i + 2 < text.size() && unit(i + 2) >= 0xDC00 &&
+        unit(i + 2) < 0xE000) {
+      c = 0x10000 + ((c - 0xD800) << 10) + (unit(i + 2) - 0xDC00);
+      i += 2;
+    } else if (c >= 0xD800 && c < 0xE000) {
+      c = 0xFFFD;
+    }
+    AppendUtf8(c, out);
+  }
+  return out;
+}
+
+// "a\tb" for a name holding a tab: control characters shown as escapes in messages.
+std::string ShowEscaped(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {
+      out +=
+          "\\x" + std::string(1, "0123456789abcdef"[(c >> 4) & 0xF]) + "0123456789abcdef"[c & 0xF];
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 XmlDocument XmlDocument::Load(const std::string& file) {
@@ -99,7 +172,7 @@ XmlDocument XmlDocument::Load(const std::string& file) {
 XmlDocument XmlDocument::Parse(std::string text, const std::string& file) {
   XmlDocument result;
   result.file_ = file;
-  result.text_ = std::move(text);
+  result.text_ = ConvertUtf16(std::move(text), file);
   MergeNestedComments(result.text_);
   result.IndexLines();
   result.doc_ = std::make_shared<pugi::xml_document>();
@@ -119,21 +192,51 @@ XmlDocument XmlDocument::Parse(std::string text, const std::string& file) {
   if (!result.doc_->document_element()) {
     throw Error(SourceLocation{file, 1}, "", "the document has no root element");
   }
-  result.CheckDepth();
+  result.CheckTree();
   return result;
 }
 
-void XmlDocument::CheckDepth() const {
+void XmlDocument::CheckElement(const pugi::xml_node& node) const {
+  if (node.type() != pugi::node_element) return;
+  // Names become column labels of .sto files, which tabs and newlines would break apart (XML
+  // turns literal ones in attributes into spaces; &#9; and &#10; survive).
+  const std::string_view name = node.attribute("name").value();
+  for (const char c : name) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {
+      Fail(node, "",
+           "the name '" + ShowEscaped(name) +
+               "' holds a tab, newline or other control character; names become column labels "
+               "of .sto files, where these would break the columns");
+    }
+  }
+  // A value split by a comment or processing instruction (<mass>1<!-- c -->0</mass>) is two
+  // pieces of text; reading the first alone would take 1 for 10.
+  int pieces = 0;
+  for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+    const pugi::xml_node_type type = child.type();
+    if ((type == pugi::node_pcdata || type == pugi::node_cdata) &&
+        !TrimSpace(child.value()).empty() && ++pieces == 2) {
+      Fail(node, "",
+           "the text of <" + std::string(node.name()) +
+               "> is split by a comment, processing instruction or element; write the value "
+               "in one piece");
+    }
+  }
+}
+
+void XmlDocument::CheckTree() const {
   // Readers walk the tree recursively; a hostile file must not exhaust the stack. Iterative walk.
   const pugi::xml_node root = doc_->document_element();
   pugi::xml_node node = root;
   int depth = 0;
+  CheckElement(root);
   while (node) {
     if (pugi::xml_node child = node.first_child()) {
       node = child;
       if (++depth > kMaxDepth) {
         Fail(node, "", "elements are nested deeper than " + std::to_string(kMaxDepth) + " levels");
       }
+      CheckElement(node);
       continue;
     }
     while (node && node != root && !node.next_sibling()) {
@@ -142,6 +245,7 @@ void XmlDocument::CheckDepth() const {
     }
     if (!node || node == root) break;
     node = node.next_sibling();
+    CheckElement(node);
   }
 }
 

@@ -24,16 +24,19 @@ BodyMotion ThinMotion(const BodyMotion& motion, double max_fps) {
   return out;
 }
 
-VisualScene ExportAnimation(const model::ModelSpec& spec, const BodyMotion& motion,
-                            const std::string& path, const ExportOptions& options) {
+ExportFormat ExportFormatOf(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  const bool html = ext == ".html" || ext == ".htm";
-  if (!html && ext != ".glb") {
-    throw Error(SourceLocation{path, 0}, "",
-                "cannot tell the export format from '" + ext + "' (use .glb or .html)");
-  }
+  if (ext == ".html" || ext == ".htm") return ExportFormat::kHtml;
+  if (ext == ".glb") return ExportFormat::kGlb;
+  throw Error(SourceLocation{path, 0}, "",
+              "cannot tell the export format from '" + ext + "' (use .glb or .html)");
+}
+
+VisualScene ExportAnimation(const model::ModelSpec& spec, const BodyMotion& motion,
+                            const std::string& path, const ExportOptions& options) {
+  const bool html = ExportFormatOf(path) == ExportFormat::kHtml;
   if (motion.X_GB.size() != motion.times.size()) {
     throw Error("export: the motion has " + std::to_string(motion.times.size()) + " times but " +
                 std::to_string(motion.X_GB.size()) + " frames of poses");

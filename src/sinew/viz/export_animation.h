@@ -20,6 +20,13 @@ struct ExportOptions {
   double max_fps = 0;
 };
 
+/// The two export formats, told by the file name's extension.
+enum class ExportFormat { kGlb, kHtml };
+
+/// The format of `path`: .glb is binary glTF, .html or .htm the HTML viewer (any case). Throws
+/// sinew::Error naming `path` for any other extension, so a command can check before working.
+ExportFormat ExportFormatOf(const std::string& path);
+
 /// The frames of `motion` kept for a frame rate of at most `max_fps` (all when <= 0).
 BodyMotion ThinMotion(const BodyMotion& motion, double max_fps);
 

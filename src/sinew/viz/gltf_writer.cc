@@ -1,10 +1,11 @@
+#include <sinew/common/atomic_file.h>
 #include <sinew/common/error.h>
 #include <sinew/viz/gltf_writer.h>
 
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <string_view>
 
 namespace sinew::viz {
 namespace {
@@ -246,11 +247,8 @@ std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion
 }
 
 void WriteFileBytes(const std::string& path, const std::vector<uint8_t>& bytes) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()),
-            static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) throw Error(SourceLocation{path, 0}, "", "cannot write file");
+  WriteFileAtomically(path,
+                      std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 }  // namespace sinew::viz

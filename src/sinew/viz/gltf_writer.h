@@ -18,7 +18,8 @@ namespace sinew::viz {
 std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion,
                               const std::string& model_name);
 
-/// Writes bytes to a file; throws sinew::Error when the file cannot be written.
+/// Writes bytes to a file, atomically (sinew::WriteFileAtomically); throws sinew::Error when the
+/// file cannot be written.
 void WriteFileBytes(const std::string& path, const std::vector<uint8_t>& bytes);
 
 }  // namespace sinew::viz

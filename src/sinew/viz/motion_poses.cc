@@ -35,6 +35,25 @@ kinematics::MotionColumnMap CheckedMap(const model::ModelSpec& spec, const io::S
   return map;
 }
 
+// Appends to `notes` (when not null) the columns `map` could not use and the coordinates the
+// table does not drive.
+void NoteUnmatched(const model::ModelSpec& spec, const kinematics::MotionColumnMap& map,
+                   Diagnostics* notes) {
+  if (!notes) return;
+  auto note = [notes](const std::string& component, const std::string& message) {
+    Diagnostic d;
+    d.component = component;
+    d.message = message;
+    notes->push_back(std::move(d));
+  };
+  for (const std::string& label : map.unknown) {
+    note("", "column '" + label + "' names no coordinate; ignored");
+  }
+  for (int c : map.missing) {
+    note(spec.coordinates[c].path, "not in the motion table; held at its default value");
+  }
+}
+
 }  // namespace
 
 BodyMotion DefaultPoseMotion(const model::ModelSpec& spec) {
@@ -49,20 +68,7 @@ BodyMotion MotionFromTable(const model::ModelSpec& spec, const io::Storage& tabl
                            Diagnostics* notes) {
   kinematics::KinematicTree tree(spec);
   const kinematics::MotionColumnMap map = CheckedMap(spec, table);
-  if (notes) {
-    auto note = [notes](const std::string& component, const std::string& message) {
-      Diagnostic d;
-      d.component = component;
-      d.message = message;
-      notes->push_back(std::move(d));
-    };
-    for (const std::string& label : map.unknown) {
-      note("", "column '" + label + "' names no coordinate; ignored");
-    }
-    for (int c : map.missing) {
-      note(spec.coordinates[c].path, "not in the motion table; held at its default value");
-    }
-  }
+  NoteUnmatched(spec, map, notes);
   BodyMotion motion;
   for (int row = 0; row < table.NumRows(); ++row) {
     if (row > 0 && !(table.time[row] > table.time[row - 1])) {
@@ -74,10 +80,11 @@ BodyMotion MotionFromTable(const model::ModelSpec& spec, const io::Storage& tabl
   return motion;
 }
 
-std::vector<Transform> PosesAtTime(const model::ModelSpec& spec, const io::Storage& table,
-                                   double t) {
+std::vector<Transform> PosesAtTime(const model::ModelSpec& spec, const io::Storage& table, double t,
+                                   Diagnostics* notes) {
   kinematics::KinematicTree tree(spec);
   const kinematics::MotionColumnMap map = CheckedMap(spec, table);
+  NoteUnmatched(spec, map, notes);
   if (table.NumRows() == 0 || t < table.time.front() || t > table.time.back()) {
     throw Error("time " + std::to_string(t) + " s is outside the table's range");
   }

@@ -22,8 +22,9 @@ BodyMotion MotionFromTable(const model::ModelSpec& spec, const io::Storage& tabl
                            Diagnostics* notes);
 
 /// Body poses at time `t` (s): coordinates interpolated linearly between the two rows
-/// around t. Throws sinew::Error when t is outside the table's time range.
-std::vector<Transform> PosesAtTime(const model::ModelSpec& spec, const io::Storage& table,
-                                   double t);
+/// around t. Unmatched columns and coordinates go to `notes` as in MotionFromTable. Throws
+/// sinew::Error when t is outside the table's time range.
+std::vector<Transform> PosesAtTime(const model::ModelSpec& spec, const io::Storage& table, double t,
+                                   Diagnostics* notes = nullptr);
 
 }  // namespace sinew::viz

@@ -178,12 +178,31 @@ class Canvas {
 
 }  // namespace
 
-Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
-                  const Camera& camera, const RenderOptions& options) {
-  if (options.width <= 0 || options.height <= 0 || options.width > 16384 ||
-      options.height > 16384) {
+size_t RenderBytes(int width, int height) {
+  const size_t pixels = static_cast<size_t>(std::max(width, 0)) * std::max(height, 0);
+  const size_t per_sample = sizeof(float) + sizeof(Vec3);  // depth and colour
+  return pixels * (kSupersample * kSupersample * per_sample + 3);
+}
+
+void CheckRenderSize(int width, int height) {
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384) {
     throw Error("render: image size must be between 1 and 16384 pixels");
   }
+  const size_t bytes = RenderBytes(width, height);
+  if (bytes > kMaxRenderBytes) {
+    constexpr size_t kMiB = size_t{1} << 20;
+    throw Error("render: a " + std::to_string(width) + " x " + std::to_string(height) +
+                " image needs " + std::to_string(bytes / kMiB) +
+                " MiB of frame buffers (2x2 supersampled), more than the cap of " +
+                std::to_string(kMaxRenderBytes / kMiB) + " MiB; ask for fewer pixels (about " +
+                std::to_string(kMaxRenderBytes / RenderBytes(1, 1) / 1000000) +
+                " million at most)");
+  }
+}
+
+Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
+                  const Camera& camera, const RenderOptions& options) {
+  CheckRenderSize(options.width, options.height);
   Canvas canvas(camera, options.width * kSupersample, options.height * kSupersample,
                 options.background);
   // The key light, from above-front-right in ground (OpenSim: x forward, y up, z right); a

@@ -42,7 +42,21 @@ std::pair<Vec3, Vec3> SceneBounds(const VisualScene& scene, const std::vector<Tr
 /// sphere fits the view at the given aspect ratio (width / height).
 Camera FrameCamera(const std::pair<Vec3, Vec3>& bounds, const Vec3& direction, double aspect);
 
-/// Renders the scene with bodies posed at X_GB (one transform per spec body).
+/// The most memory RenderScene may take for its buffers: 1 GiB, about 9 million pixels (a
+/// 3840 x 2160 image fits). The pixel limits alone (16384 x 16384) would allow 30 GB.
+inline constexpr size_t kMaxRenderBytes = size_t{1} << 30;
+
+/// The bytes RenderScene needs for a `width` x `height` image: the 2x2 supersampled depth and
+/// colour buffers and the final image, held together while it resolves (about 115 bytes a
+/// pixel). Encoding the PNG afterwards needs about 12 bytes a pixel, less than that.
+size_t RenderBytes(int width, int height);
+
+/// Throws sinew::Error unless a `width` x `height` image is 1..16384 pixels each way and
+/// RenderBytes(width, height) <= kMaxRenderBytes; the message gives both figures.
+void CheckRenderSize(int width, int height);
+
+/// Renders the scene with bodies posed at X_GB (one transform per spec body). Throws
+/// sinew::Error when CheckRenderSize refuses the size in `options`.
 Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
                   const Camera& camera, const RenderOptions& options);
 

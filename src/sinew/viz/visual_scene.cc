@@ -97,6 +97,7 @@ class SceneBuilder {
       if (fallback) AddPrimitives(spec_, b, radius, DepthColor(depth[b], max_depth), body);
       scene.bodies.push_back(std::move(body));
     }
+    scene.read_meshes = read_;
     return scene;
   }
 
@@ -207,6 +208,7 @@ class SceneBuilder {
     if (std::optional<std::string> path = io::FindMeshFile(file, dirs_)) {
       try {
         mesh = std::make_shared<io::TriangleMesh>(io::ReadMesh(*path));
+        read_.push_back({file, *path});
       } catch (const Error& e) {
         warn(std::string("cannot read mesh: ") + e.what() + "; drawn as primitives");
       }
@@ -225,6 +227,7 @@ class SceneBuilder {
   std::vector<std::string> dirs_;
   std::map<std::string, std::shared_ptr<const io::TriangleMesh>> cache_;
   std::set<std::string> not_found_;  // files of cache_ found in no folder
+  std::vector<ReadMeshFile> read_;   // files of cache_ read, in model order
 };
 
 }  // namespace

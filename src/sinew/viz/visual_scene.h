@@ -46,6 +46,12 @@ struct VisualBody {
 };
 
 /// A geometry whose mesh file was found in none of the searched folders.
+/// A mesh file that was read: the name the model gives and the file found for it.
+struct ReadMeshFile {
+  std::string file;  ///< As the model names it ("r_patella.vtp", "../shared/x.obj", "/abs/y.stl").
+  std::string path;  ///< The file read, in the first search folder that has it (or as given).
+};
+
 struct MissingMesh {
   std::string file;    ///< The mesh file as the model names it (e.g. "r_patella.vtp").
   size_t warning = 0;  ///< Index of its entry in VisualScene::warnings.
@@ -60,6 +66,8 @@ struct VisualScene {
   std::vector<MissingMesh> missing_meshes;
   /// The folders searched for mesh files, in search order (kMesh mode only).
   std::vector<std::string> mesh_dirs;
+  /// Every mesh file read, once each, in model order: where each one came from.
+  std::vector<ReadMeshFile> read_meshes;
 };
 
 /// Options for BuildVisualScene.
@@ -69,7 +77,9 @@ struct VisualOptions {
 };
 
 /// Builds the scene of `spec` in `options.mode`. In kMesh mode a mesh file is searched in the
-/// model's folder, its Geometry/ subfolder, `geometry_dirs`, then $SINEW_GEOMETRY_PATH; a body
+/// model's folder, its Geometry/ subfolder, `geometry_dirs`, then $SINEW_GEOMETRY_PATH, as
+/// OpenSim searches: a relative name is joined to each folder as written (so "../x.vtp" may
+/// leave it), an absolute name is used as given; `read_meshes` says which file was read. A body
 /// whose mesh is missing or unreadable gets a warning naming the file and the folders searched,
 /// and is drawn with primitives instead. Mesh files shared by several bodies are read once.
 VisualScene BuildVisualScene(const model::ModelSpec& spec, const VisualOptions& options);

@@ -18,7 +18,8 @@ namespace sinew::io::internal {
 /// A parsed XML document that knows the line of every node.
 class XmlDocument {
  public:
-  /// Reads and parses `file`. OpenSim's lenient inputs load (see the semantics notes).
+  /// Reads and parses `file`. OpenSim's lenient inputs load (see the semantics notes); a file
+  /// with a UTF-16 byte order mark is converted to UTF-8 first.
   /// Throws sinew::Error when the file cannot be read or is not XML.
   static XmlDocument Load(const std::string& file);
   /// Parses XML held in memory; `file` names it in messages.
@@ -52,8 +53,12 @@ class XmlDocument {
  private:
   XmlDocument() = default;
   void IndexLines();
-  // Fails when elements nest deeper than kMaxDepth (real models nest about 15 levels).
-  void CheckDepth() const;
+  // Fails when elements nest deeper than kMaxDepth (real models nest about 15 levels), or when
+  // CheckElement fails for one of them.
+  void CheckTree() const;
+  // Fails for a `name` attribute holding a control character (tab, newline, ...) and for text
+  // split in pieces by a comment, processing instruction or element.
+  void CheckElement(const pugi::xml_node& node) const;
   static constexpr int kMaxDepth = 200;
 
   std::string file_;
