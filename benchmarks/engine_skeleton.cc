@@ -71,4 +71,27 @@ void BM_Gait2354Accelerations(benchmark::State& bench) {
 }
 BENCHMARK(BM_Gait2354Accelerations)->Unit(benchmark::kMicrosecond);
 
+// One fixed step (h = 1 ms) of semi-implicit Euler on chrono's Rajagopal2015.osim skeleton,
+// timed from the tumbling state every iteration (as the chain benchmarks do).
+void BM_Rajagopal2015EulerStep(benchmark::State& bench) {
+  const sinew::model::ModelSpec spec =
+      sinew::io::ReadOsim(kData + "/projectchrono/chrono/data/opensim/Rajagopal2015.osim");
+  const auto system = sinew::opensim::BuildSystem(spec);
+  sinew::engine::State start = sinew::engine::MakeDefaultState(*system);
+  for (int c = 0; c < system->num_coordinates(); ++c) start.u[c] = std::sin(c + 1.0);
+  sinew::engine::PlaceBodies(*system, start);
+  sinew::engine::IntegratorSettings settings;
+  settings.step = 1e-3;
+  auto integrator = sinew::engine::MakeIntegrator("euler", *system, settings);
+  for (auto _ : bench) {
+    sinew::engine::State state = start;
+    integrator->StepTo(state, start.t + 1e-3);
+    benchmark::DoNotOptimize(state.bodies.data());
+  }
+  bench.counters["proj_factorizations"] =
+      benchmark::Counter(static_cast<double>(integrator->stats().projection_factorizations),
+                         benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_Rajagopal2015EulerStep)->Unit(benchmark::kMicrosecond);
+
 }  // namespace
