@@ -6,6 +6,7 @@
 #include <sinew/io/storage.h>
 #include <sinew/io/storage_labels.h>
 #include <sinew/kinematics/body_kinematics.h>
+#include <sinew/kinematics/coordinate_couplers.h>
 #include <sinew/kinematics/coordinate_motion.h>
 #include <sinew/kinematics/forward_kinematics.h>
 #include <sinew/kinematics/kinematic_tree.h>
@@ -41,6 +42,8 @@ void Run(const Options& options) {
   }
   std::vector<double> q = tree.default_q();
   std::vector<Transform> X_GB(tree.num_bodies());
+  // Coupler-driven coordinates (Rajagopal's patellae) follow their drivers.
+  const kinematics::CoordinateCouplers couplers(spec);
 
   io::Storage motion;
   kinematics::MotionColumnMap map;
@@ -56,7 +59,9 @@ void Run(const Options& options) {
     WarnUnusedColumns(unknown, options.motion, "they name no coordinate of the model");
     std::vector<std::string> missing;
     for (int c : map.missing) {
-      if (spec.coordinates[c].joint != model::kNone) missing.push_back(spec.coordinates[c].name);
+      if (spec.coordinates[c].joint != model::kNone && !couplers.Drives(c)) {
+        missing.push_back(spec.coordinates[c].name);
+      }
     }
     if (!missing.empty()) {
       std::cerr << "sinew: note: " << missing.size() << " coordinate(s) of the model are not in "
@@ -81,6 +86,7 @@ void Run(const Options& options) {
           spec, map, std::span<const double>(motion.values.data() + r * num_columns, num_columns),
           motion.in_degrees, q);
     }
+    couplers.Apply(q);
     kinematics::CalcBodyPoses(tree, q, X_GB);
     bodies.AppendRow(motion.time[r], kinematics::CalcBodyKinematicsRow(spec, X_GB));
     markers.AppendRow(motion.time[r], kinematics::CalcMarkerLocationRow(spec, X_GB));

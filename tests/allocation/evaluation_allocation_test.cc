@@ -21,6 +21,11 @@ std::atomic<bool> g_counting{false};
 std::atomic<long> g_allocations{0};
 }  // namespace
 
+// GCC cannot see that this new and delete pair up (both are malloc/free here).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
+
 void* operator new(std::size_t size) {
   if (g_counting.load()) ++g_allocations;
   void* p = std::malloc(size == 0 ? 1 : size);

@@ -36,6 +36,13 @@ SimulationResult Simulate(Integrator& integrator, State& state, const Simulation
         } else {
           integrator.Interpolate(report_time(next), reported);
           report(reported);
+          // One long step (a body at rest) may hold many report times: honour a stop between
+          // them, the state then being the last one reported.
+          if (stopped()) {
+            ++result.reports;
+            state = reported;
+            return result;
+          }
         }
         ++result.reports;
       }

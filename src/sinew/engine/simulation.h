@@ -16,8 +16,8 @@ namespace sinew::engine {
 struct SimulationOptions {
   double duration = 0.0;          ///< simulated time (s), >= 0
   double report_interval = 0.01;  ///< time between reported states (s), > 0
-  /// Checked after every step: when it becomes true the run stops there (the states reported
-  /// so far stand; the result says it stopped). May be null.
+  /// Checked after every step and every reported state: when it becomes true the run stops
+  /// there (the states reported so far stand; the result says it stopped). May be null.
   const std::atomic<bool>* stop = nullptr;
   /// Called after every step with the fraction of the duration done and the time (may be
   /// empty).

@@ -57,6 +57,7 @@ void ReadConstraints(ReadContext& ctx, const pugi::xml_node& model) {
     }
     if (c.type == "CoordinateCouplerConstraint") {
       c.function = ReadFunctionProperty(doc, node, "coupled_coordinates_function", c.path);
+      c.scale_factor = ReadDoubleOr(doc, node, "scale_factor", c.path, 1.0);
     }
     c.element = ToElement(doc, node);
     c.where = doc.Where(node);

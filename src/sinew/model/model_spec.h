@@ -188,6 +188,7 @@ struct ConstraintSpec {
   std::vector<int> independent_coordinates;
   int dependent_coordinate = kNone;
   functions::FunctionPtr function;
+  double scale_factor = 1.0;  ///< CoordinateCouplerConstraint: q_dep = scale_factor f(q_ind)
   Element element;
   SourceLocation where;
 };

@@ -53,8 +53,7 @@ std::shared_ptr<engine::Constraint> BuildCoordinateCoupler(const ConstraintBuild
   const int dependent = CoupledCoordinate(in, c.dependent_coordinate);
   try {
     return std::make_shared<forces::CoordinateCouplerConstraint>(
-        c.name, std::move(independent), dependent, c.function,
-        in.values.Double("scale_factor", 1.0));
+        c.name, std::move(independent), dependent, c.function, c.scale_factor);
   } catch (const Error& error) {
     in.values.Fail(error.message());
   }

@@ -1,3 +1,4 @@
+#include <sinew/kinematics/coordinate_couplers.h>
 #include <sinew/kinematics/coordinate_motion.h>
 #include <sinew/kinematics/forward_kinematics.h>
 #include <sinew/kinematics/kinematic_tree.h>
@@ -8,7 +9,8 @@
 namespace sinew::viz {
 namespace {
 
-// The coordinates a table row drives, over the model's defaults.
+// The coordinates a table row drives, over the model's defaults, with coupler-driven
+// coordinates set from their drivers.
 std::vector<double> RowCoordinates(const model::ModelSpec& spec,
                                    const kinematics::KinematicTree& tree,
                                    const kinematics::MotionColumnMap& map, const io::Storage& table,
@@ -17,6 +19,7 @@ std::vector<double> RowCoordinates(const model::ModelSpec& spec,
   const auto first = table.values.begin() + static_cast<ptrdiff_t>(row) * table.NumColumns();
   const std::vector<double> values(first, first + table.NumColumns());
   kinematics::ApplyMotionRow(spec, map, values, table.in_degrees, q);
+  kinematics::CoordinateCouplers(spec).Apply(q);
   return q;
 }
 
@@ -49,7 +52,9 @@ void NoteUnmatched(const model::ModelSpec& spec, const kinematics::MotionColumnM
   for (const std::string& label : map.unknown) {
     note("", "column '" + label + "' names no coordinate; ignored");
   }
+  const kinematics::CoordinateCouplers couplers(spec);
   for (int c : map.missing) {
+    if (couplers.Drives(c)) continue;  // set from its coupler's drivers
     note(spec.coordinates[c].path, "not in the motion table; held at its default value");
   }
 }
@@ -60,7 +65,9 @@ BodyMotion DefaultPoseMotion(const model::ModelSpec& spec) {
   kinematics::KinematicTree tree(spec);
   BodyMotion motion;
   motion.times = {0.0};
-  motion.X_GB = {Poses(tree, tree.default_q())};
+  std::vector<double> q = tree.default_q();
+  kinematics::CoordinateCouplers(spec).Apply(q);
+  motion.X_GB = {Poses(tree, q)};
   return motion;
 }
 

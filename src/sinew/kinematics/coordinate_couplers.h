@@ -1,0 +1,40 @@
+// The enforced CoordinateCouplerConstraints of a model applied to a set of coordinate values:
+// each dependent coordinate takes the value scale_factor f(independent coordinates), as
+// OpenSim's assembly gives it. Used wherever poses are made from coordinates that a table or
+// the defaults give (kinematics, export, render), so coupler-driven bodies (Rajagopal's
+// patellae) follow their drivers instead of staying at their defaults.
+#pragma once
+
+#include <sinew/functions/function.h>
+#include <sinew/model/model_spec.h>
+
+#include <span>
+#include <vector>
+
+namespace sinew::kinematics {
+
+/// A model's enforced couplers, ordered so that a coupler driven by another's dependent
+/// coordinate comes after it.
+class CoordinateCouplers {
+ public:
+  /// Throws sinew::Error (file, line, constraint) for a cycle of couplers.
+  explicit CoordinateCouplers(const model::ModelSpec& spec);
+
+  /// Sets every dependent coordinate of `q` (ModelSpec::coordinates order) from its
+  /// independent ones.
+  void Apply(std::span<double> q) const;
+  /// True when coordinate `c` is set by a coupler.
+  bool Drives(int c) const;
+  bool empty() const { return couplers_.empty(); }
+
+ private:
+  struct Coupler {
+    int dependent;
+    std::vector<int> independent;
+    functions::FunctionPtr function;
+    double scale;
+  };
+  std::vector<Coupler> couplers_;
+};
+
+}  // namespace sinew::kinematics
