@@ -5,8 +5,15 @@
 
 #include <iostream>
 #include <set>
+#include <sstream>
 
 namespace sinew::cli {
+
+std::string ShowNumber(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
 namespace {
 
 // "1 joint is replaced by a spherical stand-in (/jointset/j: FancyJoint)", or "".

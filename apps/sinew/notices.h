@@ -14,6 +14,9 @@ namespace sinew::cli {
 /// "a, b, c and 2 more" from the first `shown` of `names` ("" when empty).
 std::string FirstFew(const std::vector<std::string>& names, size_t shown = 3);
 
+/// A number as a message shows it (stream default: 6 significant digits).
+std::string ShowNumber(double value);
+
 /// What `sinew simulate` leaves out of `spec` (opensim::FindNotSimulated: muscles, other
 /// forces, constraints, wrap objects, contact geometry, controllers..., and joints replaced by
 /// spherical stand-ins) as one warning line on stderr naming `model_path` for `sinew inspect`.

@@ -6,20 +6,13 @@
 #include <cmath>
 #include <sstream>
 
+#include "apps/sinew/notices.h"
+
 namespace sinew::cli {
-namespace {
-
-std::string Show(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
-
-}  // namespace
 
 CLI::Validator FiniteNumber(double min, bool exclusive) {
   const std::string bound =
-      std::isinf(min) ? std::string() : std::string(exclusive ? " > " : " >= ") + Show(min);
+      std::isinf(min) ? std::string() : std::string(exclusive ? " > " : " >= ") + ShowNumber(min);
   return CLI::Validator(
       [min, exclusive, bound](std::string& text) -> std::string {
         double value = 0;
@@ -35,14 +28,16 @@ CLI::Validator FiniteNumber(double min, bool exclusive) {
 void CheckSimulationSize(double duration, double report_interval, double step) {
   const double rows = duration / report_interval;
   if (!(rows <= kMaxOutputRows)) {
-    throw Error("--duration " + Show(duration) + " with --report-interval " +
-                Show(report_interval) + " asks for " + Show(rows) + " output rows; at most " +
-                Show(kMaxOutputRows) + " are allowed (make the report interval longer)");
+    throw Error("--duration " + ShowNumber(duration) + " with --report-interval " +
+                ShowNumber(report_interval) + " asks for " + ShowNumber(rows) +
+                " output rows; at most " + ShowNumber(kMaxOutputRows) +
+                " are allowed (make the report interval longer)");
   }
   if (step > 0 && !(duration / step <= kMaxSteps)) {
-    throw Error("--duration " + Show(duration) + " with --step " + Show(step) +
-                " asks for at least " + Show(duration / step) + " integration steps; at most " +
-                Show(kMaxSteps) + " are allowed (make the step longer)");
+    throw Error("--duration " + ShowNumber(duration) + " with --step " + ShowNumber(step) +
+                " asks for at least " + ShowNumber(duration / step) +
+                " integration steps; at most " + ShowNumber(kMaxSteps) +
+                " are allowed (make the step longer)");
   }
 }
 

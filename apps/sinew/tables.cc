@@ -15,12 +15,6 @@
 namespace sinew::cli {
 namespace {
 
-std::string Show(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
-
 // What every command needs of a table before it makes poses from it: a finite, increasing time
 // column and finite values in every column that names a coordinate (NaN would reach bodies.sto
 // and the .glb). A repeated label is a warning: the first such column is the one used.
@@ -31,13 +25,13 @@ void CheckTable(const io::Storage& table, const std::string& path, const model::
   for (int row = 0; row < table.NumRows(); ++row) {
     const double t = table.time[row];
     if (!std::isfinite(t)) {
-      fail("column '" + table.time_label + "', row " + std::to_string(row + 1) + ": " + Show(t) +
-           " is not a finite time");
+      fail("column '" + table.time_label + "', row " + std::to_string(row + 1) + ": " +
+           ShowNumber(t) + " is not a finite time");
     }
     if (row > 0 && !(t > table.time[row - 1])) {
       fail("column '" + table.time_label + "' must increase, but row " + std::to_string(row + 1) +
-           " has " + Show(t) + (t == table.time[row - 1] ? ", the same as" : ", less than") +
-           " row " + std::to_string(row) + " (" + Show(table.time[row - 1]) + ")");
+           " has " + ShowNumber(t) + (t == table.time[row - 1] ? ", the same as" : ", less than") +
+           " row " + std::to_string(row) + " (" + ShowNumber(table.time[row - 1]) + ")");
     }
   }
   std::map<std::string, int> first_column;
@@ -60,7 +54,7 @@ void CheckTable(const io::Storage& table, const std::string& path, const model::
       const double value = table.Value(row, column);
       if (!std::isfinite(value)) {
         fail("column '" + table.labels[column] + "', row " + std::to_string(row + 1) + " (" +
-             table.time_label + " " + Show(table.time[row]) + "): " + Show(value) +
+             table.time_label + " " + ShowNumber(table.time[row]) + "): " + ShowNumber(value) +
              " is not a finite number, and the column names a coordinate");
       }
     }

@@ -21,16 +21,21 @@
 namespace sinew {
 namespace {
 
-TEST(CorpusSimulateTest, EveryModelSimulatesOrIsRefusedClearly) {
-  SINEW_SKIP_WITHOUT_CORPUS();
-  const std::filesystem::path root = testing::CorpusDir();
+// The corpus's .osim files under 3 MB, sorted.
+std::vector<std::filesystem::path> CorpusModels() {
   std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(testing::CorpusDir())) {
     if (entry.path().extension() == ".osim" && entry.file_size() < 3'000'000) {
       files.push_back(entry.path());
     }
   }
   std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(CorpusSimulateTest, EveryModelSimulatesOrIsRefusedClearly) {
+  SINEW_SKIP_WITHOUT_CORPUS();
+  const std::vector<std::filesystem::path> files = CorpusModels();
   int simulated = 0;
   std::map<std::string, std::string> refused;  // file name -> error message
   for (const auto& file : files) {
@@ -81,14 +86,7 @@ TEST(CorpusSimulateTest, EveryModelSimulatesOrIsRefusedClearly) {
 // models that the parser refuses, with the reason.
 TEST(CorpusSimulateTest, EveryModelSimulatesWithItsForcesAndConstraints) {
   SINEW_SKIP_WITHOUT_CORPUS();
-  const std::filesystem::path root = testing::CorpusDir();
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
-    if (entry.path().extension() == ".osim" && entry.file_size() < 3'000'000) {
-      files.push_back(entry.path());
-    }
-  }
-  std::sort(files.begin(), files.end());
+  const std::vector<std::filesystem::path> files = CorpusModels();
   int simulated = 0, with_couplers = 0;
   std::map<std::string, std::string> refused;
   for (const auto& file : files) {
