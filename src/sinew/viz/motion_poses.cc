@@ -13,13 +13,14 @@ namespace {
 // coordinates set from their drivers.
 std::vector<double> RowCoordinates(const model::ModelSpec& spec,
                                    const kinematics::KinematicTree& tree,
+                                   const kinematics::CoordinateCouplers& couplers,
                                    const kinematics::MotionColumnMap& map, const io::Storage& table,
                                    int row) {
   std::vector<double> q = tree.default_q();
   const auto first = table.values.begin() + static_cast<ptrdiff_t>(row) * table.NumColumns();
   const std::vector<double> values(first, first + table.NumColumns());
   kinematics::ApplyMotionRow(spec, map, values, table.in_degrees, q);
-  kinematics::CoordinateCouplers(spec).Apply(q);
+  couplers.Apply(q);
   return q;
 }
 
@@ -41,7 +42,7 @@ kinematics::MotionColumnMap CheckedMap(const model::ModelSpec& spec, const io::S
 // Appends to `notes` (when not null) the columns `map` could not use and the coordinates the
 // table does not drive.
 void NoteUnmatched(const model::ModelSpec& spec, const kinematics::MotionColumnMap& map,
-                   Diagnostics* notes) {
+                   const kinematics::CoordinateCouplers& couplers, Diagnostics* notes) {
   if (!notes) return;
   auto note = [notes](const std::string& component, const std::string& message) {
     Diagnostic d;
@@ -52,7 +53,6 @@ void NoteUnmatched(const model::ModelSpec& spec, const kinematics::MotionColumnM
   for (const std::string& label : map.unknown) {
     note("", "column '" + label + "' names no coordinate; ignored");
   }
-  const kinematics::CoordinateCouplers couplers(spec);
   for (int c : map.missing) {
     if (couplers.Drives(c)) continue;  // set from its coupler's drivers
     note(spec.coordinates[c].path, "not in the motion table; held at its default value");
@@ -75,14 +75,15 @@ BodyMotion MotionFromTable(const model::ModelSpec& spec, const io::Storage& tabl
                            Diagnostics* notes) {
   kinematics::KinematicTree tree(spec);
   const kinematics::MotionColumnMap map = CheckedMap(spec, table);
-  NoteUnmatched(spec, map, notes);
+  const kinematics::CoordinateCouplers couplers(spec);  // built once, applied to every row
+  NoteUnmatched(spec, map, couplers, notes);
   BodyMotion motion;
   for (int row = 0; row < table.NumRows(); ++row) {
     if (row > 0 && !(table.time[row] > table.time[row - 1])) {
       throw Error("motion table times must increase (row " + std::to_string(row + 1) + ")");
     }
     motion.times.push_back(table.time[row]);
-    motion.X_GB.push_back(Poses(tree, RowCoordinates(spec, tree, map, table, row)));
+    motion.X_GB.push_back(Poses(tree, RowCoordinates(spec, tree, couplers, map, table, row)));
   }
   return motion;
 }
@@ -91,7 +92,8 @@ std::vector<Transform> PosesAtTime(const model::ModelSpec& spec, const io::Stora
                                    Diagnostics* notes) {
   kinematics::KinematicTree tree(spec);
   const kinematics::MotionColumnMap map = CheckedMap(spec, table);
-  NoteUnmatched(spec, map, notes);
+  const kinematics::CoordinateCouplers couplers(spec);  // built once, applied to every row
+  NoteUnmatched(spec, map, couplers, notes);
   if (table.NumRows() == 0 || t < table.time.front() || t > table.time.back()) {
     throw Error("time " + std::to_string(t) + " s is outside the table's range");
   }
@@ -99,10 +101,10 @@ std::vector<Transform> PosesAtTime(const model::ModelSpec& spec, const io::Stora
   const auto it = std::lower_bound(table.time.begin(), table.time.end(), t);
   const int hi = static_cast<int>(it - table.time.begin());
   const int lo = std::max(0, hi - 1);
-  std::vector<double> q = RowCoordinates(spec, tree, map, table, hi);
+  std::vector<double> q = RowCoordinates(spec, tree, couplers, map, table, hi);
   if (hi != lo && table.time[hi] > table.time[lo]) {
     const double s = (t - table.time[lo]) / (table.time[hi] - table.time[lo]);
-    const std::vector<double> q0 = RowCoordinates(spec, tree, map, table, lo);
+    const std::vector<double> q0 = RowCoordinates(spec, tree, couplers, map, table, lo);
     for (size_t i = 0; i < q.size(); ++i) q[i] = q0[i] + s * (q[i] - q0[i]);
   }
   return Poses(tree, q);
