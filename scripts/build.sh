@@ -13,5 +13,7 @@ case "$kind" in
   *) echo "usage: $0 [release|asan]" >&2; exit 1 ;;
 esac
 flags+=(-DSINEW_CORPUS_DIR="${SINEW_CORPUS_DIR:-}" -DSINEW_REQUIRE_CORPUS="${SINEW_REQUIRE_CORPUS:-OFF}")
+# Several checkouts (git worktrees) share ccache's objects when paths are taken relative to them.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$(dirname "$root")}"
 cmake -S "$root" -B "$root/build/$kind" -G Ninja -DSINEW_WERROR=ON "${flags[@]}" >/dev/null
 cmake --build "$root/build/$kind" -j "$(nproc)"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs every dependency Sinew needs from Debian packages. Idempotent: quick when all is there.
 set -euo pipefail
-packages=(cmake ninja-build g++ clang libclang-rt-14-dev
+packages=(cmake ninja-build ccache g++ clang libclang-rt-14-dev
   libeigen3-dev libpugixml-dev libcli11-dev nlohmann-json3-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   chromium)
