@@ -1,0 +1,47 @@
+// The contract between a muscle path and a wrapping surface (WrapSphere, WrapCylinder,
+// WrapEllipsoid, WrapTorus, ...): given the two path points on either side of the surface,
+// expressed in the surface's own frame W, a surface says whether the straight segment between
+// them is wrapped and, if so, where the path leaves the straight line (the two tangent points)
+// and how long the path is on the surface between them.
+//
+// Why tangent points suffice for moment arms and speeds: a wrapped path is locally the shortest
+// path over the surface, so moving a tangent point along the surface does not change the length
+// to first order. The path's length derivative is then the sum, over its straight segments, of
+// the unit direction of each segment dotted with the relative velocity of its ends, with the
+// tangent points moving rigidly with the surface's body; OpenSim's moment arms follow the same
+// rule (they are computed from the forces along the straight segments).
+#pragma once
+
+#include <sinew/math/types.h>
+
+#include <vector>
+
+namespace sinew::paths {
+
+/// How a path uses one wrap object (OpenSim's PathWrap).
+struct WrapOptions {
+  /// OpenSim's `method` for WrapEllipsoid: hybrid, midpoint or axial (ignored by other shapes).
+  enum class Method { kHybrid, kMidpoint, kAxial } method = Method::kHybrid;
+};
+
+/// What wrapping the segment from P to S over a surface gives, all in the surface frame W.
+struct WrapResult {
+  /// False when the straight segment P-S does not touch the surface, or the wrap is excluded
+  /// by its quadrant: the path then stays straight between P and S.
+  bool wrapped = false;
+  Vec3 p_WT1 = Vec3::Zero();  ///< first tangent point (where the path leaves the line from P)
+  Vec3 p_WT2 = Vec3::Zero();  ///< second tangent point (where it leaves the surface toward S)
+  double arc_length = 0.0;    ///< length of the path on the surface, from T1 to T2 (m)
+  /// Points along the path on the surface, from T1 to T2 inclusive, for drawing (may be empty).
+  std::vector<Vec3> arc_points;
+};
+
+/// A wrapping surface fixed in its frame W. Stateless and thread-safe: Wrap is const.
+class WrapSurface {
+ public:
+  virtual ~WrapSurface() = default;
+  /// Wraps the segment from p_WP to p_WS (the path points before and after the surface).
+  virtual WrapResult Wrap(const Vec3& p_WP, const Vec3& p_WS, const WrapOptions& options) const = 0;
+};
+
+}  // namespace sinew::paths
