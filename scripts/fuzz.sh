@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Builds Sinew's libFuzzer targets with clang + ASan + UBSan (in build/fuzz) and runs each of them
-# in turn, the fuzzing time SECONDS (default 60) split evenly between them (at least 1 s each);
-# the build does not count. Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
+# Builds Sinew's libFuzzer targets in the sanitizer build (build/asan: clang + ASan + UBSan, the
+# same build the sanitizer tests run in, so CI compiles the library once for both) and runs each
+# of them in turn, the fuzzing time SECONDS (default 60) split evenly between them (at least 1 s
+# each); the build does not count. Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
 #   targets: osim_reader storage_reader mesh_reader controls_reader simulate (default: all)
 # Seeds: the small files of tests/data (.osim, .sto/.mot, .vtp, ControlSet .xml), the bad inputs
-# in fuzz/seeds/<target>/, plus the generated ones fuzz_seeds writes; corpora grow across runs in build/fuzz/corpus/<target>.
-# Findings go to build/fuzz/artifacts/, each run's log to build/fuzz/logs/<target>.log.
+# in fuzz/seeds/<target>/, plus the generated ones fuzz_seeds writes; corpora grow across runs in build/asan/fuzz-corpus/<target>.
+# Findings go to build/asan/fuzz-artifacts/, each run's log to build/asan/fuzz-logs/<target>.log.
 # Exit status is non-zero when any target finds a crash, a leak, a timeout or an out-of-memory.
 set -euo pipefail
 seconds=${1:-60}
@@ -13,14 +14,11 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(osim_reader storage_reader mesh_reader controls_reader simulate)
 root=$(cd "$(dirname "$0")/.." && pwd)
-build="$root/build/fuzz"
+build="$root/build/asan"
 
-CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DSINEW_BUILD_FUZZERS=ON -DSINEW_BUILD_TESTS=OFF -DSINEW_BUILD_BENCHMARKS=OFF \
-  -DSINEW_BUILD_EXAMPLES=OFF >/dev/null
 build_targets=(fuzz_seeds)
 for t in "${targets[@]}"; do build_targets+=("fuzz_$t"); done
-cmake --build "$build" --target "${build_targets[@]}" -j "$(nproc)"
+bash "$root/scripts/build.sh" asan --target "${build_targets[@]}"
 
 seeds=$(mktemp -d)
 trap 'rm -rf "$seeds"' EXIT
@@ -62,17 +60,17 @@ dict_of() {
 
 share=$((seconds / ${#targets[@]}))
 [ "$share" -ge 1 ] || share=1
-mkdir -p "$build/artifacts" "$build/logs"
+mkdir -p "$build/fuzz-artifacts" "$build/fuzz-logs"
 failed=()
 for t in "${targets[@]}"; do
-  corpus="$build/corpus/$t"
+  corpus="$build/fuzz-corpus/$t"
   mkdir -p "$corpus"
-  log="$build/logs/$t.log"
+  log="$build/fuzz-logs/$t.log"
   echo "fuzz: $t for $share s (log: $log)"
   status=0
   "$build/fuzz/fuzz_$t" "$corpus" "$seeds/$t" -dict="$(dict_of "$t")" \
     -max_total_time="$share" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
-    -artifact_prefix="$build/artifacts/${t}-" -print_final_stats=1 >"$log" 2>&1 || status=$?
+    -artifact_prefix="$build/fuzz-artifacts/${t}-" -print_final_stats=1 >"$log" 2>&1 || status=$?
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
   cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 || true)
@@ -83,7 +81,7 @@ for t in "${targets[@]}"; do
   fi
 done
 if [ ${#failed[@]} -gt 0 ]; then
-  echo "fuzz: FAILED: ${failed[*]} (reproduce: build/fuzz/fuzz/fuzz_TARGET ARTIFACT)" >&2
+  echo "fuzz: FAILED: ${failed[*]} (reproduce: build/asan/fuzz/fuzz_TARGET ARTIFACT)" >&2
   exit 1
 fi
 echo "fuzz: no findings"
