@@ -4,6 +4,8 @@
 #include <sinew/common/error.h>
 #include <sinew/paths/wrap_sphere.h>
 
+#include <numbers>
+
 #include "wrap_reference.h"
 
 namespace sinew::paths {
@@ -107,6 +109,24 @@ TEST(WrapSphereTest, QuadrantSendsThePathAroundItsActiveSide) {
   ASSERT_TRUE(above.wrapped);
   EXPECT_TRUE(above.mandatory);
   EXPECT_NEAR(PathLength(p, s, above), CircleWrapLength(p, s, kRadius, false), 1e-12);
+}
+
+TEST(WrapSphereTest, ThroughTheCentreEveryPlaneGivesTheClosedFormLength) {
+  // The plane of P, S and the centre is undefined; OpenSim reuses its previous tangent points,
+  // a stateless surface picks a plane (the quadrant's axis when constrained). Every plane
+  // through the line gives the same length: 2 sqrt(9 - 1) + (pi - 2 acos(1/3)).
+  const Vec3 p(-3, 0, 0);
+  const Vec3 s(3, 0, 0);
+  const double expected = 2 * std::sqrt(8.0) + std::numbers::pi - 2 * std::acos(1.0 / 3.0);
+  const WrapResult free = WrapSphere(kRadius, {}).Wrap(p, s, kOptions);
+  ASSERT_TRUE(free.wrapped);
+  EXPECT_NEAR(PathLength(p, s, free), expected, 1e-12);
+  const WrapResult below =
+      WrapSphere(kRadius, ParseWrapQuadrant("-z", "test")).Wrap(p, s, kOptions);
+  ASSERT_TRUE(below.wrapped);
+  EXPECT_NEAR(PathLength(p, s, below), expected, 1e-12);
+  EXPECT_LT(below.p_WT1.z(), 0.0);
+  EXPECT_LT(below.p_WT2.z(), 0.0);
 }
 
 TEST(WrapSphereTest, SwappingPAndSReversesThePath) {

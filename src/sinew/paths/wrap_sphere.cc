@@ -30,14 +30,19 @@ bool SegmentCrossesSphere(const Vec3& p_WP, const Vec3& p_WS, double radius) {
   return t_in > 0.0 && t_in < 1.0 && t_out > 0.0 && t_out < 1.0;
 }
 
-// The unit normal of the plane through P, S and the centre. When the line passes through the
-// centre every such plane gives the same length; OpenSim then reuses the previous solution's
-// tangent points (state a const surface does not have), so Sinew takes the plane that also
-// holds the quadrant's axis, or W's axis most perpendicular to the line when unconstrained.
+// True when the line P-S passes (within OpenSim's threshold) through the centre, so the plane
+// of P, S and the centre is undefined.
+bool PassesThroughCentre(const Vec3& p_WP, const Vec3& p_WS) {
+  return (p_WP - p_WS).normalized().cross(p_WS.normalized()).norm() < kThroughCentre;
+}
+
+// The unit normal of the plane through P, S and the centre. Through the centre, every plane
+// holding the line gives the same length; OpenSim then reuses the previous evaluation's tangent
+// points (state a const surface does not have), so Sinew takes the plane that also holds the
+// quadrant's axis, or W's axis most perpendicular to the line when unconstrained.
 Vec3 WrapPlaneNormal(const Vec3& p_WP, const Vec3& p_WS, const WrapQuadrant& quadrant) {
   const Vec3 line = (p_WP - p_WS).normalized();
-  const Vec3 normal = line.cross(p_WS.normalized());
-  if (normal.norm() >= kThroughCentre) return normal.normalized();
+  if (!PassesThroughCentre(p_WP, p_WS)) return line.cross(p_WS.normalized()).normalized();
   Vec3 side = quadrant.constrained() ? quadrant.ActiveDirection() : Vec3::Zero();
   if (!quadrant.constrained() || line.cross(side).norm() < kThroughCentre) {
     Eigen::Index axis = 0;
@@ -98,7 +103,13 @@ WrapResult WrapSphere::Wrap(const Vec3& p_WP, const Vec3& p_WS, const WrapOption
   const CircleTangents from_s = CalcCircleTangents(p_WS, n, radius_);
   TangentPair pair = ChooseClosestPair(from_p, Vec3::Zero(), from_s, Vec3::Zero());
   bool long_way = false;
-  if (quadrant_.constrained()) {
+  if (quadrant_.constrained() && PassesThroughCentre(p_WP, p_WS)) {
+    // OpenSim skips its quadrant rules here (it jumps to the path with its previous tangent
+    // points, a plain wrap); Sinew keeps the tangent points facing the active side.
+    const Vec3 active = quadrant_.ActiveDirection();
+    pair = {from_p.plus.dot(active) >= from_p.minus.dot(active) ? from_p.plus : from_p.minus,
+            from_s.plus.dot(active) >= from_s.minus.dot(active) ? from_s.plus : from_s.minus};
+  } else if (quadrant_.constrained()) {
     const bool p_active = quadrant_.OnActiveSide(p_WP);
     const bool s_active = quadrant_.OnActiveSide(p_WS);
     if (p_active || s_active) {
