@@ -7,12 +7,16 @@
 
 #include <functional>
 
+#include "wrap_checks.h"
 #include "wrap_reference.h"
 
 namespace sinew::paths {
 namespace {
 
 using testing::CircleWrapLength;
+using testing::ExpectContinuousAcrossEngagement;
+using testing::ExpectReversible;
+using testing::ExpectWrapOnSide;
 using testing::PathLength;
 using testing::RandomPoint;
 
@@ -146,66 +150,30 @@ TEST(WrapCylinderTest, QuadrantSendsThePathAroundItsActiveSide) {
         .Wrap(from, to, kSingle);
   };
   // Both points on the active side, the segment through the cylinder: mandatory, short side.
-  const WrapResult above = wrap("+y", p, s);
-  ASSERT_TRUE(above.wrapped);
-  EXPECT_TRUE(above.mandatory);
-  EXPECT_GT(above.p_WT1.y(), 0.0);
-  EXPECT_NEAR(PathLength(p, s, above), CircleWrapLength(p, s, kRadius, false), 1e-12);
+  ExpectWrapOnSide(wrap("+y", p, s), p, s, 1, +1, true, CircleWrapLength(p, s, kRadius, false));
   // Neither point on the active side: the path goes round the -y side (the longer way).
-  const WrapResult below = wrap("-y", p, s);
-  ASSERT_TRUE(below.wrapped);
-  EXPECT_FALSE(below.mandatory);
-  EXPECT_LT(below.p_WT1.y(), 0.0);
-  EXPECT_LT(below.p_WT2.y(), 0.0);
-  EXPECT_NEAR(PathLength(p, s, below), CircleWrapLength(p, s, kRadius, true), 1e-12);
+  ExpectWrapOnSide(wrap("-y", p, s), p, s, 1, -1, false, CircleWrapLength(p, s, kRadius, true));
   // Points on both sides, the line passing beside the cylinder on the inactive side: OpenSim
   // pulls the path round the active side (a plain wrap): the far side from the line.
   const Vec3 p2 = InRadii(-4, 1.5, 0);
   const Vec3 s2 = InRadii(4, -4.5, 0);
-  const WrapResult pulled = wrap("+y", p2, s2);
-  ASSERT_TRUE(pulled.wrapped);
-  EXPECT_FALSE(pulled.mandatory);
-  EXPECT_GT(pulled.p_WT1.y(), 0.0);
-  EXPECT_GT(pulled.p_WT2.y(), 0.0);
-  EXPECT_NEAR(PathLength(p2, s2, pulled), CircleWrapLength(p2, s2, kRadius, true), 1e-12);
+  ExpectWrapOnSide(wrap("+y", p2, s2), p2, s2, 1, +1, false,
+                   CircleWrapLength(p2, s2, kRadius, true));
   // The same line beside the active side: no wrap.
   EXPECT_FALSE(wrap("-y", p2, s2).wrapped);
 }
 
 TEST(WrapCylinderTest, SwappingPAndSReversesThePath) {
-  const WrapCylinder cylinder(kRadius, kLongCylinder, {});
-  for (const auto& [p, s] : CrossingPairs(500, false)) {
-    const WrapResult forward = cylinder.Wrap(p, s, kSingle);
-    const WrapResult backward = cylinder.Wrap(s, p, kSingle);
-    ASSERT_TRUE(backward.wrapped);
-    // Symmetric in exact arithmetic; the slide divides by the axial component of a plane's
-    // normal, which amplifies rounding (1e-16 m) by up to ~1e4 in these cases.
-    EXPECT_LT((forward.p_WT1 - backward.p_WT2).norm(), 1e-11);
-    EXPECT_LT((forward.p_WT2 - backward.p_WT1).norm(), 1e-11);
-    EXPECT_NEAR(forward.arc_length, backward.arc_length, 1e-11);
-  }
+  // Symmetric in exact arithmetic; the slide divides by the axial component of a plane's normal,
+  // which amplifies rounding (1e-16 m) by up to ~1e4 in these cases.
+  ExpectReversible(WrapCylinder(kRadius, kLongCylinder, {}), CrossingPairs(500, false), kSingle,
+                   1e-11);
 }
 
 TEST(WrapCylinderTest, LengthIsContinuousAsTheWrapEngages) {
-  // As for the sphere: a 1-Lipschitz bound per step of P across the engagement boundary.
-  const WrapCylinder cylinder(kRadius, kLongCylinder, {});
-  const Vec3 s = InRadii(2.5, 1.0, 0.7);
-  double previous = 0.0;
-  int wrapped = 0;
-  const int steps = 4000;
-  const double step = 1e-6;  // in radii
-  for (int i = 0; i <= steps; ++i) {
-    const Vec3 p = InRadii(-3.0, 1.0 - 0.002 + i * step, -0.4);
-    const WrapResult result = cylinder.Wrap(p, s, kSingle);
-    wrapped += result.wrapped ? 1 : 0;
-    const double length = PathLength(p, s, result);
-    if (i > 0) {
-      EXPECT_LE(std::abs(length - previous), step * kRadius + 1e-15) << "at step " << i;
-    }
-    previous = length;
-  }
-  EXPECT_GT(wrapped, 0);
-  EXPECT_LT(wrapped, steps + 1);
+  ExpectContinuousAcrossEngagement(WrapCylinder(kRadius, kLongCylinder, {}),
+                                   InRadii(-3.0, 0.998, -0.4), InRadii(-3.0, 1.002, -0.4),
+                                   InRadii(2.5, 1.0, 0.7), 4000, 1e-15);
 }
 
 // The length of P -> T1 -> the short helix -> T2 -> S for any T1, T2 on the cylinder.

@@ -6,12 +6,16 @@
 
 #include <numbers>
 
+#include "wrap_checks.h"
 #include "wrap_reference.h"
 
 namespace sinew::paths {
 namespace {
 
 using testing::CircleWrapLength;
+using testing::ExpectContinuousAcrossEngagement;
+using testing::ExpectReversible;
+using testing::ExpectWrapOnSide;
 using testing::PathLength;
 using testing::RandomPoint;
 
@@ -89,26 +93,17 @@ TEST(WrapSphereTest, QuadrantSendsThePathAroundItsActiveSide) {
   // the +y side; with quadrant -y it must go under, the longer way, by the closed form.
   const Vec3 p(-3, 0.5, 0);
   const Vec3 s(3, 0.5, 0);
-  const WrapResult free = WrapSphere(kRadius, {}).Wrap(p, s, kOptions);
-  ASSERT_TRUE(free.wrapped);
-  EXPECT_GT(free.p_WT1.y(), 0.0);
-  EXPECT_GT(free.p_WT2.y(), 0.0);
-
+  // Unconstrained, OpenSim's sphere wrap is a plain one, not mandatory.
+  ExpectWrapOnSide(WrapSphere(kRadius, {}).Wrap(p, s, kOptions), p, s, 1, +1, false,
+                   CircleWrapLength(p, s, kRadius, false));
+  // Neither point is on the active side: a plain wrap, the long way under.
   const WrapResult below =
       WrapSphere(kRadius, ParseWrapQuadrant("-y", "test")).Wrap(p, s, kOptions);
-  ASSERT_TRUE(below.wrapped);
-  EXPECT_LT(below.p_WT1.y(), 0.0);
-  EXPECT_LT(below.p_WT2.y(), 0.0);
-  EXPECT_NEAR(PathLength(p, s, below), CircleWrapLength(p, s, kRadius, true), 1e-12);
-  // Neither point is on the active side: OpenSim's plain wrap, not a mandatory one.
-  EXPECT_FALSE(below.mandatory);
+  ExpectWrapOnSide(below, p, s, 1, -1, false, CircleWrapLength(p, s, kRadius, true));
   for (const Vec3& point : below.arc_points) EXPECT_LT(point.y(), 1e-12);
-
-  const WrapResult above =
-      WrapSphere(kRadius, ParseWrapQuadrant("+y", "test")).Wrap(p, s, kOptions);
-  ASSERT_TRUE(above.wrapped);
-  EXPECT_TRUE(above.mandatory);
-  EXPECT_NEAR(PathLength(p, s, above), CircleWrapLength(p, s, kRadius, false), 1e-12);
+  // Both points on the active side: mandatory, over the top.
+  ExpectWrapOnSide(WrapSphere(kRadius, ParseWrapQuadrant("+y", "test")).Wrap(p, s, kOptions), p, s,
+                   1, +1, true, CircleWrapLength(p, s, kRadius, false));
 }
 
 TEST(WrapSphereTest, ThroughTheCentreEveryPlaneGivesTheClosedFormLength) {
@@ -130,40 +125,13 @@ TEST(WrapSphereTest, ThroughTheCentreEveryPlaneGivesTheClosedFormLength) {
 }
 
 TEST(WrapSphereTest, SwappingPAndSReversesThePath) {
-  const WrapSphere sphere(kRadius, {});
-  for (const auto& [p, s] : CrossingPairs(500)) {
-    const WrapResult forward = sphere.Wrap(p, s, kOptions);
-    const WrapResult backward = sphere.Wrap(s, p, kOptions);
-    ASSERT_TRUE(backward.wrapped);
-    EXPECT_LT((forward.p_WT1 - backward.p_WT2).norm(), 1e-12);
-    EXPECT_LT((forward.p_WT2 - backward.p_WT1).norm(), 1e-12);
-    EXPECT_NEAR(forward.arc_length, backward.arc_length, 1e-12);
-  }
+  ExpectReversible(WrapSphere(kRadius, {}), CrossingPairs(500), kOptions, 1e-12);
 }
 
 TEST(WrapSphereTest, LengthIsContinuousAsTheWrapEngages) {
-  // P slides so that the segment goes from beside the sphere to through it. A path length is
-  // 1-Lipschitz in its end point, so no step may change it by more than the step (plus
-  // rounding); a jump where the wrap engages would break that.
-  const WrapSphere sphere(kRadius, {});
-  const Vec3 s(2.5, 1.0, -0.2);
-  double previous = 0.0;
-  int wrapped = 0;
-  const int steps = 4000;
-  const double step = 1e-6;
-  for (int i = 0; i <= steps; ++i) {
-    const Vec3 p(-3.0, 1.0 - 0.002 + i * step, 0.3);
-    const WrapResult result = sphere.Wrap(p, s, kOptions);
-    wrapped += result.wrapped ? 1 : 0;
-    const double length = PathLength(p, s, result);
-    if (i > 0) {
-      EXPECT_LE(std::abs(length - previous), step + 1e-13) << "at step " << i;
-    }
-    previous = length;
-  }
-  // The scan crosses the boundary: some of it wraps, some does not.
-  EXPECT_GT(wrapped, 0);
-  EXPECT_LT(wrapped, steps + 1);
+  // P slides so that the segment goes from beside the sphere to through it.
+  ExpectContinuousAcrossEngagement(WrapSphere(kRadius, {}), {-3.0, 0.998, 0.3}, {-3.0, 1.002, 0.3},
+                                   {2.5, 1.0, -0.2}, 4000, 1e-13);
 }
 
 // The length of P -> T1 -> great circle -> T2 -> S for any T1, T2 on the sphere.
