@@ -1,4 +1,4 @@
-// Real data: OpenSim's musculotendon lengths and moment arms of arm26's TRIlat and TRImed
+// Real data: OpenSim's musculotendon lengths and moment arms of arm26's TRIlat, TRImed and BRA
 // (MyoConverter's reference tables), whose paths cross the elbow over one unconstrained
 // WrapCylinder ("TRI", on the humerus). The path is rebuilt here from the model's geometry with
 // OpenSim's rule for one wrap object: the first segment the cylinder wraps (a mandatory wrap)
@@ -65,9 +65,9 @@ std::vector<ReferenceRow> ReadReference(const std::string& file, bool kinetics) 
 }
 
 // A muscle's path over arm26 at a pose: fixed path points and one wrap object.
-class TricepsPath {
+class OneWrapPath {
  public:
-  TricepsPath(const model::ModelSpec& spec, const std::string& muscle)
+  OneWrapPath(const model::ModelSpec& spec, const std::string& muscle)
       : spec_(spec), tree_(spec), X_GB_(tree_.num_bodies()) {
     for (const model::ForceSpec& force : spec.forces) {
       if (force.name == muscle) path_ = &*force.geometry_path;
@@ -163,7 +163,7 @@ class TricepsPath {
   double geodesic_excess_ = 0.0;
 };
 
-class Arm26TricepsTest : public ::testing::TestWithParam<std::string> {
+class Arm26ElbowCylinderTest : public ::testing::TestWithParam<std::string> {
  protected:
   static void SetUpTestSuite() {
     spec_ = new model::ModelSpec(io::ReadOsim(kMyoConverter + "models/osim/Arm26/arm26.osim"));
@@ -174,10 +174,10 @@ class Arm26TricepsTest : public ::testing::TestWithParam<std::string> {
   }
   static model::ModelSpec* spec_;
 };
-model::ModelSpec* Arm26TricepsTest::spec_ = nullptr;
+model::ModelSpec* Arm26ElbowCylinderTest::spec_ = nullptr;
 
-TEST_P(Arm26TricepsTest, LengthsMatchOpenSim) {
-  TricepsPath path(*spec_, GetParam());
+TEST_P(Arm26ElbowCylinderTest, LengthsMatchOpenSim) {
+  OneWrapPath path(*spec_, GetParam());
   int compared = 0;
   int wrapped = 0;
   double worst = 0.0;
@@ -206,12 +206,12 @@ TEST_P(Arm26TricepsTest, LengthsMatchOpenSim) {
             << " m (with the exact geodesic instead: " << worst_geodesic << " m)\n";
 }
 
-TEST_P(Arm26TricepsTest, MomentArmsMatchOpenSimWithTangentPointsFixedOnTheBone) {
+TEST_P(Arm26ElbowCylinderTest, MomentArmsMatchOpenSimWithTangentPointsFixedOnTheBone) {
   // OpenSim's moment arm is -dL/dq with the path's straight segments pulling on the bodies,
   // i.e. the tangent points carried rigidly by the wrap object's body (the contract's rule).
   // Central differences with h = 1e-6 rad: truncation ~1e-13 m, rounding 1e-16 * 0.2 m / h
   // ~ 4e-11 m, and the table's last printed digit 1e-12 m: 2e-10 bounds them all.
-  TricepsPath path(*spec_, GetParam());
+  OneWrapPath path(*spec_, GetParam());
   const double h = 1e-6;
   int compared = 0;
   double worst = 0.0;
@@ -238,7 +238,7 @@ TEST_P(Arm26TricepsTest, MomentArmsMatchOpenSimWithTangentPointsFixedOnTheBone) 
             << " m (-dL/dq of the length wrapped afresh: " << worst_rewrapped << " m)\n";
 }
 
-INSTANTIATE_TEST_SUITE_P(SingleCylinder, Arm26TricepsTest, ::testing::Values("TRIlat", "TRImed"));
+INSTANTIATE_TEST_SUITE_P(SingleCylinder, Arm26ElbowCylinderTest, ::testing::Values("TRIlat", "TRImed", "BRA"));
 
 }  // namespace
 }  // namespace sinew::paths
