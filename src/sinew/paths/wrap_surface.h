@@ -4,12 +4,15 @@
 // them is wrapped and, if so, where the path leaves the straight line (the two tangent points)
 // and how long the path is on the surface between them.
 //
-// Why tangent points suffice for moment arms and speeds: a wrapped path is locally the shortest
-// path over the surface, so moving a tangent point along the surface does not change the length
-// to first order. The path's length derivative is then the sum, over its straight segments, of
-// the unit direction of each segment dotted with the relative velocity of its ends, with the
-// tangent points moving rigidly with the surface's body; OpenSim's moment arms follow the same
-// rule (they are computed from the forces along the straight segments).
+// Why tangent points suffice for moment arms and speeds: a wrapped path that is locally the
+// shortest path over the surface does not change length to first order when a tangent point
+// moves along the surface. The path's length derivative is then the sum, over its straight
+// segments, of the unit direction of each segment dotted with the relative velocity of its
+// ends, with the tangent points moving rigidly with the surface's body. OpenSim's moment arms
+// and lengthening speeds use this rule (forces along the straight segments) even where its
+// path is not exactly the shortest: its WrapCylinder's tangent points leave a kink when P and S
+// are at different heights, so there this rule, which matches OpenSim's moment arms, differs
+// from -dL/dq of the length (docs/wrapping.md: 1.5e-4 m on arm26's brachialis).
 #pragma once
 
 #include <sinew/math/types.h>
