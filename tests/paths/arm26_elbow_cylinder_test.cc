@@ -238,7 +238,8 @@ TEST_P(Arm26ElbowCylinderTest, MomentArmsMatchOpenSimWithTangentPointsFixedOnThe
             << " m (-dL/dq of the length wrapped afresh: " << worst_rewrapped << " m)\n";
 }
 
-INSTANTIATE_TEST_SUITE_P(SingleCylinder, Arm26ElbowCylinderTest, ::testing::Values("TRIlat", "TRImed", "BRA"));
+INSTANTIATE_TEST_SUITE_P(SingleCylinder, Arm26ElbowCylinderTest,
+                         ::testing::Values("TRIlat", "TRImed", "BRA"));
 
 }  // namespace
 }  // namespace sinew::paths

@@ -18,7 +18,6 @@ using testing::ExpectContinuousAcrossEngagement;
 using testing::ExpectReversible;
 using testing::ExpectWrapOnSide;
 using testing::PathLength;
-using testing::RandomPoint;
 
 // A bone-sized cylinder (2 cm): OpenSim's refinement samples the helix every 2 mm, so its
 // behaviour depends on the absolute size (docs/wrapping.md). Test points are given in radii.
@@ -45,18 +44,11 @@ double GeodesicLength(const Vec3& p, const Vec3& s) {
 // Random pairs at least 5% of the radius off the axis whose segment enters the cylinder; with
 // `same_height` both at one random height.
 std::vector<std::pair<Vec3, Vec3>> CrossingPairs(int count, bool same_height) {
-  std::mt19937 random(17);
-  std::vector<std::pair<Vec3, Vec3>> pairs;
-  while (static_cast<int>(pairs.size()) < count) {
-    const Vec3 p = RandomPoint(random, 4.0 * kRadius);
-    Vec3 s = RandomPoint(random, 4.0 * kRadius);
-    if (same_height) s.z() = p.z();
-    if (Radial(p).norm() > 1.05 * kRadius && Radial(s).norm() > 1.05 * kRadius &&
-        SegmentEntersCylinder(p, s)) {
-      pairs.emplace_back(p, s);
-    }
-  }
-  return pairs;
+  return testing::RandomPairs(
+      count, 4.0 * kRadius, 17, same_height, [](const Vec3& p, const Vec3& s) {
+        return Radial(p).norm() > 1.05 * kRadius && Radial(s).norm() > 1.05 * kRadius &&
+               SegmentEntersCylinder(p, s);
+      });
 }
 
 TEST(WrapCylinderTest, AtOneHeightTheLengthIsTheCircleClosedForm) {

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
+#include <vector>
 
 namespace sinew::paths::testing {
 
@@ -43,6 +45,22 @@ inline double CylinderGeodesicLength(const Vec3& p, const Vec3& s, double radius
 inline Vec3 RandomPoint(std::mt19937& random, double half) {
   std::uniform_real_distribution<double> coordinate(-half, half);
   return {coordinate(random), coordinate(random), coordinate(random)};
+}
+
+/// `count` pairs (P, S) of random points in [-half, half]^3, from a fixed seed so every run sees
+/// the same, that `keep(p, s)` accepts; with `same_height` S is moved to P's z first.
+template <typename Keep>
+std::vector<std::pair<Vec3, Vec3>> RandomPairs(int count, double half, unsigned seed,
+                                               bool same_height, Keep keep) {
+  std::mt19937 random(seed);
+  std::vector<std::pair<Vec3, Vec3>> pairs;
+  while (static_cast<int>(pairs.size()) < count) {
+    const Vec3 p = RandomPoint(random, half);
+    Vec3 s = RandomPoint(random, half);
+    if (same_height) s.z() = p.z();
+    if (keep(p, s)) pairs.emplace_back(p, s);
+  }
+  return pairs;
 }
 
 }  // namespace sinew::paths::testing

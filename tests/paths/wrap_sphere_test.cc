@@ -31,16 +31,9 @@ bool SegmentEntersSphere(const Vec3& p, const Vec3& s) {
 
 // Random pairs of points at least 5% of the radius outside the sphere whose segment enters it.
 std::vector<std::pair<Vec3, Vec3>> CrossingPairs(int count) {
-  std::mt19937 random(11);
-  std::vector<std::pair<Vec3, Vec3>> pairs;
-  while (static_cast<int>(pairs.size()) < count) {
-    const Vec3 p = RandomPoint(random, 4.0);
-    const Vec3 s = RandomPoint(random, 4.0);
-    if (p.norm() > 1.05 * kRadius && s.norm() > 1.05 * kRadius && SegmentEntersSphere(p, s)) {
-      pairs.emplace_back(p, s);
-    }
-  }
-  return pairs;
+  return testing::RandomPairs(count, 4.0, 11, false, [](const Vec3& p, const Vec3& s) {
+    return p.norm() > 1.05 * kRadius && s.norm() > 1.05 * kRadius && SegmentEntersSphere(p, s);
+  });
 }
 
 TEST(WrapSphereTest, LengthIsTheGreatCircleShortestPath) {
