@@ -4,12 +4,15 @@
 // them is wrapped and, if so, where the path leaves the straight line (the two tangent points)
 // and how long the path is on the surface between them.
 //
-// Why tangent points suffice for moment arms and speeds: a wrapped path is locally the shortest
-// path over the surface, so moving a tangent point along the surface does not change the length
-// to first order. The path's length derivative is then the sum, over its straight segments, of
-// the unit direction of each segment dotted with the relative velocity of its ends, with the
-// tangent points moving rigidly with the surface's body; OpenSim's moment arms follow the same
-// rule (they are computed from the forces along the straight segments).
+// Why tangent points suffice for moment arms and speeds: a wrapped path that is locally the
+// shortest path over the surface does not change length to first order when a tangent point
+// moves along the surface. The path's length derivative is then the sum, over its straight
+// segments, of the unit direction of each segment dotted with the relative velocity of its
+// ends, with the tangent points moving rigidly with the surface's body. OpenSim's moment arms
+// and lengthening speeds use this rule (forces along the straight segments) even where its
+// path is not exactly the shortest: its WrapCylinder's tangent points leave a kink when P and S
+// are at different heights, so there this rule, which matches OpenSim's moment arms, differs
+// from -dL/dq of the length (docs/wrapping.md: 1.5e-4 m on arm26's brachialis).
 #pragma once
 
 #include <sinew/math/types.h>
@@ -22,6 +25,11 @@ namespace sinew::paths {
 struct WrapOptions {
   /// OpenSim's `method` for WrapEllipsoid: hybrid, midpoint or axial (ignored by other shapes).
   enum class Method { kHybrid, kMidpoint, kAxial } method = Method::kHybrid;
+  /// Whether this is the path's only wrap object. OpenSim's WrapCylinder refines its tangent
+  /// points iteratively (to 0.1 degree of tangency) only when a path has two or more wrap
+  /// objects, so the same segment gives slightly different lengths in the two cases; the path
+  /// must say which applies to reproduce OpenSim's lengths.
+  bool single_wrap = true;
 };
 
 /// What wrapping the segment from P to S over a surface gives, all in the surface frame W.
@@ -29,6 +37,12 @@ struct WrapResult {
   /// False when the straight segment P-S does not touch the surface, or the wrap is excluded
   /// by its quadrant: the path then stays straight between P and S.
   bool wrapped = false;
+  /// OpenSim's "mandatory" wrap: the segment crosses the surface (on its active side), so a path
+  /// with several segments in the wrap's range must wrap this one (the first such segment).
+  /// A wrap that is not mandatory (OpenSim's plain "wrapped": an unconstrained WrapSphere, or a
+  /// quadrant that pulls the path around) competes with the range's other wrapped segments, and
+  /// the path keeps the one that lengthens the path least. Needed only to choose the segment.
+  bool mandatory = false;
   Vec3 p_WT1 = Vec3::Zero();  ///< first tangent point (where the path leaves the line from P)
   Vec3 p_WT2 = Vec3::Zero();  ///< second tangent point (where it leaves the surface toward S)
   double arc_length = 0.0;    ///< length of the path on the surface, from T1 to T2 (m)

@@ -1,0 +1,224 @@
+#include <sinew/common/error.h>
+#include <sinew/paths/wrap_cylinder.h>
+#include <sinew/paths/wrap_tangents.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace sinew::paths {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// OpenSim refines tangent points (paths with several wrap objects) until the segment and the
+// helix leave the cylinder's axis at angles within 0.1 degree, restarting at most 100 times; it
+// tests tangency at the helix's second sample, the helix being sampled every 2 mm.
+constexpr double kTangencyTolerance = 0.1 * kPi / 180.0;
+constexpr int kMaxRefinements = 100;
+constexpr double kHelixSampleSpacing = 0.002;
+// Arc points returned for drawing: at most this many segments.
+constexpr int kMaxArcSegments = 100;
+// OpenSim slides a tangent point along the cylinder only within this distance (m) (a segment
+// of +-10 m about the point, with 1e-5 of slack on its parameter).
+constexpr double kMaxSlide = 10.0 * (1.0 + 2e-5);
+constexpr double kMinSlideDirection = 1e-5 / 20.0;
+
+Vec3 AxisPointAt(double z) { return {0.0, 0.0, z}; }
+Vec3 Radial(const Vec3& p_W) { return {p_W.x(), p_W.y(), 0.0}; }
+
+// The tangent points of the cross-section circle at the height of p_W (|radial| > radius).
+CircleTangents CrossSectionTangents(const Vec3& p_W, double radius) {
+  CircleTangents tangents = CalcCircleTangents(Radial(p_W), Vec3::UnitZ(), radius);
+  tangents.plus.z() = p_W.z();
+  tangents.minus.z() = p_W.z();
+  return tangents;
+}
+
+// Where the line through P and S comes closest to the cylinder's axis: its parameter t along
+// P -> S and the point itself. False when the line is parallel to the axis.
+bool ClosestApproachToAxis(const Vec3& p_WP, const Vec3& p_WS, double* t, Vec3* p_WM) {
+  const Vec3 d = p_WS - p_WP;
+  const double radial_squared = Radial(d).squaredNorm();
+  if (radial_squared <= 1e-13 * d.squaredNorm()) return false;
+  *t = -Radial(p_WP).dot(Radial(d)) / radial_squared;
+  *p_WM = p_WP + *t * d;
+  return true;
+}
+
+double AngleBetween(const Vec3& a, const Vec3& b) {
+  return std::acos(std::clamp(a.dot(b) / (a.norm() * b.norm()), -1.0, 1.0));
+}
+
+// OpenSim's choice of side under a quadrant: by which preliminary tangent points lie on the
+// active side. Also says whether the apex point is taken on the far side of the cylinder.
+TangentPair ChooseActiveSidePair(const CircleTangents& from_p, const CircleTangents& from_s,
+                                 const WrapQuadrant& quadrant, bool* far_apex) {
+  const double alpha = AngleBetween(Radial(from_p.plus), Radial(from_s.minus));
+  const double beta = AngleBetween(Radial(from_p.minus), Radial(from_s.plus));
+  const TangentPair plus_minus{from_p.plus, from_s.minus};
+  const TangentPair minus_plus{from_p.minus, from_s.plus};
+  const bool p_plus = quadrant.OnActiveSide(from_p.plus);
+  const bool p_minus = quadrant.OnActiveSide(from_p.minus);
+  bool take_plus_minus = false;
+  if (p_plus != p_minus) {
+    take_plus_minus = p_plus;
+  } else if (p_plus || quadrant.OnActiveSide(from_s.plus)) {
+    // Both or neither of P's candidates are active: S's candidates decide.
+    take_plus_minus = !quadrant.OnActiveSide(from_s.plus);
+  } else if (quadrant.OnActiveSide(from_s.minus)) {
+    take_plus_minus = true;
+  } else {
+    // No candidate is on the active side.
+    *far_apex = true;
+    return alpha > beta ? plus_minus : minus_plus;
+  }
+  *far_apex = take_plus_minus ? alpha > beta : alpha <= beta;
+  return take_plus_minus ? plus_minus : minus_plus;
+}
+
+// OpenSim's slide of the preliminary tangent points along the cylinder: an apex point on the
+// surface, on the bisecting side at the height where the segment is nearest the axis in the
+// ratio of P's and S's distances from it, defines with P and S a plane; each tangent point moves
+// along its generator to that plane, if that brings it toward the other point's height.
+void SlideToApexPlane(const Vec3& p_WP, const Vec3& p_WS, double radius, bool far_apex,
+                      TangentPair* pair) {
+  const double rho_p = Radial(p_WP).norm();
+  const double rho_s = Radial(p_WS).norm();
+  const Vec3 p_WM = p_WP + rho_p / (rho_p + rho_s) * (p_WS - p_WP);
+  const Vec3 p_WA = AxisPointAt(p_WM.z());
+  const Vec3 side_normal = (p_WP - p_WA).normalized().cross((p_WS - p_WA).normalized());
+  if (side_normal.norm() < 1e-12) return;  // P, S and the axis point in a line
+  const Vec3 outward = Vec3::UnitZ().cross(side_normal).normalized();
+  const Vec3 apex_1 = p_WA + radius * outward;
+  const Vec3 apex_2 = p_WA - radius * outward;
+  const bool first_is_near = (p_WM - apex_1).squaredNorm() < (p_WM - apex_2).squaredNorm();
+  const Vec3 apex = first_is_near != far_apex ? apex_1 : apex_2;
+  Vec3 normal = (p_WP - apex).normalized().cross((p_WS - apex).normalized());
+  if (normal.norm() < 1e-12) return;
+  normal.normalize();
+  if (std::abs(normal.z()) < kMinSlideDirection) return;
+  // Height at which the generator through `t` meets the plane through P with `normal`.
+  const auto slid = [&](const Vec3& t, double* z) {
+    const double dz = normal.dot(p_WP - t) / normal.z();
+    *z = t.z() + dz;
+    return std::abs(dz) <= kMaxSlide;
+  };
+  const double height = std::abs(p_WP.z() - p_WS.z());
+  double z = 0.0;
+  if (slid(pair->t1, &z) && std::abs(z - p_WS.z()) < height) pair->t1.z() = z;
+  if (slid(pair->t2, &z) && std::abs(z - p_WP.z()) < height) pair->t2.z() = z;
+}
+
+// The helix from T1 to T2: the turn about the axis (rad, signed, counter-clockwise about z
+// positive) and the rise along it (m).
+struct Helix {
+  double turn;
+  double rise;
+  double Length(double radius) const { return std::hypot(radius * turn, rise); }
+  Vec3 PointAt(const Vec3& p_WT1, double s) const {
+    return Eigen::AngleAxisd(s * turn, Vec3::UnitZ()) * p_WT1 + s * rise * Vec3::UnitZ();
+  }
+};
+
+// The short way round, or the long way (the other direction) when `long_way`.
+Helix CalcHelix(const TangentPair& pair, bool long_way) {
+  const Vec3 u1 = Radial(pair.t1);
+  const Vec3 u2 = Radial(pair.t2);
+  double turn = std::atan2(u1.cross(u2).z(), u1.dot(u2));
+  if (long_way) turn = -std::copysign(2.0 * kPi - std::abs(turn), turn);
+  return {turn, pair.t2.z() - pair.t1.z()};
+}
+
+// OpenSim's tangency refinement of one tangent point T (from path point X): when the segment
+// X-T and the helix's start T-W leave the axis at angles differing by more than the tolerance,
+// T moves along its generator 1.5 times toward where the line X-W passes it. True if it moved.
+bool RefineTangentPoint(const Vec3& p_WX, const Vec3& p_WW, Vec3* p_WT) {
+  const double segment_angle = std::acos(std::clamp((*p_WT - p_WX).normalized().z(), -1.0, 1.0));
+  const double helix_angle = std::acos(std::clamp((p_WW - *p_WT).normalized().z(), -1.0, 1.0));
+  if (std::abs(segment_angle - helix_angle) <= kTangencyTolerance) return false;
+  const Vec3 e = p_WW - p_WX;
+  const double radial_squared = Radial(e).squaredNorm();
+  if (radial_squared <= 0.0) return false;
+  const double s = Radial(*p_WT - p_WX).dot(Radial(e)) / radial_squared;
+  const double z_nearest = p_WX.z() + s * e.z();
+  p_WT->z() += 1.5 * (z_nearest - p_WT->z());
+  return true;
+}
+
+}  // namespace
+
+WrapCylinder::WrapCylinder(double radius, double length, WrapQuadrant quadrant)
+    : radius_(radius), length_(length), quadrant_(quadrant) {
+  if (!(radius > 0.0) || !std::isfinite(radius) || !(length > 0.0) || !std::isfinite(length)) {
+    throw Error("WrapCylinder: the radius and the length must be positive and finite");
+  }
+}
+
+WrapResult WrapCylinder::Wrap(const Vec3& p_WP, const Vec3& p_WS,
+                              const WrapOptions& options) const {
+  WrapResult result;
+  if (Radial(p_WP).norm() < radius_ || Radial(p_WS).norm() < radius_) return result;
+
+  // Whether the segment crosses the (infinite) cylinder: its closest approach to the axis lies
+  // between P and S and within the radius.
+  double t = 0.0;
+  Vec3 p_WM = Vec3::Zero();
+  const bool has_approach = ClosestApproachToAxis(p_WP, p_WS, &t, &p_WM);
+  const bool crosses = has_approach && Radial(p_WM).norm() < radius_ && t > 0.0 && t < 1.0;
+
+  const CircleTangents from_p = CrossSectionTangents(p_WP, radius_);
+  const CircleTangents from_s = CrossSectionTangents(p_WS, radius_);
+  TangentPair pair;
+  bool far_apex = false;
+  bool long_way = false;
+  if (!quadrant_.constrained()) {
+    if (!crosses) return result;
+    result.mandatory = true;
+    pair = ChooseClosestPair(from_p, AxisPointAt(p_WP.z()), from_s, AxisPointAt(p_WS.z()));
+  } else {
+    if (quadrant_.OnActiveSide(p_WP) || quadrant_.OnActiveSide(p_WS)) {
+      // Without a closest approach (a segment parallel to the axis) OpenSim's point is undefined
+      // and no wrap results.
+      if (!has_approach) return result;
+      const QuadrantEngagement engagement =
+          EngageOnActiveSide(quadrant_, p_WP, p_WS, p_WM, crosses);
+      if (engagement == QuadrantEngagement::kNoWrap) return result;
+      result.mandatory = engagement == QuadrantEngagement::kMandatory;
+    }
+    pair = ChooseActiveSidePair(from_p, from_s, quadrant_, &far_apex);
+    const Vec3 path_direction = (pair.t1 - p_WP) + (pair.t2 - p_WS);
+    const Vec3 radial_sum = Radial(pair.t1) + Radial(pair.t2);
+    long_way = radial_sum.dot(path_direction) < 0.0;
+  }
+  SlideToApexPlane(p_WP, p_WS, radius_, far_apex, &pair);
+
+  // The wrap counts only if a tangent point lies along the cylinder's length.
+  const double half_length = 0.5 * length_;
+  if (std::abs(pair.t1.z()) > half_length && std::abs(pair.t2.z()) > half_length) return result;
+
+  Helix helix = CalcHelix(pair, long_way);
+  for (int refinement = 0; !options.single_wrap && refinement < kMaxRefinements; ++refinement) {
+    const int samples = static_cast<int>(helix.Length(radius_) / kHelixSampleSpacing);
+    if (samples < 2) break;
+    const double s = 1.0 / samples;
+    // As OpenSim does, T2's check uses the helix of the previous T2 started at the new T1.
+    const bool moved_t1 = RefineTangentPoint(p_WP, helix.PointAt(pair.t1, s), &pair.t1);
+    const bool moved_t2 = RefineTangentPoint(p_WS, helix.PointAt(pair.t1, 1.0 - s), &pair.t2);
+    if (!moved_t1 && !moved_t2) break;
+    helix = CalcHelix(pair, long_way);
+  }
+
+  result.wrapped = true;
+  result.p_WT1 = pair.t1;
+  result.p_WT2 = pair.t2;
+  result.arc_length = helix.Length(radius_);
+  const int segments = std::clamp(
+      static_cast<int>(std::ceil(result.arc_length / kHelixSampleSpacing)), 1, kMaxArcSegments);
+  result.arc_points.reserve(segments + 1);
+  for (int i = 0; i <= segments; ++i) {
+    result.arc_points.push_back(helix.PointAt(pair.t1, static_cast<double>(i) / segments));
+  }
+  return result;
+}
+
+}  // namespace sinew::paths

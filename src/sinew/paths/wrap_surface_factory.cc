@@ -1,0 +1,74 @@
+#include <sinew/common/error.h>
+#include <sinew/paths/wrap_cylinder.h>
+#include <sinew/paths/wrap_quadrant.h>
+#include <sinew/paths/wrap_sphere.h>
+#include <sinew/paths/wrap_surface_factory.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <sstream>
+
+namespace sinew::paths {
+namespace {
+
+using Builder = std::function<std::unique_ptr<WrapSurface>(const model::WrapObjectSpec&)>;
+
+[[noreturn]] void Fail(const model::WrapObjectSpec& spec, const std::string& message) {
+  throw Error(spec.where, spec.name, spec.type + " " + message);
+}
+
+// One positive, finite length (m) named `key`, or `default_value` when the file has none.
+double PositiveLength(const model::WrapObjectSpec& spec, const std::string& key,
+                      double default_value) {
+  const auto found = spec.dimensions.find(key);
+  if (found == spec.dimensions.end()) return default_value;
+  if (found->second.size() != 1) Fail(spec, key + " must be one number");
+  const double value = found->second.front();
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    std::ostringstream text;
+    text << key << " must be positive and finite (got " << value << ")";
+    Fail(spec, text.str());
+  }
+  return value;
+}
+
+// The object's quadrant; an unknown one is reported with the object's file and line.
+WrapQuadrant Quadrant(const model::WrapObjectSpec& spec) {
+  try {
+    return ParseWrapQuadrant(spec.quadrant, spec.name);
+  } catch (const Error& error) {
+    Fail(spec, error.message());
+  }
+}
+
+const std::map<std::string, Builder>& Registry() {
+  static const std::map<std::string, Builder> registry{
+      {"WrapSphere",
+       [](const model::WrapObjectSpec& spec) -> std::unique_ptr<WrapSurface> {
+         return std::make_unique<WrapSphere>(PositiveLength(spec, "radius", 0.05), Quadrant(spec));
+       }},
+      {"WrapCylinder",
+       [](const model::WrapObjectSpec& spec) -> std::unique_ptr<WrapSurface> {
+         return std::make_unique<WrapCylinder>(PositiveLength(spec, "radius", 1.0),
+                                               PositiveLength(spec, "length", 1.0), Quadrant(spec));
+       }},
+  };
+  return registry;
+}
+
+}  // namespace
+
+std::unique_ptr<WrapSurface> MakeWrapSurface(const model::WrapObjectSpec& spec) {
+  const auto builder = Registry().find(spec.type);
+  if (builder == Registry().end()) Fail(spec, "is not a wrap surface Sinew supports");
+  return builder->second(spec);
+}
+
+std::vector<std::string> SupportedWrapSurfaceTypes() {
+  std::vector<std::string> types;
+  for (const auto& [type, builder] : Registry()) types.push_back(type);
+  return types;
+}
+
+}  // namespace sinew::paths

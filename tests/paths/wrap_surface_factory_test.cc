@@ -1,0 +1,95 @@
+// The wrap surface factory: OpenSim type names to surfaces, OpenSim's defaults, and clear
+// errors naming the object for what cannot be wrapped over.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sinew/common/error.h>
+#include <sinew/paths/wrap_cylinder.h>
+#include <sinew/paths/wrap_sphere.h>
+#include <sinew/paths/wrap_surface_factory.h>
+
+namespace sinew::paths {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+model::WrapObjectSpec Spec(const std::string& type, model::NumberMap dimensions,
+                           const std::string& quadrant = "all") {
+  model::WrapObjectSpec spec;
+  spec.name = "knee_wrap";
+  spec.type = type;
+  spec.quadrant = quadrant;
+  spec.dimensions = std::move(dimensions);
+  spec.where = {"leg.osim", 42};
+  return spec;
+}
+
+// The message of the sinew::Error `build` throws ("" when it throws none).
+template <typename Build>
+std::string ErrorOf(Build build) {
+  try {
+    build();
+  } catch (const Error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(WrapSurfaceFactoryTest, BuildsSpheresAndCylindersWithTheirDimensions) {
+  const auto sphere = MakeWrapSurface(Spec("WrapSphere", {{"radius", {0.03}}}));
+  ASSERT_NE(dynamic_cast<const WrapSphere*>(sphere.get()), nullptr);
+  EXPECT_EQ(dynamic_cast<const WrapSphere&>(*sphere).radius(), 0.03);
+
+  const auto cylinder =
+      MakeWrapSurface(Spec("WrapCylinder", {{"radius", {0.016}}, {"length", {0.05}}}, "-x"));
+  const auto* as_cylinder = dynamic_cast<const WrapCylinder*>(cylinder.get());
+  ASSERT_NE(as_cylinder, nullptr);
+  EXPECT_EQ(as_cylinder->radius(), 0.016);
+  EXPECT_EQ(as_cylinder->length(), 0.05);
+  EXPECT_EQ(SupportedWrapSurfaceTypes(), (std::vector<std::string>{"WrapCylinder", "WrapSphere"}));
+}
+
+TEST(WrapSurfaceFactoryTest, MissingDimensionsTakeOpenSimsDefaults) {
+  const auto sphere = MakeWrapSurface(Spec("WrapSphere", {}));
+  EXPECT_EQ(dynamic_cast<const WrapSphere&>(*sphere).radius(), 0.05);
+  const auto cylinder = MakeWrapSurface(Spec("WrapCylinder", {}));
+  EXPECT_EQ(dynamic_cast<const WrapCylinder&>(*cylinder).radius(), 1.0);
+  EXPECT_EQ(dynamic_cast<const WrapCylinder&>(*cylinder).length(), 1.0);
+}
+
+TEST(WrapSurfaceFactoryTest, BadInputIsAnErrorNamingTheObject) {
+  const auto fails_with = [](const model::WrapObjectSpec& spec, const std::string& what) {
+    EXPECT_THAT(ErrorOf([&] { MakeWrapSurface(spec); }),
+                AllOf(HasSubstr("leg.osim:42"), HasSubstr("knee_wrap"), HasSubstr(what)));
+  };
+  fails_with(Spec("WrapSphere", {{"radius", {-0.02}}}), "radius must be positive");
+  fails_with(Spec("WrapSphere", {{"radius", {0.0}}}), "radius must be positive");
+  fails_with(Spec("WrapCylinder", {{"radius", {0.01}}, {"length", {0.0}}}),
+             "length must be positive");
+  fails_with(Spec("WrapCylinder", {{"radius", {0.01, 0.02}}}), "radius must be one number");
+  fails_with(Spec("WrapCylinder", {{"radius", {0.01}}}, "+w"), "unknown quadrant '+w'");
+  fails_with(Spec("WrapCylinderObst", {}), "WrapCylinderObst is not a wrap surface");
+}
+
+TEST(WrapSurfaceFactoryTest, ReadsEveryQuadrantSpellingOpenSimAccepts) {
+  EXPECT_FALSE(ParseWrapQuadrant("all", "w").constrained());
+  EXPECT_FALSE(ParseWrapQuadrant("ALL", "w").constrained());
+  EXPECT_FALSE(ParseWrapQuadrant("", "w").constrained());
+  for (const auto& [text, axis, sign] :
+       std::vector<std::tuple<std::string, int, int>>{{"x", 0, 1},
+                                                      {"+X", 0, 1},
+                                                      {"-x", 0, -1},
+                                                      {"Y", 1, 1},
+                                                      {"-Y", 1, -1},
+                                                      {"+z", 2, 1},
+                                                      {"-z", 2, -1}}) {
+    const WrapQuadrant quadrant = ParseWrapQuadrant(text, "w");
+    EXPECT_EQ(quadrant.axis, axis) << text;
+    EXPECT_EQ(quadrant.sign, sign) << text;
+  }
+  EXPECT_THROW(ParseWrapQuadrant("xy", "w"), Error);
+  EXPECT_THROW(ParseWrapQuadrant("++x", "w"), Error);
+}
+
+}  // namespace
+}  // namespace sinew::paths
