@@ -81,10 +81,13 @@ TEST(ForceRecordTest, DefaultRecordIsTheLoadAddLoadsAppliesOnTheSupport) {
   system.AddForceElement(std::make_shared<Probe>("wide", false));
   system.Finalize();
   const ForceReporter reporter(system);
-  const std::vector<std::string> probe = {
-      "probe.block.force.X",  "probe.block.force.Y",  "probe.block.force.Z",
-      "probe.block.torque.X", "probe.block.torque.Y", "probe.block.torque.Z",
-      "probe.x"};
+  const std::vector<std::string> probe = {"probe.block.force.X",
+                                          "probe.block.force.Y",
+                                          "probe.block.force.Z",
+                                          "probe.block.torque.X",
+                                          "probe.block.torque.Y",
+                                          "probe.block.torque.Z",
+                                          "probe.x"};
   // Without a support: every body but ground, then every coordinate.
   std::vector<std::string> expected = probe;
   for (const char* body : {"block", "cart"}) {

@@ -125,8 +125,7 @@ TEST(ExternalLoadsTest, ForceAtSampledGroundPointsFollowsItsSplineExactly) {
     const double closed_form = theta0 - gain * DoubleIntegral(p_x, p_x.knots(), t);
     worst = std::max(worst, std::abs(ours[k] - closed_form));
   }
-  std::cout << "[ measured ] external force at spline points vs closed form: " << worst
-            << " rad\n";
+  std::cout << "[ measured ] external force at spline points vs closed form: " << worst << " rad\n";
   EXPECT_LT(worst, 1e-8);  // rk45 at accuracy 1e-10 over 100 report intervals
 }
 
@@ -155,8 +154,7 @@ TEST(ExternalLoadsTest, ForceAtSampledGroundPointsDiffersFromGravityByItsSplineE
     const double t = 0.01 * k;
     const double d_theta = ours[k] - fine[10 * k];
     const double predicted =
-        -98.0665 / 2.5 *
-        DoubleIntegral([&](double tau) { return p_x(tau) - x_g(tau); }, t_fine, t);
+        -98.0665 / 2.5 * DoubleIntegral([&](double tau) { return p_x(tau) - x_g(tau); }, t_fine, t);
     difference = std::max(difference, std::abs(d_theta));
     worst_prediction = std::max(worst_prediction, std::abs(d_theta - predicted));
   }

@@ -86,8 +86,9 @@ TEST(ForceSwitchesTest, DisableForceByNameLeavesItOutOrListsCloseNames) {
     typo.Parse(kData + "/sinew/springs.osim");
     FAIL() << "no error";
   } catch (const Error& error) {
-    EXPECT_NE(std::string(error.what()).find("arm_sprin: cannot disable: no force has this name "
-                                             "(close names: arm_spring"),
+    EXPECT_NE(std::string(error.what())
+                  .find("arm_sprin: cannot disable: no force has this name "
+                        "(close names: arm_spring"),
               std::string::npos)
         << error.what();
   }
@@ -105,9 +106,9 @@ TEST(ForceSwitchesTest, ExternalForceInTheForceSetReadsItsDataSourceBesideTheMod
       "<data_source_name>pendulum_external_load.sto</data_source_name></ExternalForce>";
   opensim::OpenSimParser parser;
   engine::System system;
-  parser.ParseSpec(system, io::ReadOsimString(WithForces(kForward + "pendulum_no_gravity.osim",
-                                                         force),
-                                              kForward + "inline.osim"));
+  parser.ParseSpec(system,
+                   io::ReadOsimString(WithForces(kForward + "pendulum_no_gravity.osim", force),
+                                      kForward + "inline.osim"));
   system.Finalize();
   EXPECT_NE(parser.GetReport().GetForce("gravity")->load, nullptr);
   opensim::OpenSimParser gravity_parser;
@@ -120,13 +121,14 @@ TEST(ForceSwitchesTest, ExternalForceInTheForceSetReadsItsDataSourceBesideTheMod
       "<force_identifier>force</force_identifier></ExternalForce>";
   engine::System other;
   try {
-    parser.ParseSpec(other, io::ReadOsimString(
-                                WithForces(kForward + "pendulum_no_gravity.osim", no_data),
-                                kForward + "inline.osim"));
+    parser.ParseSpec(other,
+                     io::ReadOsimString(WithForces(kForward + "pendulum_no_gravity.osim", no_data),
+                                        kForward + "inline.osim"));
     FAIL() << "no error";
   } catch (const Error& error) {
-    EXPECT_NE(std::string(error.what()).find("/forceset/push: an ExternalForce in the ForceSet "
-                                             "has no data"),
+    EXPECT_NE(std::string(error.what())
+                  .find("/forceset/push: an ExternalForce in the ForceSet "
+                        "has no data"),
               std::string::npos)
         << error.what();
   }

@@ -60,7 +60,8 @@ void PointToPointSpring::CalcRecordValues(const engine::ForceContext& context,
   const Vec3 f_G = CalcForceOnBody1(s);
   const Vec3 p_G1 = engine::PoseOf(s.bodies[body1_]) * point1_;
   const Vec3 p_G2 = engine::PoseOf(s.bodies[body2_]) * point2_;
-  for (const Vec3& v : {f_G, p_G1, Vec3(-f_G), p_G2}) values.insert(values.end(), v.begin(), v.end());
+  for (const Vec3& v : {f_G, p_G1, Vec3(-f_G), p_G2})
+    values.insert(values.end(), v.begin(), v.end());
 }
 
 std::optional<engine::ForceSupport> PointToPointSpring::Support() const {

@@ -21,8 +21,9 @@ int FindBody(const ForceBuildInput& in, const char* tag, bool required) {
   const std::string name = in.values.String(tag, required ? "" : "ground");
   const int b = in.spec.FindBody(LastPathSegment(name));
   if (b != model::kNone) return in.body_map[b];
-  if (required) in.values.Fail(std::string(tag) + " '" + name + "' is not a body of the model",
-                               LineOf(in, tag));
+  if (required)
+    in.values.Fail(std::string(tag) + " '" + name + "' is not a body of the model",
+                   LineOf(in, tag));
   if (in.notes) {
     const std::string& file = in.external_loads ? in.external_loads->file : in.spec.file;
     in.notes->push_back({SourceLocation{file, LineOf(in, tag)}, in.force.path,
@@ -109,9 +110,8 @@ std::shared_ptr<engine::ForceElement> BuildExternalForce(const ForceBuildInput& 
     in.values.Fail("point_identifier is given but no force_identifier",
                    LineOf(in, "point_identifier"));
   }
-  return std::make_shared<forces::ExternalForce>(in.force.name,
-                                                 in.values.String("applied_to_body"), bodies,
-                                                 std::move(functions));
+  return std::make_shared<forces::ExternalForce>(in.force.name, in.values.String("applied_to_body"),
+                                                 bodies, std::move(functions));
 }
 
 }  // namespace sinew::opensim::internal

@@ -151,8 +151,8 @@ void OpenSimParser::BuildOneForce(engine::System& system, const model::ForceSpec
     info.disabled = "appliesForce false in the file";
   } else if (IsForceSimulated(force)) {
     Diagnostics notes;
-    auto element = internal::BuildForce(spec_, force, body_map, coordinate_map, external_loads,
-                                        &notes);
+    auto element =
+        internal::BuildForce(spec_, force, body_map, coordinate_map, external_loads, &notes);
     for (Diagnostic& note : notes) report_.AddWarning(std::move(note));
     const int k = system.AddForceElement(element);
     info.load = element;

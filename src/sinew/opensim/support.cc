@@ -23,8 +23,8 @@ bool IsControllerSimulated(const model::ControllerSpec& controller) {
 bool IsContactGeometrySimulated(const model::ContactGeometrySpec& /*contact*/) { return false; }
 bool IsWrapObjectSimulated(const model::WrapObjectSpec& /*wrap*/) { return false; }
 
-std::vector<NotSimulatedElement> FindNotSimulated(
-    const model::ModelSpec& spec, const std::vector<std::string>& disabled_forces) {
+std::vector<NotSimulatedElement> FindNotSimulated(const model::ModelSpec& spec,
+                                                  const std::vector<std::string>& disabled_forces) {
   std::vector<NotSimulatedElement> out;
   for (const model::JointSpec& j : spec.joints) {
     if (!IsJointSimulated(j)) out.push_back({ElementKind::kJoint, j.path, j.type});
