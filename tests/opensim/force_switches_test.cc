@@ -37,6 +37,17 @@ std::string WithForces(const std::string& file, const std::string& forces) {
   return text;
 }
 
+// Expects `call` to throw a sinew::Error whose message contains `part`.
+template <typename Call>
+void ExpectError(const Call& call, const std::string& part) {
+  try {
+    call();
+    ADD_FAILURE() << "no error; expected: " << part;
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find(part), std::string::npos) << error.what();
+  }
+}
+
 // The pendulum's angle at t = 1 s (rk45, accuracy 1e-10).
 double AngleAfterOneSecond(const engine::System& system) {
   engine::IntegratorSettings settings;
@@ -82,16 +93,8 @@ TEST(ForceSwitchesTest, DisableForceByNameLeavesItOutOrListsCloseNames) {
 
   opensim::OpenSimParser typo;
   typo.DisableForce("arm_sprin");
-  try {
-    typo.Parse(kData + "/sinew/springs.osim");
-    FAIL() << "no error";
-  } catch (const Error& error) {
-    EXPECT_NE(std::string(error.what())
-                  .find("arm_sprin: cannot disable: no force has this name "
-                        "(close names: arm_spring"),
-              std::string::npos)
-        << error.what();
-  }
+  ExpectError([&] { typo.Parse(kData + "/sinew/springs.osim"); },
+              "arm_sprin: cannot disable: no force has this name (close names: arm_spring");
 }
 
 TEST(ForceSwitchesTest, ExternalForceInTheForceSetReadsItsDataSourceBesideTheModel) {
@@ -120,18 +123,13 @@ TEST(ForceSwitchesTest, ExternalForceInTheForceSetReadsItsDataSourceBesideTheMod
       "<ExternalForce name=\"push\"><applied_to_body>pendulum</applied_to_body>"
       "<force_identifier>force</force_identifier></ExternalForce>";
   engine::System other;
-  try {
-    parser.ParseSpec(other,
-                     io::ReadOsimString(WithForces(kForward + "pendulum_no_gravity.osim", no_data),
-                                        kForward + "inline.osim"));
-    FAIL() << "no error";
-  } catch (const Error& error) {
-    EXPECT_NE(std::string(error.what())
-                  .find("/forceset/push: an ExternalForce in the ForceSet "
-                        "has no data"),
-              std::string::npos)
-        << error.what();
-  }
+  ExpectError(
+      [&] {
+        parser.ParseSpec(
+            other, io::ReadOsimString(WithForces(kForward + "pendulum_no_gravity.osim", no_data),
+                                      kForward + "inline.osim"));
+      },
+      "/forceset/push: an ExternalForce in the ForceSet has no data");
 }
 
 }  // namespace
