@@ -132,5 +132,37 @@ TEST(ForceSwitchesTest, ExternalForceInTheForceSetReadsItsDataSourceBesideTheMod
       "/forceset/push: an ExternalForce in the ForceSet has no data");
 }
 
+TEST(ForceSwitchesTest, AnUnknownExpressedInBodyIsGroundWithAWarningButAPathIsRefused) {
+  // OpenSim warns and uses ground for a force_expressed_in_body naming no body; a path that
+  // names no body may be an offset frame OpenSim would use, which Sinew refuses.
+  auto force = [](const std::string& frame) {
+    return "<ExternalForce name=\"push\"><applied_to_body>pendulum</applied_to_body>"
+           "<force_expressed_in_body>" +
+           frame +
+           "</force_expressed_in_body><force_identifier>force</force_identifier>"
+           "<data_source_name>pendulum_external_load.sto</data_source_name></ExternalForce>";
+  };
+  opensim::OpenSimParser parser;
+  engine::System system;
+  parser.ParseSpec(system, io::ReadOsimString(
+                               WithForces(kForward + "pendulum_no_gravity.osim", force("nowhere")),
+                               kForward + "inline.osim"));
+  EXPECT_NE(parser.GetReport().GetForce("push")->load, nullptr);
+  bool warned = false;
+  for (const Diagnostic& w : parser.GetReport().warnings()) {
+    warned = warned || w.message.find("'nowhere' is not a body of the model: ground is used") !=
+                           std::string::npos;
+  }
+  EXPECT_TRUE(warned);
+  engine::System other;
+  ExpectError(
+      [&] {
+        parser.ParseSpec(other, io::ReadOsimString(WithForces(kForward + "pendulum_no_gravity.osim",
+                                                              force("/bodyset/pendulum/offset")),
+                                                   kForward + "inline.osim"));
+      },
+      "force_expressed_in_body '/bodyset/pendulum/offset' is not a body of the model");
+}
+
 }  // namespace
 }  // namespace sinew

@@ -16,14 +16,18 @@ int LineOf(const ForceBuildInput& in, const char* tag) {
 }
 
 // The engine body property `tag` names ("ground", a body name or a path to one). An unknown
-// name is an error for the applied body, and ground with a note for the others (OpenSim).
+// name is an error for the applied body or when it is a path (an offset frame Sinew does not
+// resolve), and otherwise ground with a note for the others (OpenSim).
 int FindBody(const ForceBuildInput& in, const char* tag, bool required) {
   const std::string name = in.values.String(tag, required ? "" : "ground");
   const int b = in.spec.FindBody(LastPathSegment(name));
   if (b != model::kNone) return in.body_map[b];
-  if (required)
+  // A path that names no body may name an offset frame, which OpenSim would use: refuse it
+  // rather than fall back to ground.
+  if (required || name.find('/') != std::string::npos) {
     in.values.Fail(std::string(tag) + " '" + name + "' is not a body of the model",
                    LineOf(in, tag));
+  }
   if (in.notes) {
     const std::string& file = in.external_loads ? in.external_loads->file : in.spec.file;
     in.notes->push_back({SourceLocation{file, LineOf(in, tag)}, in.force.path,

@@ -14,7 +14,8 @@ namespace sinew::opensim::internal {
 /// data only through ExternalLoads). Throws sinew::Error naming the file, the line and the
 /// force for an unknown applied_to_body, an identifier that does not name exactly 3 columns,
 /// no force and no torque, or missing data. force_expressed_in_body / point_expressed_in_body
-/// naming no body fall back to ground with a note, as OpenSim does.
+/// naming no body fall back to ground with a note, as OpenSim does (a path naming no body, maybe
+/// an offset frame, is an error).
 std::shared_ptr<engine::ForceElement> BuildExternalForce(const ForceBuildInput& input);
 
 }  // namespace sinew::opensim::internal
