@@ -1,13 +1,16 @@
 // `sinew simulate MODEL.osim --duration T [--accuracy A] [--integrator NAME] [--step H]
 //  [--report-interval DT] [--initial-states FILE.sto] [--activate-actuators]
-//  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--strict] [--export FILE] [--verbose]
-//  [--quiet] --out DIR`: a forward simulation of what the OpenSim parser builds (skeleton, ideal
+//  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--external-loads FILE.xml]...
+//  [--disable-force NAME]... [--strict] [--export FILE] [--verbose] [--quiet] --out DIR`: a
+// forward simulation of what the OpenSim parser builds (skeleton, forces, external loads,
 // actuators and their excitations). Writes DIR/states.sto (every coordinate's value and speed,
-// OpenSim 4 labels, radians and metres) and DIR/bodies.sto (OpenSim BodyKinematics positions),
-// both streamed as rows are computed. SIGINT or SIGTERM stops the run cleanly: the rows so far
+// OpenSim 4 labels, radians and metres), DIR/bodies.sto (OpenSim BodyKinematics positions) and
+// DIR/forces.sto (every force's columns, OpenSim's ForceReporter layout), all streamed as rows
+// are computed. SIGINT or SIGTERM stops the run cleanly: the rows so far
 // are kept, in files whose header says status=partial, and the exit code is 128 + the signal.
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
+#include <sinew/engine/force_reporter.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/simulation.h>
@@ -55,6 +58,8 @@ struct SimulateOptions {
   bool activate_actuators = false;
   std::vector<std::string> excitations;
   std::string controls;
+  std::vector<std::string> external_loads;
+  std::vector<std::string> disabled_forces;
   bool strict = false;
   std::string export_file;
   std::string vis = "mesh";
@@ -113,11 +118,13 @@ void RunSimulate(const SimulateOptions& options) {
   if (!options.initial_states.empty()) {
     t0 = ApplyInitialStates(options.initial_states, options.strict, spec);
   }
-  WarnNotSimulated(spec, options.model, options.strict);
+  WarnNotSimulated(spec, options.model, options.strict, options.disabled_forces);
   opensim::OpenSimParser parser;
   parser.ActivateActuators(options.activate_actuators);
   parser.SetControlsFile(options.controls);
   parser.SetStrict(options.strict);
+  for (const std::string& file : options.external_loads) parser.AddExternalLoads(file);
+  for (const std::string& name : options.disabled_forces) parser.DisableForce(name);
   auto system = std::make_unique<engine::System>();
   parser.ParseSpec(*system, spec);
   system->Finalize();
@@ -138,8 +145,8 @@ void RunSimulate(const SimulateOptions& options) {
   const auto integrator = engine::MakeIntegrator(options.integrator, *system, settings);
   integrator->SetController(parser.GetController());
 
-  // Both tables are streamed to disk as the run computes them (bounded memory).
-  io::Storage states_header, bodies_header;
+  // The tables are streamed to disk as the run computes them (bounded memory).
+  io::Storage states_header, bodies_header, forces_header;
   states_header.name = "states";
   states_header.labels = opensim::StatesLabels(*system);
   // bodies.sto as `sinew kinematics` writes it (OpenSim BodyKinematics positions; the angles
@@ -147,8 +154,14 @@ void RunSimulate(const SimulateOptions& options) {
   bodies_header.name = "Positions";
   bodies_header.labels = kinematics::BodyKinematicsLabels(spec);
   bodies_header.in_degrees = true;
+  // forces.sto as OpenSim's ForceReporter writes it (forces with appliesForce false are left out).
+  const engine::ForceReporter force_reporter(*system);
+  forces_header.name = "ForceReporter";
+  forces_header.labels = force_reporter.labels();
   io::StorageWriter states(options.out + "/states.sto", states_header);
   io::StorageWriter bodies(options.out + "/bodies.sto", bodies_header);
+  io::StorageWriter forces(options.out + "/forces.sto", forces_header);
+  std::vector<double> force_row;
   // A fresh system holds the spec's bodies in spec order (stand-ins add none).
   std::vector<Transform> X_GB(system->num_bodies());
   std::vector<double> row;
@@ -158,6 +171,8 @@ void RunSimulate(const SimulateOptions& options) {
     states.AppendRow(s.t, row);
     for (int b = 0; b < system->num_bodies(); ++b) X_GB[b] = engine::PoseOf(s.bodies[b]);
     bodies.AppendRow(s.t, kinematics::CalcBodyKinematicsRow(spec, X_GB));
+    force_reporter.CalcRow(s, force_row);
+    forces.AppendRow(s.t, force_row);
     if (!options.export_file.empty()) {
       motion.times.push_back(s.t);
       motion.X_GB.push_back(X_GB);
@@ -178,9 +193,11 @@ void RunSimulate(const SimulateOptions& options) {
   }
   states.Finish(partial);
   bodies.Finish(partial);
+  forces.Finish(partial);
   if (!result.completed) {
     std::cerr << "sinew: " << partial << ": kept the " << states.rows() << " rows computed in "
-              << options.out << "/states.sto and bodies.sto (their headers say status=partial)\n";
+              << options.out
+              << "/states.sto, bodies.sto and forces.sto (their headers say status=partial)\n";
     throw ExitRequest{128 + interrupt.Signal()};
   }
   if (!options.export_file.empty()) {
@@ -194,7 +211,8 @@ void RunSimulate(const SimulateOptions& options) {
     const auto& stats = integrator->stats();
     std::cout << "simulated " << options.duration << " s of " << spec.name << ": " << stats.steps
               << " steps (" << stats.rejected << " rejected), " << stats.evaluations
-              << " evaluations; wrote " << options.out << "/states.sto and bodies.sto\n";
+              << " evaluations; wrote " << options.out
+              << "/states.sto, bodies.sto and forces.sto\n";
   }
 }
 
@@ -203,7 +221,7 @@ void RunSimulate(const SimulateOptions& options) {
 void AddSimulateCommand(CLI::App& app) {
   auto options = std::make_shared<SimulateOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "simulate", "Forward simulation of a model (skeleton and ideal actuators)");
+      "simulate", "Forward simulation of a model (skeleton, forces, actuators, external loads)");
   cmd->add_option("model", options->model, "The .osim file")->required();
   cmd->add_option("--duration", options->duration, "Simulated time (s)")
       ->required()
@@ -227,6 +245,11 @@ void AddSimulateCommand(CLI::App& app) {
                   " (repeatable; overrides the other sources for that actuator)");
   cmd->add_option("--controls", options->controls,
                   "OpenSim ControlSet file (e.g. *_controls.xml) driving the actuators it names");
+  cmd->add_option("--external-loads", options->external_loads,
+                  "OpenSim ExternalLoads file (.xml; its datafile is read relative to it) whose "
+                  "ExternalForces are applied (repeatable)");
+  cmd->add_option("--disable-force", options->disabled_forces,
+                  "Leave out the force of this name (model or external loads; repeatable)");
   cmd->add_flag("--strict", options->strict,
                 "Fail (exit code 2) if anything in the model or the initial states is "
                 "approximated, not simulated or not used");

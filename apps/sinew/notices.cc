@@ -54,8 +54,10 @@ std::string FirstFew(const std::vector<std::string>& names, size_t shown) {
   return text;
 }
 
-void WarnNotSimulated(const model::ModelSpec& spec, const std::string& model_path, bool strict) {
-  const std::vector<opensim::NotSimulatedElement> elements = opensim::FindNotSimulated(spec);
+void WarnNotSimulated(const model::ModelSpec& spec, const std::string& model_path, bool strict,
+                      const std::vector<std::string>& disabled_forces) {
+  const std::vector<opensim::NotSimulatedElement> elements =
+      opensim::FindNotSimulated(spec, disabled_forces);
   if (elements.empty()) return;
   const std::string left_out = LeftOutPhrase(elements, "NOT simulated");
   const std::string standins = StandInPhrase(elements);

@@ -21,7 +21,9 @@ std::string ShowNumber(double value);
 /// forces, constraints, wrap objects, contact geometry, controllers..., and joints replaced by
 /// spherical stand-ins) as one warning line on stderr naming `model_path` for `sinew inspect`.
 /// With `strict` it is a sinew::Error instead (exit code 2). Nothing when nothing is left out.
-void WarnNotSimulated(const model::ModelSpec& spec, const std::string& model_path, bool strict);
+/// Forces named in `disabled_forces` (--disable-force) are not counted.
+void WarnNotSimulated(const model::ModelSpec& spec, const std::string& model_path, bool strict,
+                      const std::vector<std::string>& disabled_forces = {});
 
 /// For the commands that pose bodies from coordinates (kinematics, export, render): replaces
 /// the joints the engine cannot model by their stand-ins (opensim::ReplaceWithStandIns), with

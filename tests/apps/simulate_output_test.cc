@@ -41,6 +41,11 @@ TEST_F(SimulateOutputTest, CompleteRunSaysSoInItsHeader) {
   EXPECT_TRUE(states.notes.empty());  // nRows agrees with the rows present
   EXPECT_EQ(states.Metadata("status"), "complete");
   EXPECT_EQ(io::ReadStorage(Path("out") + "/bodies.sto").Metadata("status"), "complete");
+  // SinglePin has no forces: forces.sto holds the time column alone, at the same rows.
+  const io::Storage forces = io::ReadStorage(Path("out") + "/forces.sto");
+  EXPECT_EQ(forces.NumRows(), 101);
+  EXPECT_EQ(forces.NumColumns(), 0);
+  EXPECT_EQ(forces.Metadata("status"), "complete");
   EXPECT_EQ(TemporaryFiles(Path("out")), 0);
 }
 
@@ -59,7 +64,7 @@ TEST_F(SimulateOutputTest, InterruptKeepsTheRowsComputedSoFar) {
     EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT) << start;
     const std::string err = testing::ReadText(Path("err.txt"));
     EXPECT_NE(err.find("stopped by SIGINT"), std::string::npos) << err;
-    for (const char* name : {"/states.sto", "/bodies.sto"}) {
+    for (const char* name : {"/states.sto", "/bodies.sto", "/forces.sto"}) {
       const io::Storage table = io::ReadStorage(Path("out") + name);
       EXPECT_GT(table.NumRows(), 2) << name;
       EXPECT_TRUE(table.notes.empty()) << name;  // the header's nRows is the rows present

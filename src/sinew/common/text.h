@@ -1,6 +1,7 @@
 // Small text utilities shared by the file readers.
 #pragma once
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -28,5 +29,12 @@ enum class NumberRange {
 
 /// The first number of `values` that `range` rejects (NaN, or infinite under kFinite), or null.
 const double* FindOutOfRange(const std::vector<double>& values, NumberRange range);
+
+/// The names of `candidates` closest to `name`, for "no X named N; close names: ..." messages:
+/// those within an edit distance (case-insensitive) of a third of the longer name (at least 2),
+/// or containing `name` or contained in it, nearest first, at most `max_count`.
+std::vector<std::string> FindCloseNames(std::string_view name,
+                                        const std::vector<std::string>& candidates,
+                                        size_t max_count = 5);
 
 }  // namespace sinew

@@ -87,6 +87,18 @@ class ForceElement {
     return false;
   }
 
+  /// Labels of the columns this element reports (forces.sto, OpenSim's ForceReporter layout),
+  /// fixed once `system` is finalized. Default (from Support(), or every body and coordinate
+  /// without one): per body "<name>.<body>.force.X|Y|Z" then "<name>.<body>.torque.X|Y|Z" (the
+  /// layout of OpenSim's BushingForce), then per coordinate "<name>.<coordinate>", or "<name>"
+  /// alone when that is the element's only column. Override with CalcRecordValues where
+  /// OpenSim's layout for the class differs (actuators, springs, ExternalForce).
+  virtual std::vector<std::string> RecordLabels(const System& system) const;
+  /// Appends the values of RecordLabels(context.system) at the context's state to `values`.
+  /// Default: what AddLoads applies, per body the force (N, in G) and the torque about the body
+  /// origin (N m, in G), per coordinate the generalized force.
+  virtual void CalcRecordValues(const ForceContext& context, std::vector<double>& values) const;
+
   /// Potential energy stored in the element (J), zero for non-conservative elements. With it,
   /// CalcMechanicalEnergy covers springs: d/dt (T + V) equals the power of the
   /// non-conservative loads.

@@ -72,6 +72,8 @@ class Integrator {
     controller_ = std::move(controller);
   }
   const std::shared_ptr<const Controller>& controller() const { return controller_; }
+  /// Sets `state`'s inputs from the controller (if any), as every evaluation does.
+  void ApplyController(State& state) const;
   const IntegratorStats& stats() const { return stats_; }
   const IntegratorSettings& settings() const { return settings_; }
 
@@ -80,8 +82,6 @@ class Integrator {
   /// One step from state.t ending at or before t_limit (Advance without the checks).
   virtual void TakeStep(State& state, double t_limit) = 0;
   double ConstraintTolerance() const;
-  /// Sets `state`'s inputs from the controller (if any).
-  void ApplyController(State& state) const;
   /// One evaluation at `state`: inputs from the controller, then the accelerations (counted in
   /// stats().evaluations) and, into `zdot`, the state variables' derivatives.
   const Accelerations& Evaluate(State& state, Eigen::Ref<VecX> zdot);

@@ -21,6 +21,9 @@ SimulationResult Simulate(Integrator& integrator, State& state, const Simulation
   auto report_time = [&](long i) { return std::min(t0 + i * options.report_interval, t_end); };
   SimulationResult result;
   auto stopped = [&] { return options.stop && options.stop->load(); };
+  // The first reported state holds the inputs its first evaluation will see, as every later one
+  // does (so reported actuator forces are the ones applied).
+  integrator.ApplyController(state);
   report(state);
   ++result.reports;
   long next = 1;

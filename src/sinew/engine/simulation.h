@@ -32,7 +32,9 @@ struct SimulationResult {
 
 /// Integrates `state` from state.t for options.duration with `integrator`, calling `report`
 /// with the state at state.t, at every multiple of report_interval after it, and at the end
-/// (the last interval may be shorter). On return `state` is the state at the end (or where the
+/// (the last interval may be shorter). Every reported state holds the inputs the integrator's
+/// controller sets at its time (the first one too), so reported forces are those applied
+/// (engine::ForceReporter gives them). On return `state` is the state at the end (or where the
 /// run stopped). Throws sinew::Error for bad options or a failed step.
 SimulationResult Simulate(Integrator& integrator, State& state, const SimulationOptions& options,
                           const std::function<void(const State&)>& report);

@@ -34,6 +34,15 @@ double Actuator::CalcActuation(const engine::ForceContext& context) const {
   return optimal_force_ * context.input(0);
 }
 
+std::vector<std::string> Actuator::RecordLabels(const engine::System& /*system*/) const {
+  return {name_};
+}
+
+void Actuator::CalcRecordValues(const engine::ForceContext& context,
+                                std::vector<double>& values) const {
+  values.push_back(CalcActuation(context));
+}
+
 PointActuator::PointActuator(std::string name, double optimal_force, int body, const Vec3& point,
                              bool point_is_global, const Vec3& direction, bool force_is_global)
     : Actuator(std::move(name), optimal_force),

@@ -35,6 +35,11 @@ class Actuator : public engine::ForceElement {
   /// optimal_force * e, with e the actuator's input in `context`: N for forces, N m for torques.
   double CalcActuation(const engine::ForceContext& context) const;
 
+  /// One column, the actuator's name: CalcActuation (OpenSim's Actuator::getRecordLabels).
+  std::vector<std::string> RecordLabels(const engine::System& system) const override;
+  void CalcRecordValues(const engine::ForceContext& context,
+                        std::vector<double>& values) const override;
+
  private:
   std::string name_;
   double optimal_force_;

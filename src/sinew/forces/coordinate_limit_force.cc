@@ -76,6 +76,18 @@ void CoordinateLimitForce::AddLoads(const engine::ForceContext& context,
   loads.AddGeneralizedForce(coordinate_, CalcForce(s.q[coordinate_], s.u[coordinate_]));
 }
 
+std::vector<std::string> CoordinateLimitForce::RecordLabels(
+    const engine::System& /*system*/) const {
+  return {name_, "PotentialEnergy"};
+}
+
+void CoordinateLimitForce::CalcRecordValues(const engine::ForceContext& context,
+                                            std::vector<double>& values) const {
+  const engine::State& s = context.state;
+  values.push_back(CalcForce(s.q[coordinate_], s.u[coordinate_]));
+  values.push_back(CalcPotentialEnergy(s.q[coordinate_]));
+}
+
 std::optional<engine::ForceSupport> CoordinateLimitForce::Support() const {
   return engine::ForceSupport{{}, {coordinate_}};
 }

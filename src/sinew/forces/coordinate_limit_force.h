@@ -47,6 +47,11 @@ class CoordinateLimitForce final : public engine::ForceElement {
   bool CalcLoadJacobians(const engine::ForceContext& context, Eigen::Ref<MatX> K,
                          Eigen::Ref<MatX> D) const override;
   double CalcPotentialEnergy(const engine::ForceContext& context) const override;
+  /// Two columns, "<name>" (the generalized force) and "PotentialEnergy" (OpenSim's labels:
+  /// the second is not prefixed, so two limit forces repeat it).
+  std::vector<std::string> RecordLabels(const engine::System& system) const override;
+  void CalcRecordValues(const engine::ForceContext& context,
+                        std::vector<double>& values) const override;
 
  private:
   // The upper and lower stiffnesses k_up(q), k_lo(q) and their derivatives by q.

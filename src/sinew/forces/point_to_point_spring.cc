@@ -1,6 +1,7 @@
 #include <sinew/engine/loads.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/state.h>
+#include <sinew/engine/system.h>
 #include <sinew/forces/point_to_point_spring.h>
 
 #include <utility>
@@ -28,13 +29,39 @@ double PointToPointSpring::CalcLength(const engine::ForceContext& context) const
   return Span(context.state, body1_, point1_, body2_, point2_).norm();
 }
 
-void PointToPointSpring::AddLoads(const engine::ForceContext& context, engine::Loads& loads) const {
-  const Vec3 r = Span(context.state, body1_, point1_, body2_, point2_);
+Vec3 PointToPointSpring::CalcForceOnBody1(const engine::State& state) const {
+  const Vec3 r = Span(state, body1_, point1_, body2_, point2_);
   const double d = r.norm();
-  if (!(d > 0.0)) return;
-  const Vec3 f_G = stiffness_ * (d - rest_length_) / d * r;
+  if (!(d > 0.0)) return Vec3::Zero();
+  return stiffness_ * (d - rest_length_) / d * r;
+}
+
+void PointToPointSpring::AddLoads(const engine::ForceContext& context, engine::Loads& loads) const {
+  const Vec3 f_G = CalcForceOnBody1(context.state);
   loads.AddForceAtPoint(context.state, body1_, point1_, f_G);
   loads.AddForceAtPoint(context.state, body2_, point2_, -f_G);
+}
+
+std::vector<std::string> PointToPointSpring::RecordLabels(const engine::System& system) const {
+  std::vector<std::string> labels;
+  for (int body : {body1_, body2_}) {
+    for (const char* kind : {".force.", ".point."}) {
+      for (const char* axis : {"X", "Y", "Z"}) {
+        labels.push_back(name_ + "." + system.bodies()[body].name + kind + axis);
+      }
+    }
+  }
+  return labels;
+}
+
+void PointToPointSpring::CalcRecordValues(const engine::ForceContext& context,
+                                          std::vector<double>& values) const {
+  const engine::State& s = context.state;
+  const Vec3 f_G = CalcForceOnBody1(s);
+  const Vec3 p_G1 = engine::PoseOf(s.bodies[body1_]) * point1_;
+  const Vec3 p_G2 = engine::PoseOf(s.bodies[body2_]) * point2_;
+  for (const Vec3& v : {f_G, p_G1, Vec3(-f_G), p_G2})
+    values.insert(values.end(), v.begin(), v.end());
 }
 
 std::optional<engine::ForceSupport> PointToPointSpring::Support() const {

@@ -25,8 +25,16 @@ class PointToPointSpring final : public engine::ForceElement {
   void AddLoads(const engine::ForceContext& context, engine::Loads& loads) const override;
   std::optional<engine::ForceSupport> Support() const override;
   double CalcPotentialEnergy(const engine::ForceContext& context) const override;
+  /// OpenSim's layout: per body (body1, then body2) "<name>.<body>.force.X|Y|Z" (the force on
+  /// it, N, in G) and "<name>.<body>.point.X|Y|Z" (its point, m, in G).
+  std::vector<std::string> RecordLabels(const engine::System& system) const override;
+  void CalcRecordValues(const engine::ForceContext& context,
+                        std::vector<double>& values) const override;
 
  private:
+  /// The force on body1 (N, in G); body2 gets its opposite.
+  Vec3 CalcForceOnBody1(const engine::State& state) const;
+
   std::string name_;
   int body1_, body2_;
   Vec3 point1_, point2_;

@@ -24,6 +24,16 @@ void SpringGeneralizedForce::AddLoads(const engine::ForceContext& context,
   loads.AddGeneralizedForce(coordinate_, CalcForce(context));
 }
 
+std::vector<std::string> SpringGeneralizedForce::RecordLabels(
+    const engine::System& /*system*/) const {
+  return {name_ + "_Force"};
+}
+
+void SpringGeneralizedForce::CalcRecordValues(const engine::ForceContext& context,
+                                              std::vector<double>& values) const {
+  values.push_back(CalcForce(context));
+}
+
 std::optional<engine::ForceSupport> SpringGeneralizedForce::Support() const {
   return engine::ForceSupport{{}, {coordinate_}};
 }

@@ -26,6 +26,10 @@ class SpringGeneralizedForce final : public engine::ForceElement {
   bool CalcLoadJacobians(const engine::ForceContext& context, Eigen::Ref<MatX> K,
                          Eigen::Ref<MatX> D) const override;
   double CalcPotentialEnergy(const engine::ForceContext& context) const override;
+  /// One column "<name>_Force": CalcForce (OpenSim's getRecordLabels).
+  std::vector<std::string> RecordLabels(const engine::System& system) const override;
+  void CalcRecordValues(const engine::ForceContext& context,
+                        std::vector<double>& values) const override;
 
  private:
   std::string name_;

@@ -3,6 +3,7 @@
 #include <sinew/forces/point_to_point_spring.h>
 #include <sinew/forces/spring_generalized_force.h>
 #include <sinew/model/element_values.h>
+#include <sinew/opensim/internal/external_force_builder.h>
 #include <sinew/opensim/internal/force_registry.h>
 
 #include <limits>
@@ -15,11 +16,14 @@ namespace {
 // them on load and flips the direction (see PointActuator / TorqueActuator updateFromXMLNode).
 constexpr int kRenamedActuatorVersion = 10905;
 
-// The last segment of a socket path ("/bodyset/rod1" -> "rod1"), or the name itself.
+}  // namespace
+
 std::string LastPathSegment(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
+
+namespace {
 
 int MapBody(const model::ModelSpec& spec, const model::ElementValues& values,
             const std::string& name, const std::vector<int>& body_map, const char* property) {
@@ -135,6 +139,7 @@ const ForceType* FindForceType(const std::string& opensim_class) {
       {"TorqueActuator", {&BuildActuator<MakeTorqueActuator>, true}},
       {"CoordinateActuator", {&BuildActuator<MakeCoordinateActuator>, true}},
       {"CoordinateLimitForce", {&BuildCoordinateLimitForce, false}},
+      {"ExternalForce", {&BuildExternalForce, false}},
       {"PointToPointSpring", {&BuildPointToPointSpring, false}},
       {"SpringGeneralizedForce", {&BuildSpringGeneralizedForce, false}},
   };
@@ -145,11 +150,15 @@ const ForceType* FindForceType(const std::string& opensim_class) {
 std::shared_ptr<engine::ForceElement> BuildForce(const model::ModelSpec& spec,
                                                  const model::ForceSpec& force,
                                                  const std::vector<int>& body_map,
-                                                 const std::vector<int>& coordinate_map) {
-  const model::ElementValues values(force.element, spec.file, force.path);
+                                                 const std::vector<int>& coordinate_map,
+                                                 const io::ExternalLoads* external_loads,
+                                                 Diagnostics* notes) {
+  const std::string& file = external_loads ? external_loads->file : spec.file;
+  const model::ElementValues values(force.element, file, force.path);
   const ForceType* type = FindForceType(force.type);
   if (!type) values.Fail("'" + force.type + "' is not a force type Sinew simulates");
-  return type->build(ForceBuildInput{spec, force, values, body_map, coordinate_map});
+  return type->build(
+      ForceBuildInput{spec, force, values, body_map, coordinate_map, external_loads, notes});
 }
 
 }  // namespace sinew::opensim::internal

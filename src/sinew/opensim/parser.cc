@@ -1,3 +1,4 @@
+#include <sinew/common/text.h>
 #include <sinew/functions/constant.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/read_controls.h>
@@ -8,6 +9,7 @@
 #include <sinew/opensim/parser.h>
 #include <sinew/opensim/support.h>
 
+#include <algorithm>
 #include <iostream>
 
 namespace sinew::opensim {
@@ -89,7 +91,9 @@ void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
   BuildConstraints(system, map.bodies, map.coordinates);
   BuildForces(system, map.bodies, map.coordinates);
   AssignExcitations();
-  for (std::string& line : ListNotSimulated(spec_)) report_.AddNotSimulated(std::move(line));
+  for (std::string& line : ListNotSimulated(spec_, disabled_forces_)) {
+    report_.AddNotSimulated(std::move(line));
+  }
   if (collision_enabled_) {
     collision_ = contact::BuildCollisionModel(spec_, kinematics::CalcBodyDepths(spec_), family_1_,
                                               family_2_);
@@ -122,18 +126,62 @@ void OpenSimParser::BuildConstraints(engine::System& system, const std::vector<i
 void OpenSimParser::BuildForces(engine::System& system, const std::vector<int>& body_map,
                                 const std::vector<int>& coordinate_map) {
   for (const model::ForceSpec& force : spec_.forces) {
-    ForceInfo info{ReportName(force.path, force.name), force.type, nullptr, nullptr, -1, ""};
-    if (IsForceSimulated(force)) {
-      auto element = internal::BuildForce(spec_, force, body_map, coordinate_map);
-      const int k = system.AddForceElement(element);
-      info.load = element;
-      if (internal::FindForceType(force.type)->actuator) {
-        info.actuator = std::static_pointer_cast<const forces::Actuator>(element);
-        info.input = system.InputBegin(k);
-        info.excitation_source = "default 0";
-      }
+    BuildOneForce(system, force, body_map, coordinate_map, nullptr);
+  }
+  for (const std::string& file : external_loads_files_) {
+    const io::ExternalLoads loads = io::ReadExternalLoads(file);
+    for (const Diagnostic& note : loads.notes) report_.AddWarning(note);
+    for (const model::ForceSpec& force : loads.forces) {
+      BuildOneForce(system, force, body_map, coordinate_map, &loads);
     }
-    report_.AddForce(std::move(info));
+  }
+  CheckDisabledNames();
+}
+
+void OpenSimParser::BuildOneForce(engine::System& system, const model::ForceSpec& force,
+                                  const std::vector<int>& body_map,
+                                  const std::vector<int>& coordinate_map,
+                                  const io::ExternalLoads* external_loads) {
+  ForceInfo info{ReportName(force.path, force.name), force.type, nullptr, nullptr, -1, ""};
+  const bool by_name = std::find(disabled_forces_.begin(), disabled_forces_.end(), info.name) !=
+                       disabled_forces_.end();
+  if (by_name) {
+    info.disabled = "disabled by name";
+  } else if (!force.applies_force) {
+    info.disabled = "appliesForce false in the file";
+  } else if (IsForceSimulated(force)) {
+    Diagnostics notes;
+    auto element =
+        internal::BuildForce(spec_, force, body_map, coordinate_map, external_loads, &notes);
+    for (Diagnostic& note : notes) report_.AddWarning(std::move(note));
+    const int k = system.AddForceElement(element);
+    info.load = element;
+    if (internal::FindForceType(force.type)->actuator) {
+      info.actuator = std::static_pointer_cast<const forces::Actuator>(element);
+      info.input = system.InputBegin(k);
+      info.excitation_source = "default 0";
+    }
+  }
+  report_.AddForce(std::move(info));
+}
+
+void OpenSimParser::CheckDisabledNames() const {
+  std::vector<std::string> names;
+  for (const auto& [key, info] : report_.forces()) names.push_back(info.name);
+  for (const std::string& name : disabled_forces_) {
+    if (std::find(names.begin(), names.end(), name) != names.end()) continue;
+    const std::vector<std::string> close = FindCloseNames(name, names);
+    const std::vector<std::string>& shown = close.empty() ? names : close;
+    constexpr size_t kMaxShown = 10;
+    std::string list;
+    for (size_t i = 0; i < shown.size() && i < kMaxShown; ++i) {
+      list += (i == 0 ? "" : ", ") + shown[i];
+    }
+    if (shown.size() > kMaxShown) list += ", ...";
+    throw Error(SourceLocation{spec_.file, 0}, name,
+                "cannot disable: no force has this name (" +
+                    std::string(close.empty() ? "the forces: " : "close names: ") +
+                    (list.empty() ? "the model has none" : list) + ")");
   }
 }
 

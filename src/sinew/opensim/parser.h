@@ -9,6 +9,7 @@
 #include <sinew/forces/actuator.h>
 #include <sinew/forces/excitation_controller.h>
 #include <sinew/functions/function.h>
+#include <sinew/io/external_loads.h>
 #include <sinew/model/model_spec.h>
 #include <sinew/opensim/report.h>
 #include <sinew/viz/visual_scene.h>
@@ -16,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace sinew::opensim {
 
@@ -49,6 +51,14 @@ class OpenSimParser {
   /// A ControlSet file (OpenSim's `*_controls.xml`) whose controls drive the actuators they
   /// name; it overrides ActivateActuators and the model's controllers. "" for none.
   void SetControlsFile(const std::string& file) { controls_file_ = file; }
+  /// Adds the ExternalForces of an OpenSim ExternalLoads file (`<ExternalLoads>`, its
+  /// `datafile` read relative to the file) to every later Parse, after the model's own forces.
+  /// May be called several times. Parse throws sinew::Error (file, line, force) for a bad file.
+  void AddExternalLoads(const std::string& file) { external_loads_files_.push_back(file); }
+  /// Leaves the force named `name` (in the model's ForceSet or an ExternalLoads file) out of
+  /// every later Parse; the Report lists it as disabled. May be called several times. Parse
+  /// throws sinew::Error, listing close names, when no force has this name.
+  void DisableForce(const std::string& name) { disabled_forces_.push_back(name); }
 
   /// Reads `filename` and adds its bodies, joints and actuators to `system` (which must not be
   /// finalized yet; call system.Finalize() before simulating). Throws sinew::Error.
@@ -89,6 +99,12 @@ class OpenSimParser {
                         const std::vector<int>& coordinate_map);
   void BuildForces(engine::System& system, const std::vector<int>& body_map,
                    const std::vector<int>& coordinate_map);
+  // Builds one force (of the model, or of `external_loads`) and reports it.
+  void BuildOneForce(engine::System& system, const model::ForceSpec& force,
+                     const std::vector<int>& body_map, const std::vector<int>& coordinate_map,
+                     const io::ExternalLoads* external_loads);
+  // Fails for a name given to DisableForce that no force has.
+  void CheckDisabledNames() const;
   void AssignExcitations();
   void CheckStrict() const;
 
@@ -100,6 +116,8 @@ class OpenSimParser {
   bool activate_actuators_ = false;
   bool strict_ = false;
   std::string controls_file_;
+  std::vector<std::string> external_loads_files_;
+  std::vector<std::string> disabled_forces_;
   std::vector<std::string> geometry_dirs_;
   ContactMethod contact_method_ = ContactMethod::kNsc;
 

@@ -81,7 +81,9 @@ void Report::Print(std::ostream& out) const {
   out << "Forces (" << forces_.size() << ")\n";
   for (const auto& [key, info] : forces_) {
     out << "  " << std::left << std::setw(27) << key << " " << std::setw(21) << info.type << " "
-        << (info.load ? "simulated" : "not simulated");
+        << (info.load               ? "simulated"
+            : info.disabled.empty() ? "not simulated"
+                                    : "disabled (" + info.disabled + ")");
     if (info.actuator) out << ", excitation: " << info.excitation_source;
     out << "\n";
   }

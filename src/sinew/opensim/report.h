@@ -47,6 +47,9 @@ struct ForceInfo {
   /// Where the actuator's excitation comes from ("default 0", "ActivateActuators",
   /// "PrescribedController <name>", "controls file", "set by user").
   std::string excitation_source;
+  /// Why the force is not applied although it could be: "appliesForce false in the file" or
+  /// "disabled by name" (OpenSimParser::DisableForce); "" when it is not disabled.
+  std::string disabled = {};
 };
 
 /// A constraint read from the file and what was made of it.

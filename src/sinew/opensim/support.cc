@@ -3,6 +3,7 @@
 #include <sinew/opensim/internal/force_registry.h>
 #include <sinew/opensim/support.h>
 
+#include <algorithm>
 #include <array>
 
 namespace sinew::opensim {
@@ -22,13 +23,18 @@ bool IsControllerSimulated(const model::ControllerSpec& controller) {
 bool IsContactGeometrySimulated(const model::ContactGeometrySpec& /*contact*/) { return false; }
 bool IsWrapObjectSimulated(const model::WrapObjectSpec& /*wrap*/) { return false; }
 
-std::vector<NotSimulatedElement> FindNotSimulated(const model::ModelSpec& spec) {
+std::vector<NotSimulatedElement> FindNotSimulated(const model::ModelSpec& spec,
+                                                  const std::vector<std::string>& disabled_forces) {
   std::vector<NotSimulatedElement> out;
   for (const model::JointSpec& j : spec.joints) {
     if (!IsJointSimulated(j)) out.push_back({ElementKind::kJoint, j.path, j.type});
   }
   for (const model::ForceSpec& f : spec.forces) {
-    if (IsForceSimulated(f)) continue;
+    // A force the file switches off (appliesForce false) is off in OpenSim too: nothing is left
+    // out. The parser's Report lists it as disabled.
+    if (IsForceSimulated(f) || !f.applies_force) continue;
+    if (std::find(disabled_forces.begin(), disabled_forces.end(), f.name) != disabled_forces.end())
+      continue;
     const bool muscle = f.type.ends_with("Muscle");
     out.push_back({muscle ? ElementKind::kMuscle : ElementKind::kForce, f.path, f.type});
   }
@@ -58,9 +64,10 @@ std::vector<NotSimulatedElement> FindNotSimulated(const model::ModelSpec& spec) 
   return out;
 }
 
-std::vector<std::string> ListNotSimulated(const model::ModelSpec& spec) {
+std::vector<std::string> ListNotSimulated(const model::ModelSpec& spec,
+                                          const std::vector<std::string>& disabled_forces) {
   std::vector<std::string> lines;
-  for (const NotSimulatedElement& e : FindNotSimulated(spec))
+  for (const NotSimulatedElement& e : FindNotSimulated(spec, disabled_forces))
     lines.push_back(e.path + ": " + e.type);
   return lines;
 }

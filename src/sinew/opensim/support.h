@@ -44,13 +44,17 @@ struct NotSimulatedElement {
   std::string type;  ///< The OpenSim class, e.g. "Thelen2003Muscle".
 };
 
-/// Every element the simulator does not handle yet, in model order: joints, forces,
-/// constraints, controllers, contact geometry, wrap objects, other components.
-std::vector<NotSimulatedElement> FindNotSimulated(const model::ModelSpec& spec);
+/// Every element the simulator does not handle yet, in model order: joints, forces (not those
+/// with appliesForce false: OpenSim does not apply them either), constraints, controllers,
+/// contact geometry, wrap objects, other components.
+/// Forces named in `disabled_forces` (OpenSimParser::DisableForce) are left out of the list too.
+std::vector<NotSimulatedElement> FindNotSimulated(
+    const model::ModelSpec& spec, const std::vector<std::string>& disabled_forces = {});
 
 /// FindNotSimulated as lines "<path>: <OpenSim class>" (e.g. "/forceset/biceps:
 /// Thelen2003Muscle"), in the same order.
-std::vector<std::string> ListNotSimulated(const model::ModelSpec& spec);
+std::vector<std::string> ListNotSimulated(const model::ModelSpec& spec,
+                                          const std::vector<std::string>& disabled_forces = {});
 
 /// The counts of `elements` by kind as an English list, kinds in ElementKind order:
 /// "6 muscles, 4 wrap objects and 1 constraint"; "" for none. Forces are "other forces"

@@ -4,7 +4,9 @@
 // this table.
 #pragma once
 
+#include <sinew/common/error.h>
 #include <sinew/engine/force_element.h>
+#include <sinew/io/external_loads.h>
 #include <sinew/model/element_values.h>
 #include <sinew/model/model_spec.h>
 
@@ -22,6 +24,10 @@ struct ForceBuildInput {
   const model::ElementValues& values;
   const std::vector<int>& body_map;        ///< spec body index -> engine body index
   const std::vector<int>& coordinate_map;  ///< spec coordinate index -> engine coordinate index
+  /// The ExternalLoads file the force comes from (its data), or null for a model's own force.
+  const io::ExternalLoads* external_loads = nullptr;
+  /// Where a builder notes what it read leniently, as OpenSim would (may be null).
+  Diagnostics* notes = nullptr;
 };
 
 /// How one OpenSim force class is built.
@@ -37,9 +43,15 @@ struct ForceType {
 const ForceType* FindForceType(const std::string& opensim_class);
 
 /// The engine element of `force`, whose class must have a registry entry.
+/// `external_loads` and `notes` as in ForceBuildInput.
 std::shared_ptr<engine::ForceElement> BuildForce(const model::ModelSpec& spec,
                                                  const model::ForceSpec& force,
                                                  const std::vector<int>& body_map,
-                                                 const std::vector<int>& coordinate_map);
+                                                 const std::vector<int>& coordinate_map,
+                                                 const io::ExternalLoads* external_loads = nullptr,
+                                                 Diagnostics* notes = nullptr);
+
+/// The last segment of a socket path ("/bodyset/rod1" -> "rod1"), or the name itself.
+std::string LastPathSegment(const std::string& path);
 
 }  // namespace sinew::opensim::internal
