@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,6 +18,10 @@ namespace sinew::engine {
 namespace {
 
 constexpr int kMaxIterations = 100;
+// Gauss-Newton leaves out the constraints' curvature, so near the solution the goal's steps
+// converge only linearly and leave errors of their square in phi; after this many iterations
+// the goal is dropped and Newton steps of minimum weighted norm finish the constraints.
+constexpr int kGoalIterations = 60;
 // Relative step of the central differences of phi(q): balances the O(h^2) truncation against
 // rounding (eps / h) near the cube root of machine epsilon.
 constexpr double kDifferenceStep = 5e-6;
@@ -61,7 +66,10 @@ struct Residual {
     std::vector<std::pair<double, int>> largest;
     for (size_t i = 0; i < constraints.size(); ++i) {
       const int n = system.constraints()[constraints[i]]->NumEquations();
-      largest.emplace_back(phi.segment(first_row[i], n).lpNorm<Eigen::Infinity>(), constraints[i]);
+      const auto own = phi.segment(first_row[i], n);
+      const double worst =
+          own.allFinite() ? own.lpNorm<Eigen::Infinity>() : std::numeric_limits<double>::infinity();
+      largest.emplace_back(worst, constraints[i]);
     }
     std::sort(largest.begin(), largest.end(), std::greater<>());
     std::string out;
@@ -114,6 +122,7 @@ void AssembleState(const System& system, State& state, double tolerance) {
 
   VecX phi = residual.Calc(system, state);
   double error = phi.size() == 0 ? 0.0 : phi.lpNorm<Eigen::Infinity>();
+  if (!phi.allFinite()) error = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration < kMaxIterations && phi.size() > 0 && n > 0; ++iteration) {
     // Linearized problem: min sum_i w_i (q_i + dq_i - goal_i)^2 subject to phi + A dq = 0.
     // With H = diag(w + damping) and g = w (q - goal): dq = -H^-1 (g + A^T lambda) where
@@ -122,30 +131,42 @@ void AssembleState(const System& system, State& state, double tolerance) {
     VecX q(n);
     for (int i = 0; i < n; ++i) q[i] = state.q[free[i]];
     const MatX A = CalcResidualJacobian(system, residual, free, state);
-    const VecX g = weight.cwiseProduct(q - goal);
+    const bool with_goal = iteration < kGoalIterations;
+    const VecX g = with_goal ? VecX(weight.cwiseProduct(q - goal)) : VecX(VecX::Zero(n));
     const MatX AHinv = A * step_weight.cwiseInverse().asDiagonal();
     const MatX S = AHinv * A.transpose();
     const VecX lambda = S.completeOrthogonalDecomposition().solve(phi - AHinv * g);
     const VecX dq = -step_weight.cwiseInverse().cwiseProduct(g + A.transpose() * lambda);
+    if (!dq.allFinite()) break;
     // Halve the step while it makes the constraint error worse (far from the solution).
     double alpha = 1.0;
     VecX trial_phi;
-    for (int halving = 0; halving < 20; ++halving, alpha *= 0.5) {
+    bool accepted = false;
+    for (int halving = 0; halving < 20 && !accepted; ++halving) {
+      if (halving > 0) alpha *= 0.5;
       for (int i = 0; i < n; ++i) state.q[free[i]] = q[i] + alpha * dq[i];
       trial_phi = residual.Calc(system, state);
-      if (trial_phi.lpNorm<Eigen::Infinity>() <= std::max(error, tolerance)) break;
+      accepted = trial_phi.allFinite() &&
+                 trial_phi.lpNorm<Eigen::Infinity>() <= std::max(error, tolerance);
+    }
+    if (!accepted) {  // no step along dq reduces the error: stalled, keep the last state
+      for (int i = 0; i < n; ++i) state.q[free[i]] = q[i];
+      phi = residual.Calc(system, state);
+      break;
     }
     phi = trial_phi;
     error = phi.lpNorm<Eigen::Infinity>();
     const double scale = std::max(1.0, q.lpNorm<Eigen::Infinity>());
-    if (error <= tolerance && alpha * dq.lpNorm<Eigen::Infinity>() <= kStepTolerance * scale) {
+    if (error <= tolerance &&
+        (!with_goal || alpha * dq.lpNorm<Eigen::Infinity>() <= kStepTolerance * scale)) {
       break;
     }
   }
   if (error > tolerance) {
-    throw Error("engine: cannot assemble a state that satisfies the constraints; largest "
-                "residuals: " +
-                residual.Worst(system, phi));
+    throw Error(
+        "engine: cannot assemble a state that satisfies the constraints; largest "
+        "residuals: " +
+        residual.Worst(system, phi));
   }
   PlaceBodies(system, state);
   KktSolver kkt(system);

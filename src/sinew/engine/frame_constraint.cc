@@ -24,8 +24,8 @@ Frames CalcFrames(const State& state, int body_f, const Transform& X_PF, int bod
 
 }  // namespace
 
-FrameConstraint::FrameConstraint(std::string name, int body_f, const Transform& X_PF,
-                                 int body_m, const Transform& X_BM, FrameConstraintKind kind)
+FrameConstraint::FrameConstraint(std::string name, int body_f, const Transform& X_PF, int body_m,
+                                 const Transform& X_BM, FrameConstraintKind kind)
     : name_(std::move(name)), body_f_(body_f), body_m_(body_m), X_PF_(X_PF), X_BM_(X_BM) {
   switch (kind) {
     case FrameConstraintKind::kPin:

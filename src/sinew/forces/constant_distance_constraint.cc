@@ -18,9 +18,9 @@ ConstantDistanceConstraint::ConstantDistanceConstraint(std::string name, int bod
       p_B2Q2_(p_B2Q2),
       distance_(distance) {
   if (!(distance > 0.0) || !std::isfinite(distance)) {
-    throw Error(SourceLocation{}, name_,
-                "constant_distance must be a finite length > 0 (it is " +
-                    std::to_string(distance) + ")");
+    throw Error(
+        SourceLocation{}, name_,
+        "constant_distance must be a finite length > 0 (it is " + std::to_string(distance) + ")");
   }
   if (body1 == body2) throw Error(SourceLocation{}, name_, "body_1 and body_2 are the same body");
 }

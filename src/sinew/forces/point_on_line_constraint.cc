@@ -17,9 +17,8 @@ struct PointOnLineConstraint::Geometry {
   Vec3 r;      ///< p_GQ - p_GL
 };
 
-PointOnLineConstraint::PointOnLineConstraint(std::string name, int line_body,
-                                             const Vec3& direction, const Vec3& p_LL,
-                                             int follower_body, const Vec3& p_FQ)
+PointOnLineConstraint::PointOnLineConstraint(std::string name, int line_body, const Vec3& direction,
+                                             const Vec3& p_LL, int follower_body, const Vec3& p_FQ)
     : name_(std::move(name)),
       line_body_(line_body),
       follower_body_(follower_body),

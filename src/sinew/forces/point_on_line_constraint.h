@@ -19,8 +19,8 @@ class PointOnLineConstraint final : public engine::Constraint {
   /// `line_body` and `follower_body` are engine body indices (0 is ground); `direction` (in
   /// the line body's frame) is normalized. Throws sinew::Error (component `name`) for a zero
   /// direction or one body used twice.
-  PointOnLineConstraint(std::string name, int line_body, const Vec3& direction,
-                        const Vec3& p_LL, int follower_body, const Vec3& p_FQ);
+  PointOnLineConstraint(std::string name, int line_body, const Vec3& direction, const Vec3& p_LL,
+                        int follower_body, const Vec3& p_FQ);
 
   std::string name() const override { return name_; }
 

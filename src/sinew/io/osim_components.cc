@@ -67,9 +67,10 @@ void ReadConstraintFrames(ReadContext& ctx, const pugi::xml_node& node, model::C
       const std::string suffix = std::to_string(i + 1);
       const std::string location = "location_body_" + suffix;
       const std::string orientation = "orientation_body_" + suffix;
-      frame.X_BF = frame.X_BF *
-                   MakeTransform(ReadVec3Or(ctx.doc(), node, orientation.c_str(), c.path, Vec3::Zero()),
-                                 ReadVec3Or(ctx.doc(), node, location.c_str(), c.path, Vec3::Zero()));
+      frame.X_BF =
+          frame.X_BF *
+          MakeTransform(ReadVec3Or(ctx.doc(), node, orientation.c_str(), c.path, Vec3::Zero()),
+                        ReadVec3Or(ctx.doc(), node, location.c_str(), c.path, Vec3::Zero()));
     }
   }
 }

@@ -90,8 +90,8 @@ std::array<int, 2> FrameBodies(const ConstraintBuildInput& in) {
 std::shared_ptr<engine::Constraint> BuildWeld(const ConstraintBuildInput& in) {
   const std::array<int, 2> b = FrameBodies(in);
   const auto& f = in.constraint.frames;
-  return std::make_shared<engine::FrameConstraint>(in.constraint.name, b[0], f[0].X_BF, b[1], f[1].X_BF,
-                                                   engine::FrameConstraintKind::kWeld);
+  return std::make_shared<engine::FrameConstraint>(in.constraint.name, b[0], f[0].X_BF, b[1],
+                                                   f[1].X_BF, engine::FrameConstraintKind::kWeld);
 }
 
 // PointConstraint: location_body_2 on body_2 stays at location_body_1 on body_1 (3 equations).
@@ -101,8 +101,8 @@ std::shared_ptr<engine::Constraint> BuildPoint(const ConstraintBuildInput& in) {
   const std::array<int, 2> b = FrameBodies(in);
   const model::ElementValues& v = in.values;
   return std::make_shared<engine::FrameConstraint>(
-      in.constraint.name, b[0], Transform::Translation(v.Vector3("location_body_1", Vec3::Zero())), b[1],
-      Transform::Translation(v.Vector3("location_body_2", Vec3::Zero())),
+      in.constraint.name, b[0], Transform::Translation(v.Vector3("location_body_1", Vec3::Zero())),
+      b[1], Transform::Translation(v.Vector3("location_body_2", Vec3::Zero())),
       engine::FrameConstraintKind::kPoint);
 }
 
