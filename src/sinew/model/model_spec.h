@@ -184,9 +184,9 @@ struct ForceSpec {
 /// orientation_body_i), PointConstraint's and ConstantDistanceConstraint's body_1/body_2,
 /// PointOnLineConstraint's line_body/follower_body.
 struct ConstraintFrame {
-  int body = kNone;     ///< body index (kNone when the constraint type has no such frame)
-  std::string frame;    ///< the frame's absolute path (a body's or an offset frame's)
-  Transform X_BF;       ///< the frame's pose in its body
+  int body = kNone;   ///< body index (kNone when the constraint type has no such frame)
+  std::string frame;  ///< the frame's absolute path (a body's or an offset frame's)
+  Transform X_BF;     ///< the frame's pose in its body
 };
 
 /// A constraint (CoordinateCouplerConstraint, WeldConstraint, PointConstraint, ...).
