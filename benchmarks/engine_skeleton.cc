@@ -1,15 +1,18 @@
 // One simulated second of the passive gait2354 and Rajagopal2016 skeletons (bodies, joints,
-// coordinates and gravity only), RK45 at accuracy 1e-6. From the default pose the skeleton falls
-// as one rigid body (a parabola RK45 integrates in a few steps), so every coordinate is also
-// given a speed of sin(c + 1) rad/s or m/s: the skeleton tumbles with all joints moving. Reports
-// simulated seconds per wall second (sim_s_per_s) and steps per second. Both models are the
-// copies in tests/data (gait2354 in opensim-core's test version of the file).
+// coordinates and gravity only), and of Rajagopal2016 with its couplers, RK45 at accuracy 1e-6.
+// From the default pose the skeleton falls as one rigid body (a parabola RK45 integrates in a
+// few steps), so every coordinate is also given a speed of sin(c + 1) rad/s or m/s: the
+// skeleton tumbles with all joints moving. Reports simulated seconds per wall second
+// (sim_s_per_s) and steps per second. Both models are the copies in tests/data (gait2354 in
+// opensim-core's test version of the file).
 #include <benchmark/benchmark.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/dynamics.h>
 #include <sinew/engine/integrator.h>
+#include <sinew/engine/projection.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/opensim/build_system.h>
+#include <sinew/opensim/parser.h>
 
 #include <cmath>
 #include <string>
@@ -18,17 +21,18 @@ namespace {
 
 const std::string kData = SINEW_TEST_DATA_DIR;
 
-void RunSkeleton(benchmark::State& bench, const std::string& file) {
-  const sinew::model::ModelSpec spec = sinew::io::ReadOsim(file);
-  const auto system = sinew::opensim::BuildSystem(spec);
+// One second of `system` tumbling from its default pose with every coordinate given the speed
+// sin(c + 1) (projected onto the constraints when it has extra ones), RK45 at accuracy 1e-6.
+void RunTumbling(benchmark::State& bench, const sinew::engine::System& system) {
   double steps = 0.0, simulated = 0.0, evaluations = 0.0, rejected = 0.0, failures = 0.0;
   for (auto _ : bench) {
-    sinew::engine::State state = sinew::engine::MakeDefaultState(*system);
-    for (int c = 0; c < system->num_coordinates(); ++c) state.u[c] = std::sin(c + 1.0);
-    sinew::engine::PlaceBodies(*system, state);
+    sinew::engine::State state = sinew::engine::MakeDefaultState(system);
+    for (int c = 0; c < system.num_coordinates(); ++c) state.u[c] = std::sin(c + 1.0);
+    sinew::engine::PlaceBodies(system, state);
+    if (system.HasExtraConstraints()) sinew::engine::ProjectState(system, state);
     sinew::engine::IntegratorSettings settings;
     settings.accuracy = 1e-6;
-    auto integrator = sinew::engine::MakeIntegrator("rk45", *system, settings);
+    auto integrator = sinew::engine::MakeIntegrator("rk45", system, settings);
     integrator->StepTo(state, 1.0);
     steps += static_cast<double>(integrator->stats().steps);
     evaluations += static_cast<double>(integrator->stats().evaluations);
@@ -44,6 +48,12 @@ void RunSkeleton(benchmark::State& bench, const std::string& file) {
   bench.counters["evals"] = benchmark::Counter(evaluations, benchmark::Counter::kAvgIterations);
 }
 
+// The skeleton only (bodies, joints, coordinates, gravity).
+void RunSkeleton(benchmark::State& bench, const std::string& file) {
+  const sinew::model::ModelSpec spec = sinew::io::ReadOsim(file);
+  RunTumbling(bench, *sinew::opensim::BuildSystem(spec));
+}
+
 void BM_Gait2354OneSecond(benchmark::State& bench) {
   RunSkeleton(bench,
               kData + "/opensim-org/opensim-core/OpenSim/Simulation/Test/gait2354_simbody.osim");
@@ -54,6 +64,17 @@ void BM_Rajagopal2016OneSecond(benchmark::State& bench) {
   RunSkeleton(bench, kData + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
 }
 BENCHMARK(BM_Rajagopal2016OneSecond)->Unit(benchmark::kMillisecond);
+
+// Rajagopal2016 through the OpenSim parser: the skeleton with its CoordinateCouplerConstraints
+// (the patellae follow the knees) and the passive forces Sinew simulates; its muscles are not
+// simulated yet.
+void BM_Rajagopal2016WithCouplersOneSecond(benchmark::State& bench) {
+  sinew::OpenSimParser parser;
+  const auto system =
+      parser.Parse(kData + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
+  RunTumbling(bench, *system);
+}
+BENCHMARK(BM_Rajagopal2016WithCouplersOneSecond)->Unit(benchmark::kMillisecond);
 
 // One acceleration evaluation (loads, KKT factorization, solve) of the tumbling gait2354
 // skeleton: the figure the engine's speed goal (10 us on a gait2392-size skeleton) is about.

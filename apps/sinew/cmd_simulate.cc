@@ -1,13 +1,15 @@
 // `sinew simulate MODEL.osim --duration T [--accuracy A] [--integrator NAME] [--step H]
 //  [--report-interval DT] [--initial-states FILE.sto] [--activate-actuators]
 //  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--external-loads FILE.xml]...
-//  [--disable-force NAME]... [--strict] [--export FILE] [--verbose] [--quiet] --out DIR`: a
-// forward simulation of what the OpenSim parser builds (skeleton, forces, external loads,
-// actuators and their excitations). Writes DIR/states.sto (every coordinate's value and speed,
-// OpenSim 4 labels, radians and metres), DIR/bodies.sto (OpenSim BodyKinematics positions) and
-// DIR/forces.sto (every force's columns, OpenSim's ForceReporter layout), all streamed as rows
-// are computed. SIGINT or SIGTERM stops the run cleanly: the rows so far
-// are kept, in files whose header says status=partial, and the exit code is 128 + the signal.
+//  [--disable-force NAME]... [--strict] [--export FILE] [--verbose] [--quiet]
+//  [--report-constraint-forces] --out DIR`: a forward simulation of what the OpenSim parser
+// builds (skeleton, forces, constraints, external loads, actuators and their excitations).
+// Writes DIR/states.sto (every coordinate's value and speed, OpenSim 4 labels, radians and
+// metres), DIR/bodies.sto (OpenSim BodyKinematics positions), DIR/forces.sto (every force's
+// columns, OpenSim's ForceReporter layout) and, when asked, DIR/constraints.sto (the forces of
+// the model's constraints, OpenSim's record labels), all streamed as rows are computed. SIGINT
+// or SIGTERM stops the run cleanly: the rows so far are kept, in files whose header says
+// status=partial, and the exit code is 128 + the signal.
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/force_reporter.h>
@@ -19,6 +21,7 @@
 #include <sinew/io/storage_labels.h>
 #include <sinew/io/storage_writer.h>
 #include <sinew/kinematics/body_kinematics.h>
+#include <sinew/opensim/constraint_forces_table.h>
 #include <sinew/opensim/parser.h>
 #include <sinew/opensim/states_table.h>
 #include <sinew/opensim/support.h>
@@ -30,6 +33,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,6 +68,7 @@ struct SimulateOptions {
   std::string export_file;
   std::string vis = "mesh";
   std::vector<std::string> geometry_dirs;
+  bool report_constraint_forces = false;
 };
 
 // Takes the first row of an initial-states file (OpenSim 4 paths or old names; rotational
@@ -138,7 +143,13 @@ void RunSimulate(const SimulateOptions& options) {
               << " warning(s) from reading and building the model; `sinew inspect " << options.model
               << "` lists them\n";
   }
-  engine::State state = engine::MakeDefaultState(*system, t0);
+  engine::State state;
+  try {
+    state = engine::MakeDefaultState(*system, t0);
+  } catch (const Error& error) {  // e.g. constraints that cannot be assembled: name the model
+    if (!error.where().file.empty()) throw;
+    throw Error({options.model, 0}, error.component(), error.message());
+  }
   engine::IntegratorSettings settings;
   settings.accuracy = options.accuracy;
   settings.step = options.step;
@@ -162,6 +173,15 @@ void RunSimulate(const SimulateOptions& options) {
   io::StorageWriter bodies(options.out + "/bodies.sto", bodies_header);
   io::StorageWriter forces(options.out + "/forces.sto", forces_header);
   std::vector<double> force_row;
+  std::optional<io::StorageWriter> constraints;
+  engine::Data data(*system);
+  std::vector<double> constraint_row;
+  if (options.report_constraint_forces) {
+    io::Storage header;
+    header.name = "ConstraintForces";
+    header.labels = opensim::ConstraintForcesLabels(*system);
+    constraints.emplace(options.out + "/constraints.sto", header);
+  }
   // A fresh system holds the spec's bodies in spec order (stand-ins add none).
   std::vector<Transform> X_GB(system->num_bodies());
   std::vector<double> row;
@@ -173,6 +193,11 @@ void RunSimulate(const SimulateOptions& options) {
     bodies.AppendRow(s.t, kinematics::CalcBodyKinematicsRow(spec, X_GB));
     force_reporter.CalcRow(s, force_row);
     forces.AppendRow(s.t, force_row);
+    if (constraints) {
+      // External loads are force elements of the system, so no loads are passed besides them.
+      opensim::ConstraintForcesRow(*system, s, nullptr, data, constraint_row);
+      constraints->AppendRow(s.t, constraint_row);
+    }
     if (!options.export_file.empty()) {
       motion.times.push_back(s.t);
       motion.X_GB.push_back(X_GB);
@@ -194,6 +219,7 @@ void RunSimulate(const SimulateOptions& options) {
   states.Finish(partial);
   bodies.Finish(partial);
   forces.Finish(partial);
+  if (constraints) constraints->Finish(partial);
   if (!result.completed) {
     std::cerr << "sinew: " << partial << ": kept the " << states.rows() << " rows computed in "
               << options.out
@@ -211,8 +237,8 @@ void RunSimulate(const SimulateOptions& options) {
     const auto& stats = integrator->stats();
     std::cout << "simulated " << options.duration << " s of " << spec.name << ": " << stats.steps
               << " steps (" << stats.rejected << " rejected), " << stats.evaluations
-              << " evaluations; wrote " << options.out
-              << "/states.sto, bodies.sto and forces.sto\n";
+              << " evaluations; wrote " << options.out << "/states.sto, bodies.sto, forces.sto"
+              << (constraints ? " and constraints.sto\n" : "\n");
   }
 }
 
@@ -261,6 +287,8 @@ void AddSimulateCommand(CLI::App& app) {
                   "Extra folder to search for mesh files (repeatable)");
   cmd->add_flag("--verbose", options->verbose,
                 "With --export: list every missing mesh file, not just how many");
+  cmd->add_flag("--report-constraint-forces", options->report_constraint_forces,
+                "Also write DIR/constraints.sto: the forces of the model's constraints");
   cmd->add_flag("--quiet", options->quiet,
                 "No progress bar or summary (warnings are still printed)");
   cmd->callback([options]() { RunSimulate(*options); });

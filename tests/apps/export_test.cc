@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
 #include <string>
@@ -133,6 +134,48 @@ TEST_F(ExportTest, RajagopalGlbHasEveryMeshAndTheMotion) {
       }
     }
   }
+}
+
+// The patellae hang on the femurs by patellofemoral joints whose coordinates the IK motion does
+// not hold (knee_angle_r_beta is not a column): only the CoordinateCouplerConstraints move them,
+// with the knee. Without the couplers the patella would keep one pose relative to the femur.
+TEST_F(ExportTest, HamnerRunningMovesThePatellaeWithTheKnees) {
+  const fs::path glb_file = dir() / "running.glb";
+  CliRun run = Run("export " + kModel + " --motion " + kMotion + " --vis primitives --out " +
+                   glb_file.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  viz::testing::ParsedGlb glb = viz::testing::ParseGlb(viz::ReadFileBytes(glb_file.string()));
+  const auto& doc = glb.doc;
+  const io::Storage motion = io::ReadStorage(kMotion);
+  ASSERT_LT(motion.FindColumn("knee_angle_r_beta"), 0);
+  // The rows of the straightest and the most bent right knee.
+  const int knee = motion.FindColumn("knee_angle_r");
+  int straight = 0, bent = 0;
+  for (int row = 0; row < motion.NumRows(); ++row) {
+    if (motion.Value(row, knee) < motion.Value(straight, knee)) straight = row;
+    if (motion.Value(row, knee) > motion.Value(bent, knee)) bent = row;
+  }
+  ASSERT_GT(motion.Value(bent, knee) - motion.Value(straight, knee), 60.0);  // degrees
+  // Each body's rotation key at a row, from its rotation channel.
+  auto rotation = [&](const std::string& body, int row) {
+    for (const auto& channel : doc["animations"][0]["channels"]) {
+      const auto& node = doc["nodes"][channel["target"]["node"].get<int>()];
+      if (node["name"] != body || channel["target"]["path"] != "rotation") continue;
+      const auto& sampler = doc["animations"][0]["samplers"][channel["sampler"].get<int>()];
+      const std::vector<float> out = viz::testing::ReadFloatAccessor(glb, sampler["output"]);
+      return Eigen::Quaterniond(out[4 * row + 3], out[4 * row], out[4 * row + 1], out[4 * row + 2]);
+    }
+    ADD_FAILURE() << "no rotation channel for " << body;
+    return Eigen::Quaterniond::Identity();
+  };
+  const Eigen::Quaterniond straight_rel =
+      rotation("femur_r", straight).inverse() * rotation("patella_r", straight);
+  const Eigen::Quaterniond bent_rel =
+      rotation("femur_r", bent).inverse() * rotation("patella_r", bent);
+  const double turn = straight_rel.angularDistance(bent_rel);
+  EXPECT_GT(turn, 0.1) << "the patella did not turn on the femur";
+  std::cout << "patella_r turned " << turn << " rad on the femur between knee angles "
+            << motion.Value(straight, knee) << " and " << motion.Value(bent, knee) << " deg\n";
 }
 
 TEST_F(ExportTest, MissingMeshesAreSummarizedInOneLineAndListedWithVerbose) {

@@ -22,7 +22,7 @@ TEST(Support, ListsEverythingNotSimulatedYet) {
 </objects></JointSet>
 <ForceSet><objects><CoordinateActuator name="act"><coordinate>x</coordinate></CoordinateActuator>
   <Thelen2003Muscle name="musc"/></objects></ForceSet>
-<ConstraintSet><objects><WeldConstraint name="weld"/></objects></ConstraintSet>
+<ConstraintSet><objects><RollingOnSurfaceConstraint name="roll"/></objects></ConstraintSet>
 <ContactGeometrySet><objects><ContactSphere name="cs"><socket_frame>/bodyset/c</socket_frame>
   <radius>0.2</radius></ContactSphere></objects></ContactGeometrySet>
 <ControllerSet><objects><PrescribedController name="ctl"/><ToyReflexController name="reflex"/>
@@ -36,9 +36,12 @@ TEST(Support, ListsEverythingNotSimulatedYet) {
   EXPECT_EQ(plugin.parent_body, spec.FindBody("b"));
   EXPECT_EQ(plugin.child_body, spec.FindBody("c"));
   const std::vector<std::string> expected = {
-      "/jointset/plugin: MyPluginJoint",       "/forceset/musc: Thelen2003Muscle",
-      "/constraintset/weld: WeldConstraint",   "/controllerset/reflex: ToyReflexController",
-      "/contactgeometryset/cs: ContactSphere", "/bodyset/b/wrapobjectset/ws: WrapSphere",
+      "/jointset/plugin: MyPluginJoint",
+      "/forceset/musc: Thelen2003Muscle",
+      "/constraintset/roll: RollingOnSurfaceConstraint",
+      "/controllerset/reflex: ToyReflexController",
+      "/contactgeometryset/cs: ContactSphere",
+      "/bodyset/b/wrapobjectset/ws: WrapSphere",
       "/probe: JointInternalPowerProbe",
   };
   EXPECT_EQ(opensim::ListNotSimulated(spec), expected);

@@ -1,8 +1,8 @@
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
+#include <sinew/engine/assemble_state.h>
 #include <sinew/engine/direct_joint.h>
 #include <sinew/engine/pose.h>
-#include <sinew/engine/projection.h>
 
 #include <string>
 #include <vector>
@@ -45,8 +45,8 @@ State MakeDefaultState(const System& system, double t) {
   state.z = VecX::Zero(system.num_state_variables());
   PlaceBodies(system, state);
   // Joints that close loops were not used to place bodies, and extra constraints (couplers,
-  // ...) need not hold at the default values: assemble them by projection.
-  if (system.HasLoops() || system.HasExtraConstraints()) ProjectState(system, state);
+  // welds, ...) need not hold at the default values: assemble them as OpenSim does.
+  if (system.HasLoops() || system.HasExtraConstraints()) AssembleState(system, state);
   for (int k = 0; k < static_cast<int>(system.force_elements().size()); ++k) {
     const int n = system.NumStateVariables(k);
     if (n > 0) {

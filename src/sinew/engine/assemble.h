@@ -10,8 +10,10 @@
 namespace sinew::engine {
 
 /// The state at time `t` with every coordinate at its default value and speed (prescribed
-/// coordinates at f(t), f'(t)); bodies placed and moving accordingly, then projected onto the
-/// constraints when there are loops or extra constraints; state variables at their
+/// coordinates at f(t), f'(t)); bodies placed and moving accordingly, then assembled onto the
+/// constraints when there are loops or extra constraints (AssembleState: free coordinates
+/// moved as little as possible from their defaults, as OpenSim assembles); state variables at
+/// their
 /// elements' defaults, then initialized (InitializeStateVariables); inputs zero.
 State MakeDefaultState(const System& system, double t = 0.0);
 

@@ -5,6 +5,7 @@
 
 #include <sinew/math/types.h>
 
+#include <string>
 #include <vector>
 
 namespace sinew::engine {
@@ -19,6 +20,9 @@ struct State;
 class Constraint {
  public:
   virtual ~Constraint() = default;
+
+  /// The constraint's name, for messages (empty when it has none).
+  virtual std::string name() const { return {}; }
 
   /// Number of scalar equations.
   virtual int NumEquations() const = 0;

@@ -1,10 +1,10 @@
+#include <sinew/engine/frame_constraint.h>
 #include <sinew/engine/joint_constraints.h>
 #include <sinew/engine/joint_values.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/state.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <vector>
 
@@ -30,6 +30,7 @@ class ParameterizedJointConstraint final : public Constraint {
  public:
   explicit ParameterizedJointConstraint(const Joint& joint) : joint_(joint) {}
 
+  std::string name() const override { return joint_.name; }
   int NumEquations() const override { return 6; }
   std::vector<int> Bodies() const override { return {joint_.parent, joint_.child}; }
   std::vector<int> Coordinates() const override { return joint_.coordinates; }
@@ -85,74 +86,6 @@ class ParameterizedJointConstraint final : public Constraint {
   Joint joint_;
 };
 
-// Pin, Ball, Universal, Weld: the origins of F and M coincide (3 rows), plus dot-product
-// conditions a . b = 0 between a unit vector a fixed in F and b fixed in M. Rows in G.
-class DirectJointConstraint final : public Constraint {
- public:
-  explicit DirectJointConstraint(const Joint& joint) : joint_(joint) {
-    switch (joint.form) {
-      case JointForm::kPin:  // z_M stays along z_F
-        pairs_ = {{0, 2}, {1, 2}};
-        break;
-      case JointForm::kUniversal:  // y_M stays perpendicular to x_F
-        pairs_ = {{0, 1}};
-        break;
-      case JointForm::kWeld:
-        pairs_ = {{0, 1}, {1, 2}, {2, 0}};
-        break;
-      default:
-        break;
-    }
-  }
-
-  int NumEquations() const override { return 3 + static_cast<int>(pairs_.size()); }
-  std::vector<int> Bodies() const override { return {joint_.parent, joint_.child}; }
-
-  void CalcPositionError(const System&, const State& state, Eigen::Ref<VecX> phi) const override {
-    const JointFrames f = CalcJointFrames(joint_, state);
-    phi.head<3>() = f.X_GM.p - f.X_GF.p;
-    for (size_t k = 0; k < pairs_.size(); ++k) {
-      phi[3 + k] = f.X_GF.R.col(pairs_[k][0]).dot(f.X_GM.R.col(pairs_[k][1]));
-    }
-  }
-
-  void CalcJacobian(const System&, const State& state, Eigen::Ref<MatX> J) const override {
-    const JointFrames f = CalcJointFrames(joint_, state);
-    const Vec3 r_PF = f.X_GF.p - f.X_GP.p;
-    const Vec3 r_BM = f.X_GM.p - f.X_GB.p;
-    J.setZero();
-    J.block<3, 3>(0, 0) = Skew(r_PF);
-    J.block<3, 3>(0, 3) = -Mat3::Identity();
-    J.block<3, 3>(0, 6) = -Skew(r_BM);
-    J.block<3, 3>(0, 9) = Mat3::Identity();
-    for (size_t k = 0; k < pairs_.size(); ++k) {
-      // d/dt (a . b) = (w_B - w_P) . (b x a)
-      const Vec3 bxa = f.X_GM.R.col(pairs_[k][1]).cross(f.X_GF.R.col(pairs_[k][0]));
-      J.block<1, 3>(3 + k, 0) = -bxa.transpose();
-      J.block<1, 3>(3 + k, 6) = bxa.transpose();
-    }
-  }
-
-  void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
-    const JointFrames f = CalcJointFrames(joint_, state);
-    const BodyState& P = state.bodies[joint_.parent];
-    const BodyState& B = state.bodies[joint_.child];
-    const Vec3 r_PF = f.X_GF.p - f.X_GP.p;
-    const Vec3 r_BM = f.X_GM.p - f.X_GB.p;
-    b.head<3>() = P.w_GB.cross(P.w_GB.cross(r_PF)) - B.w_GB.cross(B.w_GB.cross(r_BM));
-    const Vec3 w_rel = B.w_GB - P.w_GB;
-    for (size_t k = 0; k < pairs_.size(); ++k) {
-      const Vec3 a = f.X_GF.R.col(pairs_[k][0]);
-      const Vec3 bb = f.X_GM.R.col(pairs_[k][1]);
-      b[3 + k] = -w_rel.dot(B.w_GB.cross(bb).cross(a) + bb.cross(P.w_GB.cross(a)));
-    }
-  }
-
- private:
-  Joint joint_;
-  std::vector<std::array<int, 2>> pairs_;
-};
-
 // q_i - f(t) = 0 on a coordinate of a parameterized joint. Velocity: (N(q) u)_i = f'(t);
 // acceleration: (N udot)_i = f''(t) - (Ndot u)_i, Ndot u by a central difference of N along
 // qdot (exactly zero when qdot_i = u_i, the usual case; Ball/Free rotations are not).
@@ -161,6 +94,7 @@ class CoordinateMotionConstraint final : public Constraint {
   CoordinateMotionConstraint(const Joint& joint, int coordinate, const Coordinate& c)
       : joint_(joint), coordinate_(coordinate), spec_(c) {}
 
+  std::string name() const override { return spec_.name; }
   int NumEquations() const override { return 1; }
   std::vector<int> Bodies() const override { return {}; }
   std::vector<int> Coordinates() const override { return joint_.coordinates; }
@@ -211,6 +145,20 @@ class CoordinateMotionConstraint final : public Constraint {
   Coordinate spec_;
 };
 
+// The frame equations of a direct joint form (a ball joint keeps only the origins together).
+FrameConstraintKind FrameKindOf(JointForm form) {
+  switch (form) {
+    case JointForm::kPin:
+      return FrameConstraintKind::kPin;
+    case JointForm::kUniversal:
+      return FrameConstraintKind::kUniversal;
+    case JointForm::kWeld:
+      return FrameConstraintKind::kWeld;
+    default:
+      return FrameConstraintKind::kPoint;
+  }
+}
+
 }  // namespace
 
 std::shared_ptr<const Constraint> MakeJointConstraint(const System& system, int joint_index) {
@@ -218,7 +166,8 @@ std::shared_ptr<const Constraint> MakeJointConstraint(const System& system, int 
   if (joint.form == JointForm::kParameterized) {
     return std::make_shared<ParameterizedJointConstraint>(joint);
   }
-  return std::make_shared<DirectJointConstraint>(joint);
+  return std::make_shared<FrameConstraint>(joint.name, joint.parent, joint.X_PF, joint.child,
+                                           joint.X_BM, FrameKindOf(joint.form));
 }
 
 std::shared_ptr<const Constraint> MakeCoordinateMotionConstraint(const System& system,

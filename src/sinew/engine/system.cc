@@ -70,6 +70,10 @@ int System::AddJoint(const std::string& name, int parent, const Transform& X_PF,
     c.default_speed = d.default_speed;
     c.motion = d.motion;
     c.prescribed = d.prescribed;
+    c.assembly_weight = d.assembly_weight;
+    if (!(d.assembly_weight >= 0.0) || !std::isfinite(d.assembly_weight)) {
+      throw Error({}, name + "/" + d.name, "assembly weight must be finite and >= 0");
+    }
     if (c.motion == CoordinateMotion::kPrescribed && !c.prescribed) {
       throw Error({}, name + "/" + d.name, "prescribed coordinate without a function");
     }

@@ -39,6 +39,9 @@ struct Coordinate {
   double default_speed = 0.0;  ///< rad/s or m/s (Ball: w_FM component in F)
   CoordinateMotion motion = CoordinateMotion::kFree;
   functions::FunctionPtr prescribed;  ///< q(t) for kPrescribed
+  /// Weight of (q - default_value)^2 in the assembly of the default state (AssembleState);
+  /// 0 lets the coordinate move freely to satisfy the constraints.
+  double assembly_weight = 1.0;
 };
 
 /// A joint between frame F on body `parent` and frame M on body `child`:
@@ -62,6 +65,7 @@ struct CoordinateDesc {
   double default_speed = 0.0;
   CoordinateMotion motion = CoordinateMotion::kFree;
   functions::FunctionPtr prescribed;
+  double assembly_weight = 1.0;  ///< see Coordinate::assembly_weight (>= 0)
 };
 
 /// A Cartesian multibody system. Build it with the Add* functions, then Finalize(); after that
@@ -138,6 +142,11 @@ class System {
   bool HasLoops() const { return std::find(loop_.begin(), loop_.end(), true) != loop_.end(); }
   /// Whether constraints were added with AddConstraint (couplers, welds, ...).
   bool HasExtraConstraints() const { return !extra_constraints_.empty(); }
+  /// Index in constraints() of the first constraint added with AddConstraint (the others
+  /// follow it). Valid after Finalize().
+  int FirstExtraConstraint() const {
+    return static_cast<int>(constraints_.size() - extra_constraints_.size());
+  }
   /// The joint that places body `b` from ground outward, or -1 (ground).
   int JointOfBody(int b) const { return joint_of_body_[b]; }
 

@@ -27,7 +27,7 @@ class CoordinateCouplerConstraint final : public engine::Constraint {
   CoordinateCouplerConstraint(std::string name, std::vector<int> independent, int dependent,
                               functions::FunctionPtr f, double scale_factor);
 
-  const std::string& name() const { return name_; }
+  std::string name() const override { return name_; }
 
   int NumEquations() const override { return 1; }
   std::vector<int> Bodies() const override { return {}; }

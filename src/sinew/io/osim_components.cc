@@ -32,6 +32,49 @@ const FrameEntry* Attachment(ReadContext& ctx, const pugi::xml_node& node,
                  "names no frame (<" + std::string(socket_tag) + "> or <" + body_tag + ">)");
 }
 
+// The sockets (4.x) and body properties (3.x) that name a body-to-body constraint's two
+// frames, by OpenSim class.
+struct ConstraintFrameTags {
+  const char* socket[2];
+  const char* body[2];
+};
+
+const ConstraintFrameTags* FindConstraintFrameTags(std::string_view type) {
+  static const ConstraintFrameTags kWeld{{"socket_frame1", "socket_frame2"}, {"body_1", "body_2"}};
+  static const ConstraintFrameTags kBodies{{"socket_body_1", "socket_body_2"},
+                                           {"body_1", "body_2"}};
+  static const ConstraintFrameTags kLine{{"socket_line_body", "socket_follower_body"},
+                                         {"line_body", "follower_body"}};
+  if (type == "WeldConstraint") return &kWeld;
+  if (type == "PointConstraint" || type == "ConstantDistanceConstraint") return &kBodies;
+  if (type == "PointOnLineConstraint") return &kLine;
+  return nullptr;
+}
+
+// Resolves the two frames of a body-to-body constraint. A 3.x WeldConstraint places its frames
+// with location_body_i and orientation_body_i in the bodies (OpenSim turns them into offset
+// frames when it upgrades the file); the other types keep their points as properties.
+void ReadConstraintFrames(ReadContext& ctx, const pugi::xml_node& node, model::ConstraintSpec& c) {
+  const ConstraintFrameTags* tags = FindConstraintFrameTags(c.type);
+  if (!tags) return;
+  for (int i = 0; i < 2; ++i) {
+    model::ConstraintFrame& frame = c.frames[i];
+    const FrameEntry* entry =
+        Attachment(ctx, node, c.path, tags->socket[i], tags->body[i], &frame.frame);
+    frame.body = entry->body;
+    frame.X_BF = entry->X_BF;
+    if (c.type == "WeldConstraint" && !node.child(tags->socket[i])) {
+      const std::string suffix = std::to_string(i + 1);
+      const std::string location = "location_body_" + suffix;
+      const std::string orientation = "orientation_body_" + suffix;
+      frame.X_BF =
+          frame.X_BF *
+          MakeTransform(ReadVec3Or(ctx.doc(), node, orientation.c_str(), c.path, Vec3::Zero()),
+                        ReadVec3Or(ctx.doc(), node, location.c_str(), c.path, Vec3::Zero()));
+    }
+  }
+}
+
 void ReadConstraints(ReadContext& ctx, const pugi::xml_node& model) {
   const XmlDocument& doc = ctx.doc();
   for (pugi::xml_node node : ObjectsOf(model.child("ConstraintSet"))) {
@@ -59,6 +102,7 @@ void ReadConstraints(ReadContext& ctx, const pugi::xml_node& model) {
       c.function = ReadFunctionProperty(doc, node, "coupled_coordinates_function", c.path);
       c.scale_factor = ReadDoubleOr(doc, node, "scale_factor", c.path, 1.0);
     }
+    ReadConstraintFrames(ctx, node, c);
     c.element = ToElement(doc, node);
     c.where = doc.Where(node);
     ctx.spec().constraints.push_back(std::move(c));

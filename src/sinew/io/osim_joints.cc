@@ -362,6 +362,8 @@ class JointReader {
       }
     }
     c.clamped = ReadBoolOr(doc_, node, "clamped", component, false);
+    c.free_to_satisfy_constraints =
+        ReadBoolOr(doc_, node, "is_free_to_satisfy_constraints", component, false);
     c.locked = ReadBoolOr(doc_, node, "locked", component, false);
     if (pugi::xml_node function = node.child("prescribed_function")) {
       c.prescribed_function = ReadFunctionProperty(doc_, function, component);

@@ -131,6 +131,9 @@ struct CoordinateSpec {
   double default_speed_value = 0.0;  ///< rad/s or m/s (Ball/Free: angular velocity component)
   double range_min = -1e300, range_max = 1e300;
   bool clamped = false;
+  /// is_free_to_satisfy_constraints: the assembly of the initial state does not try to keep
+  /// this coordinate at its default value.
+  bool free_to_satisfy_constraints = false;
   bool locked = false;
   bool prescribed = false;
   functions::FunctionPtr prescribed_function;  ///< q(t) when prescribed; may be null.
@@ -176,6 +179,16 @@ struct ForceSpec {
   SourceLocation where;
 };
 
+/// A frame a constraint attaches to, resolved to the body it is fixed to: WeldConstraint's
+/// frame1/frame2 (4.x sockets, or 3.x body_1/body_2 with location_body_i and
+/// orientation_body_i), PointConstraint's and ConstantDistanceConstraint's body_1/body_2,
+/// PointOnLineConstraint's line_body/follower_body.
+struct ConstraintFrame {
+  int body = kNone;   ///< body index (kNone when the constraint type has no such frame)
+  std::string frame;  ///< the frame's absolute path (a body's or an offset frame's)
+  Transform X_BF;     ///< the frame's pose in its body
+};
+
 /// A constraint (CoordinateCouplerConstraint, WeldConstraint, PointConstraint, ...).
 struct ConstraintSpec {
   std::string name;
@@ -189,6 +202,7 @@ struct ConstraintSpec {
   int dependent_coordinate = kNone;
   functions::FunctionPtr function;
   double scale_factor = 1.0;  ///< CoordinateCouplerConstraint: q_dep = scale_factor f(q_ind)
+  std::array<ConstraintFrame, 2> frames;  ///< the two frames of a body-to-body constraint
   Element element;
   SourceLocation where;
 };

@@ -41,6 +41,23 @@ std::vector<bool> ConstrainedCoordinates(const model::ModelSpec& spec) {
   return used;
 }
 
+// Per spec coordinate: whether OpenSim's assembler leaves it free to satisfy the constraints
+// (no goal to keep its default): is_free_to_satisfy_constraints, or the dependent coordinate
+// of an enforced CoordinateCouplerConstraint (OpenSim's Coordinate::isDependent).
+std::vector<bool> DependentCoordinates(const model::ModelSpec& spec) {
+  std::vector<bool> dependent(spec.coordinates.size(), false);
+  for (size_t c = 0; c < spec.coordinates.size(); ++c) {
+    dependent[c] = spec.coordinates[c].free_to_satisfy_constraints;
+  }
+  for (const model::ConstraintSpec& c : spec.constraints) {
+    if (c.type == "CoordinateCouplerConstraint" && IsConstraintSimulated(c) &&
+        c.dependent_coordinate != model::kNone) {
+      dependent[c.dependent_coordinate] = true;
+    }
+  }
+  return dependent;
+}
+
 }  // namespace
 
 SpecToSystem BuildInto(const model::ModelSpec& spec, engine::System& system,
@@ -66,6 +83,7 @@ SpecToSystem BuildInto(const model::ModelSpec& spec, engine::System& system,
     }
   }
   const std::vector<bool> coupled = ConstrainedCoordinates(spec);
+  const std::vector<bool> dependent = DependentCoordinates(spec);
   for (size_t j = 0; j < spec.joints.size(); ++j) {
     const model::JointSpec& joint = spec.joints[j];
     std::vector<engine::CoordinateDesc> coordinates;
@@ -77,6 +95,7 @@ SpecToSystem BuildInto(const model::ModelSpec& spec, engine::System& system,
       d.name = cs.name;
       d.default_value = cs.default_value;
       d.default_speed = cs.default_speed_value;
+      d.assembly_weight = dependent[c] ? 0.0 : 1.0;
       if (cs.prescribed && cs.prescribed_function) {
         d.motion = engine::CoordinateMotion::kPrescribed;
         d.prescribed = cs.prescribed_function;
