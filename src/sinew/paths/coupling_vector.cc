@@ -25,7 +25,8 @@ std::vector<double> CalcCouplingVector(const model::ModelSpec& spec,
   // u = e_j - A^T (A A^T)^+ A e_j: the nearest speeds to e_j that satisfy A u = 0.
   Eigen::MatrixXd A(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(n));
   for (size_t r = 0; r < rows.size(); ++r) {
-    for (size_t c = 0; c < n; ++c) A(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = rows[r][c];
+    for (size_t c = 0; c < n; ++c)
+      A(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = rows[r][c];
   }
   const Eigen::VectorXd Ae_j = A.col(j);
   const Eigen::MatrixXd AAt = A * A.transpose();

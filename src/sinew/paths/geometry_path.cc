@@ -57,9 +57,9 @@ GeometryPath::GeometryPath(const model::ModelSpec& spec, const model::ForceSpec&
     if (wrap.first_point >= num_points || wrap.last_point >= num_points ||
         wrap.first_point > wrap.last_point) {
       throw Error(where_, component_,
-                  "PathWrap over '" + w.wrap_object + "' has range " +
-                      std::to_string(w.range[0]) + " " + std::to_string(w.range[1]) +
-                      " but the path has " + std::to_string(num_points) + " points");
+                  "PathWrap over '" + w.wrap_object + "' has range " + std::to_string(w.range[0]) +
+                      " " + std::to_string(w.range[1]) + " but the path has " +
+                      std::to_string(num_points) + " points");
     }
     wraps_.push_back(std::move(wrap));
   }

@@ -6,8 +6,7 @@
 namespace sinew::paths {
 
 PathPoint PathPoint::FromSpec(const model::ModelSpec& spec, const model::PathPointSpec& point,
-                              const SourceLocation& where,
-                              const std::string& path_component) {
+                              const SourceLocation& where, const std::string& path_component) {
   PathPoint out;
   out.name = point.name;
   out.body = point.body;
@@ -22,9 +21,9 @@ PathPoint PathPoint::FromSpec(const model::ModelSpec& spec, const model::PathPoi
     out.kind = PathPointKind::kMoving;
     for (int i = 0; i < 3; ++i) {
       if (!point.location_functions[i]) {
-        throw Error(where, path_component + "/" + point.name,
-                    "MovingPathPoint has no function for its location component " +
-                        std::to_string(i));
+        throw Error(
+            where, path_component + "/" + point.name,
+            "MovingPathPoint has no function for its location component " + std::to_string(i));
       }
       out.functions[i] = point.location_functions[i];
       out.coordinates[i] = point.location_coordinates[i];

@@ -19,8 +19,10 @@ Diagnostics PathSet::ListOmissions(const model::ModelSpec& spec) const {
       const std::string_view tag = child.tag;
       if (tag.size() >= 4 && tag.substr(tag.size() - 4) == "Path") {
         out.push_back({force.where, force.path,
-                       "path of type " + child.tag + " is not computed (no length, speed or "
-                       "moment arm for " + force.name + ")"});
+                       "path of type " + child.tag +
+                           " is not computed (no length, speed or "
+                           "moment arm for " +
+                           force.name + ")"});
       }
     }
   }
