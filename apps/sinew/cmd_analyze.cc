@@ -97,23 +97,8 @@ void Run(const Options& options) {
 
   const io::Storage motion = ReadTableFor(options.motion, spec);
   if (motion.NumRows() == 0) throw Error({options.motion, 0}, "", "the motion has no rows");
-  const kinematics::MotionColumnMap map = kinematics::MapMotionColumns(spec, motion.labels);
-  std::vector<std::string> names, unknown, missing;
-  for (const model::CoordinateSpec& c : spec.coordinates) names.push_back(c.name);
-  for (const std::string& label : map.unknown) {
-    if (!io::ParseColumnLabel(label, names)) unknown.push_back(label);
-  }
-  WarnUnusedColumns(unknown, options.motion, "they name no coordinate of the model");
-  for (int c : map.missing) {
-    if (spec.coordinates[c].joint != model::kNone && !couplers.Drives(c)) {
-      missing.push_back(spec.coordinates[c].name);
-    }
-  }
-  if (!missing.empty()) {
-    std::cerr << "sinew: note: " << missing.size() << " coordinate(s) of the model are not in "
-              << options.motion << " (" << FirstFew(missing)
-              << "); they keep their default values and zero speed\n";
-  }
+  const kinematics::MotionColumnMap map = MapMotionColumnsFor(
+      motion, options.motion, spec, couplers, "they keep their default values and zero speed");
   const std::vector<functions::FunctionPtr> splines = FitSpeedSplines(motion, spec);
   if (splines.empty()) {
     std::cerr << "sinew: warning: " << options.motion << " has " << motion.NumRows()
@@ -124,7 +109,8 @@ void Run(const Options& options) {
   io::Storage lengths = MakeTable("Length", paths);
   io::Storage speeds = MakeTable("LengtheningSpeed", paths);
   std::vector<io::Storage> moment_arms;
-  for (int c : coordinates) moment_arms.push_back(MakeTable("MomentArm_" + spec.coordinates[c].name, paths));
+  for (int c : coordinates)
+    moment_arms.push_back(MakeTable("MomentArm_" + spec.coordinates[c].name, paths));
 
   paths::PathAnalysis analysis(spec, tree, couplers, paths, coordinates);
   std::vector<double> q = tree.default_q();
@@ -139,7 +125,8 @@ void Run(const Options& options) {
         motion.in_degrees, q);
     std::fill(u.begin(), u.end(), 0.0);
     for (size_t k = 0; k < num_columns && !splines.empty(); ++k) {
-      if (map.coordinate[k] != model::kNone) u[map.coordinate[k]] = splines[k]->CalcDerivative(t, 1);
+      if (map.coordinate[k] != model::kNone)
+        u[map.coordinate[k]] = splines[k]->CalcDerivative(t, 1);
     }
     couplers.Apply(q);
     couplers.ApplySpeeds(q, u);
