@@ -3,6 +3,7 @@
 #include <sinew/io/osim_reader.h>
 #include <sinew/opensim/parser.h>
 #include <sinew/opensim/support.h>
+#include <sinew/paths/path_set.h>
 
 #include <iostream>
 #include <map>
@@ -30,6 +31,41 @@ const char* MotionName(model::MotionType type) {
       return "coupled";
   }
   return "?";
+}
+
+// One force's geometry path as inspect shows it.
+struct PathSummary {
+  std::string name;
+  int points = 0, conditional = 0, moving = 0;
+  std::vector<std::string> wrap_objects;
+};
+
+std::vector<PathSummary> SummarizePaths(const model::ModelSpec& spec) {
+  std::vector<PathSummary> out;
+  for (const model::ForceSpec& f : spec.forces) {
+    if (!f.geometry_path) continue;
+    PathSummary path{f.name, static_cast<int>(f.geometry_path->points.size()), 0, 0, {}};
+    for (const model::PathPointSpec& point : f.geometry_path->points) {
+      path.conditional += point.type == "ConditionalPathPoint";
+      path.moving += point.type == "MovingPathPoint";
+    }
+    for (const model::PathWrapSpec& wrap : f.geometry_path->wraps) {
+      path.wrap_objects.push_back(wrap.wrap_object);
+    }
+    out.push_back(std::move(path));
+  }
+  return out;
+}
+
+// What `sinew analyze` leaves out of the model's paths, or why it cannot compute them.
+std::vector<std::string> ListPathOmissions(const model::ModelSpec& spec) {
+  std::vector<std::string> out;
+  try {
+    for (const Diagnostic& d : paths::PathSet(spec).ListOmissions(spec)) out.push_back(d.Format());
+  } catch (const Error& e) {
+    out.push_back(e.what());
+  }
+  return out;
 }
 
 nlohmann::json ToJson(const model::ModelSpec& spec) {
@@ -83,6 +119,16 @@ nlohmann::json ToJson(const model::ModelSpec& spec) {
     forces.push_back(force);
   }
   out["forces"] = forces;
+  json paths = json::array();
+  for (const PathSummary& p : SummarizePaths(spec)) {
+    paths.push_back({{"name", p.name},
+                     {"points", p.points},
+                     {"conditional_points", p.conditional},
+                     {"moving_points", p.moving},
+                     {"wrap_objects", p.wrap_objects}});
+  }
+  out["paths"] = paths;
+  out["paths_not_computed"] = ListPathOmissions(spec);
   json constraints = json::array();
   for (const model::ConstraintSpec& c : spec.constraints) {
     constraints.push_back({{"name", c.name}, {"type", c.type}, {"enabled", c.enabled}});
@@ -139,6 +185,19 @@ void PrintText(const model::ModelSpec& spec, std::ostream& os) {
   for (const model::ForceSpec& f : spec.forces) ++by_type[f.type];
   os << "\nforces by type:\n";
   for (const auto& [type, count] : by_type) os << "  " << type << ": " << count << "\n";
+  const std::vector<PathSummary> paths = SummarizePaths(spec);
+  os << "\npaths (" << paths.size() << "):\n";
+  for (const PathSummary& p : paths) {
+    os << "  " << p.name << "  " << p.points << " points (" << p.conditional << " conditional, "
+       << p.moving << " moving), " << p.wrap_objects.size() << " wraps";
+    for (size_t k = 0; k < p.wrap_objects.size(); ++k) {
+      os << (k ? ", " : ": ") << p.wrap_objects[k];
+    }
+    os << "\n";
+  }
+  const std::vector<std::string> omissions = ListPathOmissions(spec);
+  os << "\npath parts not computed (" << omissions.size() << "):\n";
+  for (const std::string& line : omissions) os << "  " << line << "\n";
   os << "\nconstraints:\n";
   for (const model::ConstraintSpec& c : spec.constraints)
     os << "  " << c.name << "  " << c.type << "\n";

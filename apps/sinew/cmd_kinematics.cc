@@ -4,7 +4,6 @@
 #include <sinew/common/error.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
-#include <sinew/io/storage_labels.h>
 #include <sinew/kinematics/body_kinematics.h>
 #include <sinew/kinematics/coordinate_couplers.h>
 #include <sinew/kinematics/coordinate_motion.h>
@@ -49,25 +48,8 @@ void Run(const Options& options) {
   kinematics::MotionColumnMap map;
   if (!options.motion.empty()) {
     motion = ReadTableFor(options.motion, spec);
-    map = kinematics::MapMotionColumns(spec, motion.labels);
-    // Speed columns (`q_u`, `.../speed`) are not used here but do name a coordinate.
-    std::vector<std::string> names, unknown;
-    for (const model::CoordinateSpec& c : spec.coordinates) names.push_back(c.name);
-    for (const std::string& label : map.unknown) {
-      if (!io::ParseColumnLabel(label, names)) unknown.push_back(label);
-    }
-    WarnUnusedColumns(unknown, options.motion, "they name no coordinate of the model");
-    std::vector<std::string> missing;
-    for (int c : map.missing) {
-      if (spec.coordinates[c].joint != model::kNone && !couplers.Drives(c)) {
-        missing.push_back(spec.coordinates[c].name);
-      }
-    }
-    if (!missing.empty()) {
-      std::cerr << "sinew: note: " << missing.size() << " coordinate(s) of the model are not in "
-                << options.motion << " (" << FirstFew(missing)
-                << "); they keep their default values\n";
-    }
+    map = MapMotionColumnsFor(motion, options.motion, spec, couplers,
+                              "they keep their default values");
   } else {
     motion.time = {0.0};  // one row at the default pose
   }

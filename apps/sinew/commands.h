@@ -21,5 +21,8 @@ void AddExportCommand(CLI::App& app);
 /// `sinew render`: a still PNG from the software renderer (cmd_render.cc).
 void AddRenderCommand(CLI::App& app);
 void AddKinematicsCommand(CLI::App& app);
+/// `sinew analyze`: path lengths, lengthening speeds and moment arms over a motion
+/// (cmd_analyze.cc).
+void AddAnalyzeCommand(CLI::App& app);
 
 }  // namespace sinew::cli

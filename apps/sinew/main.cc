@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   sinew::cli::AddExportCommand(app);
   sinew::cli::AddRenderCommand(app);
   sinew::cli::AddKinematicsCommand(app);
+  sinew::cli::AddAnalyzeCommand(app);
   app.require_subcommand(1);
   try {
     app.parse(argc, argv);

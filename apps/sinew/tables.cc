@@ -114,4 +114,29 @@ void PrintTableNotes(const Diagnostics& notes) {
             << notes.front().Format() << "\n";
 }
 
+kinematics::MotionColumnMap MapMotionColumnsFor(const io::Storage& motion, const std::string& path,
+                                                const model::ModelSpec& spec,
+                                                const kinematics::CoordinateCouplers& couplers,
+                                                const std::string& missing_means) {
+  kinematics::MotionColumnMap map = kinematics::MapMotionColumns(spec, motion.labels);
+  // Speed columns (`q_u`, `.../speed`) are not used but do name a coordinate.
+  std::vector<std::string> names, unknown;
+  for (const model::CoordinateSpec& c : spec.coordinates) names.push_back(c.name);
+  for (const std::string& label : map.unknown) {
+    if (!io::ParseColumnLabel(label, names)) unknown.push_back(label);
+  }
+  WarnUnusedColumns(unknown, path, "they name no coordinate of the model");
+  std::vector<std::string> missing;
+  for (int c : map.missing) {
+    if (spec.coordinates[c].joint != model::kNone && !couplers.Drives(c)) {
+      missing.push_back(spec.coordinates[c].name);
+    }
+  }
+  if (!missing.empty()) {
+    std::cerr << "sinew: note: " << missing.size() << " coordinate(s) of the model are not in "
+              << path << " (" << FirstFew(missing) << "); " << missing_means << "\n";
+  }
+  return map;
+}
+
 }  // namespace sinew::cli

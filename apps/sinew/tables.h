@@ -3,6 +3,8 @@
 #pragma once
 
 #include <sinew/io/storage.h>
+#include <sinew/kinematics/coordinate_couplers.h>
+#include <sinew/kinematics/coordinate_motion.h>
 #include <sinew/model/model_spec.h>
 
 #include <string>
@@ -24,6 +26,16 @@ io::Storage ReadTableFor(const std::string& path, const model::ModelSpec& spec);
 /// `strict`, a sinew::Error instead (exit code 2). Nothing when `labels` is empty.
 void WarnUnusedColumns(const std::vector<std::string>& labels, const std::string& path,
                        const std::string& reason, bool strict = false);
+
+/// Maps the columns of `motion` (read from `path`) to the coordinates of `spec`, with one
+/// warning line for the columns that name no coordinate (speed columns do name one) and one
+/// note line for the coordinates of the model no column drives (a coupler's dependent
+/// coordinates excepted: they follow their drivers); `missing_means` ends that note ("they keep
+/// their default values").
+kinematics::MotionColumnMap MapMotionColumnsFor(const io::Storage& motion, const std::string& path,
+                                                const model::ModelSpec& spec,
+                                                const kinematics::CoordinateCouplers& couplers,
+                                                const std::string& missing_means);
 
 /// One note line for what a table and a model did not match (viz::MotionFromTable's or
 /// viz::PosesAtTime's notes): their count and the first. Nothing when `notes` is empty.

@@ -29,6 +29,33 @@ TEST_F(Inspect, TextSummary) {
   EXPECT_NE(run.out.find("/forceset/TRIlong: Thelen2003Muscle"), std::string::npos) << run.out;
 }
 
+TEST_F(Inspect, PathsAreListedWithTheirPointsAndWrapsAndWhatIsNotComputed) {
+  const CliRun run = Run("inspect " + kArm26);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("paths (6):"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("  TRIlong  5 points (0 conditional, 0 moving), 3 wraps: TRI, "
+                         "TRIlonghh, TRIlongglen\n"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("  BICshort  6 points (0 conditional, 0 moving), 0 wraps\n"),
+            std::string::npos)
+      << run.out;
+  // 7 PathWraps over 5 paths: each named with its path until wrapping is connected.
+  EXPECT_NE(run.out.find("path parts not computed (7):"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("/forceset/TRIlong: wrap object 'TRIlonghh' (WrapEllipsoid) is not "
+                         "applied yet"),
+            std::string::npos)
+      << run.out;
+  const CliRun json = Run("inspect --json " + kArm26);
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  ASSERT_EQ(j["paths"].size(), 6u);
+  EXPECT_EQ(j["paths"][0]["name"], "TRIlong");
+  EXPECT_EQ(j["paths"][0]["points"], 5);
+  EXPECT_EQ(j["paths"][0]["wrap_objects"].size(), 3u);
+  EXPECT_EQ(j["paths_not_computed"].size(), 7u);
+}
+
 TEST_F(Inspect, JsonFields) {
   const CliRun run = Run("inspect --json " + kArm26);
   ASSERT_EQ(run.exit_code, 0) << run.err;

@@ -50,8 +50,10 @@ TEST_F(UsageTest, MistakesExitWithTwoAndTheUsage) {
   ExpectUsageError("", "A subcommand is required", "sinew", "Usage: sinew [OPTIONS] SUBCOMMAND");
   ExpectUsageError("frobnicate",
                    "unknown command 'frobnicate' (the commands are inspect simulate export "
-                   "render kinematics)",
+                   "render kinematics analyze)",
                    "sinew", "Usage: sinew [OPTIONS] SUBCOMMAND");
+  ExpectUsageError("analyze " + kModel + " --out " + Path("out"), "--motion is required",
+                   "sinew analyze", "Usage: sinew analyze [OPTIONS] model");
   EXPECT_FALSE(std::filesystem::exists(Path("out")));
 }
 

@@ -50,6 +50,38 @@ void CoordinateCouplers::Apply(std::span<double> q) const {
   }
 }
 
+// scale * df/dq_i for each independent coordinate i of coupler `c` at q.
+std::vector<double> CoordinateCouplers::CalcSlopes(const Coupler& c, std::span<const double> q) {
+  std::vector<double> x(c.independent.size());
+  for (size_t i = 0; i < x.size(); ++i) x[i] = q[c.independent[i]];
+  std::vector<double> slopes(x.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    const int wrt[1] = {static_cast<int>(i)};
+    slopes[i] = c.scale * c.function->CalcPartialN(x, wrt);
+  }
+  return slopes;
+}
+
+void CoordinateCouplers::ApplySpeeds(std::span<const double> q, std::span<double> u) const {
+  for (const Coupler& c : couplers_) {
+    const std::vector<double> slopes = CalcSlopes(c, q);
+    double u_d = 0.0;
+    for (size_t i = 0; i < slopes.size(); ++i) u_d += slopes[i] * u[c.independent[i]];
+    u[c.dependent] = u_d;
+  }
+}
+
+void CoordinateCouplers::AppendVelocityRows(std::span<const double> q,
+                                            std::vector<std::vector<double>>& rows) const {
+  for (const Coupler& c : couplers_) {
+    const std::vector<double> slopes = CalcSlopes(c, q);
+    std::vector<double> row(q.size(), 0.0);
+    row[c.dependent] = 1.0;
+    for (size_t i = 0; i < slopes.size(); ++i) row[c.independent[i]] -= slopes[i];
+    rows.push_back(std::move(row));
+  }
+}
+
 bool CoordinateCouplers::Drives(int c) const {
   return std::any_of(couplers_.begin(), couplers_.end(),
                      [c](const Coupler& p) { return p.dependent == c; });

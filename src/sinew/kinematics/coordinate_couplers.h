@@ -23,6 +23,13 @@ class CoordinateCouplers {
   /// Sets every dependent coordinate of `q` (ModelSpec::coordinates order) from its
   /// independent ones.
   void Apply(std::span<double> q) const;
+  /// Sets every dependent coordinate's speed in `u` from its independent ones at `q` (the
+  /// time derivative of Apply: u_d = scale_factor sum_i df/dq_i u_i). Both in
+  /// ModelSpec::coordinates order; the speeds of coupled coordinates are their qdot.
+  void ApplySpeeds(std::span<const double> q, std::span<double> u) const;
+  /// Adds one row per coupler to `rows` (each of size num_coordinates): the velocity
+  /// constraint row . u = 0 at `q`, i.e. u_d - scale_factor sum_i df/dq_i u_i = 0.
+  void AppendVelocityRows(std::span<const double> q, std::vector<std::vector<double>>& rows) const;
   /// True when coordinate `c` is set by a coupler.
   bool Drives(int c) const;
   bool empty() const { return couplers_.empty(); }
@@ -34,6 +41,7 @@ class CoordinateCouplers {
     functions::FunctionPtr function;
     double scale;
   };
+  static std::vector<double> CalcSlopes(const Coupler& c, std::span<const double> q);
   std::vector<Coupler> couplers_;
 };
 

@@ -1,0 +1,175 @@
+#include <sinew/common/error.h>
+#include <sinew/paths/geometry_path.h>
+
+#include <cmath>
+#include <limits>
+
+namespace sinew::paths {
+namespace {
+
+WrapOptions::Method ParseMethod(const std::string& method) {
+  if (method == "midpoint") return WrapOptions::Method::kMidpoint;
+  if (method == "axial") return WrapOptions::Method::kAxial;
+  return WrapOptions::Method::kHybrid;
+}
+
+// The wrap object named `name` on any body of the model, or nullptr.
+const model::WrapObjectSpec* FindWrapObject(const model::ModelSpec& spec, const std::string& name,
+                                            int* body) {
+  for (size_t b = 0; b < spec.bodies.size(); ++b) {
+    for (const model::WrapObjectSpec& w : spec.bodies[b].wrap_objects) {
+      if (w.name == name) {
+        *body = static_cast<int>(b);
+        return &w;
+      }
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+GeometryPath::GeometryPath(const model::ModelSpec& spec, const model::ForceSpec& owner)
+    : name_(owner.name), component_(owner.path), where_(owner.where) {
+  const model::GeometryPathSpec& path = owner.geometry_path.value();
+  if (path.points.size() < 2) {
+    throw Error(where_, component_,
+                "a path needs at least two points; it has " + std::to_string(path.points.size()));
+  }
+  for (const model::PathPointSpec& point : path.points) {
+    points_.push_back(PathPoint::FromSpec(spec, point, where_, component_));
+  }
+  const int num_points = static_cast<int>(points_.size());
+  for (const model::PathWrapSpec& w : path.wraps) {
+    PathWrap wrap;
+    wrap.wrap_object = w.wrap_object;
+    const model::WrapObjectSpec* object = FindWrapObject(spec, w.wrap_object, &wrap.body);
+    if (!object) {
+      throw Error(where_, component_, "wrap object '" + w.wrap_object + "' does not exist");
+    }
+    wrap.type = object->type;
+    wrap.X_BW = object->X_BW;
+    wrap.active = object->active;
+    wrap.options.method = ParseMethod(w.method);
+    // OpenSim: 1-based point numbers; anything below 1 means the first (last) point.
+    wrap.first_point = w.range[0] < 1 ? 0 : w.range[0] - 1;
+    wrap.last_point = w.range[1] < 1 ? num_points - 1 : w.range[1] - 1;
+    if (wrap.first_point >= num_points || wrap.last_point >= num_points ||
+        wrap.first_point > wrap.last_point) {
+      throw Error(where_, component_,
+                  "PathWrap over '" + w.wrap_object + "' has range " + std::to_string(w.range[0]) +
+                      " " + std::to_string(w.range[1]) + " but the path has " +
+                      std::to_string(num_points) + " points");
+    }
+    wraps_.push_back(std::move(wrap));
+  }
+}
+
+void GeometryPath::ConnectWrapSurface(int wrap, std::shared_ptr<const WrapSurface> surface) {
+  wraps_.at(static_cast<size_t>(wrap)).surface = std::move(surface);
+}
+
+void GeometryPath::CalcState(std::span<const double> q, std::span<const Transform> X_GB,
+                             PathState& state) const {
+  state.points.clear();
+  for (size_t i = 0; i < points_.size(); ++i) {
+    const PathPoint& point = points_[i];
+    if (!point.IsActive(q)) continue;
+    PathPointState s;
+    s.point = static_cast<int>(i);
+    s.body = point.body;
+    s.p_BP = point.CalcLocationInBody(q);
+    s.p_GP = X_GB[point.body] * s.p_BP;
+    if (point.kind == PathPointKind::kMoving) {
+      s.coordinates = point.coordinates;
+      s.dp_BP_dq = point.CalcLocationDerivatives(q);
+    }
+    state.points.push_back(s);
+  }
+  if (state.points.size() < 2) {
+    throw Error(where_, component_,
+                "only " + std::to_string(state.points.size()) +
+                    " of the path's points are active at this pose; a path needs two");
+  }
+  for (size_t w = 0; w < wraps_.size(); ++w) {
+    if (wraps_[w].surface && wraps_[w].active) ApplyWrap(static_cast<int>(w), q, X_GB, state);
+  }
+  CalcSegments(state);
+}
+
+void GeometryPath::CalcSegments(PathState& state) {
+  const size_t n = state.points.size() - 1;
+  state.e_G.resize(n);
+  state.segment_length.resize(n);
+  state.length = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const PathPointState& a = state.points[i];
+    if (a.arc_length_to_next >= 0.0) {
+      state.e_G[i] = Vec3::Zero();
+      state.segment_length[i] = a.arc_length_to_next;
+    } else {
+      const Vec3 d = state.points[i + 1].p_GP - a.p_GP;
+      const double length = d.norm();
+      // Coincident points have no direction: NaN, as OpenSim, so derivatives show it.
+      state.e_G[i] = length > 0.0 ? Vec3(d / length)
+                                  : Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+      state.segment_length[i] = length;
+    }
+    state.length += state.segment_length[i];
+  }
+}
+
+// OpenSim's GeometryPath::applyWrapObjects for one wrap object: among the straight segments
+// between the first and last active points of the wrap's range, the one whose wrapping adds
+// the least length is replaced by P-T1, the arc, T2-S. (OpenSim iterates over several wrap
+// objects up to 8 times until the length settles; this is one pass, in the listed order.)
+void GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const Transform> X_GB,
+                             PathState& state) const {
+  const PathWrap& wrap = wraps_[static_cast<size_t>(w)];
+  int first = -1, last = -1;
+  for (int p = wrap.first_point; p <= wrap.last_point && first < 0; ++p) {
+    if (points_[static_cast<size_t>(p)].IsActive(q)) first = p;
+  }
+  for (int p = wrap.last_point; p >= wrap.first_point && last < 0; --p) {
+    if (points_[static_cast<size_t>(p)].IsActive(q)) last = p;
+  }
+  int start = -1, end = -1;
+  for (size_t k = 0; k < state.points.size(); ++k) {
+    if (state.points[k].point == first) start = static_cast<int>(k);
+    if (state.points[k].point == last) end = static_cast<int>(k);
+  }
+  if (start < 0 || end < 0) return;
+  const Transform X_GW = X_GB[wrap.body] * wrap.X_BW;
+  const Transform X_WG = X_GW.Inverse();
+  double best_change = std::numeric_limits<double>::infinity();
+  int best_segment = -1;
+  WrapResult best;
+  for (int k = start; k < end; ++k) {
+    const PathPointState& a = state.points[static_cast<size_t>(k)];
+    const PathPointState& b = state.points[static_cast<size_t>(k) + 1];
+    if (a.arc_length_to_next >= 0.0) continue;  // already over another surface
+    const Vec3 p_WP = X_WG * a.p_GP, p_WS = X_WG * b.p_GP;
+    WrapResult result = wrap.surface->Wrap(p_WP, p_WS, wrap.options);
+    if (!result.wrapped) continue;
+    const double change = (result.p_WT1 - p_WP).norm() + result.arc_length +
+                          (p_WS - result.p_WT2).norm() - (p_WS - p_WP).norm();
+    if (change < best_change) {
+      best_change = change;
+      best_segment = k;
+      best = std::move(result);
+    }
+  }
+  if (best_segment < 0) return;
+  PathPointState t1, t2;
+  t1.wrap = t2.wrap = w;
+  t1.body = t2.body = wrap.body;
+  t1.p_BP = wrap.X_BW * best.p_WT1;
+  t2.p_BP = wrap.X_BW * best.p_WT2;
+  t1.p_GP = X_GW * best.p_WT1;
+  t2.p_GP = X_GW * best.p_WT2;
+  t1.arc_length_to_next = best.arc_length;
+  const auto at = state.points.begin() + best_segment + 1;
+  state.points.insert(state.points.insert(at, t1) + 1, t2);
+}
+
+}  // namespace sinew::paths

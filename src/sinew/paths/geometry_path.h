@@ -1,0 +1,96 @@
+// A muscle's, spring's or ligament's GeometryPath compiled from the spec, and the path it takes
+// at a pose: the active points in order (wrap tangent points included once a wrapping surface
+// is connected), the straight segments' unit directions and the length.
+#pragma once
+
+#include <sinew/math/transform.h>
+#include <sinew/model/model_spec.h>
+#include <sinew/paths/path_point.h>
+#include <sinew/paths/wrap_surface.h>
+
+#include <array>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace sinew::paths {
+
+/// One of a path's PathWrap entries: a wrap object and the points it may act between.
+struct PathWrap {
+  std::string wrap_object;  ///< The WrapObject's name.
+  std::string type;         ///< Its class (WrapCylinder, WrapEllipsoid, ...).
+  int body = model::kGroundIndex;
+  Transform X_BW;  ///< The wrap object's frame W in its body.
+  bool active = true;
+  /// The path points (0-based, inclusive; indices into GeometryPath::points()) between whose
+  /// active points the object may wrap; OpenSim's 1-based `range`, -1 meaning the first / last.
+  int first_point = 0, last_point = 0;
+  WrapOptions options;
+  /// The surface that wraps; null until one is connected, and the path then stays straight.
+  std::shared_ptr<const WrapSurface> surface;
+};
+
+/// Where one point of the current path is at a pose.
+struct PathPointState {
+  int point = model::kNone;  ///< Index into GeometryPath::points(); kNone for a tangent point.
+  int wrap = model::kNone;   ///< For tangent points: index into GeometryPath::wraps().
+  int body = model::kGroundIndex;
+  Vec3 p_BP = Vec3::Zero();  ///< In the body frame (m).
+  Vec3 p_GP = Vec3::Zero();  ///< In ground (m).
+  /// Moving points: dp_BP/dq for the coordinate of each location component (kNone: none).
+  std::array<int, 3> coordinates{model::kNone, model::kNone, model::kNone};
+  std::array<Vec3, 3> dp_BP_dq{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  /// First tangent point of a wrap: the length of the path over the surface to the next point
+  /// (the second tangent point) in m; negative for every other point.
+  double arc_length_to_next = -1.0;
+};
+
+/// A path at one pose. Segment i joins points[i] and points[i + 1].
+struct PathState {
+  std::vector<PathPointState> points;
+  /// Per segment: the unit vector from points[i] to points[i + 1] in ground; zero for a segment
+  /// over a wrap surface (T1 to T2), NaN when the two points coincide (as OpenSim).
+  std::vector<Vec3> e_G;
+  /// Per segment: its length (m); the arc length for a segment over a wrap surface.
+  std::vector<double> segment_length;
+  double length = 0.0;  ///< Sum of segment lengths (m).
+};
+
+/// A GeometryPath. Immutable once built, apart from connecting wrap surfaces before use.
+class GeometryPath {
+ public:
+  /// Compiles the path of `owner` (a force with a geometry_path). Throws sinew::Error (file,
+  /// line, component) for a path with fewer than two points or a PathWrap whose range names
+  /// points the path does not have.
+  GeometryPath(const model::ModelSpec& spec, const model::ForceSpec& owner);
+
+  /// The owner's name (the muscle, spring or ligament), used as the label in tables.
+  const std::string& name() const { return name_; }
+  /// The owner's component path, e.g. "/forceset/soleus_r".
+  const std::string& component() const { return component_; }
+  const SourceLocation& where() const { return where_; }
+  const std::vector<PathPoint>& points() const { return points_; }
+  const std::vector<PathWrap>& wraps() const { return wraps_; }
+
+  /// Connects the surface that implements wrap `wrap` (index into wraps()).
+  void ConnectWrapSurface(int wrap, std::shared_ptr<const WrapSurface> surface);
+
+  /// The path at coordinates q (ModelSpec::coordinates order) with body poses X_GB (from
+  /// kinematics::CalcBodyPoses at the same q). Reuses `state`'s buffers. Throws sinew::Error
+  /// naming the path when fewer than two of its points are active.
+  void CalcState(std::span<const double> q, std::span<const Transform> X_GB,
+                 PathState& state) const;
+
+ private:
+  void ApplyWrap(int wrap, std::span<const double> q, std::span<const Transform> X_GB,
+                 PathState& state) const;
+  static void CalcSegments(PathState& state);
+
+  std::string name_, component_;
+  SourceLocation where_;
+  std::vector<PathPoint> points_;
+  std::vector<PathWrap> wraps_;
+};
+
+}  // namespace sinew::paths

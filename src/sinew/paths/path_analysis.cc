@@ -1,0 +1,50 @@
+#include <sinew/kinematics/forward_kinematics.h>
+#include <sinew/paths/coupling_vector.h>
+#include <sinew/paths/path_analysis.h>
+
+namespace sinew::paths {
+
+PathAnalysis::PathAnalysis(const model::ModelSpec& spec, const kinematics::KinematicTree& tree,
+                           const kinematics::CoordinateCouplers& couplers, const PathSet& paths,
+                           std::vector<int> coordinates)
+    : spec_(spec),
+      tree_(tree),
+      couplers_(couplers),
+      paths_(paths),
+      coordinates_(std::move(coordinates)),
+      X_GB_(static_cast<size_t>(tree.num_bodies())),
+      V_GB_(static_cast<size_t>(tree.num_bodies())),
+      dL_du_(static_cast<size_t>(tree.num_coordinates())),
+      couplings_(coordinates_.size()),
+      lengths_(paths.paths().size()),
+      speeds_(paths.paths().size()),
+      moment_arms_(coordinates_.size() * paths.paths().size()) {}
+
+void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
+  kinematics::CalcBodyPoses(tree_, q, X_GB_);
+  kinematics::CalcBodyVelocities(tree_, q, u, X_GB_, V_GB_);
+  const bool moment_arms = !coordinates_.empty();
+  if (moment_arms) {
+    CalcSpeedColumns(tree_, q, X_GB_, columns_);
+    for (size_t k = 0; k < coordinates_.size(); ++k) {
+      couplings_[k] = CalcCouplingVector(spec_, couplers_, q, coordinates_[k]);
+    }
+  }
+  const size_t num_paths = paths_.paths().size();
+  for (size_t p = 0; p < num_paths; ++p) {
+    paths_.paths()[p].CalcState(q, X_GB_, state_);
+    lengths_[p] = state_.length;
+    speeds_[p] = CalcLengtheningSpeed(state_, X_GB_, V_GB_, u);
+    if (!moment_arms) continue;
+    CalcLengthGradient(state_, X_GB_, columns_, loads_, dL_du_);
+    for (size_t k = 0; k < coordinates_.size(); ++k) {
+      double r = 0.0;
+      for (size_t c = 0; c < dL_du_.size(); ++c) {
+        if (couplings_[k][c] != 0.0) r -= couplings_[k][c] * dL_du_[c];
+      }
+      moment_arms_[k * num_paths + p] = r;
+    }
+  }
+}
+
+}  // namespace sinew::paths

@@ -1,0 +1,55 @@
+// OpenSim's MuscleAnalysis quantities of every path of a model at one pose: length, lengthening
+// speed and moment arms about chosen coordinates, all analytic.
+#pragma once
+
+#include <sinew/kinematics/coordinate_couplers.h>
+#include <sinew/kinematics/kinematic_tree.h>
+#include <sinew/model/model_spec.h>
+#include <sinew/paths/path_loads.h>
+#include <sinew/paths/path_set.h>
+#include <sinew/paths/speed_columns.h>
+
+#include <span>
+#include <vector>
+
+namespace sinew::paths {
+
+/// Evaluates a PathSet pose by pose. Holds references to its arguments (they must outlive it)
+/// and its own workspace, so one instance per thread.
+class PathAnalysis {
+ public:
+  /// `coordinates`: indices into ModelSpec::coordinates for the moment arms.
+  PathAnalysis(const model::ModelSpec& spec, const kinematics::KinematicTree& tree,
+               const kinematics::CoordinateCouplers& couplers, const PathSet& paths,
+               std::vector<int> coordinates);
+
+  /// Evaluates every path at coordinates q and speeds u (ModelSpec::coordinates order; the
+  /// couplers already applied to both, e.g. CoordinateCouplers::Apply and ApplySpeeds).
+  void Calc(std::span<const double> q, std::span<const double> u);
+
+  /// Per path (PathSet order): length (m) and lengthening speed (m/s).
+  const std::vector<double>& lengths() const { return lengths_; }
+  const std::vector<double>& lengthening_speeds() const { return speeds_; }
+  /// Moment arm (m, or dimensionless about a translational coordinate) of path p about the
+  /// k-th coordinate of the list: -c . dL/du with c OpenSim's coupling vector.
+  double moment_arm(size_t k, size_t p) const { return moment_arms_[k * lengths_.size() + p]; }
+  const std::vector<int>& coordinates() const { return coordinates_; }
+
+ private:
+  const model::ModelSpec& spec_;
+  const kinematics::KinematicTree& tree_;
+  const kinematics::CoordinateCouplers& couplers_;
+  const PathSet& paths_;
+  std::vector<int> coordinates_;
+  // Workspace.
+  std::vector<Transform> X_GB_;
+  std::vector<SpatialVec> V_GB_;
+  SpeedColumns columns_;
+  PathState state_;
+  PathLoads loads_;
+  std::vector<double> dL_du_;
+  std::vector<std::vector<double>> couplings_;
+  std::vector<double> lengths_, speeds_, moment_arms_;
+};
+
+}  // namespace sinew::paths

@@ -1,0 +1,80 @@
+#include <sinew/paths/path_loads.h>
+
+#include <algorithm>
+
+namespace sinew::paths {
+namespace {
+
+// Velocity in G of a point p_BP of a body moving with V_GB = [w; v].
+Vec3 StationVelocity(const Transform& X_GB, const SpatialVec& V_GB, const Vec3& p_BP) {
+  return V_GB.tail<3>() + V_GB.head<3>().cross(X_GB.R * p_BP);
+}
+
+// e_i - e_(i-1) at point i: the direction a unit tension pulls point i in.
+Vec3 PullDirection(const PathState& state, size_t i) {
+  Vec3 pull = Vec3::Zero();
+  if (i < state.e_G.size()) pull += state.e_G[i];
+  if (i > 0) pull -= state.e_G[i - 1];
+  return pull;
+}
+
+}  // namespace
+
+void CalcPathLoads(const PathState& state, std::span<const Transform> X_GB, double tension,
+                   PathLoads& loads) {
+  loads.point_forces.clear();
+  loads.coordinate_forces.clear();
+  for (size_t i = 0; i < state.points.size(); ++i) {
+    const PathPointState& p = state.points[i];
+    const Vec3 f_G = tension * PullDirection(state, i);
+    loads.point_forces.push_back({p.body, p.p_BP, f_G});
+    for (int axis = 0; axis < 3; ++axis) {
+      if (p.coordinates[axis] == model::kNone) continue;
+      loads.coordinate_forces.push_back(
+          {p.coordinates[axis], f_G.dot(X_GB[p.body].R * p.dp_BP_dq[axis])});
+    }
+  }
+}
+
+void AddGeneralizedForces(const PathLoads& loads, std::span<const Transform> X_GB,
+                          const SpeedColumns& columns, std::span<double> Q) {
+  for (int k = 0; k < columns.num_coordinates; ++k) {
+    const std::span<const SpatialVec> V_GB = columns.Column(k);
+    double sum = 0.0;
+    for (const PointForce& f : loads.point_forces) {
+      if (f.body == model::kGroundIndex) continue;
+      sum += f.f_G.dot(StationVelocity(X_GB[f.body], V_GB[f.body], f.p_BP));
+    }
+    Q[k] += sum;
+  }
+  for (const CoordinateForce& f : loads.coordinate_forces) Q[f.coordinate] += f.value;
+}
+
+void CalcLengthGradient(const PathState& state, std::span<const Transform> X_GB,
+                        const SpeedColumns& columns, PathLoads& loads, std::span<double> dL_du) {
+  std::fill(dL_du.begin(), dL_du.end(), 0.0);
+  // A tension of -1 pushes: its generalized force is +dL/du.
+  CalcPathLoads(state, X_GB, -1.0, loads);
+  AddGeneralizedForces(loads, X_GB, columns, dL_du);
+}
+
+double CalcLengtheningSpeed(const PathState& state, std::span<const Transform> X_GB,
+                            std::span<const SpatialVec> V_GB, std::span<const double> u) {
+  double speed = 0.0;
+  Vec3 v_previous = Vec3::Zero();
+  for (size_t i = 0; i < state.points.size(); ++i) {
+    const PathPointState& p = state.points[i];
+    Vec3 v_GP = StationVelocity(X_GB[p.body], V_GB[p.body], p.p_BP);
+    for (int axis = 0; axis < 3; ++axis) {
+      if (p.coordinates[axis] == model::kNone) continue;
+      v_GP += X_GB[p.body].R * p.dp_BP_dq[axis] * u[p.coordinates[axis]];
+    }
+    if (i > 0 && state.points[i - 1].arc_length_to_next < 0.0) {
+      speed += state.e_G[i - 1].dot(v_GP - v_previous);
+    }
+    v_previous = v_GP;
+  }
+  return speed;
+}
+
+}  // namespace sinew::paths

@@ -1,0 +1,73 @@
+// Every model of the OpenSim corpus (SINEW_CORPUS_DIR) with geometry paths: the paths compile,
+// and at the default pose every length, lengthening speed (zero speeds) and moment arm about
+// every free coordinate is finite. The count of such models is exact, so a model that newly
+// fails (or newly has paths) fails the test until the expectation is changed on purpose.
+#include <gtest/gtest.h>
+#include <sinew/paths/path_analysis.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+#include "corpus.h"
+#include "paths/path_test_util.h"
+
+namespace sinew::paths {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(CorpusPathsTest, EveryModelsPathsComputeAtTheDefaultPose) {
+  SINEW_SKIP_WITHOUT_CORPUS();
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(sinew::testing::CorpusDir())) {
+    if (entry.is_regular_file() && entry.path().extension() == ".osim") files.push_back(entry);
+  }
+  std::sort(files.begin(), files.end());
+  int with_paths = 0, paths_total = 0, wraps_total = 0;
+  for (const fs::path& file : files) {
+    std::unique_ptr<testing::PathModel> m;
+    try {
+      m = std::make_unique<testing::PathModel>(file.string());
+    } catch (const Error& e) {
+      // The reader's one refusal (see docs/testing.md), or a joint the tree cannot model.
+      std::cout << "not read: " << e.what() << "\n";
+      continue;
+    }
+    if (m->paths.paths().empty()) continue;
+    ++with_paths;
+    std::vector<int> free;
+    for (size_t c = 0; c < m->spec.coordinates.size(); ++c) {
+      if (!m->spec.coordinates[c].locked && !m->couplers.Drives(static_cast<int>(c))) {
+        free.push_back(static_cast<int>(c));
+      }
+    }
+    std::vector<double> q = m->tree.default_q();
+    m->couplers.Apply(q);
+    PathAnalysis analysis(m->spec, m->tree, m->couplers, m->paths, free);
+    try {
+      analysis.Calc(q, std::vector<double>(q.size(), 0.0));
+    } catch (const Error& e) {
+      ADD_FAILURE() << file << ": " << e.what();
+      continue;
+    }
+    for (size_t p = 0; p < m->paths.paths().size(); ++p) {
+      const std::string& name = m->paths.paths()[p].name();
+      EXPECT_TRUE(std::isfinite(analysis.lengths()[p]) && analysis.lengths()[p] > 0.0)
+          << file << " " << name;
+      EXPECT_EQ(analysis.lengthening_speeds()[p], 0.0) << file << " " << name;
+      for (size_t k = 0; k < free.size(); ++k) {
+        EXPECT_TRUE(std::isfinite(analysis.moment_arm(k, p))) << file << " " << name;
+      }
+      wraps_total += static_cast<int>(m->paths.paths()[p].wraps().size());
+    }
+    paths_total += static_cast<int>(m->paths.paths().size());
+  }
+  std::cout << with_paths << " models, " << paths_total << " paths, " << wraps_total
+            << " path wraps (not applied yet)\n";
+  EXPECT_EQ(with_paths, 78);
+}
+
+}  // namespace
+}  // namespace sinew::paths
