@@ -340,7 +340,7 @@ class FixedStepIntegrator : public Integrator {
   // it throws a sinew::Error saying where and what to try.
   void ProjectAfterStep(State& later, double t_start) {
     constexpr int kIterations = 10;
-    if (!ProjectWithStartFactorization(later) &&
+    if (!TryStartFactorization(later) &&
         !ProjectPositions(system_, later, ConstraintTolerance(), kkt_, kIterations,
                           &stats_.projection_factorizations)) {
       ++stats_.projection_failures;
@@ -390,8 +390,23 @@ class FixedStepIntegrator : public Integrator {
     return false;
   }
 
+  // ProjectWithStartFactorization, except for a while after it failed: where the stale matrix
+  // does not converge fast (a long chain turning fast, whose Jacobian error grows along the
+  // chain) every attempt would cost a solve for nothing.
+  bool TryStartFactorization(State& later) {
+    constexpr int kStepsWithoutAfterFailure = 16;
+    if (steps_without_start_factorization_ > 0) {
+      --steps_without_start_factorization_;
+      return false;
+    }
+    if (ProjectWithStartFactorization(later)) return true;
+    steps_without_start_factorization_ = kStepsWithoutAfterFailure;
+    return false;
+  }
+
   std::string name_;
-  State before_;            // the positions before the last start-factorization iteration
+  int steps_without_start_factorization_ = 0;
+  State before_;                // the positions before the last start-factorization iteration
   VecX rhs_, solution_, step_;  // buffers of ProjectWithStartFactorization
 };
 
