@@ -59,14 +59,14 @@ std::unique_ptr<System> MakeEveryJointTree() {
                    std::make_shared<testing::SliderModel>(), {prescribed});
   // The other branch, on direct joints, with a massless cross between two parameterized pins.
   const int trunk = body(8.0);
-  system->AddJoint("pin", pelvis, at(0, 0.1, 0), trunk, at(0, -0.2, 0), JointForm::kPin,
-                   nullptr, {Coord("pz", 0.2, -0.4)});
+  system->AddJoint("pin", pelvis, at(0, 0.1, 0), trunk, at(0, -0.2, 0), JointForm::kPin, nullptr,
+                   {Coord("pz", 0.2, -0.4)});
   const int head = body(2.0);
-  system->AddJoint("dball", trunk, at(0, 0.3, 0), head, at(0, -0.1, 0), JointForm::kBall,
-                   nullptr, {Coord("hx", 0.1, 0.2), Coord("hy", 0.2), Coord("hz", -0.1, 0.3)});
+  system->AddJoint("dball", trunk, at(0, 0.3, 0), head, at(0, -0.1, 0), JointForm::kBall, nullptr,
+                   {Coord("hx", 0.1, 0.2), Coord("hy", 0.2), Coord("hz", -0.1, 0.3)});
   const int arm = body(1.5);
-  system->AddJoint("duniversal", trunk, at(0.2, 0.2, 0), arm, at(0, 0.1, 0),
-                   JointForm::kUniversal, nullptr, {Coord("ax", 0.5, 0.1), Coord("ay", 0.1)});
+  system->AddJoint("duniversal", trunk, at(0.2, 0.2, 0), arm, at(0, 0.1, 0), JointForm::kUniversal,
+                   nullptr, {Coord("ax", 0.5, 0.1), Coord("ay", 0.1)});
   const int hand = body(0.4);
   system->AddJoint("weld", arm, at(0, -0.3, 0), hand, Transform::Identity(), JointForm::kWeld,
                    nullptr, {});

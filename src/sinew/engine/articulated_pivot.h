@@ -49,7 +49,7 @@ class ArticulatedPivot {
   Eigen::Matrix<double, 6, 6> M_ = Eigen::Matrix<double, 6, 6>::Zero();     // M_A
   Eigen::Matrix<double, 6, 6> Jinv_ = Eigen::Matrix<double, 6, 6>::Zero();  // J_B^-1
   Six S_, MS_;                                                              // S and M_A S
-  Eigen::PartialPivLU<Small> small_;  // [D N^T; N 0]
+  Eigen::PartialPivLU<Small> small_;                                        // [D N^T; N 0]
 };
 
 template <typename Rhs>

@@ -113,8 +113,7 @@ const Accelerations& CalcAccelerations(const System& system, const State& state,
   return SolveAccelerations(system, state, data);
 }
 
-const Accelerations& CalcAccelerationsReusingFactorization(const System& system,
-                                                           const State& state,
+const Accelerations& CalcAccelerationsReusingFactorization(const System& system, const State& state,
                                                            const Loads* external, Data& data) {
   CalcLoads(system, state, external, data.loads);
   if (!data.kkt.IsFactorizedAt(state)) data.kkt.Factorize(state);

@@ -46,7 +46,7 @@ struct IntegratorStats {
   long rejected = 0;                   ///< rejected steps
   long evaluations = 0;                ///< acceleration evaluations
   long projection_factorizations = 0;  ///< KKT factorizations of the position projections
-  long factorizations = 0;  ///< every KKT factorization (evaluations and projections)
+  long factorizations = 0;             ///< every KKT factorization (evaluations and projections)
   long projection_failures = 0;        ///< steps rejected because the projection did not converge
 };
 

@@ -84,9 +84,9 @@ KktSolver::KktSolver(const System& system, Method method) : system_(system), met
     for (int c = 0; c < system.num_coordinates(); ++c) {
       if (system.IsIntegrated(c)) speed_columns[c] = SpeedColumn(c);
     }
-    tree_ = std::make_unique<TreeKktSolver>(system, nv_, body_columns, speed_columns,
-                                            tree_constraints_, tree_row_, columns_,
-                                            method_ == Method::kTree);
+    tree_ =
+        std::make_unique<TreeKktSolver>(system, nv_, body_columns, speed_columns, tree_constraints_,
+                                        tree_row_, columns_, method_ == Method::kTree);
     G_ = MatX::Zero(ne_, nv_);
     Y_ = MatX::Zero(nv_ + nc_tree_, ne_);
   }

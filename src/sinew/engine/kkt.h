@@ -112,7 +112,7 @@ class KktSolver {
   int ne_ = 0;
   MatX G_, Y_;
   Eigen::CompleteOrthogonalDecomposition<MatX> schur_;
-  MatX schur_inverse_;  // the pseudo-inverse of S (ne x ne, small)
+  MatX schur_inverse_;          // the pseudo-inverse of S (ne x ne, small)
   bool residual_check_ = true;  // CheckSolution computes the residual (see there)
   // The positions of the last successful Factorize and a buffer to compare them with.
   bool factorized_ = false;

@@ -29,8 +29,8 @@ class TreeKktSolver {
   /// (ArticulatedPivot); without, every block by a generic LU.
   TreeKktSolver(const System& system, int nv, const std::vector<int>& body_columns,
                 const std::vector<int>& speed_columns, const std::vector<int>& tree_constraints,
-                const std::vector<int>& equation_rows,
-                const std::vector<std::vector<int>>& columns, bool articulated = true);
+                const std::vector<int>& equation_rows, const std::vector<std::vector<int>>& columns,
+                bool articulated = true);
 
   /// Factorizes with body mass matrices `mass[b]` and constraint Jacobians `jacobian[k]`.
   /// Throws sinew::Error when a pivot block is singular.
@@ -60,12 +60,12 @@ class TreeKktSolver {
 
  private:
   struct Node {
-    int body = 0;             // outboard body
-    int parent = -1;          // node of the inboard body (-1: ground)
-    int num_speeds = 0;       // joint speeds among the unknowns (after the 6 twist entries)
+    int body = 0;              // outboard body
+    int parent = -1;           // node of the inboard body (-1: ground)
+    int num_speeds = 0;        // joint speeds among the unknowns (after the 6 twist entries)
     bool articulated = false;  // the block fits ArticulatedPivot (decided at construction)
     bool use_pivot = false;    // the last Factorize used `pivot` (else `lu`)
-    std::vector<int> global;  // global index of each local variable
+    std::vector<int> global;   // global index of each local variable
     std::vector<int> constraints;
     std::vector<std::vector<Entry>> entries;  // per constraint: where its J entries go
     NodeMatrix K;                             // pivot block (n x n)
