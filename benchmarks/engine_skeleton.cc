@@ -92,9 +92,10 @@ void BM_Gait2354Accelerations(benchmark::State& bench) {
 }
 BENCHMARK(BM_Gait2354Accelerations)->Unit(benchmark::kMicrosecond);
 
-// One fixed step (h = 1 ms) of semi-implicit Euler on chrono's Rajagopal2015.osim skeleton,
-// timed from the tumbling state every iteration (as the chain benchmarks do).
-void BM_Rajagopal2015EulerStep(benchmark::State& bench) {
+// Fixed steps (h = 1 ms) of semi-implicit Euler on chrono's Rajagopal2015.osim skeleton from
+// the tumbling state, `steps` per iteration (each iteration starts again from that state, as
+// the chain benchmarks do); the time is per step.
+void TimeEulerSteps(benchmark::State& bench, int steps) {
   const sinew::model::ModelSpec spec =
       sinew::io::ReadOsim(kData + "/projectchrono/chrono/data/opensim/Rajagopal2015.osim");
   const auto system = sinew::opensim::BuildSystem(spec);
@@ -106,13 +107,25 @@ void BM_Rajagopal2015EulerStep(benchmark::State& bench) {
   auto integrator = sinew::engine::MakeIntegrator("euler", *system, settings);
   for (auto _ : bench) {
     sinew::engine::State state = start;
-    integrator->StepTo(state, start.t + 1e-3);
+    integrator->StepTo(state, start.t + steps * 1e-3);
     benchmark::DoNotOptimize(state.bodies.data());
   }
-  bench.counters["proj_factorizations"] =
-      benchmark::Counter(static_cast<double>(integrator->stats().projection_factorizations),
-                         benchmark::Counter::kAvgIterations);
+  const double total = static_cast<double>(bench.iterations()) * steps;
+  bench.counters["proj_factorizations"] = benchmark::Counter(
+      static_cast<double>(integrator->stats().projection_factorizations) / total);
+  bench.counters["factorizations"] =
+      benchmark::Counter(static_cast<double>(integrator->stats().factorizations) / total);
+  bench.SetItemsProcessed(bench.iterations() * steps);
 }
+
+// One step: its evaluation cannot reuse a factorization (the previous iteration ended
+// elsewhere).
+void BM_Rajagopal2015EulerStep(benchmark::State& bench) { TimeEulerSteps(bench, 1); }
 BENCHMARK(BM_Rajagopal2015EulerStep)->Unit(benchmark::kMicrosecond);
+
+// 100 steps (0.1 s): the steady state, where each step's evaluation reuses the previous
+// step's velocity-projection factorization. Time per step = the time / 100 (items_per_second).
+void BM_Rajagopal2015EulerHundredSteps(benchmark::State& bench) { TimeEulerSteps(bench, 100); }
+BENCHMARK(BM_Rajagopal2015EulerHundredSteps)->Unit(benchmark::kMillisecond);
 
 }  // namespace

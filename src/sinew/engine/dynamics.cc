@@ -68,12 +68,11 @@ Data::Data(const System& system, KktSolver::Method method)
   accelerations.lambda = VecX::Zero(kkt.num_equations());
 }
 
-const Accelerations& CalcAccelerations(const System& system, const State& state,
-                                       const Loads* external, Data& data) {
-  Loads& loads = data.loads;
-  KktSolver& kkt = data.kkt;
-  CalcLoads(system, state, external, loads);
-  kkt.Factorize(state);
+namespace {
+// The accelerations for data.loads with data.kkt factorized at `state`.
+const Accelerations& SolveAccelerations(const System& system, const State& state, Data& data) {
+  const Loads& loads = data.loads;
+  const KktSolver& kkt = data.kkt;
   const int nv = kkt.num_velocities();
   VecX& rhs = data.rhs;
   rhs.setZero();
@@ -104,6 +103,21 @@ const Accelerations& CalcAccelerations(const System& system, const State& state,
   data.accelerations.vdot = data.solution.head(nv);
   data.accelerations.lambda = data.solution.tail(kkt.num_equations());
   return data.accelerations;
+}
+}  // namespace
+
+const Accelerations& CalcAccelerations(const System& system, const State& state,
+                                       const Loads* external, Data& data) {
+  CalcLoads(system, state, external, data.loads);
+  data.kkt.Factorize(state);
+  return SolveAccelerations(system, state, data);
+}
+
+const Accelerations& CalcAccelerationsReusingFactorization(const System& system, const State& state,
+                                                           const Loads* external, Data& data) {
+  CalcLoads(system, state, external, data.loads);
+  if (!data.kkt.IsFactorizedAt(state)) data.kkt.Factorize(state);
+  return SolveAccelerations(system, state, data);
 }
 
 }  // namespace sinew::engine

@@ -48,4 +48,10 @@ struct Data {
 const Accelerations& CalcAccelerations(const System& system, const State& state,
                                        const Loads* external, Data& data);
 
+/// CalcAccelerations that keeps data.kkt's factorization when it was made at `state`'s
+/// positions (KktSolver::IsFactorizedAt): the same result, bit for bit, without refactorizing
+/// (a fixed-step integrator's velocity projection factorizes at the next step's start).
+const Accelerations& CalcAccelerationsReusingFactorization(const System& system, const State& state,
+                                                           const Loads* external, Data& data);
+
 }  // namespace sinew::engine

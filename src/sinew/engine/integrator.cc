@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -48,7 +49,7 @@ const Accelerations& Integrator::Evaluate(State& state, Eigen::Ref<VecX> zdot) {
   ApplyController(state);
   ++stats_.evaluations;
   if (zdot.size() > 0) CalcStateVariableDerivatives(system_, state, zdot);
-  return CalcAccelerations(system_, state, external_, data_);
+  return CalcAccelerationsReusingFactorization(system_, state, external_, data_);
 }
 
 double Integrator::ConstraintTolerance() const {
@@ -334,11 +335,13 @@ class FixedStepIntegrator : public Integrator {
   virtual void Step(State& state, double h, double t_new) = 0;
 
   // Moves `later`, the state a step from `t_start` produced, onto the constraints (positions,
-  // velocities, direct coordinates). A fixed-step scheme cannot retry with a shorter step, so
-  // when the positions do not converge it throws a sinew::Error saying where and what to try.
+  // velocities, direct coordinates), with kkt_ still factorized at the step's start. A
+  // fixed-step scheme cannot retry with a shorter step, so when the positions do not converge
+  // it throws a sinew::Error saying where and what to try.
   void ProjectAfterStep(State& later, double t_start) {
     constexpr int kIterations = 10;
-    if (!ProjectPositions(system_, later, ConstraintTolerance(), kkt_, kIterations,
+    if (!TryStartFactorization(later) &&
+        !ProjectPositions(system_, later, ConstraintTolerance(), kkt_, kIterations,
                           &stats_.projection_factorizations)) {
       ++stats_.projection_failures;
       const VecX phi = CalcPositionErrors(system_, later);
@@ -357,7 +360,54 @@ class FixedStepIntegrator : public Integrator {
   }
 
  private:
+  // Newton iterations on phi(x) = 0 with the KKT matrix still factorized at the step's start:
+  // a modified Newton method (the step moved the positions by h v, so the matrix is off by
+  // O(h |v|) and each iteration divides the error by about 1 / (h |v| / length)). Returns true
+  // once |phi| <= tolerance; false when an iteration does not cut the error tenfold, after
+  // undoing an iteration that made it worse (ProjectPositions then goes on from there, with
+  // fresh factorizations, as it would have from the start).
+  bool ProjectWithStartFactorization(State& later) {
+    constexpr int kMaxIterations = 4;
+    const int nv = kkt_.num_velocities();
+    double previous = std::numeric_limits<double>::infinity();
+    for (int iteration = 0; iteration <= kMaxIterations; ++iteration) {
+      const VecX phi = CalcPositionErrors(system_, later);
+      const double error = phi.size() == 0 ? 0.0 : phi.lpNorm<Eigen::Infinity>();
+      if (error <= ConstraintTolerance()) return true;
+      if (!(error < 0.1 * previous)) {
+        if (!(error < previous)) later = before_;
+        return false;
+      }
+      if (iteration == kMaxIterations) return false;
+      previous = error;
+      before_ = later;
+      rhs_.setZero(nv + phi.size());
+      rhs_.tail(phi.size()) = -phi;
+      kkt_.Solve(rhs_, solution_);
+      step_ = solution_.head(nv);
+      ApplyPositionDisplacement(system_, kkt_, step_, later);
+    }
+    return false;
+  }
+
+  // ProjectWithStartFactorization, except for a while after it failed: where the stale matrix
+  // does not converge fast (a long chain turning fast, whose Jacobian error grows along the
+  // chain) every attempt would cost a solve for nothing.
+  bool TryStartFactorization(State& later) {
+    constexpr int kStepsWithoutAfterFailure = 16;
+    if (steps_without_start_factorization_ > 0) {
+      --steps_without_start_factorization_;
+      return false;
+    }
+    if (ProjectWithStartFactorization(later)) return true;
+    steps_without_start_factorization_ = kStepsWithoutAfterFailure;
+    return false;
+  }
+
   std::string name_;
+  int steps_without_start_factorization_ = 0;
+  State before_;                // the positions before the last start-factorization iteration
+  VecX rhs_, solution_, step_;  // buffers of ProjectWithStartFactorization
 };
 
 // Fixed-step semi-implicit Euler on the velocity-level KKT system, with projection.

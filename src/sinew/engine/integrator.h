@@ -6,8 +6,10 @@
 //    constraints. Used to match OpenSim's results.
 //  - "euler": fixed-step semi-implicit (symplectic) Euler: the new velocities solve the
 //    velocity-level KKT system M (v+ - v) = h f + J^T lambda, J v+ = c; positions then move
-//    with v+ and are projected. First order, robust, one factorization per step: meant for
-//    non-smooth (contact) problems without stiff forces.
+//    with v+ and are projected. First order, robust, one factorization per step (the velocity
+//    projection's, which the next step's evaluation reuses; the position projection starts
+//    from the step's first factorization): meant for non-smooth (contact) problems without
+//    stiff forces.
 //  - "implicit-euler": fixed-step linearized implicit Euler (force Jacobians by finite
 //    differences, dense solve): stable for stiff springs and dampers on small models.
 #pragma once
@@ -44,6 +46,7 @@ struct IntegratorStats {
   long rejected = 0;                   ///< rejected steps
   long evaluations = 0;                ///< acceleration evaluations
   long projection_factorizations = 0;  ///< KKT factorizations of the position projections
+  long factorizations = 0;             ///< every KKT factorization (evaluations and projections)
   long projection_failures = 0;        ///< steps rejected because the projection did not converge
 };
 
@@ -74,7 +77,11 @@ class Integrator {
   const std::shared_ptr<const Controller>& controller() const { return controller_; }
   /// Sets `state`'s inputs from the controller (if any), as every evaluation does.
   void ApplyController(State& state) const;
-  const IntegratorStats& stats() const { return stats_; }
+  IntegratorStats stats() const {
+    IntegratorStats stats = stats_;
+    stats.factorizations = kkt_.num_factorizations();
+    return stats;
+  }
   const IntegratorSettings& settings() const { return settings_; }
 
  protected:
@@ -83,7 +90,8 @@ class Integrator {
   virtual void TakeStep(State& state, double t_limit) = 0;
   double ConstraintTolerance() const;
   /// One evaluation at `state`: inputs from the controller, then the accelerations (counted in
-  /// stats().evaluations) and, into `zdot`, the state variables' derivatives.
+  /// stats().evaluations; the KKT factorization is reused when it was made at these positions)
+  /// and, into `zdot`, the state variables' derivatives.
   const Accelerations& Evaluate(State& state, Eigen::Ref<VecX> zdot);
 
   const System& system_;

@@ -2,6 +2,7 @@
 #include <sinew/engine/kkt.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace sinew::engine {
@@ -77,20 +78,47 @@ KktSolver::KktSolver(const System& system, Method method) : system_(system), met
       ne_ += n;
     }
   }
-  if (method_ == Method::kTree) {
+  if (method_ != Method::kDense) {
     std::vector<int> body_columns(system.num_bodies()), speed_columns(system.num_coordinates(), -1);
     for (int b = 0; b < system.num_bodies(); ++b) body_columns[b] = BodyColumn(b);
     for (int c = 0; c < system.num_coordinates(); ++c) {
       if (system.IsIntegrated(c)) speed_columns[c] = SpeedColumn(c);
     }
-    tree_ = std::make_unique<TreeKktSolver>(system, nv_, body_columns, speed_columns,
-                                            tree_constraints_, tree_row_, columns_);
+    tree_ =
+        std::make_unique<TreeKktSolver>(system, nv_, body_columns, speed_columns, tree_constraints_,
+                                        tree_row_, columns_, method_ == Method::kTree);
     G_ = MatX::Zero(ne_, nv_);
     Y_ = MatX::Zero(nv_ + nc_tree_, ne_);
   }
 }
 
+void KktSolver::GatherPositions(const State& state, VecX& out) const {
+  out.resize(7 * (system_.num_bodies() - 1) + system_.num_integrated());
+  int i = 0;
+  for (int b = 1; b < system_.num_bodies(); ++b, i += 7) {
+    out.segment<3>(i) = state.bodies[b].p_GB;
+    out.segment<4>(i + 3) = state.bodies[b].quat_GB.coeffs();
+  }
+  for (int c = 0; c < system_.num_coordinates(); ++c) {
+    if (system_.IsIntegrated(c)) out[i++] = state.q[c];
+  }
+}
+
+bool KktSolver::IsFactorizedAt(const State& state) const {
+  if (!factorized_) return false;
+  GatherPositions(state, positions_);
+  return positions_ == factorized_positions_;
+}
+
 void KktSolver::Factorize(const State& state) {
+  factorized_ = false;  // until this factorization succeeds
+  ++num_factorizations_;
+  FactorizeMatrices(state);
+  GatherPositions(state, factorized_positions_);
+  factorized_ = true;
+}
+
+void KktSolver::FactorizeMatrices(const State& state) {
   const auto& constraints = system_.constraints();
   for (int b = 1; b < system_.num_bodies(); ++b) {
     mass_[b] = CalcBodyMassMatrix(system_.bodies()[b], state.bodies[b].quat_GB);
@@ -100,9 +128,11 @@ void KktSolver::Factorize(const State& state) {
   }
   if (method_ == Method::kDense) {
     dense_.compute(AssembleDense());
+    residual_check_ = true;
     return;
   }
   tree_->Factorize(mass_, jacobian_);
+  residual_check_ = false;
   if (ne_ == 0) return;
   // The extra rows G over the velocity unknowns, then Y = K_T^-1 G^T and S = G Y.
   G_.setZero();
@@ -121,6 +151,9 @@ void KktSolver::Factorize(const State& state) {
   schur_.setThreshold(kSchurThreshold);
   schur_.compute(G_ * Y_.topRows(nv_));
   schur_inverse_ = schur_.pseudoInverse();
+  // Redundant extra constraints: the multipliers are least-squares ones, exact only when the
+  // right-hand side is consistent; the residual tells.
+  residual_check_ = schur_.rank() < ne_;
 }
 
 void KktSolver::GatherTreeRhs(const VecX& rhs, VecX& tree_rhs) const {
@@ -143,7 +176,7 @@ void KktSolver::Solve(const VecX& rhs, VecX& x) const {
   x.resize(nv_ + nc_);
   if (method_ == Method::kDense) {
     x = dense_.solve(rhs);
-    CheckResidual(rhs, x);
+    CheckSolution(rhs, x);
     return;
   }
   GatherTreeRhs(rhs, tree_rhs_);
@@ -169,10 +202,18 @@ void KktSolver::Solve(const VecX& rhs, VecX& x) const {
     const int n = constraints[k]->NumEquations();
     x.segment(nv_ + row_[k], n) = y_.segment(nv_ + tree_row_[k], n);
   }
-  CheckResidual(rhs, x);
+  CheckSolution(rhs, x);
 }
 
-void KktSolver::CheckResidual(const VecX& rhs, const VecX& x) const {
+void KktSolver::CheckSolution(const VecX& rhs, const VecX& x) const {
+  // The tree elimination is exact once every pivot block passed its conditioning test in
+  // Factorize, and so is a full-rank Schur complement: their solutions need no residual (an
+  // O(n) pass as long as the solve itself). A pseudo-inverse of a rank-deficient Schur
+  // complement and the dense LU are checked.
+  if (!residual_check_) {
+    if (!x.allFinite()) ThrowSingular(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
   // [M x_v + J^T lambda - f; J x_v - g], accumulated in place.
   residual_.resize(nv_ + nc_);
   residual_ = -rhs;
@@ -192,10 +233,13 @@ void KktSolver::CheckResidual(const VecX& rhs, const VecX& x) const {
   }
   const double scale = 1.0 + rhs.lpNorm<Eigen::Infinity>();
   if (!x.allFinite() || residual_.lpNorm<Eigen::Infinity>() > 1e-6 * scale) {
-    throw Error("engine: the equations of motion are singular or ill-conditioned (residual " +
-                std::to_string(residual_.lpNorm<Eigen::Infinity>()) +
-                "); check for bodies without mass or inertia");
+    ThrowSingular(residual_.lpNorm<Eigen::Infinity>());
   }
+}
+
+void KktSolver::ThrowSingular(double residual) const {
+  throw Error("engine: the equations of motion are singular or ill-conditioned (residual " +
+              std::to_string(residual) + "); check for bodies without mass or inertia");
 }
 
 VecX KktSolver::MultiplyMass(const VecX& x) const {

@@ -36,9 +36,11 @@ Eigen::Matrix<double, 6, 6> CalcBodyMassMatrix(const Body& body, const Quat& qua
 /// System, which must outlive it.
 class KktSolver {
  public:
-  /// kTree: the linear-time solve above. kDense: a dense LU with full pivoting of the whole
-  /// matrix, O(n^3), to cross-check the tree solve in tests.
-  enum class Method { kTree, kDense };
+  /// kTree: the linear-time solve above. kTreeGenericNodes: the same with a generic LU for every
+  /// node block, none eliminated as an articulated pivot (ArticulatedPivot), to cross-check
+  /// those in tests. kDense: a dense LU with full pivoting of the whole matrix, O(n^3), to
+  /// cross-check the tree solve in tests.
+  enum class Method { kTree, kTreeGenericNodes, kDense };
   explicit KktSolver(const System& system, Method method = Method::kTree);
 
   int num_velocities() const { return nv_; }
@@ -51,6 +53,13 @@ class KktSolver {
 
   /// Evaluates M and J at `state` and factorizes. Throws sinew::Error when singular.
   void Factorize(const State& state);
+  /// True when the last Factorize was made at exactly the positions of `state` (body poses and
+  /// integrated coordinates, compared bit for bit), so that Factorize(state) would compute the
+  /// same factors: M depends on the orientations only and J on the positions only (J(x), see
+  /// Constraint).
+  bool IsFactorizedAt(const State& state) const;
+  /// Number of factorizations made so far.
+  long num_factorizations() const { return num_factorizations_; }
   /// Solves with the last factorization: rhs = [f; g] (nv + nc), into x (resized; no heap use
   /// once it has its size). Throws sinew::Error when the solution is not accurate (singular
   /// system).
@@ -62,6 +71,9 @@ class KktSolver {
   Method method() const { return method_; }
   /// Number of constraint equations solved by the Schur complement (not tree rows).
   int num_extra_equations() const { return ne_; }
+  /// Node blocks of the tree elimination that the last Factorize eliminated as articulated
+  /// pivots (0 for kTreeGenericNodes and kDense).
+  int num_articulated_nodes() const { return tree_ ? tree_->num_articulated_nodes() : 0; }
 
   /// M * x (x has nv entries) with the M of the last Factorize.
   VecX MultiplyMass(const VecX& x) const;
@@ -73,10 +85,16 @@ class KktSolver {
   VecX MultiplyJacobianTranspose(const VecX& y) const;
 
  private:
+  // Factorize without the bookkeeping of the positions.
+  void FactorizeMatrices(const State& state);
+  // Writes the positions Factorize depends on (body poses, integrated q) into `out`.
+  void GatherPositions(const State& state, VecX& out) const;
   // Fills the tree solver's right-hand side [f; g_T] from a global one [f; g].
   void GatherTreeRhs(const VecX& rhs, VecX& tree_rhs) const;
-  // Throws unless x solves the system for rhs to 1e-6 (relative).
-  void CheckResidual(const VecX& rhs, const VecX& x) const;
+  // Throws unless x is finite and, where the factorization is not exact by construction (the
+  // dense LU, a rank-deficient Schur complement), solves the system for rhs to 1e-6 (relative).
+  void CheckSolution(const VecX& rhs, const VecX& x) const;
+  [[noreturn]] void ThrowSingular(double residual) const;
 
   const System& system_;
   Method method_;
@@ -94,7 +112,13 @@ class KktSolver {
   int ne_ = 0;
   MatX G_, Y_;
   Eigen::CompleteOrthogonalDecomposition<MatX> schur_;
-  MatX schur_inverse_;  // the pseudo-inverse of S (ne x ne, small)
+  MatX schur_inverse_;          // the pseudo-inverse of S (ne x ne, small)
+  bool residual_check_ = true;  // CheckSolution computes the residual (see there)
+  // The positions of the last successful Factorize and a buffer to compare them with.
+  bool factorized_ = false;
+  VecX factorized_positions_;
+  mutable VecX positions_;
+  long num_factorizations_ = 0;
   // Buffers of Solve, so that it allocates nothing.
   mutable VecX tree_rhs_, y_, g_, mu_, residual_;
   // Dense method.

@@ -10,7 +10,7 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
                              const std::vector<int>& speed_columns,
                              const std::vector<int>& tree_constraints,
                              const std::vector<int>& equation_rows,
-                             const std::vector<std::vector<int>>& columns)
+                             const std::vector<std::vector<int>>& columns, bool articulated)
     : system_(system) {
   const auto& constraints = system.constraints();
   const int num_joints = static_cast<int>(system.joints().size());
@@ -25,6 +25,7 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
     for (int c : joint.coordinates) {
       if (system.IsIntegrated(c)) node.global.push_back(speed_columns[c]);
     }
+    node.num_speeds = static_cast<int>(node.global.size()) - 6;
     node_of_joint[j] = static_cast<int>(nodes_.size());
     node_of_body[node.body] = node_of_joint[j];
     nodes_.push_back(std::move(node));
@@ -71,6 +72,11 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
     }
     node.entries.push_back(std::move(entries));
   }
+  for (int j = 0; j < num_joints; ++j) {
+    if (articulated && node_of_joint[j] >= 0) {
+      nodes_[node_of_joint[j]].articulated = FitsArticulatedPivot(nodes_[node_of_joint[j]], j);
+    }
+  }
   for (Node& node : nodes_) {
     const int n = static_cast<int>(node.global.size());
     if (n > kMaxNode) throw Error("engine: a joint block is too large for the tree solver");
@@ -102,21 +108,50 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
   // Leaves first: eliminate each node into its parent's body block.
   for (auto it = nodes_.rbegin(); it != nodes_.rend(); ++it) {
     Node& node = *it;
-    node.lu.compute(node.K);
-    // Partial pivoting puts each column's largest entry on U's diagonal: a pivot that is tiny
-    // next to the largest one means a singular block.
-    const auto pivots = node.lu.matrixLU().diagonal().cwiseAbs();
-    const double rcond = pivots.minCoeff() / pivots.maxCoeff();
-    if (!(rcond > 1e-14)) {
-      throw Error({}, system_.bodies()[node.body].name,
-                  "engine: the equations of motion are singular at this body (rcond " +
-                      std::to_string(rcond) +
-                      "): a body without mass or inertia in a direction its joint leaves free?");
-    }
+    FactorizeNode(node);
     if (node.parent >= 0) {
-      node.W = node.lu.solve(node.C);
+      node.W = node.C;
+      SolveNode(node, node.W);
       nodes_[node.parent].K.topLeftCorner<6, 6>().noalias() -= node.C.transpose() * node.W;
     }
+  }
+}
+
+int TreeKktSolver::num_articulated_nodes() const {
+  int n = 0;
+  for (const Node& node : nodes_) n += node.use_pivot ? 1 : 0;
+  return n;
+}
+
+bool TreeKktSolver::FitsArticulatedPivot(const Node& node, int joint) const {
+  const auto& constraints = system_.constraints();
+  if (system_.joints()[joint].form != JointForm::kParameterized || node.constraints.empty() ||
+      node.constraints[0] != joint || constraints[joint]->NumEquations() != 6) {
+    return false;
+  }
+  const int num_rows = static_cast<int>(node.global.size()) - 12 - node.num_speeds;
+  if (num_rows < 0 || (node.num_speeds == 0 && num_rows > 0)) return false;
+  for (size_t i = 1; i < node.constraints.size(); ++i) {
+    for (const Entry& e : node.entries[i]) {
+      if (e.col < 6 || e.col >= 6 + node.num_speeds) return false;
+    }
+  }
+  return true;
+}
+
+void TreeKktSolver::FactorizeNode(Node& node) {
+  node.use_pivot = node.articulated && node.pivot.Factorize(node.K, node.num_speeds);
+  if (node.use_pivot) return;
+  node.lu.compute(node.K);
+  // Partial pivoting puts each column's largest entry on U's diagonal: a pivot that is tiny
+  // next to the largest one means a singular block.
+  const auto pivots = node.lu.matrixLU().diagonal().cwiseAbs();
+  const double rcond = pivots.minCoeff() / pivots.maxCoeff();
+  if (!(rcond > 1e-14)) {
+    throw Error({}, system_.bodies()[node.body].name,
+                "engine: the equations of motion are singular at this body (rcond " +
+                    std::to_string(rcond) +
+                    "): a body without mass or inertia in a direction its joint leaves free?");
   }
 }
 
@@ -129,7 +164,7 @@ void TreeKktSolver::Solve(const VecX& rhs, VecX& x) const {
   }
   // Forward: z_k = K_k^-1 r_k, parent's body rows lose C^T z_k.
   for (size_t k = nodes_.size(); k-- > 0;) {
-    r[k] = nodes_[k].lu.solve(r[k]);
+    SolveNode(nodes_[k], r[k]);
     if (nodes_[k].parent >= 0) {
       r[nodes_[k].parent].head<6>().noalias() -= nodes_[k].C.transpose() * r[k];
     }

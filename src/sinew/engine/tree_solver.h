@@ -6,6 +6,7 @@
 // are fine when their joints take away the directions without inertia).
 #pragma once
 
+#include <sinew/engine/articulated_pivot.h>
 #include <sinew/math/types.h>
 
 #include <Eigen/LU>
@@ -24,10 +25,12 @@ class TreeKktSolver {
   /// constraints (indices into System::constraints()) it takes, `equation_rows[k]` the first
   /// row of constraint k among them (the solver's vectors are [velocities; their rows]);
   /// `columns[k]` the velocity column of each Jacobian column of constraint k (-1 for ground).
+  /// With `articulated`, the blocks of parameterized joints are eliminated as articulated pivots
+  /// (ArticulatedPivot); without, every block by a generic LU.
   TreeKktSolver(const System& system, int nv, const std::vector<int>& body_columns,
                 const std::vector<int>& speed_columns, const std::vector<int>& tree_constraints,
-                const std::vector<int>& equation_rows,
-                const std::vector<std::vector<int>>& columns);
+                const std::vector<int>& equation_rows, const std::vector<std::vector<int>>& columns,
+                bool articulated = true);
 
   /// Factorizes with body mass matrices `mass[b]` and constraint Jacobians `jacobian[k]`.
   /// Throws sinew::Error when a pivot block is singular.
@@ -36,6 +39,8 @@ class TreeKktSolver {
   /// Solves with the last factorization: rhs and x are [velocities; tree rows] (x is resized;
   /// no heap use once it has its size).
   void Solve(const VecX& rhs, VecX& x) const;
+  /// Node blocks the last Factorize eliminated as articulated pivots (the rest by generic LU).
+  int num_articulated_nodes() const;
 
  private:
   struct Entry {
@@ -55,16 +60,34 @@ class TreeKktSolver {
 
  private:
   struct Node {
-    int body = 0;             // outboard body
-    int parent = -1;          // node of the inboard body (-1: ground)
-    std::vector<int> global;  // global index of each local variable
+    int body = 0;              // outboard body
+    int parent = -1;           // node of the inboard body (-1: ground)
+    int num_speeds = 0;        // joint speeds among the unknowns (after the 6 twist entries)
+    bool articulated = false;  // the block fits ArticulatedPivot (decided at construction)
+    bool use_pivot = false;    // the last Factorize used `pivot` (else `lu`)
+    std::vector<int> global;   // global index of each local variable
     std::vector<int> constraints;
     std::vector<std::vector<Entry>> entries;  // per constraint: where its J entries go
     NodeMatrix K;                             // pivot block (n x n)
     NodeCoupling C;                           // coupling to the inboard body's twist (n x 6)
     NodeCoupling W;                           // K^-1 C
     Eigen::PartialPivLU<NodeMatrix> lu;
+    ArticulatedPivot pivot;
   };
+  // Whether node's block has the articulated layout: a parameterized joint's 6 rows first, then
+  // rows on the joint speeds only.
+  bool FitsArticulatedPivot(const Node& node, int joint) const;
+  // Factorizes one node's block (the articulated pivot where it applies, else the LU).
+  void FactorizeNode(Node& node);
+  // x = K^-1 x with node's factorization.
+  template <typename X>
+  static void SolveNode(const Node& node, X& x) {
+    if (node.use_pivot) {
+      node.pivot.SolveInPlace(x);
+    } else {
+      x = node.lu.solve(x);
+    }
+  }
   const System& system_;
   std::vector<Node> nodes_;  // in tree order (a node after its parent)
   mutable std::vector<NodeVector> scratch_;

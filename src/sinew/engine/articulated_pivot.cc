@@ -1,0 +1,52 @@
+#include <sinew/engine/articulated_pivot.h>
+
+#include <algorithm>
+
+namespace sinew::engine {
+namespace {
+// Smallest pivot, relative to the block's scale, that the small system may have.
+constexpr double kMinPivot = 1e-14;
+
+// Inverse of a 3 x 3 block into `inverse`; false when it is (nearly) singular.
+bool Invert3(const Mat3& A, Mat3& inverse) {
+  const double scale = A.cwiseAbs().maxCoeff();
+  const double det = A.determinant();
+  if (!(std::abs(det) > 1e-10 * scale * scale * scale)) return false;
+  inverse = A.inverse();
+  return true;
+}
+}  // namespace
+
+bool ArticulatedPivot::Factorize(const Block& K, int nu) {
+  nu_ = nu;
+  nc_ = static_cast<int>(K.rows()) - 12 - nu;
+  const int rows = 6 + nu;  // first joint row
+  const Eigen::Matrix<double, 6, 6> J_B = K.block<6, 6>(rows, 0);
+  Mat3 A_inv, C_inv;
+  if (!J_B.topRightCorner<3, 3>().isZero(0.0) || !Invert3(J_B.topLeftCorner<3, 3>(), A_inv) ||
+      !Invert3(J_B.bottomRightCorner<3, 3>(), C_inv)) {
+    return false;
+  }
+  Jinv_.topLeftCorner<3, 3>() = A_inv;
+  Jinv_.topRightCorner<3, 3>().setZero();
+  Jinv_.bottomRightCorner<3, 3>() = C_inv;
+  Jinv_.bottomLeftCorner<3, 3>().noalias() = -C_inv * J_B.bottomLeftCorner<3, 3>() * A_inv;
+  M_ = K.topLeftCorner<6, 6>();
+  S_.noalias() = -Jinv_ * K.block(rows, 6, 6, nu);
+  MS_.noalias() = M_ * S_;
+  if (nu_ + nc_ == 0) return true;  // the joint rows alone fix the twist
+  Small small(nu_ + nc_, nu_ + nc_);
+  small.topLeftCorner(nu_, nu_).noalias() = S_.transpose() * MS_;
+  small.topRightCorner(nu_, nc_) = K.block(12 + nu_, 6, nc_, nu_).transpose();
+  small.bottomLeftCorner(nc_, nu_) = K.block(12 + nu_, 6, nc_, nu_);
+  small.bottomRightCorner(nc_, nc_).setZero();
+  small_.compute(small);
+  // D's scale is that of M_A seen through S: a pivot far below it means a direction with
+  // (nearly) no inertia that the joint leaves free.
+  const auto pivots = small_.matrixLU().diagonal().cwiseAbs();
+  const double scale =
+      std::max(pivots.maxCoeff(), M_.cwiseAbs().maxCoeff() * S_.colwise().squaredNorm().maxCoeff());
+  return pivots.minCoeff() > kMinPivot * scale;
+}
+
+}  // namespace sinew::engine
