@@ -2,6 +2,7 @@
 #include <sinew/engine/pose.h>
 #include <sinew/engine/state.h>
 #include <sinew/forces/point_to_point_spring.h>
+#include <sinew/forces/two_frame_linker.h>
 
 #include <utility>
 
@@ -38,10 +39,7 @@ void PointToPointSpring::AddLoads(const engine::ForceContext& context, engine::L
 }
 
 std::optional<engine::ForceSupport> PointToPointSpring::Support() const {
-  engine::ForceSupport support;
-  if (body1_ != 0) support.bodies.push_back(body1_);
-  if (body2_ != 0 && body2_ != body1_) support.bodies.push_back(body2_);
-  return support;
+  return SupportOfBodies(body1_, body2_);
 }
 
 double PointToPointSpring::CalcPotentialEnergy(const engine::ForceContext& context) const {

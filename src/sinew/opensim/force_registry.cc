@@ -15,20 +15,6 @@ namespace {
 // them on load and flips the direction (see PointActuator / TorqueActuator updateFromXMLNode).
 constexpr int kRenamedActuatorVersion = 10905;
 
-// The last segment of a socket path ("/bodyset/rod1" -> "rod1"), or the name itself.
-std::string LastPathSegment(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-int MapBody(const model::ModelSpec& spec, const model::ElementValues& values,
-            const std::string& name, const std::vector<int>& body_map, const char* property) {
-  const int b = spec.FindBody(LastPathSegment(name));
-  if (b == model::kNone)
-    values.Fail(std::string(property) + " '" + name + "' is not a body of the model");
-  return body_map[b];
-}
-
 std::shared_ptr<forces::Actuator> MakePointActuator(const ForceBuildInput& in) {
   const model::ModelSpec& spec = in.spec;
   const model::ElementValues& v = in.values;
@@ -61,19 +47,6 @@ std::shared_ptr<forces::Actuator> MakeTorqueActuator(const ForceBuildInput& in) 
   return std::make_shared<forces::TorqueActuator>(
       in.force.name, v.Double("optimal_force", 1.0), MapBody(spec, v, body_a, body_map, "bodyA"),
       MapBody(spec, v, body_b, body_map, "bodyB"), axis, v.Bool("torque_is_global", true));
-}
-
-// The spec index of the coordinate a force names in `coordinate` (3.x and 4.x) or
-// `socket_coordinate`; fails when it is not in the model or not simulated.
-int SpecCoordinate(const ForceBuildInput& in) {
-  const model::ElementValues& v = in.values;
-  const std::string name =
-      LastPathSegment(v.FirstString({"coordinate", "socket_coordinate"}).value_or(""));
-  const int c = in.spec.FindCoordinate(name);
-  if (c == model::kNone) v.Fail("coordinate '" + name + "' is not a coordinate of the model");
-  if (in.coordinate_map[c] == model::kNone)
-    v.Fail("coordinate '" + name + "' belongs to no simulated joint");
-  return c;
 }
 
 std::shared_ptr<forces::Actuator> MakeCoordinateActuator(const ForceBuildInput& in) {
@@ -137,6 +110,12 @@ const ForceType* FindForceType(const std::string& opensim_class) {
       {"CoordinateLimitForce", {&BuildCoordinateLimitForce, false}},
       {"PointToPointSpring", {&BuildPointToPointSpring, false}},
       {"SpringGeneralizedForce", {&BuildSpringGeneralizedForce, false}},
+      {"BushingForce", {&BuildBushingForce, false}},
+      {"FunctionBasedBushingForce", {&BuildFunctionBasedBushingForce, false}},
+      {"ExpressionBasedBushingForce", {&BuildExpressionBasedBushingForce, false}},
+      {"ExpressionBasedCoordinateForce", {&BuildExpressionBasedCoordinateForce, false}},
+      {"ExpressionBasedPointToPointForce", {&BuildExpressionBasedPointToPointForce, false}},
+      {"PrescribedForce", {&BuildPrescribedForce, false}},
   };
   const auto it = registry.find(opensim_class);
   return it == registry.end() ? nullptr : &it->second;
