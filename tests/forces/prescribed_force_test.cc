@@ -56,7 +56,8 @@ TEST(PrescribedForceTest, GrowingForceMovesASliderAsTheClosedForm) {
     integrator->StepTo(state, t);
     worst = std::max(worst, std::abs(state.q[0] - 0.1 - t * t * t / 4.0));
   }
-  EXPECT_LT(worst, 1e-9);
+  // rk45 is exact for a cubic x(t) up to rounding.
+  EXPECT_LT(worst, 1e-13);
   std::cout << "prescribed force on a slider: worst error " << worst << " m\n";
 }
 
