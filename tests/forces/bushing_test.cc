@@ -47,8 +47,8 @@ double WorstSliderError(const std::string& file, double h0, ClosedForm closed_fo
   for (int k = 1; k <= 40; ++k) {
     const double t = 0.05 * k;
     integrator->StepTo(state, t);
-    worst = std::max(worst,
-                     std::abs(engine::GetCoordinateValue(*system, state, "ball_h") - closed_form(t)));
+    worst = std::max(
+        worst, std::abs(engine::GetCoordinateValue(*system, state, "ball_h") - closed_form(t)));
   }
   return worst;
 }
@@ -87,8 +87,8 @@ TEST(BushingForceTest, OpenSimsOffsetBushingModelIsTheDampedClosedForm) {
   const double h_eq = -3.0 + kG / 10.0;
   const double sigma = c_yy / 2.0, wd = std::sqrt(10.0 - sigma * sigma);
   const double a = 0.0 - h_eq, b = sigma * a / wd;
-  const double worst = WorstSliderError(
-      kOpenSimTests + "BushingForceOffsetModel_30000.osim", 0.0, [&](double t) {
+  const double worst =
+      WorstSliderError(kOpenSimTests + "BushingForceOffsetModel_30000.osim", 0.0, [&](double t) {
         return h_eq + std::exp(-sigma * t) * (a * std::cos(wd * t) + b * std::sin(wd * t));
       });
   EXPECT_LT(worst, 1e-9);  // 2.5e-10 m measured at accuracy 1e-10

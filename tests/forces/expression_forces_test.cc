@@ -61,7 +61,8 @@ std::string SliderModel(const std::string& forces) {
 <coordinates><Coordinate name="x"><default_value>0.1</default_value></Coordinate></coordinates>
 </SliderJoint></objects></JointSet>
 <ForceSet><objects>
-)" + forces + R"(
+)" + forces +
+         R"(
 </objects></ForceSet></Model></OpenSimDocument>)";
 }
 
@@ -143,8 +144,8 @@ TEST(ExpressionForceTest, MalformedExpressionsNameFileLineAndForce) {
 // BushingForceModel_30000.osim (3.x: a 1 kg ball on a vertical slider, coordinate ball_h) with
 // its BushingForce replaced by `bushing`.
 std::string BallWith(const std::string& bushing) {
-  std::ifstream in(kData +
-                   "/opensim-org/opensim-core/OpenSim/Simulation/Test/BushingForceModel_30000.osim");
+  std::ifstream in(
+      kData + "/opensim-org/opensim-core/OpenSim/Simulation/Test/BushingForceModel_30000.osim");
   std::stringstream buffer;
   buffer << in.rdbuf();
   std::string text = buffer.str();

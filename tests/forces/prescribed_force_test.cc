@@ -138,15 +138,17 @@ TEST(PrescribedForceTest, LoadsOnAnOffsetFrameFollowTheGlobalFlags) {
        load(r_global_point.cross(R_GF * F) + R_GF * T, R_GF * F)},
   };
   for (const Case& c : cases) {
-    const std::string force = "<PrescribedForce name=\"p\"><socket_frame>/bodyset/box/box_offset"
-                              "</socket_frame>" +
-                              std::string(c.flags) + kFunctions + "</PrescribedForce>";
+    const std::string force =
+        "<PrescribedForce name=\"p\"><socket_frame>/bodyset/box/box_offset"
+        "</socket_frame>" +
+        std::string(c.flags) + kFunctions + "</PrescribedForce>";
     EXPECT_TRUE(BoxLoad(force, t).isApprox(c.expected, 1e-13)) << c.flags;
   }
   // OpenSim's defaults are forceIsGlobal true, pointIsGlobal false.
-  const std::string defaults = "<PrescribedForce name=\"p\"><socket_frame>/bodyset/box/box_offset"
-                               "</socket_frame>" +
-                               std::string(kFunctions) + "</PrescribedForce>";
+  const std::string defaults =
+      "<PrescribedForce name=\"p\"><socket_frame>/bodyset/box/box_offset"
+      "</socket_frame>" +
+      std::string(kFunctions) + "</PrescribedForce>";
   EXPECT_TRUE(BoxLoad(defaults, t).isApprox(cases[0].expected, 1e-13));
 }
 

@@ -1,7 +1,6 @@
+#include <muParser.h>
 #include <sinew/common/error.h>
 #include <sinew/forces/expression.h>
-
-#include <muParser.h>
 
 #include <algorithm>
 #include <cctype>

@@ -20,8 +20,8 @@ struct PrescribedForceParameters {
   std::optional<VectorOfTime> force;   ///< forceFunctions (N); none: no force
   std::optional<VectorOfTime> point;   ///< pointFunctions (m); none: the frame's origin
   std::optional<VectorOfTime> torque;  ///< torqueFunctions (N m); none: no torque
-  bool force_is_global = true;  ///< forceIsGlobal: force and torque in G, else in the frame
-  bool point_is_global = false;  ///< pointIsGlobal: point in G, else in the frame
+  bool force_is_global = true;         ///< forceIsGlobal: force and torque in G, else in the frame
+  bool point_is_global = false;        ///< pointIsGlobal: point in G, else in the frame
 };
 
 /// Applies, at time t, the force F(t) at the point P(t) and the torque T(t) to the body the

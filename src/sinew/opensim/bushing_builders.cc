@@ -23,8 +23,8 @@ forces::LinkedFrames LinkedFramesOf(const ForceBuildInput& in) {
 Vec6 RotationalTranslational(const ForceBuildInput& in, const char* rotational,
                              const char* translational) {
   Vec6 values;
-  values << in.values.Vector3(rotational, Vec3::Zero()), in.values.Vector3(translational,
-                                                                           Vec3::Zero());
+  values << in.values.Vector3(rotational, Vec3::Zero()),
+      in.values.Vector3(translational, Vec3::Zero());
   if ((values.array() < 0.0).any()) {
     in.values.Fail(std::string("<") + rotational + "> and <" + translational +
                    "> must not be negative");

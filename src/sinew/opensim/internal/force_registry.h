@@ -49,10 +49,9 @@ int SpecCoordinate(const ForceBuildInput& in);
 std::pair<int, Transform> MapFrame(const ForceBuildInput& in, const std::string& socket);
 /// The formula in property `tag` (`fallback` when absent) in `variables`; a malformed one fails
 /// at the property's line, naming the force.
-std::shared_ptr<const forces::Expression> ParseExpression(const ForceBuildInput& in,
-                                                          const char* tag,
-                                                          const std::string& fallback,
-                                                          const std::vector<std::string>& variables);
+std::shared_ptr<const forces::Expression> ParseExpression(
+    const ForceBuildInput& in, const char* tag, const std::string& fallback,
+    const std::vector<std::string>& variables);
 
 // ---- builders defined beside their kind of force ----
 
