@@ -18,24 +18,18 @@
 #include <sstream>
 #include <string>
 
+#include "forces/osim_text_models.h"
+
 namespace sinew {
 namespace {
 
 const std::string kData = SINEW_TEST_DATA_DIR;
 
-struct Parsed {
-  std::unique_ptr<engine::System> system;
-  opensim::Report report;
-};
+using Parsed = testing::ParsedModel;
+using testing::SliderModel;
 
 Parsed ParseText(const std::string& text, const std::string& file) {
-  opensim::OpenSimParser parser;
-  const model::ModelSpec spec = io::ReadOsimString(text, file);
-  Parsed parsed{std::make_unique<engine::System>(spec.gravity), {}};
-  parser.ParseSpec(*parsed.system, spec);
-  parsed.system->Finalize();
-  parsed.report = parser.GetReport();
-  return parsed;
+  return testing::ParseOsimText(text, file);
 }
 
 // The loads of the force named `name` alone.
@@ -47,23 +41,6 @@ engine::Loads LoadsOf(const Parsed& p, const engine::State& state, const std::st
   engine::Loads loads(p.system->num_bodies(), p.system->num_coordinates());
   elements[k]->AddLoads(p.system->MakeForceContext(k, state), loads);
   return loads;
-}
-
-// A 2 kg block on a slider along ground's x (coordinate x), in a 4.x file, with `forces` in its
-// ForceSet.
-std::string SliderModel(const std::string& forces) {
-  return R"(<OpenSimDocument Version="40000"><Model name="slider">
-<gravity>0 -9.80665 0</gravity><Ground name="ground"/>
-<BodySet><objects><Body name="block"><mass>2</mass><inertia>0.1 0.1 0.1 0 0 0</inertia></Body>
-</objects></BodySet>
-<JointSet><objects><SliderJoint name="slide"><socket_parent_frame>/ground</socket_parent_frame>
-<socket_child_frame>/bodyset/block</socket_child_frame>
-<coordinates><Coordinate name="x"><default_value>0.1</default_value></Coordinate></coordinates>
-</SliderJoint></objects></JointSet>
-<ForceSet><objects>
-)" + forces +
-         R"(
-</objects></ForceSet></Model></OpenSimDocument>)";
 }
 
 TEST(ExpressionForceTest, CoordinateForceSpringFollowsTheClosedForm) {

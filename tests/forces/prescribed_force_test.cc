@@ -15,34 +15,26 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <utility>
+
+#include "forces/osim_text_models.h"
 
 namespace sinew {
 namespace {
 
 std::unique_ptr<engine::System> ParseText(const std::string& text, opensim::Report* report) {
-  opensim::OpenSimParser parser;
-  const model::ModelSpec spec = io::ReadOsimString(text, "prescribed.osim");
-  auto system = std::make_unique<engine::System>(spec.gravity);
-  parser.ParseSpec(*system, spec);
-  system->Finalize();
-  *report = parser.GetReport();
-  return system;
+  testing::ParsedModel parsed = testing::ParseOsimText(text, "prescribed.osim");
+  *report = parsed.report;
+  return std::move(parsed.system);
 }
 
 TEST(PrescribedForceTest, GrowingForceMovesASliderAsTheClosedForm) {
   // F = 3 t along the slider (ground x) on a 2 kg block from rest at 0.1: x = 0.1 + t^3 / 4.
-  const std::string text = R"(<OpenSimDocument Version="40000"><Model name="m">
-<gravity>0 -9.80665 0</gravity><Ground name="ground"/>
-<BodySet><objects><Body name="block"><mass>2</mass><inertia>0.1 0.1 0.1 0 0 0</inertia></Body>
-</objects></BodySet>
-<JointSet><objects><SliderJoint name="slide"><socket_parent_frame>/ground</socket_parent_frame>
-<socket_child_frame>/bodyset/block</socket_child_frame>
-<coordinates><Coordinate name="x"><default_value>0.1</default_value></Coordinate></coordinates>
-</SliderJoint></objects></JointSet>
-<ForceSet><objects><PrescribedForce name="push"><socket_frame>/bodyset/block</socket_frame>
+  const std::string text = testing::SliderModel(
+      R"(<PrescribedForce name="push"><socket_frame>/bodyset/block</socket_frame>
 <forceFunctions><objects><LinearFunction><coefficients>3 0</coefficients></LinearFunction>
 <Constant><value>0</value></Constant><Constant><value>0</value></Constant></objects>
-</forceFunctions></PrescribedForce></objects></ForceSet></Model></OpenSimDocument>)";
+</forceFunctions></PrescribedForce>)");
   opensim::Report report;
   auto system = ParseText(text, &report);
   ASSERT_TRUE(report.not_simulated().empty());
