@@ -22,6 +22,18 @@ int MapBody(const model::ModelSpec& spec, const model::ElementValues& values,
   return body_map[b];
 }
 
+PointsOnBodies MapPointsOnBodies(const ForceBuildInput& in) {
+  const model::ElementValues& v = in.values;
+  PointsOnBodies p;
+  p.body1 = MapBody(in.spec, v, v.FirstString({"socket_body1", "body1"}).value_or(""), in.body_map,
+                    "body1");
+  p.body2 = MapBody(in.spec, v, v.FirstString({"socket_body2", "body2"}).value_or(""), in.body_map,
+                    "body2");
+  p.point1 = v.Vector3("point1", Vec3::Zero());
+  p.point2 = v.Vector3("point2", Vec3::Zero());
+  return p;
+}
+
 int SpecCoordinate(const ForceBuildInput& in) {
   const model::ElementValues& v = in.values;
   const std::string name =

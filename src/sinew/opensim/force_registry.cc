@@ -62,13 +62,10 @@ std::shared_ptr<engine::ForceElement> BuildSpringGeneralizedForce(const ForceBui
 }
 
 std::shared_ptr<engine::ForceElement> BuildPointToPointSpring(const ForceBuildInput& in) {
-  const model::ElementValues& v = in.values;
-  const std::string body1 = v.FirstString({"socket_body1", "body1"}).value_or("");
-  const std::string body2 = v.FirstString({"socket_body2", "body2"}).value_or("");
-  return std::make_shared<forces::PointToPointSpring>(
-      in.force.name, MapBody(in.spec, v, body1, in.body_map, "body1"),
-      v.Vector3("point1", Vec3::Zero()), MapBody(in.spec, v, body2, in.body_map, "body2"),
-      v.Vector3("point2", Vec3::Zero()), v.Double("stiffness", 1.0), v.Double("rest_length", 0.0));
+  const PointsOnBodies p = MapPointsOnBodies(in);
+  return std::make_shared<forces::PointToPointSpring>(in.force.name, p.body1, p.point1, p.body2,
+                                                      p.point2, in.values.Double("stiffness", 1.0),
+                                                      in.values.Double("rest_length", 0.0));
 }
 
 std::shared_ptr<engine::ForceElement> BuildCoordinateLimitForce(const ForceBuildInput& in) {

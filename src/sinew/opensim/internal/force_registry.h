@@ -41,6 +41,16 @@ struct ForceType {
 /// naming `property` when the model has no such body.
 int MapBody(const model::ModelSpec& spec, const model::ElementValues& values,
             const std::string& name, const std::vector<int>& body_map, const char* property);
+/// Two points, each fixed to a body (engine indices; points in the body's frame).
+struct PointsOnBodies {
+  int body1 = 0;
+  Vec3 point1 = Vec3::Zero();
+  int body2 = 0;
+  Vec3 point2 = Vec3::Zero();
+};
+/// The bodies a point-to-point force names (`body1`/`socket_body1`, `body2`/`socket_body2`)
+/// and its `point1`, `point2`; fails naming the property when a body does not exist.
+PointsOnBodies MapPointsOnBodies(const ForceBuildInput& in);
 /// The spec index of the coordinate a force names in `coordinate` (3.x and 4.x) or
 /// `socket_coordinate`; fails when it is not in the model or not simulated.
 int SpecCoordinate(const ForceBuildInput& in);
