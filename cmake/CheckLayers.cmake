@@ -36,7 +36,7 @@ foreach(name ${layers})
     endforeach()
     # Public headers must not expose implementation libraries.
     if(f MATCHES "\\.h$" AND NOT f MATCHES "/internal/")
-      file(STRINGS ${f} leaks REGEX "^#include [<\"](pugixml|zlib|nlohmann/|CLI/)")
+      file(STRINGS ${f} leaks REGEX "^#include [<\"](pugixml|zlib|nlohmann/|CLI/|muParser)")
       foreach(line ${leaks})
         file(RELATIVE_PATH rel ${SOURCE_DIR} ${f})
         string(APPEND violations "  ${rel}: public header includes an implementation library (${line})\n")

@@ -12,7 +12,7 @@ cmake --install "$build" --prefix "$prefix" >/dev/null
 # Public headers only: no internal/ folder, no header that includes an implementation library.
 include="$prefix/include"
 private=$(find "$include" -path '*/internal/*' -o -name 'internal' | sort)
-leaks=$(grep -rlE '^#include [<"](pugixml|zlib|nlohmann/|CLI/)' "$include" || true)
+leaks=$(grep -rlE '^#include [<"](pugixml|zlib|nlohmann/|CLI/|muParser)' "$include" || true)
 if [ -n "$private$leaks" ]; then
   echo "install check: private headers installed:" >&2
   printf '  %s\n' $private $leaks >&2

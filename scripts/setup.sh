@@ -2,7 +2,7 @@
 # Installs every dependency Sinew needs from Debian packages. Idempotent: quick when all is there.
 set -euo pipefail
 packages=(cmake ninja-build ccache g++ clang libclang-rt-14-dev
-  libeigen3-dev libpugixml-dev libcli11-dev nlohmann-json3-dev zlib1g-dev
+  libeigen3-dev libpugixml-dev libcli11-dev nlohmann-json3-dev zlib1g-dev libmuparser-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   chromium)
 missing=()

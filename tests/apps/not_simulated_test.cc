@@ -23,7 +23,8 @@ const std::string kArm26 = kData + "/opensim-org/opensim-models/Models/Arm26/arm
 
 // Counts in the file itself (an XML parser, not Sinew's reader): the ForceSet's elements whose
 // class ends in "Muscle", the forces Sinew simulates (Point, Torque and CoordinateActuator,
-// SpringGeneralizedForce, PointToPointSpring, CoordinateLimitForce) and its other forces, the
+// SpringGeneralizedForce, PointToPointSpring, CoordinateLimitForce, the bushings, the
+// expression-based forces, PrescribedForce) and its other forces, the
 // ConstraintSet's CoordinateCouplerConstraints (simulated) and other elements, and every body's
 // WrapObjectSet's.
 struct FileCounts {
@@ -41,7 +42,10 @@ FileCounts CountInFile(const std::string& osim) {
       ++counts.muscles;
     } else if (tag == "PointActuator" || tag == "TorqueActuator" || tag == "CoordinateActuator" ||
                tag == "SpringGeneralizedForce" || tag == "PointToPointSpring" ||
-               tag == "CoordinateLimitForce") {
+               tag == "CoordinateLimitForce" || tag == "BushingForce" ||
+               tag == "FunctionBasedBushingForce" || tag == "ExpressionBasedBushingForce" ||
+               tag == "ExpressionBasedCoordinateForce" ||
+               tag == "ExpressionBasedPointToPointForce" || tag == "PrescribedForce") {
       ++counts.simulated_forces;
     } else {
       ++counts.other_forces;

@@ -24,6 +24,20 @@ TEST(RotationTest, AnglesRoundTrip) {
   }
 }
 
+TEST(RotationTest, AngleRatesFromAngularVelocityInvertTheDifferencedAngularVelocity) {
+  // Along angles(t) = a + t r, the angular velocity in the rotated frame is the axial vector
+  // of R^T dR/dt (central differences, error ~1e-12); N must map it back to r.
+  const Vec3 a(0.3, -0.4, 1.1), r(0.7, -1.3, 0.4);
+  constexpr double kStep = 1e-6;
+  const Mat3 R = RotationFromBodyFixedXYZ(a);
+  const Mat3 dR =
+      (RotationFromBodyFixedXYZ(a + kStep * r) - RotationFromBodyFixedXYZ(a - kStep * r)) /
+      (2 * kStep);
+  const Mat3 W = R.transpose() * dR;  // [w_M]x
+  const Vec3 w_M(W(2, 1), W(0, 2), W(1, 0));
+  EXPECT_TRUE((BodyFixedXYZRatesFromAngularVelocity(a) * w_M).isApprox(r, 1e-9));
+}
+
 TEST(TransformTest, InverseAndComposition) {
   Transform X_AB(RotationFromBodyFixedXYZ(Vec3(0.1, 0.2, 0.3)), Vec3(1, 2, 3));
   Transform X_BC(RotationAboutAxis(Vec3(1, 1, 0), 0.7), Vec3(-1, 0.5, 2));

@@ -3,6 +3,7 @@
 #include <sinew/engine/state.h>
 #include <sinew/engine/system.h>
 #include <sinew/forces/point_to_point_spring.h>
+#include <sinew/forces/two_frame_linker.h>
 
 #include <utility>
 
@@ -65,10 +66,7 @@ void PointToPointSpring::CalcRecordValues(const engine::ForceContext& context,
 }
 
 std::optional<engine::ForceSupport> PointToPointSpring::Support() const {
-  engine::ForceSupport support;
-  if (body1_ != 0) support.bodies.push_back(body1_);
-  if (body2_ != 0 && body2_ != body1_) support.bodies.push_back(body2_);
-  return support;
+  return SupportOfBodies(body1_, body2_);
 }
 
 double PointToPointSpring::CalcPotentialEnergy(const engine::ForceContext& context) const {

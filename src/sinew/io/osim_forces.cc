@@ -200,6 +200,7 @@ void ReadForces(ReadContext& ctx, const pugi::xml_node& model) {
     if (pugi::xml_node coordinate = node.child("coordinate")) {
       if (!XmlDocument::Text(coordinate).empty()) ResolveCoordinate(ctx, coordinate, force.path);
     }
+    ReadForceAttachments(ctx, node, force);
     force.element = ToElement(doc, node);
     force.where = doc.Where(node);
     ctx.spec().forces.push_back(std::move(force));

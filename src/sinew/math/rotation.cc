@@ -24,6 +24,18 @@ Vec3 BodyFixedXYZFromRotation(const Mat3& R) {
   return {std::atan2(R(2, 1), R(1, 1)), b, 0.0};
 }
 
+Mat3 BodyFixedXYZRatesFromAngularVelocity(const Vec3& angles) {
+  // With R = Rx(a) Ry(b) Rz(c), w_M = adot (cb cc, -cb sc, sb) + bdot (sc, cc, 0) + cdot (0, 0, 1);
+  // N is the inverse of that map.
+  const double sb = std::sin(angles.y()), cb = std::cos(angles.y());
+  const double sc = std::sin(angles.z()), cc = std::cos(angles.z());
+  Mat3 N;
+  N << cc / cb, -sc / cb, 0.0,  //
+      sc, cc, 0.0,              //
+      -sb * cc / cb, sb * sc / cb, 1.0;
+  return N;
+}
+
 Mat3 RotationAboutAxis(const Vec3& axis, double angle) {
   return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
 }

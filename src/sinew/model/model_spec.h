@@ -168,6 +168,13 @@ struct GeometryPathSpec {
   std::vector<PathWrapSpec> wraps;
 };
 
+/// A frame a force is attached to through one of its sockets, resolved to its body.
+struct ForceFrameSpec {
+  std::string path;         ///< The frame's absolute path ("/forceset/bushing/ball_offset").
+  int body = kGroundIndex;  ///< The body it is fixed to.
+  Transform X_BF;           ///< Its pose in that body's frame.
+};
+
 /// A force or actuator (muscles included). Type-specific properties stay in `element`.
 struct ForceSpec {
   std::string name;
@@ -175,6 +182,14 @@ struct ForceSpec {
   std::string type;  ///< OpenSim class name
   bool applies_force = true;
   std::optional<GeometryPathSpec> geometry_path;
+  /// Frames named by the force's frame sockets, by socket name: "frame1" and "frame2" (4.x
+  /// socket_frame1/2, or 3.x body_1/body_2 offset by location_body_i/orientation_body_i as
+  /// OpenSim's upgrade does), "frame" (socket_frame).
+  std::map<std::string, ForceFrameSpec, std::less<>> frames;
+  /// Function-valued properties of the classes whose builders need them, by property name: one
+  /// function for a Function property (FunctionBasedBushingForce's m_x_theta_x_function), the
+  /// members in order for a FunctionSet (PrescribedForce's forceFunctions).
+  std::map<std::string, std::vector<functions::FunctionPtr>, std::less<>> functions;
   Element element;
   SourceLocation where;
 };

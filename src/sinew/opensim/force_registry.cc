@@ -16,23 +16,6 @@ namespace {
 // them on load and flips the direction (see PointActuator / TorqueActuator updateFromXMLNode).
 constexpr int kRenamedActuatorVersion = 10905;
 
-}  // namespace
-
-std::string LastPathSegment(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-namespace {
-
-int MapBody(const model::ModelSpec& spec, const model::ElementValues& values,
-            const std::string& name, const std::vector<int>& body_map, const char* property) {
-  const int b = spec.FindBody(LastPathSegment(name));
-  if (b == model::kNone)
-    values.Fail(std::string(property) + " '" + name + "' is not a body of the model");
-  return body_map[b];
-}
-
 std::shared_ptr<forces::Actuator> MakePointActuator(const ForceBuildInput& in) {
   const model::ModelSpec& spec = in.spec;
   const model::ElementValues& v = in.values;
@@ -67,19 +50,6 @@ std::shared_ptr<forces::Actuator> MakeTorqueActuator(const ForceBuildInput& in) 
       MapBody(spec, v, body_b, body_map, "bodyB"), axis, v.Bool("torque_is_global", true));
 }
 
-// The spec index of the coordinate a force names in `coordinate` (3.x and 4.x) or
-// `socket_coordinate`; fails when it is not in the model or not simulated.
-int SpecCoordinate(const ForceBuildInput& in) {
-  const model::ElementValues& v = in.values;
-  const std::string name =
-      LastPathSegment(v.FirstString({"coordinate", "socket_coordinate"}).value_or(""));
-  const int c = in.spec.FindCoordinate(name);
-  if (c == model::kNone) v.Fail("coordinate '" + name + "' is not a coordinate of the model");
-  if (in.coordinate_map[c] == model::kNone)
-    v.Fail("coordinate '" + name + "' belongs to no simulated joint");
-  return c;
-}
-
 std::shared_ptr<forces::Actuator> MakeCoordinateActuator(const ForceBuildInput& in) {
   return std::make_shared<forces::CoordinateActuator>(
       in.force.name, in.values.Double("optimal_force", 1.0), in.coordinate_map[SpecCoordinate(in)]);
@@ -93,13 +63,10 @@ std::shared_ptr<engine::ForceElement> BuildSpringGeneralizedForce(const ForceBui
 }
 
 std::shared_ptr<engine::ForceElement> BuildPointToPointSpring(const ForceBuildInput& in) {
-  const model::ElementValues& v = in.values;
-  const std::string body1 = v.FirstString({"socket_body1", "body1"}).value_or("");
-  const std::string body2 = v.FirstString({"socket_body2", "body2"}).value_or("");
-  return std::make_shared<forces::PointToPointSpring>(
-      in.force.name, MapBody(in.spec, v, body1, in.body_map, "body1"),
-      v.Vector3("point1", Vec3::Zero()), MapBody(in.spec, v, body2, in.body_map, "body2"),
-      v.Vector3("point2", Vec3::Zero()), v.Double("stiffness", 1.0), v.Double("rest_length", 0.0));
+  const PointsOnBodies p = MapPointsOnBodies(in);
+  return std::make_shared<forces::PointToPointSpring>(in.force.name, p.body1, p.point1, p.body2,
+                                                      p.point2, in.values.Double("stiffness", 1.0),
+                                                      in.values.Double("rest_length", 0.0));
 }
 
 std::shared_ptr<engine::ForceElement> BuildCoordinateLimitForce(const ForceBuildInput& in) {
@@ -142,6 +109,12 @@ const ForceType* FindForceType(const std::string& opensim_class) {
       {"ExternalForce", {&BuildExternalForce, false}},
       {"PointToPointSpring", {&BuildPointToPointSpring, false}},
       {"SpringGeneralizedForce", {&BuildSpringGeneralizedForce, false}},
+      {"BushingForce", {&BuildBushingForce, false}},
+      {"FunctionBasedBushingForce", {&BuildFunctionBasedBushingForce, false}},
+      {"ExpressionBasedBushingForce", {&BuildExpressionBasedBushingForce, false}},
+      {"ExpressionBasedCoordinateForce", {&BuildExpressionBasedCoordinateForce, false}},
+      {"ExpressionBasedPointToPointForce", {&BuildExpressionBasedPointToPointForce, false}},
+      {"PrescribedForce", {&BuildPrescribedForce, false}},
   };
   const auto it = registry.find(opensim_class);
   return it == registry.end() ? nullptr : &it->second;

@@ -175,6 +175,9 @@ void ReadVisibleObject(ReadContext& ctx, const pugi::xml_node& visible, int body
 void ReadJoints(ReadContext& ctx, const pugi::xml_node& model);
 /// Forces (muscles included) and their geometry paths.
 void ReadForces(ReadContext& ctx, const pugi::xml_node& model);
+/// The frames a force's sockets name and the function-valued properties its builder needs
+/// (ForceSpec::frames, ForceSpec::functions).
+void ReadForceAttachments(ReadContext& ctx, const pugi::xml_node& node, model::ForceSpec& force);
 /// Constraints, markers, contact geometry, controllers, probes and other components.
 void ReadOtherComponents(ReadContext& ctx, const pugi::xml_node& model);
 /// Checks the assembled spec: duplicate names, bodies not connected to ground, cycles.

@@ -7,11 +7,13 @@
 #include <sinew/common/error.h>
 #include <sinew/engine/force_element.h>
 #include <sinew/io/external_loads.h>
+#include <sinew/forces/expression.h>
 #include <sinew/model/element_values.h>
 #include <sinew/model/model_spec.h>
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sinew::opensim::internal {
@@ -38,6 +40,48 @@ struct ForceType {
   /// True for actuators (forces::Actuator: one excitation input, listed with its source).
   bool actuator = false;
 };
+
+// ---- what builders share (force_build_helpers.cc) ----
+
+/// The engine index of the body `name` (a body name or a path ending in one) names; fails
+/// naming `property` when the model has no such body.
+int MapBody(const model::ModelSpec& spec, const model::ElementValues& values,
+            const std::string& name, const std::vector<int>& body_map, const char* property);
+/// Two points, each fixed to a body (engine indices; points in the body's frame).
+struct PointsOnBodies {
+  int body1 = 0;
+  Vec3 point1 = Vec3::Zero();
+  int body2 = 0;
+  Vec3 point2 = Vec3::Zero();
+};
+/// The bodies a point-to-point force names (`body1`/`socket_body1`, `body2`/`socket_body2`)
+/// and its `point1`, `point2`; fails naming the property when a body does not exist.
+PointsOnBodies MapPointsOnBodies(const ForceBuildInput& in);
+/// The spec index of the coordinate a force names in `coordinate` (3.x and 4.x) or
+/// `socket_coordinate`; fails when it is not in the model or not simulated.
+int SpecCoordinate(const ForceBuildInput& in);
+/// The engine body and the pose in it (X_BF) of the frame the force's socket `socket` names
+/// ("frame1", "frame2", "frame": ForceSpec::frames); fails when the force names none.
+std::pair<int, Transform> MapFrame(const ForceBuildInput& in, const std::string& socket);
+/// The formula in property `tag` (`fallback` when absent) in `variables`; a malformed one fails
+/// at the property's line, naming the force.
+std::shared_ptr<const forces::Expression> ParseExpression(
+    const ForceBuildInput& in, const char* tag, const std::string& fallback,
+    const std::vector<std::string>& variables);
+
+// ---- builders defined beside their kind of force ----
+
+/// BushingForce, FunctionBasedBushingForce, ExpressionBasedBushingForce (bushing_builders.cc).
+std::shared_ptr<engine::ForceElement> BuildBushingForce(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildFunctionBasedBushingForce(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildExpressionBasedBushingForce(const ForceBuildInput& in);
+/// ExpressionBasedCoordinateForce, ExpressionBasedPointToPointForce (expression_builders.cc).
+std::shared_ptr<engine::ForceElement> BuildExpressionBasedCoordinateForce(
+    const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildExpressionBasedPointToPointForce(
+    const ForceBuildInput& in);
+/// PrescribedForce (prescribed_force_builder.cc).
+std::shared_ptr<engine::ForceElement> BuildPrescribedForce(const ForceBuildInput& in);
 
 /// The entry for OpenSim class `opensim_class`, or null when Sinew does not simulate it.
 const ForceType* FindForceType(const std::string& opensim_class);
