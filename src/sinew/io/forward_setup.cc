@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <string_view>
 
 namespace sinew::io {
@@ -16,6 +17,12 @@ using internal::XmlDocument;
 
 // OpenSim renamed these properties (AbstractTool::updateFromXMLNode); both names are read.
 constexpr int kVersionActuatorNames = 10904;  // replace_actuator_set, actuator_set_files
+
+std::string FormatNumber(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
 
 bool IsUnassigned(std::string_view text) { return text.empty() || text == "Unassigned"; }
 
@@ -54,8 +61,8 @@ class SetupReader {
     }
     if (!(setup_.final_time > setup_.initial_time)) {
       doc_.Fail(tool.child("final_time") ? tool.child("final_time") : tool, Component(),
-                "final_time (" + std::to_string(setup_.final_time) +
-                    ") must be after initial_time (" + std::to_string(setup_.initial_time) + ")");
+                "final_time (" + FormatNumber(setup_.final_time) +
+                    ") must be after initial_time (" + FormatNumber(setup_.initial_time) + ")");
     }
     if (setup_.results_directory.empty()) setup_.results_directory = SetupFolder(setup_.file);
   }
