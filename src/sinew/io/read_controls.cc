@@ -1,3 +1,4 @@
+#include <sinew/functions/constant.h>
 #include <sinew/functions/control_linear.h>
 #include <sinew/io/internal/xml_document.h>
 #include <sinew/io/read_controls.h>
@@ -49,6 +50,14 @@ functions::FunctionPtr ReadControlLinear(const internal::XmlDocument& doc,
       ReadOptionalBool(doc, control, "extrapolate", component, true));
 }
 
+// A ControlConstant: its `value` at every time (0 when absent, as in OpenSim).
+functions::FunctionPtr ReadControlConstant(const internal::XmlDocument& doc,
+                                           const pugi::xml_node& control,
+                                           const std::string& component) {
+  const pugi::xml_node value = control.child("value");
+  return std::make_shared<functions::Constant>(value ? doc.ReadDouble(value, component) : 0.0);
+}
+
 // The controls of a parsed ControlSet document.
 std::map<std::string, functions::FunctionPtr> ReadControls(const internal::XmlDocument& doc) {
   pugi::xml_node set = doc.root();
@@ -62,12 +71,17 @@ std::map<std::string, functions::FunctionPtr> ReadControls(const internal::XmlDo
     if (control.type() != pugi::node_element) continue;
     const std::string name = control.attribute("name").value();
     const std::string component = "/controlset/" + name;
-    if (std::string_view(control.name()) != "ControlLinear") {
+    const std::string_view type = control.name();
+    if (type != "ControlLinear" && type != "ControlConstant") {
       doc.Fail(control, component,
-               "control type <" + std::string(control.name()) + "> is not supported");
+               "control type <" + std::string(type) +
+                   "> is not supported (ControlLinear and ControlConstant are)");
     }
     const std::string actuator = ActuatorOfControl(name);
-    if (!controls.emplace(actuator, ReadControlLinear(doc, control, component)).second) {
+    functions::FunctionPtr function = type == "ControlLinear"
+                                          ? ReadControlLinear(doc, control, component)
+                                          : ReadControlConstant(doc, control, component);
+    if (!controls.emplace(actuator, std::move(function)).second) {
       doc.Fail(control, component, "a second control for actuator '" + actuator + "'");
     }
   }
