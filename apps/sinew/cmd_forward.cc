@@ -40,6 +40,11 @@ void RunForward(const ForwardOptions& options) {
   for (const Diagnostic& note : setup.notes) {
     std::cerr << "sinew: note: " << note.Format() << "\n";
   }
+  for (const Diagnostic& warning : setup.warnings) {
+    if (options.strict)
+      throw Error(warning.where, warning.component, warning.message + " (--strict)");
+    std::cerr << "sinew: warning: " << warning.Format() << "\n";
+  }
   const std::string model_path = options.model.empty() ? setup.model_file : options.model;
   if (model_path.empty()) {
     throw Error({options.setup, 0}, "/" + setup.name,
@@ -119,7 +124,7 @@ void AddForwardCommand(CLI::App& app) {
                   "Time between output rows (s, default 0.01)")
       ->check(FiniteNumber(0.0, true));
   cmd->add_flag("--strict", options->strict,
-                "Fail (exit code 2) if anything in the model or the states file is "
+                "Fail (exit code 2) if anything in the setup, the model or the states file is "
                 "approximated, not simulated or not used");
   cmd->add_flag("--quiet", options->quiet,
                 "No progress bar or summary (warnings are still printed)");

@@ -129,11 +129,17 @@ TEST_F(ForwardTest, PendulumSetupsFollowThePendulumEquation) {
   ASSERT_EQ(Forward(kForward + "pendulum_Setup_Forward.xml", "g").exit_code, 0);
   const testing::CliRun ext = Forward(kForward + "pendulum_ext_gravity_Setup_Forward.xml", "ext");
   ASSERT_EQ(ext.exit_code, 0) << ext.err;
-  // Its PointKinematics analysis is named as not run.
-  EXPECT_NE(ext.err.find("pendulum_ext_gravity_Setup_Forward.xml:36: /pendulum_ext_gravity: "
+  // Its PointKinematics analysis is named as not run, and --strict refuses that.
+  EXPECT_NE(ext.err.find("sinew: warning: " + kForward +
+                         "pendulum_ext_gravity_Setup_Forward.xml:36: /pendulum_ext_gravity: "
                          "analysis PointKinematics is not run"),
             std::string::npos)
       << ext.err;
+  const testing::CliRun strict =
+      Forward(kForward + "pendulum_ext_gravity_Setup_Forward.xml", "strict", "--strict");
+  EXPECT_EQ(strict.exit_code, 2);
+  EXPECT_NE(strict.err.find("analysis PointKinematics is not run"), std::string::npos)
+      << strict.err;
   const Columns g = ReadStoColumns(Path("g/pendulum_states.sto"));
   const Columns e = ReadStoColumns(Path("ext/pendulum_ext_gravity_states.sto"));
   const std::string value = PathLabel(g, "Pendulum_r1", "value");

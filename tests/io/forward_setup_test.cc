@@ -59,6 +59,7 @@ TEST(ForwardSetupTest, ReadsSubject01WithPathsRelativeToTheSetup) {
   EXPECT_EQ(setup.external_loads_file, in_folder("subject01_GRFs.xml"));
   EXPECT_EQ(setup.states_file, in_folder("std_subject01_walk1_states.sto"));
   EXPECT_TRUE(setup.notes.empty()) << setup.notes.front().Format();
+  EXPECT_TRUE(setup.warnings.empty()) << setup.warnings.front().Format();
 }
 
 // OpenSim's defaults for what a setup leaves out; an empty results_directory is the setup's
@@ -102,21 +103,24 @@ TEST(ForwardSetupTest, ControllerFlagsAndOldNamesOfEveryLayout) {
   EXPECT_EQ(old.force_set_files, (std::vector<std::string>{"/setups/a.xml", "/setups/b.xml"}));
 }
 
-// What does not change the motion is a note naming its line: analyses, unknown settings,
-// disabled controllers, corrective spring settings (ignored since 1.9.4).
+// What does not change the motion names its line: analyses not run and unknown settings as
+// warnings (OpenSim would act on them), corrective spring settings as a note (OpenSim ignores
+// them since 1.9.4).
 TEST(ForwardSetupTest, SettingsThatDoNotChangeTheMotionAreNotesWithTheirLine) {
   const ForwardSetup setup = ParseTool(
       "<AnalysisSet><objects><Kinematics name=\"k\"><on>true</on></Kinematics>"
       "<Actuation><on>false</on></Actuation></objects></AnalysisSet>\n"
       "<colour>red</colour>\n<body1_linear_corrective_spring_active>false"
       "</body1_linear_corrective_spring_active>");
-  ASSERT_EQ(setup.notes.size(), 3u);
-  EXPECT_EQ(setup.notes[0].where.line, 3);
-  EXPECT_NE(setup.notes[0].message.find("analysis Kinematics 'k' is not run"), std::string::npos);
-  EXPECT_EQ(setup.notes[1].Format(),
+  ASSERT_EQ(setup.warnings.size(), 2u);
+  EXPECT_EQ(setup.warnings[0].where.line, 3);
+  EXPECT_NE(setup.warnings[0].message.find("analysis Kinematics 'k' is not run"),
+            std::string::npos);
+  EXPECT_EQ(setup.warnings[1].Format(),
             "/setups/run_Setup_Forward.xml:4: /run: unknown setting <colour> ignored");
-  EXPECT_EQ(setup.notes[2].where.line, 5);
-  EXPECT_NE(setup.notes[2].message.find("corrective spring"), std::string::npos);
+  ASSERT_EQ(setup.notes.size(), 1u);
+  EXPECT_EQ(setup.notes[0].where.line, 5);
+  EXPECT_NE(setup.notes[0].message.find("corrective spring"), std::string::npos);
 }
 
 // What would change the results and is not supported is an error naming file, line and

@@ -70,6 +70,10 @@ class SetupReader {
  private:
   std::string Component() const { return "/" + setup_.name; }
 
+  void Warn(const pugi::xml_node& node, const std::string& message) {
+    setup_.warnings.push_back({doc_.Where(node), Component(), message});
+  }
+
   void Note(const pugi::xml_node& node, const std::string& message) {
     setup_.notes.push_back({doc_.Where(node), Component(), message});
   }
@@ -144,7 +148,7 @@ class SetupReader {
                tag == "external_loads_body1" || tag == "external_loads_body2") {
       if (!IsUnassigned(text)) Note(node, "<" + std::string(tag) + "> ignored, as OpenSim 4 does");
     } else {
-      Note(node, "unknown setting <" + std::string(tag) + "> ignored");
+      Warn(node, "unknown setting <" + std::string(tag) + "> ignored");
     }
   }
 
@@ -166,7 +170,7 @@ class SetupReader {
     for (const pugi::xml_node& analysis : internal::ObjectsOf(set)) {
       if (!internal::ReadBoolOr(doc_, analysis, "on", Component(), true)) continue;
       const std::string name = internal::NameOf(analysis);
-      Note(analysis, "analysis " + std::string(analysis.name()) +
+      Warn(analysis, "analysis " + std::string(analysis.name()) +
                          (name.empty() ? "" : " '" + name + "'") +
                          " is not run (a forward run writes the states, controls and forces "
                          "tables only); it does not change the motion");

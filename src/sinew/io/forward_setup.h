@@ -34,9 +34,12 @@ struct ForwardSetup {
   std::string controls_file;
   std::string external_loads_file;  ///< Resolved; "" when empty or "Unassigned".
   std::string states_file;          ///< Resolved; "" when empty.
-  /// Settings read but not acted on, each naming file:line and element: analyses of the
-  /// AnalysisSet (they do not change the motion), unknown elements, options OpenSim itself
-  /// ignores. A front end prints them.
+  /// What OpenSim would act on but Sinew does not, each naming file:line and element: analyses
+  /// of the AnalysisSet (they observe, the motion is the same) and unknown settings. A front
+  /// end prints them as warnings (errors when strict).
+  Diagnostics warnings;
+  /// What is read and, as OpenSim does, not acted on: disabled controllers, corrective spring
+  /// settings (ignored since 1.9.4), the kinematics options OpenSim 4 ignores, actuator_list.
   Diagnostics notes;
 };
 
