@@ -1,9 +1,9 @@
 // `sinew forward SETUP.xml [--model F.osim] [--out DIR] [--report-interval DT] [--strict]
 //  [--quiet]`: runs an OpenSim ForwardTool setup file (io::ReadForwardSetup; docs/forward.md):
 // the model with the setup's force set files, initial states, controls and external loads,
-// integrated from initial_time to final_time at the setup's accuracy. Writes
-// <name>_states.sto, <name>_controls.sto and <name>_forces.sto in OpenSim's layout into the
-// setup's results_directory (or --out), streamed as rows are computed, with `simulate`'s
+// integrated from initial_time to final_time at the setup's accuracy. Writes <name>_states.sto,
+// <name>_states_degrees.mot, <name>_controls.sto and <name>_forces.sto in OpenSim's layout into
+// the setup's results_directory (or --out), streamed as rows are computed, with `simulate`'s
 // progress bar and clean stop on SIGINT/SIGTERM.
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
@@ -96,6 +96,7 @@ void RunForward(const ForwardOptions& options) {
   const std::string base = out + "/" + setup.name;
   TableFiles files;
   files.states = base + "_states.sto";
+  files.states_degrees = base + "_states_degrees.mot";
   files.controls = base + "_controls.sto";
   files.forces = base + "_forces.sto";
   RunTables tables(system, spec, files);
@@ -106,7 +107,7 @@ void RunForward(const ForwardOptions& options) {
     std::cout << "simulated " << ShowNumber(t0) << " to " << ShowNumber(setup.final_time)
               << " s of " << spec.name << ": " << stats.steps << " steps (" << stats.rejected
               << " rejected), " << stats.evaluations << " evaluations; wrote " << base
-              << "_states.sto, _controls.sto and _forces.sto\n";
+              << "_states.sto, _states_degrees.mot, _controls.sto and _forces.sto\n";
   }
 }
 

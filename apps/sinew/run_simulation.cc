@@ -10,6 +10,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <numbers>
 
 #include "apps/sinew/excitation_option.h"
 #include "apps/sinew/interrupt_guard.h"
@@ -78,6 +79,19 @@ RunTables::RunTables(const engine::System& system, const model::ModelSpec& spec,
                      const TableFiles& files)
     : system_(system), spec_(spec), force_reporter_(system), data_(system) {
   OpenTable(states_, files.states, "states", opensim::StatesLabels(system));
+  // OpenSim's Forward tool also writes the states with rotational coordinates' values and
+  // speeds in degrees (SimbodyEngine::convertRadiansToDegrees); other columns are unchanged.
+  OpenTable(states_degrees_, files.states_degrees, "states_degrees", opensim::StatesLabels(system),
+            true);
+  degrees_per_unit_.assign(opensim::StatesLabels(system).size(), 1.0);
+  for (int c = 0; c < system.num_coordinates(); ++c) {
+    for (const model::CoordinateSpec& coordinate : spec.coordinates) {
+      if (coordinate.name == system.coordinates()[c].name &&
+          coordinate.motion_type == model::MotionType::kRotational) {
+        degrees_per_unit_[2 * c] = degrees_per_unit_[2 * c + 1] = 180.0 / std::numbers::pi;
+      }
+    }
+  }
   // OpenSim BodyKinematics positions; the angles are degrees, and the header says so.
   OpenTable(bodies_, files.bodies, "Positions", kinematics::BodyKinematicsLabels(spec), true);
   // forces with appliesForce false are left out, as OpenSim's ForceReporter leaves them out.
@@ -92,6 +106,11 @@ void RunTables::Record(const engine::State& s) {
   if (states_) {
     opensim::StatesRow(system_, s, row_);
     states_->AppendRow(s.t, row_);
+  }
+  if (states_degrees_) {
+    opensim::StatesRow(system_, s, row_);
+    for (size_t i = 0; i < row_.size(); ++i) row_[i] *= degrees_per_unit_[i];
+    states_degrees_->AppendRow(s.t, row_);
   }
   if (bodies_) {
     // A fresh system holds the spec's bodies in spec order (stand-ins add none).
@@ -115,7 +134,7 @@ void RunTables::Record(const engine::State& s) {
 
 void RunTables::Finish(const std::string& partial_reason) {
   for (std::optional<io::StorageWriter>* table :
-       {&states_, &bodies_, &forces_, &controls_, &constraints_}) {
+       {&states_, &states_degrees_, &bodies_, &forces_, &controls_, &constraints_}) {
     if (*table) (*table)->Finish(partial_reason);
   }
 }

@@ -50,11 +50,12 @@ engine::State MakeInitialState(const engine::System& system, double t,
 
 /// The output files of a run; an empty name is not written.
 struct TableFiles {
-  std::string states;       ///< OpenSim 4 state labels
-  std::string bodies;       ///< BodyKinematics positions
-  std::string forces;       ///< ForceReporter
-  std::string controls;     ///< each actuator's control (OpenSim's controls table)
-  std::string constraints;  ///< constraint forces
+  std::string states;          ///< OpenSim 4 state labels
+  std::string states_degrees;  ///< the same, rotational coordinates in degrees (OpenSim's .mot)
+  std::string bodies;          ///< BodyKinematics positions
+  std::string forces;          ///< ForceReporter
+  std::string controls;        ///< each actuator's control (OpenSim's controls table)
+  std::string constraints;     ///< constraint forces
 };
 
 /// The tables of a run, streamed to disk row by row (bounded memory) and committed by Finish.
@@ -74,7 +75,9 @@ class RunTables {
   const model::ModelSpec& spec_;
   engine::ForceReporter force_reporter_;
   engine::Data data_;
-  std::optional<io::StorageWriter> states_, bodies_, forces_, controls_, constraints_;
+  std::optional<io::StorageWriter> states_, states_degrees_, bodies_, forces_, controls_,
+      constraints_;
+  std::vector<double> degrees_per_unit_;  // per states column: 180/pi (rotational) or 1
   std::vector<double> row_;
   std::vector<Transform> X_GB_;
 };

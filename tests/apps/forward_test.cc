@@ -10,6 +10,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <regex>
 #include <string>
 #include <vector>
@@ -153,6 +154,14 @@ TEST_F(ForwardTest, PendulumSetupsFollowThePendulumEquation) {
   }
   EXPECT_LT(vs_exact, 1e-5);
   EXPECT_LT(vs_gravity, 1e-14);
+  // The degrees table: the same states, the pin's angle and speed in degrees.
+  const Columns degrees = ReadStoColumns(Path("g/pendulum_states_degrees.mot"));
+  const std::string speed = PathLabel(g, "Pendulum_r1", "speed");
+  ASSERT_EQ(degrees.at(value).size(), g.at(value).size());
+  for (size_t i = 0; i < g.at(value).size(); ++i) {
+    EXPECT_NEAR(degrees.at(value)[i], g.at(value)[i] * 180 / std::numbers::pi, 1e-12);
+    EXPECT_NEAR(degrees.at(speed)[i], g.at(speed)[i] * 180 / std::numbers::pi, 1e-12);
+  }
   // The external force is reported: -98.0665 N along y on the pendulum.
   const Columns forces = ReadStoColumns(Path("ext/pendulum_ext_gravity_forces.sto"));
   ASSERT_TRUE(forces.count("pendulum_gravity_Fy")) << "labels changed";
