@@ -6,6 +6,8 @@
 #include <sinew/common/error.h>
 #include <sinew/io/read_controls.h>
 
+#include <cstdio>
+#include <fstream>
 #include <string>
 
 namespace sinew::io {
@@ -87,6 +89,20 @@ TEST(ReadControlsTest, UnsupportedOrRepeatedControlsNameFileLineAndControl) {
             "(ControlLinear and ControlConstant are)");
   EXPECT_EQ(error(Linear("a", "") + Linear("a.excitation", "")),
             "c.xml:5: /controlset/a.excitation: a second control for actuator 'a'");
+}
+
+// A storage table of controls (OpenSim's ControlSet(Storage)): each column a ControlLinear
+// through its rows, linear between them and extrapolated beyond.
+TEST(ReadControlsTest, StorageTableColumnsAreLinearControls) {
+  const std::string file = ::testing::TempDir() + "/sinew_controls_table.sto";
+  std::ofstream(file) << "controls\nversion=1\nnRows=3\nnColumns=3\ninDegrees=no\nendheader\n"
+                         "time\ta.excitation\tb\n1\t10\t0\n2\t30\t1\n4\t20\t1\n";
+  const auto controls = ReadControlSet(file);
+  ASSERT_EQ(controls.size(), 2u);
+  EXPECT_DOUBLE_EQ(controls.at("a")->Calc(1.5), 20.0);
+  EXPECT_DOUBLE_EQ(controls.at("a")->Calc(6.0), 10.0);
+  EXPECT_DOUBLE_EQ(controls.at("b")->Calc(0.0), -1.0);
+  std::remove(file.c_str());
 }
 
 }  // namespace

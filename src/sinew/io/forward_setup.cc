@@ -220,11 +220,6 @@ class SetupReader {
                     "reads one");
     }
     const std::string file = Resolve(setup_.file, text);
-    if (std::filesystem::path(file).extension() == ".sto") {
-      doc_.Fail(node, Component(),
-                "controls file '" + std::string(text) +
-                    "' is a storage table: only ControlSet .xml files are supported");
-    }
     setup_.controls_file = file;
   }
 

@@ -46,8 +46,8 @@ struct ForwardSetup {
 /// Reads a ForwardTool setup file. Throws sinew::Error naming the file, line and element for a
 /// malformed file and for settings that would change the results but that Sinew cannot honour:
 /// controllers other than ControlSetController (e.g. CorrectionController), more than one
-/// enabled ControlSetController, `use_specified_dt` true, the pre-1.9.4 corrective springs, a
-/// controls file in storage (.sto) form, an external loads file that is not .xml (pre-2.0),
+/// enabled ControlSetController, `use_specified_dt` true, the pre-1.9.4 corrective springs, an
+/// external loads file that is not .xml (pre-2.0),
 /// final_time not after initial_time, and numbers out of range.
 ForwardSetup ReadForwardSetup(const std::string& file);
 

@@ -2,6 +2,7 @@
 #include <sinew/functions/control_linear.h>
 #include <sinew/io/internal/xml_document.h>
 #include <sinew/io/read_controls.h>
+#include <sinew/io/storage.h>
 
 #include <memory>
 #include <utility>
@@ -88,9 +89,37 @@ std::map<std::string, functions::FunctionPtr> ReadControls(const internal::XmlDo
   return controls;
 }
 
+// A storage table of controls (OpenSim's ControlSet(Storage)): each column a ControlLinear
+// through its value at every row, named by its label.
+std::map<std::string, functions::FunctionPtr> ReadControlTable(const std::string& file) {
+  const Storage table = ReadStorage(file);
+  for (int row = 1; row < table.NumRows(); ++row) {
+    if (!(table.time[row] > table.time[row - 1])) {
+      throw Error({file, 0}, "",
+                  "the controls table's times must increase (row " + std::to_string(row + 1) + ")");
+    }
+  }
+  if (table.NumRows() == 0) throw Error({file, 0}, "", "the controls table has no rows");
+  std::map<std::string, functions::FunctionPtr> controls;
+  for (int column = 0; column < table.NumColumns(); ++column) {
+    std::vector<double> values(table.NumRows());
+    for (int row = 0; row < table.NumRows(); ++row) values[row] = table.Value(row, column);
+    const std::string actuator = ActuatorOfControl(table.labels[column]);
+    auto control =
+        std::make_shared<functions::ControlLinear>(table.time, std::move(values), false, true);
+    if (!controls.emplace(actuator, std::move(control)).second) {
+      throw Error({file, 0}, table.labels[column],
+                  "a second control for actuator '" + actuator + "'");
+    }
+  }
+  return controls;
+}
+
 }  // namespace
 
 std::map<std::string, functions::FunctionPtr> ReadControlSet(const std::string& file) {
+  // OpenSim reads a name containing ".sto" as a storage table (ControlSetController).
+  if (file.rfind(".sto") != std::string::npos) return ReadControlTable(file);
   return ReadControls(internal::XmlDocument::Load(file));
 }
 
