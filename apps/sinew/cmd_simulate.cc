@@ -148,8 +148,9 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--excitation", options->excitations,
                   "NAME=constant:V | NAME=ramp:START,SLOPE | NAME=sine:AMPLITUDE,FREQUENCY_HZ,PHASE"
                   " (repeatable; overrides the other sources for that actuator)");
-  cmd->add_option("--controls", options->controls,
-                  "OpenSim ControlSet file (e.g. *_controls.xml) driving the actuators it names");
+  cmd->add_option(
+      "--controls", options->controls,
+      "OpenSim ControlSet file (*_controls.xml, or a .sto table) driving the actuators it names");
   cmd->add_option("--external-loads", options->external_loads,
                   "OpenSim ExternalLoads file (.xml; its datafile is read relative to it) whose "
                   "ExternalForces are applied (repeatable)");
