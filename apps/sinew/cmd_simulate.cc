@@ -68,16 +68,14 @@ void RunSimulate(const SimulateOptions& options) {
   if (!options.initial_states.empty()) {
     initial = ApplyInitialStates(options.initial_states, options.strict, spec);
   }
-  ModelOptions model_options;
-  model_options.model_path = options.model;
-  model_options.strict = options.strict;
-  model_options.quiet = options.quiet;
-  model_options.activate_actuators = options.activate_actuators;
-  model_options.controls = options.controls;
-  model_options.external_loads = options.external_loads;
-  model_options.disabled_forces = options.disabled_forces;
-  model_options.excitations = options.excitations;
-  BuiltModel built = BuildModel(spec, model_options);
+  BuiltModel built = BuildModel(spec, {.model_path = options.model,
+                                       .strict = options.strict,
+                                       .quiet = options.quiet,
+                                       .activate_actuators = options.activate_actuators,
+                                       .controls = options.controls,
+                                       .external_loads = options.external_loads,
+                                       .disabled_forces = options.disabled_forces,
+                                       .excitations = options.excitations});
   const engine::System& system = *built.system;
   engine::State state = MakeInitialState(system, initial ? initial->time() : 0.0, options.model);
   if (initial) ApplyInitialStateVariables(*initial, system, state);

@@ -324,26 +324,22 @@ bool HasColumnFor(const Columns& ours, const std::string& label) {
   return !PathLabel(ours, label, "value").empty();
 }
 
+// Column `column` of `table` at time t, interpolated linearly between its rows.
+double LinearAt(const Columns& table, const std::string& column, double t) {
+  const std::vector<double>& time = table.at("time");
+  const std::vector<double>& y = table.at(column);
+  size_t i = std::upper_bound(time.begin(), time.end(), t) - time.begin();
+  i = std::clamp<size_t>(i, 1, time.size() - 1);
+  const double s = (t - time[i - 1]) / (time[i] - time[i - 1]);
+  return y[i - 1] + s * (y[i] - y[i - 1]);
+}
+
 // Our value of reference column `label` at time t: coordinate values by Hermite interpolation,
 // speeds ("<coordinate>_u") and auxiliary states ("<force>.<variable>") linearly.
 double OursAt(const Columns& ours, const std::string& label, double t) {
-  if (label.find('.') != std::string::npos) {
-    const std::string column = StateVariableLabel(label);
-    const std::vector<double>& time = ours.at("time");
-    const std::vector<double>& z = ours.at(column);
-    size_t i = std::upper_bound(time.begin(), time.end(), t) - time.begin();
-    i = std::clamp<size_t>(i, 1, time.size() - 1);
-    const double s = (t - time[i - 1]) / (time[i] - time[i - 1]);
-    return z[i - 1] + s * (z[i] - z[i - 1]);
-  }
+  if (label.find('.') != std::string::npos) return LinearAt(ours, StateVariableLabel(label), t);
   if (label.ends_with("_u")) {
-    const std::string speed = PathLabel(ours, label.substr(0, label.size() - 2), "speed");
-    const std::vector<double>& time = ours.at("time");
-    const std::vector<double>& u = ours.at(speed);
-    size_t i = std::upper_bound(time.begin(), time.end(), t) - time.begin();
-    i = std::clamp<size_t>(i, 1, time.size() - 1);
-    const double s = (t - time[i - 1]) / (time[i] - time[i - 1]);
-    return u[i - 1] + s * (u[i] - u[i - 1]);
+    return LinearAt(ours, PathLabel(ours, label.substr(0, label.size() - 2), "speed"), t);
   }
   return HermiteAt(ours, PathLabel(ours, label, "value"), PathLabel(ours, label, "speed"), t);
 }

@@ -134,39 +134,31 @@ TEST(ForwardSetupTest, UnsupportedSettingsAreErrorsWithTheirLine) {
               ParseTool("\n<use_specified_dt>true</use_specified_dt>");
             }).rfind("/setups/run_Setup_Forward.xml:4: /run: use_specified_dt true", 0),
             0u);
-  EXPECT_NE(ErrorOf([] {
-              ParseTool(
-                  "<ControllerSet><objects><PrescribedController name=\"p\"/></objects>"
-                  "</ControllerSet>");
-            }).find("/run/p: controller <PrescribedController> is not supported"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf([] {
-              ParseTool(
-                  "<ControllerSet><objects><ControlSetController><controls_file>a.xml"
-                  "</controls_file></ControlSetController><ControlSetController>"
-                  "<controls_file>b.xml</controls_file></ControlSetController></objects>"
-                  "</ControllerSet>");
-            }).find("a second controls file ('b.xml')"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf([] {
-              ParseTool("<external_loads_file>grf.mot</external_loads_file>");
-            }).find("is not an ExternalLoads .xml file"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf([] {
-              ParseTool("<initial_time>2</initial_time><final_time>1</final_time>");
-            }).find("final_time (1) must be after initial_time (2)"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf([] {
-              ParseTool("<integrator_error_tolerance>-1</integrator_error_tolerance>");
-            }).find("<integrator_error_tolerance> must be positive"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf([] {
-              ParseTool(
-                  "<body1_linear_corrective_spring_active>true"
-                  "</body1_linear_corrective_spring_active>",
-                  10900);
-            }).find("CorrectionController"),
-            std::string::npos);
+  struct Case {
+    std::string body;
+    std::string error;  // a part of the message
+    int version = 40000;
+  };
+  const std::string controller = "<ControllerSet><objects><ControlSetController><controls_file>";
+  const std::string end_controller = "</controls_file></ControlSetController>";
+  const Case cases[] = {
+      {"<ControllerSet><objects><PrescribedController name=\"p\"/></objects></ControllerSet>",
+       "/run/p: controller <PrescribedController> is not supported"},
+      {controller + "a.xml" + end_controller + "<ControlSetController><controls_file>b.xml" +
+           end_controller + "</objects></ControllerSet>",
+       "a second controls file ('b.xml')"},
+      {"<external_loads_file>grf.mot</external_loads_file>", "is not an ExternalLoads .xml file"},
+      {"<initial_time>2</initial_time><final_time>1</final_time>",
+       "final_time (1) must be after initial_time (2)"},
+      {"<integrator_error_tolerance>-1</integrator_error_tolerance>",
+       "<integrator_error_tolerance> must be positive"},
+      {"<body1_linear_corrective_spring_active>true</body1_linear_corrective_spring_active>",
+       "CorrectionController", 10900},
+  };
+  for (const Case& c : cases) {
+    EXPECT_NE(ErrorOf([&] { ParseTool(c.body, c.version); }).find(c.error), std::string::npos)
+        << c.body;
+  }
   EXPECT_NE(ErrorOf([] {
               ParseForwardSetup("<OpenSimDocument><CMCTool/></OpenSimDocument>", "x.xml");
             }).find("not a ForwardTool setup file"),
