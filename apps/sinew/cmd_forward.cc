@@ -70,13 +70,15 @@ void RunForward(const ForwardOptions& options) {
   const double duration = setup.final_time - t0;
   CheckSimulationSize(duration, options.report_interval, 0.0);
 
-  std::vector<std::string> external_loads;
-  if (!setup.external_loads_file.empty()) external_loads.push_back(setup.external_loads_file);
-  BuiltModel built = BuildModel(spec, {.model_path = model_path,
-                                       .strict = options.strict,
-                                       .quiet = options.quiet,
-                                       .controls = setup.controls_file,
-                                       .external_loads = external_loads});
+  ModelOptions model_options;
+  model_options.model_path = model_path;
+  model_options.strict = options.strict;
+  model_options.quiet = options.quiet;
+  model_options.controls = setup.controls_file;
+  if (!setup.external_loads_file.empty()) {
+    model_options.external_loads.push_back(setup.external_loads_file);
+  }
+  BuiltModel built = BuildModel(spec, model_options);
   const engine::System& system = *built.system;
   engine::State state = MakeInitialState(system, t0, model_path);
   if (initial) ApplyInitialStateVariables(*initial, system, state);
