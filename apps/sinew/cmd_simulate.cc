@@ -2,7 +2,7 @@
 //  [--report-interval DT] [--initial-states FILE.sto] [--activate-actuators]
 //  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--external-loads FILE.xml]...
 //  [--disable-force NAME]... [--strict] [--export FILE] [--verbose] [--quiet]
-//  [--report-constraint-forces] --out DIR`: a forward simulation of what the OpenSim parser
+//  [--report-constraint-forces] [--equilibrate-muscles] --out DIR`: a forward simulation of what the OpenSim parser
 // builds (skeleton, forces, constraints, external loads, actuators and their excitations).
 // Writes DIR/states.sto (every coordinate's value and speed, OpenSim 4 labels, radians and
 // metres), DIR/bodies.sto (OpenSim BodyKinematics positions), DIR/forces.sto (every force's
@@ -69,16 +69,24 @@ struct SimulateOptions {
   std::string vis = "mesh";
   std::vector<std::string> geometry_dirs;
   bool report_constraint_forces = false;
+  bool equilibrate_muscles = false;
+};
+
+// The first row of an initial-states file, and its columns that name no coordinate.
+struct InitialStates {
+  std::string path;
+  io::Storage storage;
+  std::vector<int> other_columns;  ///< columns naming no simulated coordinate value or speed
 };
 
 // Takes the first row of an initial-states file (OpenSim 4 paths or old names; rotational
 // columns converted when the file is in degrees) as the coordinates' default values and speeds,
 // so that locked coordinates are held at the file's value, as OpenSim's Forward tool does.
-// Coordinates the file does not name keep their defaults; columns that name no simulated
-// coordinate (muscle states, coordinates of stand-in joints) are reported in one line, an
-// error with `strict`. Returns the row's time.
-double ApplyInitialStates(const std::string& path, bool strict, model::ModelSpec& spec) {
-  io::Storage storage = ReadTableFor(path, spec);
+// Coordinates the file does not name keep their defaults. The other columns are kept for the
+// muscles' state variables (ApplyStateVariables).
+InitialStates ApplyInitialStates(const std::string& path, model::ModelSpec& spec) {
+  InitialStates initial{path, ReadTableFor(path, spec), {}};
+  io::Storage& storage = initial.storage;
   if (storage.NumRows() == 0) throw Error({path, 0}, "", "the initial-states file has no rows");
   std::vector<std::string> rotational, simulated;
   for (const model::CoordinateSpec& c : spec.coordinates) {
@@ -86,12 +94,11 @@ double ApplyInitialStates(const std::string& path, bool strict, model::ModelSpec
     simulated.push_back(c.name);
     if (c.motion_type == model::MotionType::kRotational) rotational.push_back(c.name);
   }
-  std::vector<std::string> unused;
-  for (const std::string& label : storage.labels) {
-    if (!io::ParseColumnLabel(label, simulated)) unused.push_back(label);
+  for (size_t i = 0; i < storage.labels.size(); ++i) {
+    if (!io::ParseColumnLabel(storage.labels[i], simulated)) {
+      initial.other_columns.push_back(static_cast<int>(i));
+    }
   }
-  WarnUnusedColumns(unused, path, "they name no coordinate value or speed that is simulated",
-                    strict);
   io::ConvertDegreesToRadians(storage, rotational);
   for (model::CoordinateSpec& c : spec.coordinates) {
     const int value = io::FindCoordinateColumn(storage, c.name, io::CoordinateColumnKind::kValue);
@@ -99,7 +106,27 @@ double ApplyInitialStates(const std::string& path, bool strict, model::ModelSpec
     if (value >= 0) c.default_value = storage.Value(0, value);
     if (speed >= 0) c.default_speed_value = storage.Value(0, speed);
   }
-  return storage.time[0];
+  return initial;
+}
+
+// Sets the auxiliary state variables (muscle activations, fiber lengths) the file's other
+// columns name; columns that name nothing simulated are reported in one line, an error with
+// `strict`.
+void ApplyStateVariables(const InitialStates& initial, const engine::System& system,
+                         engine::State& state, bool strict) {
+  std::vector<std::string> unused;
+  for (int column : initial.other_columns) {
+    const std::string& label = initial.storage.labels[column];
+    const int z = opensim::FindStateVariableColumn(system, label);
+    if (z < 0) {
+      unused.push_back(label);
+    } else {
+      state.z[z] = initial.storage.Value(0, column);
+    }
+  }
+  WarnUnusedColumns(unused, initial.path,
+                    "they name no coordinate value or speed or state variable that is simulated",
+                    strict);
 }
 
 void ShowProgress(double fraction, double t) {
@@ -119,15 +146,15 @@ void RunSimulate(const SimulateOptions& options) {
     PrepareOutputFile(options.export_file, "--export");
   }
   model::ModelSpec spec = io::ReadOsim(options.model);
-  double t0 = 0.0;
-  if (!options.initial_states.empty()) {
-    t0 = ApplyInitialStates(options.initial_states, options.strict, spec);
-  }
+  std::optional<InitialStates> initial;
+  if (!options.initial_states.empty()) initial = ApplyInitialStates(options.initial_states, spec);
+  const double t0 = initial ? initial->storage.time[0] : 0.0;
   WarnNotSimulated(spec, options.model, options.strict, options.disabled_forces);
   opensim::OpenSimParser parser;
   parser.ActivateActuators(options.activate_actuators);
   parser.SetControlsFile(options.controls);
   parser.SetStrict(options.strict);
+  parser.EquilibrateMuscles(options.equilibrate_muscles);
   for (const std::string& file : options.external_loads) parser.AddExternalLoads(file);
   for (const std::string& name : options.disabled_forces) parser.DisableForce(name);
   auto system = std::make_unique<engine::System>();
@@ -146,6 +173,11 @@ void RunSimulate(const SimulateOptions& options) {
   engine::State state;
   try {
     state = engine::MakeDefaultState(*system, t0);
+    if (initial) {
+      ApplyStateVariables(*initial, *system, state, options.strict);
+      // Muscle equilibrium (when asked) at the file's activations.
+      if (options.equilibrate_muscles) engine::InitializeStateVariables(*system, state);
+    }
   } catch (const Error& error) {  // e.g. constraints that cannot be assembled: name the model
     if (!error.where().file.empty()) throw;
     throw Error({options.model, 0}, error.component(), error.message());
@@ -287,6 +319,10 @@ void AddSimulateCommand(CLI::App& app) {
                   "Extra folder to search for mesh files (repeatable)");
   cmd->add_flag("--verbose", options->verbose,
                 "With --export: list every missing mesh file, not just how many");
+  cmd->add_flag("--equilibrate-muscles", options->equilibrate_muscles,
+                "Start every muscle's fiber at muscle-tendon equilibrium for its activation "
+                "(OpenSim's equilibrateMuscles); otherwise default_fiber_length or the "
+                "initial-states file's fiber_length");
   cmd->add_flag("--report-constraint-forces", options->report_constraint_forces,
                 "Also write DIR/constraints.sto: the forces of the model's constraints");
   cmd->add_flag("--quiet", options->quiet,

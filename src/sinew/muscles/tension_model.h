@@ -25,6 +25,12 @@ struct MuscleQuantities {
   double tendon_force = 0.0;         ///< N: the tension along the path
 };
 
+/// How an equilibrium was found.
+enum class EquilibriumStatus {
+  kBalanced,               ///< fiber force along the tendon = tendon force
+  kFiberAtMinimumLength,   ///< even the shortest fiber pulls harder: fiber at its minimum
+};
+
 /// A model of the tension along a path. Immutable; its changing values live in the engine
 /// State (z: StateVariableNames(); one input, the excitation).
 class TensionModel {
@@ -52,9 +58,10 @@ class TensionModel {
   /// activation `z` holds and the path's length and speed (OpenSim's
   /// computeInitialFiberEquilibrium). Throws sinew::Error naming `component` when there is no
   /// equilibrium. Default: nothing to solve.
-  virtual void Equilibrate(const PathKinematics& path, const std::string& component,
-                           Eigen::Ref<VecX> z) const {
+  virtual EquilibriumStatus Equilibrate(const PathKinematics& path, const std::string& component,
+                                        Eigen::Ref<VecX> z) const {
     (void)path, (void)component, (void)z;
+    return EquilibriumStatus::kBalanced;
   }
 };
 

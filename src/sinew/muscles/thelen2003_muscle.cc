@@ -113,8 +113,9 @@ double Thelen2003Muscle::EquilibriumError(double lce, double a, double fv, doubl
   return fiber * cos_phi - ThelenTendonForceLength(p_.curves, tlN);
 }
 
-void Thelen2003Muscle::Equilibrate(const PathKinematics& path, const std::string& component,
-                                   Eigen::Ref<VecX> z) const {
+EquilibriumStatus Thelen2003Muscle::Equilibrate(const PathKinematics& path,
+                                                const std::string& component,
+                                                Eigen::Ref<VecX> z) const {
   const MuscleParameters& m = p_.muscle;
   const double a = p_.activation.Clamp(z[0]);
   const double lmin = pennation_.minimum_fiber_length();
@@ -123,10 +124,12 @@ void Thelen2003Muscle::Equilibrate(const PathKinematics& path, const std::string
   const double lslack = std::max(lmin, pennation_.FiberLength(path.length, m.tendon_slack_length));
   double fv = 1.0;
   double lce = lslack;
+  bool at_minimum = false;
   constexpr int kMaxOuter = 50, kMaxInner = 200;
   for (int outer = 0; outer < kMaxOuter; ++outer) {
     double slope = 0.0;
-    if (EquilibriumError(lmin, a, fv, path.length, &slope) >= 0.0) {
+    at_minimum = EquilibriumError(lmin, a, fv, path.length, &slope) >= 0.0;
+    if (at_minimum) {
       lce = lmin;  // even the shortest fiber pulls at least as hard as the tendon
     } else {
       // Newton's method kept inside the bracket [lo, hi] (g(lo) < 0 <= g(hi)), bisecting
@@ -169,13 +172,14 @@ void Thelen2003Muscle::Equilibrate(const PathKinematics& path, const std::string
   }
   double slope = 0.0;
   const double error = EquilibriumError(lce, a, fv, path.length, &slope);
-  if (!std::isfinite(lce) || (lce > lmin && !(std::abs(error) < 1e-8))) {
+  if (!std::isfinite(lce) || (!at_minimum && !(std::abs(error) < 1e-8))) {
     throw Error(SourceLocation{}, component,
                 "no muscle-tendon equilibrium at musculotendon length " +
                     std::to_string(path.length) + " m, activation " + std::to_string(a) +
                     " (force error " + std::to_string(error * m.max_isometric_force) + " N)");
   }
   z[1] = lce;
+  return at_minimum ? EquilibriumStatus::kFiberAtMinimumLength : EquilibriumStatus::kBalanced;
 }
 
 }  // namespace sinew::muscles

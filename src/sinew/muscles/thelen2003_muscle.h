@@ -51,9 +51,9 @@ class Thelen2003Muscle final : public TensionModel {
   /// activation in z[0], with the lengthening speed shared between fiber and tendon by their
   /// stiffnesses as OpenSim's Thelen2003Muscle::initMuscleState shares it. When even the
   /// shortest fiber pulls harder than the tendon, the fiber is set to its minimum length (as
-  /// OpenSim does, which only warns).
-  void Equilibrate(const PathKinematics& path, const std::string& component,
-                   Eigen::Ref<VecX> z) const override;
+  /// OpenSim does, which only warns) and the status says so.
+  EquilibriumStatus Equilibrate(const PathKinematics& path, const std::string& component,
+                                Eigen::Ref<VecX> z) const override;
 
  private:
   // (fiber force along the tendon - tendon force) / max_isometric_force at fiber length lce,
