@@ -2,7 +2,8 @@
 //  [--report-interval DT] [--initial-states FILE.sto] [--activate-actuators]
 //  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--external-loads FILE.xml]...
 //  [--disable-force NAME]... [--strict] [--export FILE] [--verbose] [--quiet]
-//  [--report-constraint-forces] [--equilibrate-muscles] --out DIR`: a forward simulation of what the OpenSim parser
+//  [--report-constraint-forces] [--equilibrate-muscles] --out DIR`: a forward simulation of what
+//  the OpenSim parser
 // builds (skeleton, forces, constraints, external loads, actuators and their excitations).
 // Writes DIR/states.sto (every coordinate's value and speed, OpenSim 4 labels, radians and
 // metres), DIR/bodies.sto (OpenSim BodyKinematics positions), DIR/forces.sto (every force's

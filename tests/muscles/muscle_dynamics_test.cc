@@ -31,7 +31,8 @@ std::string SliderModel(const std::string& forces, bool locked) {
          (locked ? "true" : "false") + R"(</locked></Coordinate></coordinates>
 </SliderJoint></objects></JointSet>
 <ForceSet><objects>
-)" + forces + R"(
+)" + forces +
+         R"(
 </objects></ForceSet></Model></OpenSimDocument>)";
 }
 
@@ -66,10 +67,10 @@ std::unique_ptr<Parsed> Parse(const std::string& text, bool equilibrate = false)
 }
 
 TEST(PathActuatorTest, ConstantTensionAcceleratesTheBlockAsTheClosedForm) {
-  auto parsed = Parse(SliderModel(
-      std::string(R"(<PathActuator name="act"><optimal_force>30</optimal_force>)") + kPath +
-          "</PathActuator>",
-      false));
+  auto parsed = Parse(
+      SliderModel(std::string(R"(<PathActuator name="act"><optimal_force>30</optimal_force>)") +
+                      kPath + "</PathActuator>",
+                  false));
   parsed->parser.SetExcitationFunction("act", std::make_shared<functions::Constant>(0.5));
   auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-10});
   integrator->SetController(parsed->parser.GetController());
@@ -77,8 +78,8 @@ TEST(PathActuatorTest, ConstantTensionAcceleratesTheBlockAsTheClosedForm) {
   integrator->StepTo(state, 0.3);
   // Tension 15 N pulls the block towards the ground point (reached at x = -0.3 m, t = 0.33 s):
   // x = 0.1 - 15 t^2 / (2 * 2 kg).
-  EXPECT_NEAR(engine::GetCoordinateValue(*parsed->system, state, "x"),
-              0.1 - 15.0 * 0.09 / 4.0, 1e-10);
+  EXPECT_NEAR(engine::GetCoordinateValue(*parsed->system, state, "x"), 0.1 - 15.0 * 0.09 / 4.0,
+              1e-10);
   EXPECT_NEAR(engine::GetCoordinateSpeed(*parsed->system, state, "x"), -15.0 * 0.3 / 2.0, 1e-9);
 }
 
@@ -126,9 +127,12 @@ TEST(ThelenMuscleTest, BadParametersNameFileAndMuscle) {
     Parse(SliderModel(Thelen("<Flen>0.9</Flen>"), true));
     FAIL() << "no error";
   } catch (const Error& error) {
-    EXPECT_NE(std::string(error.what()).find("muscle_test.osim"), std::string::npos) << std::string(error.what());
-    EXPECT_NE(std::string(error.what()).find("/forceset/musc"), std::string::npos) << std::string(error.what());
-    EXPECT_NE(std::string(error.what()).find("Flen"), std::string::npos) << std::string(error.what());
+    EXPECT_NE(std::string(error.what()).find("muscle_test.osim"), std::string::npos)
+        << std::string(error.what());
+    EXPECT_NE(std::string(error.what()).find("/forceset/musc"), std::string::npos)
+        << std::string(error.what());
+    EXPECT_NE(std::string(error.what()).find("Flen"), std::string::npos)
+        << std::string(error.what());
   }
 }
 

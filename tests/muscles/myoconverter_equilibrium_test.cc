@@ -3,11 +3,12 @@
 // OpenSim computed at each pose, with zero speeds, OpenSim's equilibrateMuscles gave the
 // active and passive fiber forces (along the fiber) and the "total" force, which is the
 // tendon force: (active + passive) cos(pennation), as the numbers show (TRIlat at 0.16661 m:
-// 453.47 N active, 437.80 N total, pennation 0.26 rad at equilibrium). The test starts from the csv's mtu_length, so it
-// checks the muscle model alone (paths and wrapping are tested in tests/paths).
+// 453.47 N active, 437.80 N total, pennation 0.26 rad at equilibrium). The test starts from the
+// csv's mtu_length, so it checks the muscle model alone (paths and wrapping are tested in
+// tests/paths).
 #include <gtest/gtest.h>
-#include <sinew/muscles/path_actuator.h>
 #include <sinew/model/model_spec.h>
+#include <sinew/muscles/path_actuator.h>
 #include <sinew/opensim/parser.h>
 
 #include <algorithm>
@@ -115,8 +116,8 @@ void ExpectEquilibriumForces(const std::string& model_dir, const std::string& os
     outside_range += outside ? 1 : 0;
     const double bound = outside ? 5e-5 : 1e-6;
     for (const auto& [value, reference] :
-         {std::pair{q.active_fiber_force, row.active}, std::pair{q.passive_fiber_force, row.passive},
-          std::pair{q.tendon_force, row.total}}) {
+         {std::pair{q.active_fiber_force, row.active},
+          std::pair{q.passive_fiber_force, row.passive}, std::pair{q.tendon_force, row.total}}) {
       const double error = std::abs(value - reference) / scale;
       if (outside) worst_outside = std::max(worst_outside, error);
       if (!outside && error > worst) {
@@ -124,9 +125,9 @@ void ExpectEquilibriumForces(const std::string& model_dir, const std::string& os
         worst_row = row.muscle + " at mtu_length " + std::to_string(row.mtu_length);
       }
       EXPECT_LT(error, bound) << row.muscle << " mtu_length " << row.mtu_length << ": " << value
-                             << " vs OpenSim's " << reference << " (active, passive, tendon "
-                             << q.active_fiber_force << ", " << q.passive_fiber_force << ", "
-                             << q.tendon_force << "; fiber " << q.fiber_length << " m)";
+                              << " vs OpenSim's " << reference << " (active, passive, tendon "
+                              << q.active_fiber_force << ", " << q.passive_fiber_force << ", "
+                              << q.tendon_force << "; fiber " << q.fiber_length << " m)";
     }
   }
   EXPECT_EQ(at_minimum, expected_at_minimum);

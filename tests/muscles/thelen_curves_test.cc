@@ -36,15 +36,15 @@ TEST(ThelenCurvesTest, ForceLengthCurvesAreThelensEquations) {
     // Slopes against central differences (h = 1e-6: truncation ~1e-12 on these curves).
     const double h = 1e-6;
     if (std::abs(lceN - 1.0) > 2 * h) {
-      EXPECT_NEAR(ThelenPassiveForceLengthSlope(p, lceN),
-                  (ThelenPassiveForceLength(p, lceN + h) - ThelenPassiveForceLength(p, lceN - h)) /
-                      (2 * h),
-                  1e-7);
+      EXPECT_NEAR(
+          ThelenPassiveForceLengthSlope(p, lceN),
+          (ThelenPassiveForceLength(p, lceN + h) - ThelenPassiveForceLength(p, lceN - h)) / (2 * h),
+          1e-7);
     }
-    EXPECT_NEAR(ThelenActiveForceLengthSlope(p, lceN),
-                (ThelenActiveForceLength(p, lceN + h) - ThelenActiveForceLength(p, lceN - h)) /
-                    (2 * h),
-                1e-8);
+    EXPECT_NEAR(
+        ThelenActiveForceLengthSlope(p, lceN),
+        (ThelenActiveForceLength(p, lceN + h) - ThelenActiveForceLength(p, lceN - h)) / (2 * h),
+        1e-8);
   }
   // The passive force reaches 1 at FmaxMuscleStrain.
   EXPECT_NEAR(ThelenPassiveForceLength(p, 1.6), 1.0, 1e-15);
@@ -54,7 +54,8 @@ TEST(ThelenCurvesTest, TendonToeAndLinearRegionMeetSmoothlyAtTheForceOne) {
   const Thelen2003CurveParameters p = Arm26Curves();
   const double e0 = p.FmaxTendonStrain, k_toe = 3.0, f_toe = 0.33;
   // Solve for the toe strain: the linear region through (e_toe, F_toe) with the toe's slope
-  // there reaches 1 at e0: F_toe + k_toe F_toe exp(k_toe)/((exp(k_toe) - 1) e_toe) (e0 - e_toe) = 1.
+  // there reaches 1 at e0: F_toe + k_toe F_toe exp(k_toe)/((exp(k_toe) - 1) e_toe) (e0 - e_toe)
+  // = 1.
   auto residual = [&](double e_toe) {
     const double slope = f_toe * k_toe * std::exp(k_toe) / ((std::exp(k_toe) - 1) * e_toe);
     return f_toe + slope * (e0 - e_toe) - 1.0;

@@ -78,8 +78,8 @@ PathKinematics EnginePath::Calc(const engine::State& state, PathScratch& scratch
   return kinematics;
 }
 
-void EnginePath::AddTensionLoads(const engine::State& state, double tension,
-                                 PathScratch& scratch, engine::Loads& loads) const {
+void EnginePath::AddTensionLoads(const engine::State& state, double tension, PathScratch& scratch,
+                                 engine::Loads& loads) const {
   if (tension == 0.0) return;
   const std::span<const Transform> X_GB(scratch.X_GB.data(), num_spec_bodies_);
   paths::CalcPathLoads(scratch.path, X_GB, tension, scratch.loads);

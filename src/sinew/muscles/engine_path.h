@@ -27,7 +27,7 @@ struct PathKinematics {
 struct PathScratch {
   std::vector<Transform> X_GB;  ///< per spec body (only the path's bodies are set)
   std::vector<SpatialVec> V_GB;
-  std::vector<double> q, u;     ///< per spec coordinate (only the path's coordinates are set)
+  std::vector<double> q, u;  ///< per spec coordinate (only the path's coordinates are set)
   paths::PathState path;
   paths::PathLoads loads;
 };

@@ -27,8 +27,8 @@ struct MuscleQuantities {
 
 /// How an equilibrium was found.
 enum class EquilibriumStatus {
-  kBalanced,               ///< fiber force along the tendon = tendon force
-  kFiberAtMinimumLength,   ///< even the shortest fiber pulls harder: fiber at its minimum
+  kBalanced,              ///< fiber force along the tendon = tendon force
+  kFiberAtMinimumLength,  ///< even the shortest fiber pulls harder: fiber at its minimum
 };
 
 /// A model of the tension along a path. Immutable; its changing values live in the engine

@@ -86,8 +86,7 @@ double ThelenTendonForceLengthSlope(const Thelen2003CurveParameters& p, double t
   return 0.0;
 }
 
-double ThelenFiberVelocity(const Thelen2003CurveParameters& p, double a, double fal,
-                           double force) {
+double ThelenFiberVelocity(const Thelen2003CurveParameters& p, double a, double fal, double force) {
   const double afl = a * fal;
   const double scale = 0.25 + 0.75 * a;
   bool inside = false;
@@ -108,8 +107,7 @@ double ThelenFiberVelocitySlope(const Thelen2003CurveParameters& p, double a, do
   return scale / d.b - scale * (f0 - afl) / (d.b * d.b) * d.db;
 }
 
-double ThelenForceVelocity(const Thelen2003CurveParameters& p, double a, double fal,
-                           double dlceN) {
+double ThelenForceVelocity(const Thelen2003CurveParameters& p, double a, double fal, double dlceN) {
   // Newton on the force F = a fal fv, from the isometric force; the relation is monotonic
   // and piecewise smooth with linear ends, so this converges in a few steps.
   double force = a * fal;

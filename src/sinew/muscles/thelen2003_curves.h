@@ -10,12 +10,12 @@ namespace sinew::muscles {
 
 /// The shape parameters of Thelen2003Muscle (OpenSim's property names and defaults).
 struct Thelen2003CurveParameters {
-  double FmaxTendonStrain = 0.04;   ///< tendon strain at the maximum isometric force
-  double FmaxMuscleStrain = 0.6;    ///< passive fiber strain at the maximum isometric force
-  double KshapeActive = 0.45;       ///< width of the Gaussian active force-length curve
-  double KshapePassive = 5.0;       ///< exponential shape of the passive force-length curve
-  double Af = 0.25;                 ///< force-velocity shape factor
-  double Flen = 1.4;                ///< maximum normalized lengthening force
+  double FmaxTendonStrain = 0.04;  ///< tendon strain at the maximum isometric force
+  double FmaxMuscleStrain = 0.6;   ///< passive fiber strain at the maximum isometric force
+  double KshapeActive = 0.45;      ///< width of the Gaussian active force-length curve
+  double KshapePassive = 5.0;      ///< exponential shape of the passive force-length curve
+  double Af = 0.25;                ///< force-velocity shape factor
+  double Flen = 1.4;               ///< maximum normalized lengthening force
   double fv_linear_extrap_threshold = 0.95;  ///< fraction of Flen where fv turns linear
 };
 
@@ -39,14 +39,12 @@ double ThelenTendonForceLengthSlope(const Thelen2003CurveParameters& p, double t
 /// a*fal*fv = `force` (normalized) at activation a and active force-length multiplier fal:
 /// Thelen's inverse force-velocity relation, linear beyond 0 (concentric) and beyond
 /// fv_linear_extrap_threshold * Flen (eccentric). And d(velocity)/d(force).
-double ThelenFiberVelocity(const Thelen2003CurveParameters& p, double a, double fal,
-                           double force);
+double ThelenFiberVelocity(const Thelen2003CurveParameters& p, double a, double fal, double force);
 double ThelenFiberVelocitySlope(const Thelen2003CurveParameters& p, double a, double fal,
                                 double force);
 
 /// The force-velocity multiplier fv at normalized fiber velocity `dlceN` (the inverse of
 /// ThelenFiberVelocity, by Newton's method), clamped below at 0 as OpenSim does.
-double ThelenForceVelocity(const Thelen2003CurveParameters& p, double a, double fal,
-                           double dlceN);
+double ThelenForceVelocity(const Thelen2003CurveParameters& p, double a, double fal, double dlceN);
 
 }  // namespace sinew::muscles

@@ -17,8 +17,7 @@ void Require(bool ok, const std::string& what) {
 Thelen2003Muscle::Thelen2003Muscle(const Thelen2003Parameters& parameters)
     : p_(parameters),
       pennation_(parameters.muscle.optimal_fiber_length,
-                 parameters.muscle.pennation_angle_at_optimal,
-                 parameters.maximum_pennation_angle) {
+                 parameters.muscle.pennation_angle_at_optimal, parameters.maximum_pennation_angle) {
   const Thelen2003CurveParameters& c = p_.curves;
   Require(p_.muscle.max_isometric_force > 0.0, "max_isometric_force must be greater than zero");
   Require(p_.muscle.tendon_slack_length > 0.0, "tendon_slack_length must be greater than zero");
@@ -97,8 +96,8 @@ double Thelen2003Muscle::EquilibriumError(double lce, double a, double fv, doubl
   const double cos_phi = std::cos(phi);
   const double lceN = lce / ofl;
   const double tlN = (length - lce * cos_phi) / tsl;
-  const double fiber = a * ThelenActiveForceLength(p_.curves, lceN) * fv +
-                       ThelenPassiveForceLength(p_.curves, lceN);
+  const double fiber =
+      a * ThelenActiveForceLength(p_.curves, lceN) * fv + ThelenPassiveForceLength(p_.curves, lceN);
   const double dfiber = (a * fv * ThelenActiveForceLengthSlope(p_.curves, lceN) +
                          ThelenPassiveForceLengthSlope(p_.curves, lceN)) /
                         ofl;
@@ -138,7 +137,10 @@ EquilibriumStatus Thelen2003Muscle::Equilibrate(const PathKinematics& path,
       lce = 0.5 * (lo + hi);
       for (int i = 0; i < kMaxInner; ++i) {
         const double g = EquilibriumError(lce, a, fv, path.length, &slope);
-        if (g < 0.0) lo = lce; else hi = lce;
+        if (g < 0.0)
+          lo = lce;
+        else
+          hi = lce;
         if (std::abs(g) < 1e-13 || hi - lo < 1e-15 * m.optimal_fiber_length) break;
         const double next = lce - g / slope;
         lce = (slope > 0.0 && next > lo && next < hi) ? next : 0.5 * (lo + hi);
@@ -152,8 +154,7 @@ EquilibriumStatus Thelen2003Muscle::Equilibrate(const PathKinematics& path,
     const double tl = path.length - lce * cos_phi;
     EquilibriumError(lce, a, fv, path.length, &slope);
     const double tendon_stiffness =
-        ThelenTendonForceLengthSlope(p_.curves, tl / m.tendon_slack_length) /
-        m.tendon_slack_length;
+        ThelenTendonForceLengthSlope(p_.curves, tl / m.tendon_slack_length) / m.tendon_slack_length;
     // slope = dFmAT/dlce - dFt/dlce, and dFt/dlce = -tendon_stiffness d(lce cos phi)/dlce.
     const bool free = phi > 0.0 && lce > lmin;
     const double fiber_stiffness = slope - tendon_stiffness * (free ? 1.0 / cos_phi : cos_phi);

@@ -16,10 +16,9 @@ muscles::EnginePath MakeEnginePath(const ForceBuildInput& in) {
   if (!in.force.geometry_path) {
     in.values.Fail("has no GeometryPath (FunctionBasedPath and other path kinds are not read)");
   }
-  return muscles::EnginePath(paths::GeometryPath(in.spec, in.force),
-                             static_cast<int>(in.spec.bodies.size()),
-                             static_cast<int>(in.spec.coordinates.size()), in.body_map,
-                             in.coordinate_map);
+  return muscles::EnginePath(
+      paths::GeometryPath(in.spec, in.force), static_cast<int>(in.spec.bodies.size()),
+      static_cast<int>(in.spec.coordinates.size()), in.body_map, in.coordinate_map);
 }
 
 // The actuator, with min_control / max_control kept for reporting (they do not clamp).
@@ -83,7 +82,8 @@ std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInpu
   c.KshapePassive = v.Double("KshapePassive", c.KshapePassive);
   c.Af = v.Double("Af", c.Af);
   c.Flen = v.Double("Flen", c.Flen);
-  c.fv_linear_extrap_threshold = v.Double("fv_linear_extrap_threshold", c.fv_linear_extrap_threshold);
+  c.fv_linear_extrap_threshold =
+      v.Double("fv_linear_extrap_threshold", c.fv_linear_extrap_threshold);
   muscles::FirstOrderActivation& a = p.activation;
   a.activation_time_constant = v.Double("activation_time_constant", a.activation_time_constant);
   a.deactivation_time_constant =
