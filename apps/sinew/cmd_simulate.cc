@@ -2,7 +2,8 @@
 //  [--report-interval DT] [--initial-states FILE.sto] [--activate-actuators]
 //  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--external-loads FILE.xml]...
 //  [--disable-force NAME]... [--strict] [--export FILE] [--verbose] [--quiet]
-//  [--report-constraint-forces] [--equilibrate-muscles] --out DIR`: a forward simulation of what
+//  [--report-constraint-forces] [--equilibrate-muscles] [--rename-force-class OLD=NEW]
+//  --out DIR`: a forward simulation of what
 //  the OpenSim parser
 // builds (skeleton, forces, constraints, external loads, actuators and their excitations).
 // Writes DIR/states.sto (every coordinate's value and speed, OpenSim 4 labels, radians and
@@ -71,6 +72,7 @@ struct SimulateOptions {
   std::vector<std::string> geometry_dirs;
   bool report_constraint_forces = false;
   bool equilibrate_muscles = false;
+  std::vector<std::string> renamed_classes;
 };
 
 // The first row of an initial-states file, and its columns that name no coordinate.
@@ -156,6 +158,13 @@ void RunSimulate(const SimulateOptions& options) {
   parser.SetControlsFile(options.controls);
   parser.SetStrict(options.strict);
   parser.EquilibrateMuscles(options.equilibrate_muscles);
+  for (const std::string& rename : options.renamed_classes) {
+    const size_t eq = rename.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == rename.size()) {
+      throw Error({}, "--rename-force-class", "expects OLD=NEW, got '" + rename + "'");
+    }
+    parser.RenameForceClass(rename.substr(0, eq), rename.substr(eq + 1));
+  }
   for (const std::string& file : options.external_loads) parser.AddExternalLoads(file);
   for (const std::string& name : options.disabled_forces) parser.DisableForce(name);
   auto system = std::make_unique<engine::System>();
@@ -324,6 +333,9 @@ void AddSimulateCommand(CLI::App& app) {
                 "Start every muscle's fiber at muscle-tendon equilibrium for its activation "
                 "(OpenSim's equilibrateMuscles); otherwise default_fiber_length or the "
                 "initial-states file's fiber_length");
+  cmd->add_option("--rename-force-class", options->renamed_classes,
+                  "OLD=NEW: read forces of class OLD as class NEW (OpenSim's renameType; "
+                  "OpenSim's forward tests read Thelen2003Muscle=Thelen2003Muscle_Deprecated)");
   cmd->add_flag("--report-constraint-forces", options->report_constraint_forces,
                 "Also write DIR/constraints.sto: the forces of the model's constraints");
   cmd->add_flag("--quiet", options->quiet,

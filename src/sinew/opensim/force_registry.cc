@@ -117,6 +117,7 @@ const ForceType* FindForceType(const std::string& opensim_class) {
       {"PrescribedForce", {&BuildPrescribedForce, false}},
       {"PathActuator", {&BuildPathActuator, true}},
       {"Thelen2003Muscle", {&BuildThelen2003Muscle, true}},
+      {"Thelen2003Muscle_Deprecated", {&BuildThelen2003MuscleDeprecated, true}},
   };
   const auto it = registry.find(opensim_class);
   return it == registry.end() ? nullptr : &it->second;

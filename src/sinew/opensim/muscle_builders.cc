@@ -4,6 +4,7 @@
 #include <sinew/model/element_values.h>
 #include <sinew/muscles/path_actuator.h>
 #include <sinew/muscles/thelen2003_muscle.h>
+#include <sinew/muscles/thelen2003_muscle_deprecated.h>
 #include <sinew/opensim/internal/force_registry.h>
 
 #include <limits>
@@ -102,6 +103,34 @@ std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInpu
   // A Muscle's controls range over [0, 1]; Thelen's minimum is its minimum activation.
   return MakePathActuator(in, v.Double("optimal_force", 1.0), std::move(model),
                           a.minimum_activation, 1.0);
+}
+
+std::shared_ptr<engine::ForceElement> BuildThelen2003MuscleDeprecated(const ForceBuildInput& in) {
+  const model::ElementValues& v = in.values;
+  muscles::Thelen2003DeprecatedParameters p;
+  p.muscle = ReadMuscleParameters(v);
+  p.activation_time_constant = v.Double("activation_time_constant", p.activation_time_constant);
+  p.deactivation_time_constant =
+      v.Double("deactivation_time_constant", p.deactivation_time_constant);
+  p.Vmax = v.Double("Vmax", p.Vmax);
+  p.Vmax0 = v.Double("Vmax0", p.Vmax0);
+  p.FmaxTendonStrain = v.Double("FmaxTendonStrain", p.FmaxTendonStrain);
+  p.FmaxMuscleStrain = v.Double("FmaxMuscleStrain", p.FmaxMuscleStrain);
+  p.KshapeActive = v.Double("KshapeActive", p.KshapeActive);
+  p.KshapePassive = v.Double("KshapePassive", p.KshapePassive);
+  p.damping = v.Double("damping", p.damping);
+  p.Af = v.Double("Af", p.Af);
+  p.Flen = v.Double("Flen", p.Flen);
+  // OpenSim 2.x muscles start at activation 0 and fiber length 0 unless states are given.
+  p.default_activation = 0.0;
+  p.default_fiber_length = 0.0;
+  std::shared_ptr<const muscles::Thelen2003MuscleDeprecated> model;
+  try {
+    model = std::make_shared<muscles::Thelen2003MuscleDeprecated>(p);
+  } catch (const Error& error) {
+    v.Fail(error.message());
+  }
+  return MakePathActuator(in, v.Double("optimal_force", 1.0), std::move(model), 0.0, 1.0);
 }
 
 }  // namespace sinew::opensim::internal

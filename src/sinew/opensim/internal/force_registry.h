@@ -88,6 +88,7 @@ std::shared_ptr<engine::ForceElement> BuildPrescribedForce(const ForceBuildInput
 /// GeometryPath with its tension model.
 std::shared_ptr<engine::ForceElement> BuildPathActuator(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildThelen2003MuscleDeprecated(const ForceBuildInput& in);
 
 /// The entry for OpenSim class `opensim_class`, or null when Sinew does not simulate it.
 const ForceType* FindForceType(const std::string& opensim_class);
