@@ -116,6 +116,7 @@ const ForceType* FindForceType(const std::string& opensim_class) {
       {"ExpressionBasedPointToPointForce", {&BuildExpressionBasedPointToPointForce, false}},
       {"PrescribedForce", {&BuildPrescribedForce, false}},
       {"PathActuator", {&BuildPathActuator, true}},
+      {"PathSpring", {&BuildPathSpring, false}},
       {"Thelen2003Muscle", {&BuildThelen2003Muscle, true}},
       {"Thelen2003Muscle_Deprecated", {&BuildThelen2003MuscleDeprecated, true}},
   };

@@ -3,6 +3,7 @@
 // and defaults (Muscle.cpp, Thelen2003Muscle.cpp, ActivationFiberLengthMuscle.cpp).
 #include <sinew/model/element_values.h>
 #include <sinew/muscles/path_actuator.h>
+#include <sinew/muscles/path_spring.h>
 #include <sinew/muscles/thelen2003_muscle.h>
 #include <sinew/muscles/thelen2003_muscle_deprecated.h>
 #include <sinew/opensim/internal/force_registry.h>
@@ -70,6 +71,17 @@ std::shared_ptr<engine::ForceElement> BuildPathActuator(const ForceBuildInput& i
   constexpr double kInf = std::numeric_limits<double>::infinity();
   return MakePathActuator(in, optimal_force,
                           std::make_shared<muscles::IdealPathTension>(optimal_force), -kInf, kInf);
+}
+
+std::shared_ptr<engine::ForceElement> BuildPathSpring(const ForceBuildInput& in) {
+  const model::ElementValues& v = in.values;
+  // OpenSim's defaults are NaN: a spring without its properties is an error here.
+  for (const char* property : {"resting_length", "stiffness", "dissipation"}) {
+    if (!v.Has(property)) v.Fail(std::string("PathSpring needs <") + property + ">");
+  }
+  return std::make_shared<muscles::PathSpring>(
+      in.force.name, MakeEnginePath(in), v.Double("resting_length", 0.0),
+      v.Double("stiffness", 0.0), v.Double("dissipation", 0.0));
 }
 
 std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInput& in) {

@@ -85,8 +85,9 @@ std::shared_ptr<engine::ForceElement> BuildExpressionBasedPointToPointForce(
 /// PrescribedForce (prescribed_force_builder.cc).
 std::shared_ptr<engine::ForceElement> BuildPrescribedForce(const ForceBuildInput& in);
 /// PathActuator and the muscles (muscle_builders.cc): a muscles::PathActuator on the force's
-/// GeometryPath with its tension model.
+/// GeometryPath with its tension model; PathSpring (muscles::PathSpring).
 std::shared_ptr<engine::ForceElement> BuildPathActuator(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildPathSpring(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildThelen2003MuscleDeprecated(const ForceBuildInput& in);
 
