@@ -148,6 +148,19 @@ TEST(ThelenMuscleTest, MuscleAtEquilibriumStaysThereUnderConstantExcitation) {
   EXPECT_NEAR(q1.tendon_force, q0.tendon_force, 1e-7);
 }
 
+TEST(ThelenMuscleTest, IgnoredFlagsAreReported) {
+  // OpenSim's Thelen2003Muscle does not use these flags; Sinew follows it and says so.
+  auto parsed =
+      Parse(SliderModel(Thelen("<ignore_tendon_compliance>true</ignore_tendon_compliance>"), true));
+  const auto& warnings = parsed->parser.GetReport().warnings();
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].component, "/forceset/musc");
+  EXPECT_NE(warnings[0].message.find("ignore_tendon_compliance is true, but Thelen2003Muscle "
+                                     "ignores it"),
+            std::string::npos)
+      << warnings[0].message;
+}
+
 TEST(ThelenMuscleTest, BadParametersNameFileAndMuscle) {
   try {
     Parse(SliderModel(Thelen("<Flen>0.9</Flen>"), true));
