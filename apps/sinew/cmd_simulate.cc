@@ -23,6 +23,7 @@
 #include <sinew/io/storage_labels.h>
 #include <sinew/io/storage_writer.h>
 #include <sinew/kinematics/body_kinematics.h>
+#include <sinew/muscles/path_actuator.h>
 #include <sinew/opensim/constraint_forces_table.h>
 #include <sinew/opensim/parser.h>
 #include <sinew/opensim/states_table.h>
@@ -132,6 +133,25 @@ void ApplyStateVariables(const InitialStates& initial, const engine::System& sys
                     strict);
 }
 
+// After muscle equilibrium: one warning per muscle whose fiber had to be put at its minimum
+// length because even the shortest fiber pulls harder than the tendon (OpenSim warns too).
+void WarnFibersAtMinimumLength(const engine::System& system, const engine::State& state) {
+  for (size_t k = 0; k < system.force_elements().size(); ++k) {
+    const auto* muscle =
+        dynamic_cast<const muscles::PathActuator*>(system.force_elements()[k].get());
+    if (!muscle || muscle->StateVariableNames().empty()) continue;
+    const engine::ForceContext context = system.MakeForceContext(static_cast<int>(k), state);
+    VecX z = state.z.segment(context.z_begin, system.NumStateVariables(static_cast<int>(k)));
+    if (muscle->model().Equilibrate(muscle->CalcPathKinematics(context), muscle->name(), z) ==
+        muscles::EquilibriumStatus::kFiberAtMinimumLength) {
+      std::cerr << "sinew: warning: " << muscle->path().path().component()
+                << ": no fiber length balances the tendon (even the shortest fiber pulls harder): "
+                   "the fiber starts at its minimum length, "
+                << z[1] << " m\n";
+    }
+  }
+}
+
 void ShowProgress(double fraction, double t) {
   const int width = 40;
   const int filled = static_cast<int>(fraction * width);
@@ -188,6 +208,7 @@ void RunSimulate(const SimulateOptions& options) {
       // Muscle equilibrium (when asked) at the file's activations.
       if (options.equilibrate_muscles) engine::InitializeStateVariables(*system, state);
     }
+    if (options.equilibrate_muscles) WarnFibersAtMinimumLength(*system, state);
   } catch (const Error& error) {  // e.g. constraints that cannot be assembled: name the model
     if (!error.where().file.empty()) throw;
     throw Error({options.model, 0}, error.component(), error.message());

@@ -2,6 +2,7 @@
 // tests use, and their errors.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
 
 #include "apps/cli_test_util.h"
@@ -47,6 +48,31 @@ TEST_F(SimulateMusclesTest, RenamedClassIsSimulatedAndItsMissingEquilibriumIsAnE
                          " --rename-force-class Thelen2003Muscle --duration 0 --out " + Path("b"));
   EXPECT_EQ(bad.exit_code, 2) << bad.err;
   EXPECT_NE(bad.err.find("--rename-force-class: expects OLD=NEW"), std::string::npos) << bad.err;
+}
+
+TEST_F(SimulateMusclesTest, FiberAtItsMinimumLengthIsAWarning) {
+  // Without pennation the minimum fiber length is 0; a tendon 0.5% past its slack length pulls
+  // less than even a zero-length fiber at activation 0.2 (0.2 fal(0) > fse(1.005)).
+  const std::string model = Path("short.osim");
+  std::ofstream(model) << R"(<OpenSimDocument Version="40000"><Model name="m">
+<Ground name="ground"/><BodySet><objects><Body name="block"><mass>2</mass>
+<inertia>0.1 0.1 0.1 0 0 0</inertia></Body></objects></BodySet>
+<JointSet><objects><SliderJoint name="slide"><socket_parent_frame>/ground</socket_parent_frame>
+<socket_child_frame>/bodyset/block</socket_child_frame><coordinates><Coordinate name="x">
+<default_value>0.1</default_value><locked>true</locked></Coordinate></coordinates></SliderJoint>
+</objects></JointSet><ForceSet><objects><Thelen2003Muscle name="musc"><GeometryPath>
+<PathPointSet><objects><PathPoint name="p1"><socket_parent_frame>/ground</socket_parent_frame>
+<location>-0.3 0 0</location></PathPoint><PathPoint name="p2"><socket_parent_frame>/bodyset/block
+</socket_parent_frame><location>0 0 0</location></PathPoint></objects></PathPointSet>
+</GeometryPath><optimal_fiber_length>0.1</optimal_fiber_length>
+<tendon_slack_length>0.398</tendon_slack_length><default_activation>0.2</default_activation>
+</Thelen2003Muscle></objects></ForceSet></Model></OpenSimDocument>)";
+  const CliRun run =
+      Run("simulate " + model + " --duration 0 --quiet --equilibrate-muscles --out " + Path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("sinew: warning: /forceset/musc: no fiber length balances the tendon"),
+            std::string::npos)
+      << run.err;
 }
 
 }  // namespace
