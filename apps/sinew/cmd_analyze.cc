@@ -1,6 +1,9 @@
 // `sinew analyze MODEL.osim --motion F.mot --out DIR [--coordinates a,b]`: OpenSim
 // MuscleAnalysis-style tables of every geometry path (muscles, path springs, ligaments) over a
-// motion: Length.sto, LengtheningSpeed.sto and MomentArm_<coordinate>.sto.
+// motion: Length.sto, LengtheningSpeed.sto and MomentArm_<coordinate>.sto; and, when the file
+// is a states file holding muscles' activation and fiber_length, FiberLength.sto,
+// TendonLength.sto, ActiveFiberForce.sto, PassiveFiberForce.sto and TendonForce.sto of those
+// muscles (muscle_tables.h).
 #include <sinew/common/error.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
@@ -20,6 +23,7 @@
 #include <vector>
 
 #include "apps/sinew/commands.h"
+#include "apps/sinew/muscle_tables.h"
 #include "apps/sinew/notices.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
@@ -97,8 +101,12 @@ void Run(const Options& options) {
 
   const io::Storage motion = ReadTableFor(options.motion, spec);
   if (motion.NumRows() == 0) throw Error({options.motion, 0}, "", "the motion has no rows");
+  std::vector<std::string> path_names;
+  for (const paths::GeometryPath& path : paths.paths()) path_names.push_back(path.name());
+  MuscleTables muscle_tables(spec, motion, path_names);
   const kinematics::MotionColumnMap map = MapMotionColumnsFor(
-      motion, options.motion, spec, couplers, "they keep their default values and zero speed");
+      motion, options.motion, spec, couplers, "they keep their default values and zero speed",
+      muscle_tables.used_labels());
   const std::vector<functions::FunctionPtr> splines = FitSpeedSplines(motion, spec);
   if (splines.empty()) {
     std::cerr << "sinew: warning: " << options.motion << " has " << motion.NumRows()
@@ -111,6 +119,9 @@ void Run(const Options& options) {
   std::vector<io::Storage> moment_arms;
   for (int c : coordinates)
     moment_arms.push_back(MakeTable("MomentArm_" + spec.coordinates[c].name, paths));
+
+  const std::vector<double> no_speeds(paths.paths().size(),
+                                      std::numeric_limits<double>::quiet_NaN());
 
   paths::PathAnalysis analysis(spec, tree, couplers, paths, coordinates);
   std::vector<double> q = tree.default_q();
@@ -141,6 +152,10 @@ void Run(const Options& options) {
       for (size_t p = 0; p < num_paths; ++p) row[p] = analysis.moment_arm(k, p);
       moment_arms[k].AppendRow(t, row);
     }
+    if (!muscle_tables.empty()) {
+      muscle_tables.AppendRow(motion, r, analysis.lengths(),
+                              splines.empty() ? no_speeds : analysis.lengthening_speeds());
+    }
   }
 
   const std::filesystem::path dir(options.out);
@@ -149,6 +164,7 @@ void Run(const Options& options) {
   for (const io::Storage& table : moment_arms) {
     io::WriteStorage(table, (dir / (table.name + ".sto")).string());
   }
+  if (!muscle_tables.empty()) muscle_tables.Write(options.out);
 }
 
 }  // namespace
@@ -160,7 +176,9 @@ void AddAnalyzeCommand(CLI::App& app) {
   cmd->add_option("model", options->model, "OpenSim model (.osim)")->required();
   cmd->add_option("--motion", options->motion, "Coordinates over time (.mot/.sto)")->required();
   cmd->add_option("--out", options->out,
-                  "Output directory (Length.sto, LengtheningSpeed.sto, MomentArm_<coordinate>.sto)")
+                  "Output directory (Length.sto, LengtheningSpeed.sto, MomentArm_<coordinate>.sto; "
+                  "with muscle states: FiberLength, TendonLength, ActiveFiberForce, "
+                  "PassiveFiberForce, TendonForce)")
       ->required();
   cmd->add_option("--coordinates", options->coordinates,
                   "Coordinates for the moment arms (default: every one not locked or coupled)")

@@ -1,5 +1,5 @@
 // `sinew forward SETUP.xml [--model F.osim] [--out DIR] [--report-interval DT] [--strict]
-//  [--quiet]`: runs an OpenSim ForwardTool setup file (io::ReadForwardSetup; docs/forward.md):
+//  [--equilibrate-muscles] [--rename-force-class OLD=NEW] [--quiet]`: runs an OpenSim ForwardTool setup file (io::ReadForwardSetup; docs/forward.md):
 // the model with the setup's force set files, initial states, controls and external loads,
 // integrated from initial_time to final_time at the setup's accuracy. Writes <name>_states.sto,
 // <name>_states_degrees.mot, <name>_controls.sto and <name>_forces.sto in OpenSim's layout into
@@ -34,6 +34,8 @@ struct ForwardOptions {
   double report_interval = 0.01;
   bool strict = false;
   bool quiet = false;
+  bool equilibrate_muscles = false;
+  std::vector<std::string> renamed_classes;
 };
 
 void RunForward(const ForwardOptions& options) {
@@ -78,14 +80,14 @@ void RunForward(const ForwardOptions& options) {
   if (!setup.external_loads_file.empty()) {
     model_options.external_loads.push_back(setup.external_loads_file);
   }
+  model_options.equilibrate_muscles =
+      setup.solve_for_equilibrium_for_auxiliary_states || options.equilibrate_muscles;
+  model_options.renamed_force_classes = options.renamed_classes;
   BuiltModel built = BuildModel(spec, model_options);
   const engine::System& system = *built.system;
-  engine::State state = MakeInitialState(system, t0, model_path);
-  if (initial) ApplyInitialStateVariables(*initial, system, state);
   // As OpenSim: the states file's values first, then equilibrium of the auxiliary states.
-  if (setup.solve_for_equilibrium_for_auxiliary_states) {
-    engine::InitializeStateVariables(system, state);
-  }
+  engine::State state = MakeStartState(system, initial ? &*initial : nullptr,
+                                       model_options.equilibrate_muscles, t0, model_path);
 
   engine::IntegratorSettings settings;
   settings.accuracy = setup.integrator_error_tolerance;
@@ -128,6 +130,7 @@ void AddForwardCommand(CLI::App& app) {
   cmd->add_flag("--strict", options->strict,
                 "Fail (exit code 2) if anything in the setup, the model or the states file is "
                 "approximated, not simulated or not used");
+  AddMuscleOptions(cmd, options->equilibrate_muscles, options->renamed_classes);
   cmd->add_flag("--quiet", options->quiet,
                 "No progress bar or summary (warnings are still printed)");
   cmd->callback([options]() { RunForward(*options); });

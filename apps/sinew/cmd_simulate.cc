@@ -2,7 +2,9 @@
 //  [--report-interval DT] [--initial-states FILE.sto] [--activate-actuators]
 //  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--external-loads FILE.xml]...
 //  [--disable-force NAME]... [--strict] [--export FILE] [--verbose] [--quiet]
-//  [--report-constraint-forces] --out DIR`: a forward simulation of what the OpenSim parser
+//  [--report-constraint-forces] [--equilibrate-muscles] [--rename-force-class OLD=NEW]
+//  --out DIR`: a forward simulation of what
+//  the OpenSim parser
 // builds (skeleton, forces, constraints, external loads, actuators and their excitations).
 // Writes DIR/states.sto (every coordinate's value and speed, OpenSim 4 labels, radians and
 // metres), DIR/bodies.sto (OpenSim BodyKinematics positions), DIR/forces.sto (every force's
@@ -53,6 +55,8 @@ struct SimulateOptions {
   std::string vis = "mesh";
   std::vector<std::string> geometry_dirs;
   bool report_constraint_forces = false;
+  bool equilibrate_muscles = false;
+  std::vector<std::string> renamed_classes;
 };
 
 void RunSimulate(const SimulateOptions& options) {
@@ -75,10 +79,13 @@ void RunSimulate(const SimulateOptions& options) {
                                        .controls = options.controls,
                                        .external_loads = options.external_loads,
                                        .disabled_forces = options.disabled_forces,
-                                       .excitations = options.excitations});
+                                       .excitations = options.excitations,
+                                       .equilibrate_muscles = options.equilibrate_muscles,
+                                       .renamed_force_classes = options.renamed_classes});
   const engine::System& system = *built.system;
-  engine::State state = MakeInitialState(system, initial ? initial->time() : 0.0, options.model);
-  if (initial) ApplyInitialStateVariables(*initial, system, state);
+  engine::State state =
+      MakeStartState(system, initial ? &*initial : nullptr, options.equilibrate_muscles,
+                     initial ? initial->time() : 0.0, options.model);
   engine::IntegratorSettings settings;
   settings.accuracy = options.accuracy;
   settings.step = options.step;
@@ -165,6 +172,7 @@ void AddSimulateCommand(CLI::App& app) {
                   "Extra folder to search for mesh files (repeatable)");
   cmd->add_flag("--verbose", options->verbose,
                 "With --export: list every missing mesh file, not just how many");
+  AddMuscleOptions(cmd, options->equilibrate_muscles, options->renamed_classes);
   cmd->add_flag("--report-constraint-forces", options->report_constraint_forces,
                 "Also write DIR/constraints.sto: the forces of the model's constraints");
   cmd->add_flag("--quiet", options->quiet,

@@ -2,6 +2,7 @@
 
 #include <sinew/common/error.h>
 #include <sinew/io/storage_labels.h>
+#include <sinew/opensim/states_table.h>
 #include <sinew/opensim/support.h>
 
 #include <cmath>
@@ -34,17 +35,6 @@ std::string ForceOfStateColumn(std::string_view label) {
   }
   const size_t dot = label.rfind('.');
   return dot == std::string_view::npos || dot == 0 ? "" : std::string(label.substr(0, dot));
-}
-
-// The column holding state variable `name` ("<element>/<variable>") in either label style.
-int FindStateVariableColumn(const io::Storage& table, const std::string& name) {
-  std::string old_style = name;
-  if (const size_t slash = old_style.rfind('/'); slash != std::string::npos) old_style[slash] = '.';
-  for (int column = 0; column < table.NumColumns(); ++column) {
-    const std::string& label = table.labels[column];
-    if (label == "/forceset/" + name || label == old_style) return column;
-  }
-  return -1;
 }
 
 // Tells when the run does not start at `start_time` (OpenSim moves its initial time too).
@@ -87,7 +77,8 @@ InitialStates ApplyInitialStates(const std::string& path, bool strict, model::Mo
                               simulated_forces.end();
     if (!io::ParseColumnLabel(label, simulated) && !of_simulated_force) unused.push_back(label);
   }
-  WarnUnusedColumns(unused, path, "they name no coordinate value or speed that is simulated",
+  WarnUnusedColumns(unused, path,
+                    "they name no coordinate value or speed or state variable that is simulated",
                     strict);
   io::ConvertDegreesToRadians(states.table, rotational);
   std::vector<std::string> missing;
@@ -113,22 +104,23 @@ InitialStates ApplyInitialStates(const std::string& path, bool strict, model::Mo
 
 void ApplyInitialStateVariables(const InitialStates& states, const engine::System& system,
                                 engine::State& state) {
-  std::vector<std::string> missing;
-  for (int k = 0; k < system.num_state_variables(); ++k) {
-    const std::string& name = system.state_variable_names()[k];
-    const int column = FindStateVariableColumn(states.table, name);
-    if (column < 0) {
-      missing.push_back(name);
-      continue;
-    }
+  std::vector<bool> given(system.num_state_variables(), false);
+  for (int column = 0; column < states.table.NumColumns(); ++column) {
+    const int k = opensim::FindStateVariableColumn(system, states.table.labels[column]);
+    if (k < 0) continue;
     const double value = states.table.Value(states.row, column);
     if (!std::isfinite(value)) {
-      throw Error({states.path, 0}, name,
+      throw Error({states.path, 0}, system.state_variable_names()[k],
                   "column '" + states.table.labels[column] + "' at time " +
                       ShowNumber(states.time()) + " holds " + ShowNumber(value) +
                       ", not a finite number");
     }
     state.z[k] = value;
+    given[k] = true;
+  }
+  std::vector<std::string> missing;
+  for (int k = 0; k < system.num_state_variables(); ++k) {
+    if (!given[k]) missing.push_back(system.state_variable_names()[k]);
   }
   if (!missing.empty()) {
     std::cerr << "sinew: warning: " << states.path << ": " << missing.size()

@@ -41,4 +41,14 @@ void CheckSimulationSize(double duration, double report_interval, double step) {
   }
 }
 
+void AddMuscleOptions(CLI::App* cmd, bool& equilibrate, std::vector<std::string>& renames) {
+  cmd->add_flag("--equilibrate-muscles", equilibrate,
+                "Start every muscle's fiber at muscle-tendon equilibrium for its activation "
+                "(OpenSim's equilibrateMuscles); otherwise default_fiber_length or the "
+                "initial-states file's fiber_length");
+  cmd->add_option("--rename-force-class", renames,
+                  "OLD=NEW: read forces of class OLD as class NEW (OpenSim's renameType; "
+                  "OpenSim's forward tests read Thelen2003Muscle=Thelen2003Muscle_Deprecated)");
+}
+
 }  // namespace sinew::cli

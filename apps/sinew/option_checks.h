@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace sinew::cli {
 
@@ -23,5 +24,9 @@ CLI::Validator FiniteNumber(double min = -HUGE_VAL, bool exclusive = false);
 /// Throws sinew::Error unless the run fits the caps above: `duration` / `report_interval` output
 /// rows at most kMaxOutputRows and, when `step` > 0, `duration` / `step` steps at most kMaxSteps.
 void CheckSimulationSize(double duration, double report_interval, double step);
+
+/// Adds the muscle options `simulate` and `forward` share: --equilibrate-muscles (into
+/// `equilibrate`) and the repeatable --rename-force-class OLD=NEW (into `renames`).
+void AddMuscleOptions(CLI::App* cmd, bool& equilibrate, std::vector<std::string>& renames);
 
 }  // namespace sinew::cli

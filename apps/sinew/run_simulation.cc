@@ -4,6 +4,7 @@
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/pose.h>
 #include <sinew/kinematics/body_kinematics.h>
+#include <sinew/muscles/path_actuator.h>
 #include <sinew/opensim/constraint_forces_table.h>
 #include <sinew/opensim/states_table.h>
 #include <unistd.h>
@@ -47,6 +48,14 @@ BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options)
   parser.ActivateActuators(options.activate_actuators);
   parser.SetControlsFile(options.controls);
   parser.SetStrict(options.strict);
+  parser.EquilibrateMuscles(options.equilibrate_muscles);
+  for (const std::string& rename : options.renamed_force_classes) {
+    const size_t eq = rename.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == rename.size()) {
+      throw Error({}, "--rename-force-class", "expects OLD=NEW, got '" + rename + "'");
+    }
+    parser.RenameForceClass(rename.substr(0, eq), rename.substr(eq + 1));
+  }
   for (const std::string& file : options.external_loads) parser.AddExternalLoads(file);
   for (const std::string& name : options.disabled_forces) parser.DisableForce(name);
   built.system = std::make_unique<engine::System>();
@@ -65,10 +74,39 @@ BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options)
   return built;
 }
 
-engine::State MakeInitialState(const engine::System& system, double t,
-                               const std::string& model_path) {
+namespace {
+
+// One warning per muscle whose fiber had to be put at its minimum length because even the
+// shortest fiber pulls harder than the tendon (OpenSim warns too).
+void WarnFibersAtMinimumLength(const engine::System& system, const engine::State& state) {
+  for (size_t k = 0; k < system.force_elements().size(); ++k) {
+    const auto* muscle =
+        dynamic_cast<const muscles::PathActuator*>(system.force_elements()[k].get());
+    if (!muscle || muscle->StateVariableNames().empty()) continue;
+    const engine::ForceContext context = system.MakeForceContext(static_cast<int>(k), state);
+    VecX z = state.z.segment(context.z_begin, system.NumStateVariables(static_cast<int>(k)));
+    if (muscle->model().Equilibrate(muscle->CalcPathKinematics(context), muscle->name(), z) ==
+        muscles::EquilibriumStatus::kFiberAtMinimumLength) {
+      std::cerr << "sinew: warning: " << muscle->path().path().component()
+                << ": no fiber length balances the tendon (even the shortest fiber pulls harder): "
+                   "the fiber starts at its minimum length, "
+                << z[1] << " m\n";
+    }
+  }
+}
+
+}  // namespace
+
+engine::State MakeStartState(const engine::System& system, const InitialStates* initial,
+                             bool equilibrate_muscles, double t, const std::string& model_path) {
   try {
-    return engine::MakeDefaultState(system, t);
+    engine::State state = engine::MakeDefaultState(system, t);
+    if (initial) {
+      ApplyInitialStateVariables(*initial, system, state);
+      if (equilibrate_muscles) engine::InitializeStateVariables(system, state);
+    }
+    if (equilibrate_muscles) WarnFibersAtMinimumLength(system, state);
+    return state;
   } catch (const Error& error) {  // e.g. constraints that cannot be assembled: name the model
     if (!error.where().file.empty()) throw;
     throw Error({model_path, 0}, error.component(), error.message());

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "apps/sinew/initial_states.h"
+
 namespace sinew::cli {
 
 /// How the model of a run is built (the parser's options).
@@ -31,6 +33,11 @@ struct ModelOptions {
   std::vector<std::string> external_loads;   ///< ExternalLoads files
   std::vector<std::string> disabled_forces;  ///< forces left out by name
   std::vector<std::string> excitations;      ///< --excitation NAME=KIND:ARGS
+  /// Muscles start at muscle-tendon equilibrium (`--equilibrate-muscles`, the Forward tool's
+  /// solve_for_equilibrium_for_auxiliary_states).
+  bool equilibrate_muscles = false;
+  /// OLD=NEW: forces of class OLD are read as class NEW (`--rename-force-class`).
+  std::vector<std::string> renamed_force_classes;
 };
 
 /// A parsed model: the parser (its Report, its controller) and the finalized system.
@@ -43,10 +50,14 @@ struct BuiltModel {
 /// finalized system, sets the excitations, and notes the Report's warnings on stderr.
 BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options);
 
-/// The default state at `t` (assembled onto the constraints); an error without a file names
+/// The state a run starts from at `t`: the default state (assembled onto the constraints;
+/// muscles at equilibrium when `equilibrate_muscles`), then the auxiliary state variables the
+/// `initial` row names (may be null), then, with `equilibrate_muscles`, muscle equilibrium again
+/// at the row's activations (OpenSim: the states file first, then equilibrium); a warning names
+/// each muscle whose fiber had to start at its minimum length. An error without a file names
 /// the model.
-engine::State MakeInitialState(const engine::System& system, double t,
-                               const std::string& model_path);
+engine::State MakeStartState(const engine::System& system, const InitialStates* initial,
+                             bool equilibrate_muscles, double t, const std::string& model_path);
 
 /// The output files of a run; an empty name is not written.
 struct TableFiles {

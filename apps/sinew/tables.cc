@@ -3,6 +3,8 @@
 #include <sinew/common/error.h>
 #include <sinew/io/storage_labels.h>
 
+#include <algorithm>
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -117,13 +119,18 @@ void PrintTableNotes(const Diagnostics& notes) {
 kinematics::MotionColumnMap MapMotionColumnsFor(const io::Storage& motion, const std::string& path,
                                                 const model::ModelSpec& spec,
                                                 const kinematics::CoordinateCouplers& couplers,
-                                                const std::string& missing_means) {
+                                                const std::string& missing_means,
+                                                const std::vector<std::string>& used_elsewhere) {
   kinematics::MotionColumnMap map = kinematics::MapMotionColumns(spec, motion.labels);
   // Speed columns (`q_u`, `.../speed`) are not used but do name a coordinate.
   std::vector<std::string> names, unknown;
   for (const model::CoordinateSpec& c : spec.coordinates) names.push_back(c.name);
   for (const std::string& label : map.unknown) {
-    if (!io::ParseColumnLabel(label, names)) unknown.push_back(label);
+    if (io::ParseColumnLabel(label, names)) continue;
+    if (std::find(used_elsewhere.begin(), used_elsewhere.end(), label) != used_elsewhere.end()) {
+      continue;
+    }
+    unknown.push_back(label);
   }
   WarnUnusedColumns(unknown, path, "they name no coordinate of the model");
   std::vector<std::string> missing;

@@ -31,11 +31,12 @@ void WarnUnusedColumns(const std::vector<std::string>& labels, const std::string
 /// warning line for the columns that name no coordinate (speed columns do name one) and one
 /// note line for the coordinates of the model no column drives (a coupler's dependent
 /// coordinates excepted: they follow their drivers); `missing_means` ends that note ("they keep
-/// their default values").
-kinematics::MotionColumnMap MapMotionColumnsFor(const io::Storage& motion, const std::string& path,
-                                                const model::ModelSpec& spec,
-                                                const kinematics::CoordinateCouplers& couplers,
-                                                const std::string& missing_means);
+/// their default values"). Columns in `used_elsewhere` (e.g. muscle states another table reads)
+/// are not reported.
+kinematics::MotionColumnMap MapMotionColumnsFor(
+    const io::Storage& motion, const std::string& path, const model::ModelSpec& spec,
+    const kinematics::CoordinateCouplers& couplers, const std::string& missing_means,
+    const std::vector<std::string>& used_elsewhere = {});
 
 /// One note line for what a table and a model did not match (viz::MotionFromTable's or
 /// viz::PosesAtTime's notes): their count and the first. Nothing when `notes` is empty.

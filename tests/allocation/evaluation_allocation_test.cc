@@ -7,6 +7,7 @@
 #include <sinew/engine/system.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/opensim/build_system.h>
+#include <sinew/opensim/parser.h>
 
 #include <atomic>
 #include <cmath>
@@ -66,6 +67,27 @@ TEST(EvaluationAllocationTest, ChainWithCouplersEvaluatesWithoutHeapUse) {
   const System system = testing::MakeChain(20, JointForm::kParameterized, 3);
   const State state = MakeDefaultState(system);
   EXPECT_EQ(AllocationsPerEvaluations(system, state, 10), 0);
+}
+
+TEST(EvaluationAllocationTest, MusclesOnPathsEvaluateWithoutHeapUse) {
+  // arm26's six Thelen2003Muscles: each evaluation computes their paths (thread-local buffers)
+  // and tensions, and the muscles' state derivatives.
+  opensim::OpenSimParser parser;
+  const auto system = parser.Parse(std::string(SINEW_TEST_DATA_DIR) +
+                                   "/opensim-org/opensim-models/Models/Arm26/arm26.osim");
+  ASSERT_EQ(system->num_state_variables(), 12);
+  State state = MakeDefaultState(*system);
+  state.u.setConstant(0.5);
+  PlaceBodies(*system, state);
+  state.inputs.setConstant(0.3);
+  VecX zdot(system->num_state_variables());
+  CalcStateVariableDerivatives(*system, state, zdot);
+  EXPECT_EQ(AllocationsPerEvaluations(*system, state, 10), 0);
+  g_allocations = 0;
+  g_counting = true;
+  for (int i = 0; i < 10; ++i) CalcStateVariableDerivatives(*system, state, zdot);
+  g_counting = false;
+  EXPECT_EQ(g_allocations.load(), 0);
 }
 
 TEST(EvaluationAllocationTest, TheCounterCounts) {

@@ -22,7 +22,8 @@ const std::string kRajagopal =
 const std::string kArm26 = kData + "/opensim-org/opensim-models/Models/Arm26/arm26.osim";
 
 // Counts in the file itself (an XML parser, not Sinew's reader): the ForceSet's elements whose
-// class ends in "Muscle", the forces Sinew simulates (Point, Torque and CoordinateActuator,
+// class ends in "Muscle" but is not simulated (every muscle class but Thelen2003Muscle), the
+// forces Sinew simulates (Thelen2003Muscle, PathActuator, Point, Torque and CoordinateActuator,
 // SpringGeneralizedForce, PointToPointSpring, CoordinateLimitForce, the bushings, the
 // expression-based forces, PrescribedForce) and its other forces, the
 // ConstraintSet's CoordinateCouplerConstraints (simulated) and other elements, and every body's
@@ -38,9 +39,10 @@ FileCounts CountInFile(const std::string& osim) {
   FileCounts counts;
   for (const pugi::xpath_node& n : doc.select_nodes("//ForceSet/objects/*")) {
     const std::string tag = n.node().name();
-    if (tag.ends_with("Muscle")) {
+    if (tag.ends_with("Muscle") && tag != "Thelen2003Muscle") {
       ++counts.muscles;
-    } else if (tag == "PointActuator" || tag == "TorqueActuator" || tag == "CoordinateActuator" ||
+    } else if (tag == "Thelen2003Muscle" || tag == "PathActuator" || tag == "PointActuator" ||
+               tag == "TorqueActuator" || tag == "CoordinateActuator" ||
                tag == "SpringGeneralizedForce" || tag == "PointToPointSpring" ||
                tag == "CoordinateLimitForce" || tag == "BushingForce" ||
                tag == "FunctionBasedBushingForce" || tag == "ExpressionBasedBushingForce" ||
@@ -91,11 +93,11 @@ TEST_F(NotSimulatedTest, SimulateSaysOnceWhatIsLeftOutByKind) {
 
 TEST_F(NotSimulatedTest, StrictMakesItAnError) {
   const FileCounts counts = CountInFile(kArm26);
+  ASSERT_EQ(counts.muscles, 0);  // its Thelen2003Muscles are simulated; its wraps are not
   const CliRun run =
       Run("simulate " + kArm26 + " --duration 0 --strict --quiet --out " + Path("out"));
   EXPECT_EQ(run.exit_code, 2) << run.err;
-  EXPECT_NE(run.err.find("sinew: error: " + kArm26 +
-                         ": --strict: " + std::to_string(counts.muscles) + " muscles and " +
+  EXPECT_NE(run.err.find("sinew: error: " + kArm26 + ": --strict: " +
                          std::to_string(counts.wrap_objects) + " wrap objects are NOT simulated"),
             std::string::npos)
       << run.err;
@@ -110,7 +112,8 @@ TEST_F(NotSimulatedTest, StrictMakesItAnError) {
 }
 
 // arm26 from a states file as OpenSim 4 writes them: coordinate values and speeds, and the
-// muscles' activation and fiber_length, which Sinew does not simulate.
+// muscles' activation and fiber_length, which set the muscles' states; two more columns name
+// a muscle the model does not have.
 TEST_F(NotSimulatedTest, UnusableInitialStateColumnsAreReportedInOneLine) {
   const std::string states = Path("arm26_states.sto");
   {
@@ -119,11 +122,12 @@ TEST_F(NotSimulatedTest, UnusableInitialStateColumnsAreReportedInOneLine) {
            "\t/jointset/r_shoulder/r_shoulder_elev/value\t/jointset/r_shoulder/r_shoulder_elev/"
            "speed"
            "\t/jointset/r_elbow/r_elbow_flex/value\t/jointset/r_elbow/r_elbow_flex/speed";
-    for (const char* muscle : {"TRIlong", "TRIlat", "TRImed", "BIClong", "BICshort", "BRA"}) {
+    for (const char* muscle :
+         {"TRIlong", "TRIlat", "TRImed", "BIClong", "BICshort", "BRA", "ghost"}) {
       out << "\t/forceset/" << muscle << "/activation\t/forceset/" << muscle << "/fiber_length";
     }
     out << "\n0\t0.1\t0\t0.5\t0";
-    for (int i = 0; i < 6; ++i) out << "\t0.05\t0.1";
+    for (int i = 0; i < 7; ++i) out << "\t0.05\t0.1";
     out << "\n";
   }
   const std::string base = "simulate " + kArm26 + " --duration 0 --quiet --initial-states " +
@@ -132,19 +136,28 @@ TEST_F(NotSimulatedTest, UnusableInitialStateColumnsAreReportedInOneLine) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(CountOccurrences(run.err, "are not used"), 1) << run.err;
   EXPECT_NE(run.err.find("sinew: warning: " + states +
-                         ": 12 columns are not used (/forceset/TRIlong/activation, "
-                         "/forceset/TRIlong/fiber_length, /forceset/TRIlat/activation and 9 "
-                         "more): they name no coordinate value or speed that is simulated\n"),
+                         ": 2 columns are not used (/forceset/ghost/activation, "
+                         "/forceset/ghost/fiber_length): they name no coordinate value or speed "
+                         "or state variable that is simulated\n"),
             std::string::npos)
       << run.err;
-  // The coordinates were used: the first row of states.sto is the file's.
+  // The coordinates and the muscles' states were used: the first row of states.sto is the file's.
   const auto columns = engine::testing::ReadStoColumns(Path("out/states.sto"));
   EXPECT_EQ(columns.at("/jointset/r_shoulder/r_shoulder_elev/value").front(), 0.1);
   EXPECT_EQ(columns.at("/jointset/r_elbow/r_elbow_flex/value").front(), 0.5);
-  // --strict refuses the file (the columns come before the model's own muscles).
-  const CliRun strict = Run(base + " --strict");
+  EXPECT_EQ(columns.at("/forceset/BRA/activation").front(), 0.05);
+  EXPECT_EQ(columns.at("/forceset/BRA/fiber_length").front(), 0.1);
+  // --strict refuses the file (on a model with nothing else left out).
+  const std::string pendulum = kData + "/projectchrono/chrono/data/opensim/double_pendulum.osim";
+  const std::string ghost = Path("ghost_states.sto");
+  std::ofstream(ghost) << "states\nversion=1\ninDegrees=no\nendheader\ntime"
+                          "\t/forceset/ghost/activation\n0\t0.5\n";
+  const CliRun strict = Run("simulate " + pendulum +
+                            " --duration 0 --quiet --strict "
+                            "--initial-states " +
+                            ghost + " --out " + Path("out2"));
   EXPECT_EQ(strict.exit_code, 2) << strict.err;
-  EXPECT_NE(strict.err.find("sinew: error: " + states + ": --strict: 12 columns are not used"),
+  EXPECT_NE(strict.err.find("sinew: error: " + ghost + ": --strict: 1 column is not used"),
             std::string::npos)
       << strict.err;
 }

@@ -21,7 +21,7 @@ TEST(Support, ListsEverythingNotSimulatedYet) {
     <socket_child_frame>/bodyset/c</socket_child_frame></MyPluginJoint>
 </objects></JointSet>
 <ForceSet><objects><CoordinateActuator name="act"><coordinate>x</coordinate></CoordinateActuator>
-  <Thelen2003Muscle name="musc"/></objects></ForceSet>
+  <Millard2012AccelerationMuscle name="musc"/></objects></ForceSet>
 <ConstraintSet><objects><RollingOnSurfaceConstraint name="roll"/></objects></ConstraintSet>
 <ContactGeometrySet><objects><ContactSphere name="cs"><socket_frame>/bodyset/c</socket_frame>
   <radius>0.2</radius></ContactSphere></objects></ContactGeometrySet>
@@ -37,7 +37,7 @@ TEST(Support, ListsEverythingNotSimulatedYet) {
   EXPECT_EQ(plugin.child_body, spec.FindBody("c"));
   const std::vector<std::string> expected = {
       "/jointset/plugin: MyPluginJoint",
-      "/forceset/musc: Thelen2003Muscle",
+      "/forceset/musc: Millard2012AccelerationMuscle",
       "/constraintset/roll: RollingOnSurfaceConstraint",
       "/controllerset/reflex: ToyReflexController",
       "/contactgeometryset/cs: ContactSphere",

@@ -115,6 +115,10 @@ const ForceType* FindForceType(const std::string& opensim_class) {
       {"ExpressionBasedCoordinateForce", {&BuildExpressionBasedCoordinateForce, false}},
       {"ExpressionBasedPointToPointForce", {&BuildExpressionBasedPointToPointForce, false}},
       {"PrescribedForce", {&BuildPrescribedForce, false}},
+      {"PathActuator", {&BuildPathActuator, true}},
+      {"PathSpring", {&BuildPathSpring, false}},
+      {"Thelen2003Muscle", {&BuildThelen2003Muscle, true}},
+      {"Thelen2003Muscle_Deprecated", {&BuildThelen2003MuscleDeprecated, true}},
   };
   const auto it = registry.find(opensim_class);
   return it == registry.end() ? nullptr : &it->second;
@@ -125,13 +129,13 @@ std::shared_ptr<engine::ForceElement> BuildForce(const model::ModelSpec& spec,
                                                  const std::vector<int>& body_map,
                                                  const std::vector<int>& coordinate_map,
                                                  const io::ExternalLoads* external_loads,
-                                                 Diagnostics* notes) {
+                                                 Diagnostics* notes, bool equilibrate_muscles) {
   const std::string& file = external_loads ? external_loads->file : spec.file;
   const model::ElementValues values(force.element, file, force.path);
   const ForceType* type = FindForceType(force.type);
   if (!type) values.Fail("'" + force.type + "' is not a force type Sinew simulates");
-  return type->build(
-      ForceBuildInput{spec, force, values, body_map, coordinate_map, external_loads, notes});
+  return type->build(ForceBuildInput{spec, force, values, body_map, coordinate_map,
+                                     external_loads, notes, equilibrate_muscles});
 }
 
 }  // namespace sinew::opensim::internal

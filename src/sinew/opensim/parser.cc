@@ -63,6 +63,11 @@ void OpenSimParser::Parse(engine::System& system, const std::string& filename) {
 
 void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
   spec_ = std::move(spec);
+  for (model::ForceSpec& force : spec_.forces) {
+    for (const auto& [from, to] : force_class_renames_) {
+      if (force.type == from) force.type = to;
+    }
+  }
   report_ = Report();
   collision_ = contact::CollisionModel();
   contact_method_ = ContactMethod::kNsc;
@@ -151,8 +156,8 @@ void OpenSimParser::BuildOneForce(engine::System& system, const model::ForceSpec
     info.disabled = "appliesForce false in the file";
   } else if (IsForceSimulated(force)) {
     Diagnostics notes;
-    auto element =
-        internal::BuildForce(spec_, force, body_map, coordinate_map, external_loads, &notes);
+    auto element = internal::BuildForce(spec_, force, body_map, coordinate_map, external_loads,
+                                        &notes, equilibrate_muscles_);
     for (Diagnostic& note : notes) report_.AddWarning(std::move(note));
     const int k = system.AddForceElement(element);
     info.load = element;

@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sinew::opensim {
@@ -59,6 +60,18 @@ class OpenSimParser {
   /// every later Parse; the Report lists it as disabled. May be called several times. Parse
   /// throws sinew::Error, listing close names, when no force has this name.
   void DisableForce(const std::string& name) { disabled_forces_.push_back(name); }
+  /// With true, every muscle's fiber length starts at muscle-tendon equilibrium for its
+  /// activation and the initial pose (OpenSim's equilibrateMuscles, the Forward tool's
+  /// solve_for_equilibrium_for_auxiliary_states), computed whenever a default state is made or
+  /// engine::InitializeStateVariables is called; a muscle without an equilibrium makes that an
+  /// error naming it. Default false: the file's default_fiber_length (or loaded states).
+  void EquilibrateMuscles(bool equilibrate) { equilibrate_muscles_ = equilibrate; }
+  /// Reads the forces of class `from` as class `to` in every later Parse (OpenSim's
+  /// Object::renameType; OpenSim's own forward tests read Thelen2003Muscle as
+  /// Thelen2003Muscle_Deprecated). The Report lists them under `to`.
+  void RenameForceClass(const std::string& from, const std::string& to) {
+    force_class_renames_.emplace_back(from, to);
+  }
 
   /// Reads `filename` and adds its bodies, joints and actuators to `system` (which must not be
   /// finalized yet; call system.Finalize() before simulating). Throws sinew::Error.
@@ -118,6 +131,8 @@ class OpenSimParser {
   std::string controls_file_;
   std::vector<std::string> external_loads_files_;
   std::vector<std::string> disabled_forces_;
+  bool equilibrate_muscles_ = false;
+  std::vector<std::pair<std::string, std::string>> force_class_renames_;
   std::vector<std::string> geometry_dirs_;
   ContactMethod contact_method_ = ContactMethod::kNsc;
 

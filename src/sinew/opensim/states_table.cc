@@ -1,5 +1,7 @@
 #include <sinew/opensim/states_table.h>
 
+#include <algorithm>
+
 namespace sinew::opensim {
 
 std::vector<std::string> StatesLabels(const engine::System& system) {
@@ -39,6 +41,20 @@ std::vector<std::string> ControlsLabels(const engine::System& system) {
 
 void ControlsRow(const engine::State& state, std::vector<double>& row) {
   row.assign(state.inputs.data(), state.inputs.data() + state.inputs.size());
+}
+
+int FindStateVariableColumn(const engine::System& system, const std::string& label) {
+  std::string name = label;
+  constexpr std::string_view kForceSet = "/forceset/";
+  if (name.starts_with(kForceSet)) {
+    name = name.substr(kForceSet.size());
+  } else if (const size_t dot = name.rfind('.');
+             dot != std::string::npos && name.find('/') == std::string::npos) {
+    name[dot] = '/';
+  }
+  const std::vector<std::string>& names = system.state_variable_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? -1 : static_cast<int>(it - names.begin());
 }
 
 }  // namespace sinew::opensim

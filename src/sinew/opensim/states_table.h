@@ -25,4 +25,9 @@ std::vector<std::string> ControlsLabels(const engine::System& system);
 /// The inputs of `state` in ControlsLabels order, written into `row` (resized).
 void ControlsRow(const engine::State& state, std::vector<double>& row);
 
+/// The auxiliary state variable (index into State::z) that the column `label` of a states file
+/// names, or -1: OpenSim 4's "/forceset/<element>/<variable>", OpenSim 3's
+/// "<element>.<variable>" (e.g. "TRIlong.fiber_length") or "<element>/<variable>".
+int FindStateVariableColumn(const engine::System& system, const std::string& label);
+
 }  // namespace sinew::opensim

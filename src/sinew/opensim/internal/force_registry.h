@@ -30,6 +30,8 @@ struct ForceBuildInput {
   const io::ExternalLoads* external_loads = nullptr;
   /// Where a builder notes what it read leniently, as OpenSim would (may be null).
   Diagnostics* notes = nullptr;
+  /// Muscles start at muscle-tendon equilibrium (OpenSimParser::EquilibrateMuscles).
+  bool equilibrate_muscles = false;
 };
 
 /// How one OpenSim force class is built.
@@ -82,6 +84,12 @@ std::shared_ptr<engine::ForceElement> BuildExpressionBasedPointToPointForce(
     const ForceBuildInput& in);
 /// PrescribedForce (prescribed_force_builder.cc).
 std::shared_ptr<engine::ForceElement> BuildPrescribedForce(const ForceBuildInput& in);
+/// PathActuator and the muscles (muscle_builders.cc): a muscles::PathActuator on the force's
+/// GeometryPath with its tension model; PathSpring (muscles::PathSpring).
+std::shared_ptr<engine::ForceElement> BuildPathActuator(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildPathSpring(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildThelen2003MuscleDeprecated(const ForceBuildInput& in);
 
 /// The entry for OpenSim class `opensim_class`, or null when Sinew does not simulate it.
 const ForceType* FindForceType(const std::string& opensim_class);
@@ -93,7 +101,8 @@ std::shared_ptr<engine::ForceElement> BuildForce(const model::ModelSpec& spec,
                                                  const std::vector<int>& body_map,
                                                  const std::vector<int>& coordinate_map,
                                                  const io::ExternalLoads* external_loads = nullptr,
-                                                 Diagnostics* notes = nullptr);
+                                                 Diagnostics* notes = nullptr,
+                                                 bool equilibrate_muscles = false);
 
 /// The last segment of a socket path ("/bodyset/rod1" -> "rod1"), or the name itself.
 std::string LastPathSegment(const std::string& path);

@@ -1,0 +1,79 @@
+// `sinew simulate` with muscles: equilibrium on request, the class rename OpenSim's forward
+// tests use, and their errors.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "apps/cli_test_util.h"
+#include "engine/test_models.h"
+
+namespace sinew {
+namespace {
+
+using testing::CliRun;
+
+const std::string kArm26 =
+    std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-models/Models/Arm26/arm26.osim";
+
+class SimulateMusclesTest : public testing::CliTest {};
+
+TEST_F(SimulateMusclesTest, EquilibrateMusclesMovesFibersOffTheirDefaults) {
+  const CliRun plain = Run("simulate " + kArm26 + " --duration 0 --quiet --out " + Path("plain"));
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const CliRun eq =
+      Run("simulate " + kArm26 + " --duration 0 --quiet --equilibrate-muscles --out " + Path("eq"));
+  ASSERT_EQ(eq.exit_code, 0) << eq.err;
+  const auto a = engine::testing::ReadStoColumns(Path("plain/states.sto"));
+  const auto b = engine::testing::ReadStoColumns(Path("eq/states.sto"));
+  // Without equilibrium: the file's default_fiber_length (TRIlong's optimal length 0.134 m).
+  EXPECT_EQ(a.at("/forceset/TRIlong/fiber_length").front(), 0.134);
+  EXPECT_NE(b.at("/forceset/TRIlong/fiber_length").front(), 0.134);
+  EXPECT_EQ(b.at("/forceset/TRIlong/activation").front(), 0.05);  // the default activation
+}
+
+TEST_F(SimulateMusclesTest, RenamedClassIsSimulatedAndItsMissingEquilibriumIsAnError) {
+  const std::string rename = " --rename-force-class Thelen2003Muscle=Thelen2003Muscle_Deprecated";
+  const CliRun run =
+      Run("simulate " + kArm26 + rename + " --duration 0.01 --quiet --out " + Path("dep"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const CliRun eq = Run("simulate " + kArm26 + rename +
+                        " --duration 0.01 --quiet --equilibrate-muscles --out " + Path("eq"));
+  EXPECT_EQ(eq.exit_code, 2) << eq.err;
+  EXPECT_NE(eq.err.find(kArm26 + ": /forceset/TRIlong: muscle-tendon equilibrium is not "
+                                 "implemented for Thelen2003Muscle_Deprecated"),
+            std::string::npos)
+      << eq.err;
+  const CliRun bad = Run("simulate " + kArm26 +
+                         " --rename-force-class Thelen2003Muscle --duration 0 --out " + Path("b"));
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+  EXPECT_NE(bad.err.find("--rename-force-class: expects OLD=NEW"), std::string::npos) << bad.err;
+}
+
+TEST_F(SimulateMusclesTest, FiberAtItsMinimumLengthIsAWarning) {
+  // Without pennation the minimum fiber length is 0; a tendon 0.5% past its slack length pulls
+  // less than even a zero-length fiber at activation 0.2 (0.2 fal(0) > fse(1.005)).
+  const std::string model = Path("short.osim");
+  std::ofstream(model) << R"(<OpenSimDocument Version="40000"><Model name="m">
+<Ground name="ground"/><BodySet><objects><Body name="block"><mass>2</mass>
+<inertia>0.1 0.1 0.1 0 0 0</inertia></Body></objects></BodySet>
+<JointSet><objects><SliderJoint name="slide"><socket_parent_frame>/ground</socket_parent_frame>
+<socket_child_frame>/bodyset/block</socket_child_frame><coordinates><Coordinate name="x">
+<default_value>0.1</default_value><locked>true</locked></Coordinate></coordinates></SliderJoint>
+</objects></JointSet><ForceSet><objects><Thelen2003Muscle name="musc"><GeometryPath>
+<PathPointSet><objects><PathPoint name="p1"><socket_parent_frame>/ground</socket_parent_frame>
+<location>-0.3 0 0</location></PathPoint><PathPoint name="p2"><socket_parent_frame>/bodyset/block
+</socket_parent_frame><location>0 0 0</location></PathPoint></objects></PathPointSet>
+</GeometryPath><optimal_fiber_length>0.1</optimal_fiber_length>
+<tendon_slack_length>0.398</tendon_slack_length><default_activation>0.2</default_activation>
+</Thelen2003Muscle></objects></ForceSet></Model></OpenSimDocument>)";
+  const CliRun run =
+      Run("simulate " + model + " --duration 0 --quiet --equilibrate-muscles --out " + Path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("sinew: warning: /forceset/musc: no fiber length balances the tendon"),
+            std::string::npos)
+      << run.err;
+}
+
+}  // namespace
+}  // namespace sinew

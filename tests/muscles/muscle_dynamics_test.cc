@@ -1,0 +1,179 @@
+// Path actuators and Thelen2003Muscle through the OpenSim parser and the engine, against
+// closed forms: a PathActuator's constant tension accelerating a block, activation under a
+// constant excitation (the separable first-order equation), a muscle at equilibrium staying
+// there, and the errors of bad muscle parameters.
+#include <gtest/gtest.h>
+#include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/energy.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/functions/constant.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/muscles/path_actuator.h>
+#include <sinew/opensim/parser.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+namespace sinew::muscles {
+namespace {
+
+// A 2 kg block on a slider along ground's x (coordinate x, default 0.1 m, `locked` or not),
+// with `forces` in its ForceSet; no gravity along the slider.
+std::string SliderModel(const std::string& forces, bool locked) {
+  return std::string(R"(<OpenSimDocument Version="40000"><Model name="slider">
+<gravity>0 -9.80665 0</gravity><Ground name="ground"/>
+<BodySet><objects><Body name="block"><mass>2</mass><inertia>0.1 0.1 0.1 0 0 0</inertia></Body>
+</objects></BodySet>
+<JointSet><objects><SliderJoint name="slide"><socket_parent_frame>/ground</socket_parent_frame>
+<socket_child_frame>/bodyset/block</socket_child_frame>
+<coordinates><Coordinate name="x"><default_value>0.1</default_value><locked>)") +
+         (locked ? "true" : "false") + R"(</locked></Coordinate></coordinates>
+</SliderJoint></objects></JointSet>
+<ForceSet><objects>
+)" + forces +
+         R"(
+</objects></ForceSet></Model></OpenSimDocument>)";
+}
+
+// A path from ground at x = -0.3 m to the block's origin: length 0.4 m at x = 0.1 m.
+const char* kPath = R"(<GeometryPath><PathPointSet><objects>
+<PathPoint name="p1"><socket_parent_frame>/ground</socket_parent_frame><location>-0.3 0 0</location></PathPoint>
+<PathPoint name="p2"><socket_parent_frame>/bodyset/block</socket_parent_frame><location>0 0 0</location></PathPoint>
+</objects></PathPointSet></GeometryPath>)";
+
+std::string Thelen(const std::string& extra) {
+  return std::string(R"(<Thelen2003Muscle name="musc">)") + kPath +
+         R"(<max_isometric_force>500</max_isometric_force><optimal_fiber_length>0.12</optimal_fiber_length>
+<tendon_slack_length>0.27</tendon_slack_length><pennation_angle_at_optimal>0.2</pennation_angle_at_optimal>
+<activation_time_constant>0.01</activation_time_constant><deactivation_time_constant>0.04</deactivation_time_constant>
+<default_activation>0.2</default_activation>)" +
+         extra + "</Thelen2003Muscle>";
+}
+
+struct Parsed {
+  opensim::OpenSimParser parser;
+  std::unique_ptr<engine::System> system;
+};
+
+std::unique_ptr<Parsed> Parse(const std::string& text, bool equilibrate = false) {
+  auto parsed = std::make_unique<Parsed>();
+  parsed->parser.EquilibrateMuscles(equilibrate);
+  const model::ModelSpec spec = io::ReadOsimString(text, "muscle_test.osim");
+  parsed->system = std::make_unique<engine::System>(spec.gravity);
+  parsed->parser.ParseSpec(*parsed->system, spec);
+  parsed->system->Finalize();
+  return parsed;
+}
+
+TEST(PathActuatorTest, ConstantTensionAcceleratesTheBlockAsTheClosedForm) {
+  auto parsed = Parse(
+      SliderModel(std::string(R"(<PathActuator name="act"><optimal_force>30</optimal_force>)") +
+                      kPath + "</PathActuator>",
+                  false));
+  parsed->parser.SetExcitationFunction("act", std::make_shared<functions::Constant>(0.5));
+  auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-10});
+  integrator->SetController(parsed->parser.GetController());
+  engine::State state = engine::MakeDefaultState(*parsed->system);
+  integrator->StepTo(state, 0.3);
+  // Tension 15 N pulls the block towards the ground point (reached at x = -0.3 m, t = 0.33 s):
+  // x = 0.1 - 15 t^2 / (2 * 2 kg).
+  EXPECT_NEAR(engine::GetCoordinateValue(*parsed->system, state, "x"), 0.1 - 15.0 * 0.09 / 4.0,
+              1e-10);
+  EXPECT_NEAR(engine::GetCoordinateSpeed(*parsed->system, state, "x"), -15.0 * 0.3 / 2.0, 1e-9);
+}
+
+TEST(PathSpringTest, StretchedSpringOscillatesAsTheClosedFormAndConservesEnergy) {
+  // k = 50 N/m, resting length 0.3 m: the 2 kg block at x = 0.1 (length 0.4 m) follows
+  // x = 0.1 cos(5 t) while the spring is stretched (x > 0, t < pi / 10 s).
+  auto parsed =
+      Parse(SliderModel(std::string(R"(<PathSpring name="spring">)") + kPath +
+                            "<resting_length>0.3</resting_length><stiffness>50</stiffness>"
+                            "<dissipation>0</dissipation></PathSpring>",
+                        false));
+  auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-11});
+  engine::State state = engine::MakeDefaultState(*parsed->system);
+  const double energy0 = engine::CalcMechanicalEnergy(*parsed->system, state);
+  EXPECT_NEAR(energy0, 0.5 * 50 * 0.1 * 0.1 + 2 * 9.80665 * 0.0, 1e-12);  // slider at y = 0
+  for (double t : {0.1, 0.2, 0.3}) {
+    integrator->StepTo(state, t);
+    EXPECT_NEAR(engine::GetCoordinateValue(*parsed->system, state, "x"), 0.1 * std::cos(5 * t),
+                1e-10)
+        << t;
+    EXPECT_NEAR(engine::CalcMechanicalEnergy(*parsed->system, state), energy0, 1e-10) << t;
+  }
+  // A spring without its properties (OpenSim's defaults are NaN) is refused by name.
+  EXPECT_THROW(Parse(SliderModel(
+                   std::string(R"(<PathSpring name="spring">)") + kPath + "</PathSpring>", false)),
+               Error);
+}
+
+TEST(ThelenMuscleTest, ActivationRisesAsTheClosedFormOfItsFirstOrderEquation) {
+  auto parsed = Parse(SliderModel(Thelen(""), true));
+  const double u = 0.8, a0 = 0.2, tau = 0.01;
+  parsed->parser.SetExcitationFunction("musc", std::make_shared<functions::Constant>(u));
+  auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-10});
+  integrator->SetController(parsed->parser.GetController());
+  engine::State state = engine::MakeDefaultState(*parsed->system);
+  // da/dt = (u - a) / (tau (0.5 + 1.5 a)) integrates to
+  // t(a) = tau [-1.5 (a - a0) - (0.5 + 1.5 u) ln((u - a) / (u - a0))].
+  for (double a : {0.3, 0.5, 0.7, 0.79}) {
+    const double t = tau * (-1.5 * (a - a0) - (0.5 + 1.5 * u) * std::log((u - a) / (u - a0)));
+    integrator->StepTo(state, t);
+    EXPECT_NEAR(state.z[0], a, 1e-8) << "t = " << t;
+  }
+}
+
+TEST(ThelenMuscleTest, MuscleAtEquilibriumStaysThereUnderConstantExcitation) {
+  auto parsed = Parse(SliderModel(Thelen(""), true), /*equilibrate=*/true);
+  parsed->parser.SetExcitationFunction("musc", std::make_shared<functions::Constant>(0.2));
+  auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-12});
+  integrator->SetController(parsed->parser.GetController());
+  engine::State state = engine::MakeDefaultState(*parsed->system);
+  const double fiber0 = state.z[1];
+  const auto* muscle = dynamic_cast<const PathActuator*>(parsed->system->force_elements()[0].get());
+  ASSERT_NE(muscle, nullptr);
+  const MuscleQuantities q0 = muscle->CalcQuantities(parsed->system->MakeForceContext(0, state));
+  // At equilibrium the fiber force along the tendon is the tendon force.
+  EXPECT_NEAR((q0.active_fiber_force + q0.passive_fiber_force) * std::cos(q0.pennation_angle),
+              q0.tendon_force, 1e-9 * 500);
+  EXPECT_GT(q0.tendon_force, 10.0);
+  integrator->StepTo(state, 1.0);
+  EXPECT_NEAR(state.z[0], 0.2, 1e-12);
+  EXPECT_NEAR(state.z[1], fiber0, 1e-12);
+  const MuscleQuantities q1 = muscle->CalcQuantities(parsed->system->MakeForceContext(0, state));
+  // The fiber may move by the integrator's 1e-12; the musculotendon stiffness along the fiber
+  // here is about 5e4 N/m, so the tendon force by 5e-8 N.
+  EXPECT_NEAR(q1.tendon_force, q0.tendon_force, 1e-7);
+}
+
+TEST(ThelenMuscleTest, IgnoredFlagsAreReported) {
+  // OpenSim's Thelen2003Muscle does not use these flags; Sinew follows it and says so.
+  auto parsed =
+      Parse(SliderModel(Thelen("<ignore_tendon_compliance>true</ignore_tendon_compliance>"), true));
+  const auto& warnings = parsed->parser.GetReport().warnings();
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].component, "/forceset/musc");
+  EXPECT_NE(warnings[0].message.find("ignore_tendon_compliance is true, but Thelen2003Muscle "
+                                     "ignores it"),
+            std::string::npos)
+      << warnings[0].message;
+}
+
+TEST(ThelenMuscleTest, BadParametersNameFileAndMuscle) {
+  try {
+    Parse(SliderModel(Thelen("<Flen>0.9</Flen>"), true));
+    FAIL() << "no error";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("muscle_test.osim"), std::string::npos)
+        << std::string(error.what());
+    EXPECT_NE(std::string(error.what()).find("/forceset/musc"), std::string::npos)
+        << std::string(error.what());
+    EXPECT_NE(std::string(error.what()).find("Flen"), std::string::npos)
+        << std::string(error.what());
+  }
+}
+
+}  // namespace
+}  // namespace sinew::muscles
