@@ -20,6 +20,20 @@ const double kSqrtEps = std::sqrt(std::numeric_limits<double>::epsilon());
   throw Error(m.parameters().name + ": " + what);
 }
 
+// Refuses inputs no muscle state can come from (NaN or infinite values, a path of length <= 0).
+void CheckInputs(const Millard2012Muscle& m, double activation, double path_length,
+                 double path_lengthening_speed) {
+  if (!std::isfinite(activation) || !std::isfinite(path_length) || !(path_length > 0.0) ||
+      !std::isfinite(path_lengthening_speed)) {
+    char text[200];
+    std::snprintf(text, sizeof(text),
+                  "activation %g, path length %g m and lengthening speed %g m/s must be finite "
+                  "(and the length positive)",
+                  activation, path_length, path_lengthening_speed);
+    Fail(m, text);
+  }
+}
+
 // Fiso (a fal fv + fpe + beta v~): the fiber force of the damped Hill model.
 double FiberForce(double fiso, double a, double fal, double fv, double fpe, double dlceN,
                   double beta) {
@@ -93,6 +107,8 @@ Millard2012Dynamics CalcMillard2012Dynamics(const Millard2012Muscle& m, double a
   const double fiso = p.max_isometric_force, lopt = p.optimal_fiber_length;
   const double vmax = p.max_contraction_velocity, beta = p.fiber_damping;
   const bool rigid = p.ignore_tendon_compliance;
+  CheckInputs(m, activation, path_length, path_lengthening_speed);
+  if (!rigid && !std::isfinite(fiber_length)) Fail(m, "the fiber length is not finite");
   Millard2012Dynamics d;
   const double lce = m.ClampFiberLength(
       rigid ? m.pennation().FiberLength(path_length, p.tendon_slack_length) : fiber_length);
@@ -199,6 +215,7 @@ Millard2012Equilibrium SolveMillard2012Equilibrium(const Millard2012Muscle& m, d
                                                    double path_lengthening_speed) {
   const Millard2012Parameters& p = m.parameters();
   Millard2012Equilibrium result;
+  CheckInputs(m, activation, path_length, path_lengthening_speed);
   if (p.ignore_tendon_compliance) {
     const Millard2012Dynamics d = CalcMillard2012Dynamics(m, activation, 0.0, path_length, 0.0);
     result.fiber_length = d.fiber_length;
