@@ -82,9 +82,13 @@ DampedVelocity SolveDampedNormFiberVelocity(const Millard2012Muscle& m, double f
   return {converged ? dlceN : -1.0, fv, converged};
 }
 
-// The lengths and force-length multipliers for a fiber length (already clamped).
-void CalcLengths(const Millard2012Muscle& m, double lce, double path_length,
-                 Millard2012Dynamics* d) {
+// The lengths and force-length multipliers for a fiber length (already clamped), and the
+// multipliers' slopes d(fal)/d(l~), d(fpe)/d(l~).
+struct ForceLengthSlopes {
+  double active, passive;
+};
+ForceLengthSlopes CalcLengths(const Millard2012Muscle& m, double lce, double path_length,
+                              Millard2012Dynamics* d) {
   const Millard2012Parameters& p = m.parameters();
   d->fiber_length = lce;
   d->norm_fiber_length = lce / p.optimal_fiber_length;
@@ -94,8 +98,13 @@ void CalcLengths(const Millard2012Muscle& m, double lce, double path_length,
   d->fiber_length_along_tendon = lce * d->cos_pennation;
   d->tendon_length = path_length - lce * d->cos_pennation;
   d->norm_tendon_length = d->tendon_length / p.tendon_slack_length;
-  d->active_force_length_multiplier = m.active_force_length().Value(d->norm_fiber_length);
-  d->passive_force_length_multiplier = m.fiber_force_length().Value(d->norm_fiber_length);
+  const SmoothSegmentedCurve::ValueAndSlope fal =
+      m.active_force_length().ValueAndDerivative(d->norm_fiber_length);
+  const SmoothSegmentedCurve::ValueAndSlope fpe =
+      m.fiber_force_length().ValueAndDerivative(d->norm_fiber_length);
+  d->active_force_length_multiplier = fal.value;
+  d->passive_force_length_multiplier = fpe.value;
+  return {fal.slope, fpe.slope};
 }
 
 }  // namespace
@@ -112,7 +121,7 @@ Millard2012Dynamics CalcMillard2012Dynamics(const Millard2012Muscle& m, double a
   Millard2012Dynamics d;
   const double lce = m.ClampFiberLength(
       rigid ? m.pennation().FiberLength(path_length, p.tendon_slack_length) : fiber_length);
-  CalcLengths(m, lce, path_length, &d);
+  const ForceLengthSlopes slopes = CalcLengths(m, lce, path_length, &d);
   const double a = m.ClampActivation(activation);
   d.activation = a;
 
@@ -187,9 +196,7 @@ Millard2012Dynamics CalcMillard2012Dynamics(const Millard2012Muscle& m, double a
     d.passive_fiber_force = elastic + damping;
     d.fiber_force = fm;
     d.fiber_force_along_tendon = fm * d.cos_pennation;
-    d.fiber_stiffness =
-        FiberStiffness(fiso, a, fv, m.fiber_force_length().Derivative(d.norm_fiber_length, 1),
-                       m.active_force_length().Derivative(d.norm_fiber_length, 1), lopt);
+    d.fiber_stiffness = FiberStiffness(fiso, a, fv, slopes.passive, slopes.active, lopt);
     const double dfmat_dlce = DFiberForceAlongTendonDFiberLength(
         m.pennation(), fm, d.fiber_stiffness, lce, d.sin_pennation, d.cos_pennation);
     d.fiber_stiffness_along_tendon = DFiberForceAlongTendonDLengthAlongTendon(

@@ -12,23 +12,57 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-// A Bezier polynomial of degree n <= 5 at u (de Casteljau's algorithm on its n + 1 points).
-double EvalBezier(std::array<double, 6> p, int n, double u) {
-  for (int level = n; level > 0; --level) {
-    for (int i = 0; i < level; ++i) p[i] = (1.0 - u) * p[i] + u * p[i + 1];
+// The monomial coefficients of a quintic Bezier coordinate: a_k = C(5, k) sum_i (-1)^(k-i)
+// C(k, i) p_i.
+std::array<double, 6> MonomialCoefficients(const std::array<double, 6>& p) {
+  static constexpr int kBinomial[6][6] = {{1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1},
+                                          {1, 5, 10, 10, 5, 1}};
+  std::array<double, 6> a{};
+  for (int k = 0; k <= 5; ++k) {
+    double sum = 0.0;
+    for (int i = 0; i <= k; ++i) sum += ((k - i) % 2 ? -1.0 : 1.0) * kBinomial[k][i] * p[i];
+    a[k] = kBinomial[5][k] * sum;
   }
-  return p[0];
+  return a;
 }
 
-// The value and the first two u-derivatives of a quintic Bezier coordinate at u.
-struct BezierDerivatives {
+// The value and the first two u-derivatives of a quintic in monomial form at u (Horner).
+struct PolynomialDerivatives {
   double value, d1, d2;
 };
-BezierDerivatives EvalQuintic(const std::array<double, 6>& p, double u) {
-  std::array<double, 6> d1{}, d2{};
-  for (int i = 0; i < 5; ++i) d1[i] = 5.0 * (p[i + 1] - p[i]);
-  for (int i = 0; i < 4; ++i) d2[i] = 4.0 * (d1[i + 1] - d1[i]);
-  return {EvalBezier(p, 5, u), EvalBezier(d1, 4, u), EvalBezier(d2, 3, u)};
+PolynomialDerivatives EvalPolynomial(const std::array<double, 6>& a, double u) {
+  const double value = a[0] + u * (a[1] + u * (a[2] + u * (a[3] + u * (a[4] + u * a[5]))));
+  const double d1 = a[1] + u * (2 * a[2] + u * (3 * a[3] + u * (4 * a[4] + u * 5 * a[5])));
+  const double d2 = 2 * a[2] + u * (6 * a[3] + u * (12 * a[4] + u * 20 * a[5]));
+  return {value, d1, d2};
+}
+double PolynomialValue(const std::array<double, 6>& a, double u) {
+  return a[0] + u * (a[1] + u * (a[2] + u * (a[3] + u * (a[4] + u * a[5]))));
+}
+
+// The u in [0, 1] at which x(u) = x: Newton's method from `u`, kept inside a bracket [lo, hi]
+// that bisection shrinks whenever a Newton step would leave it (x(u) increases with u). Stops
+// at a residual of a few ulps of x.
+double SolveParameter(const std::array<double, 6>& ax, double x, double u, double tolerance) {
+  double lo = 0.0, hi = 1.0;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double value = PolynomialValue(ax, u);
+    const double f = value - x;
+    if (std::abs(f) <= tolerance) break;
+    (f < 0.0 ? lo : hi) = u;
+    const double slope =
+        ax[1] + u * (2 * ax[2] + u * (3 * ax[3] + u * (4 * ax[4] + u * 5 * ax[5])));
+    double next = slope > 0.0 ? u - f / slope : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (next == u) break;
+    u = next;
+  }
+  return u;
+}
+
+// The tolerance on x for a segment: a few ulps of its largest coordinate.
+double ParameterTolerance(const QuinticBezierSegment& seg) {
+  return 4.0 * kEps * std::max({std::abs(seg.x[0]), std::abs(seg.x[5]), 1.0});
 }
 
 }  // namespace
@@ -79,6 +113,15 @@ SmoothSegmentedCurve::SmoothSegmentedCurve(std::vector<QuinticBezierSegment> seg
       throw Error("smooth segmented curve: segment " + std::to_string(s) +
                   " does not start where the previous one ends");
     }
+    Polynomials poly;
+    poly.x = MonomialCoefficients(seg.x);
+    poly.y = MonomialCoefficients(seg.y);
+    for (int j = 0; j < kGuessPoints; ++j) {
+      const double t = static_cast<double>(j) / (kGuessPoints - 1);
+      poly.u_at_x[j] =
+          SolveParameter(poly.x, seg.x[0] + t * (seg.x[5] - seg.x[0]), t, ParameterTolerance(seg));
+    }
+    polynomials_.push_back(poly);
   }
 }
 
@@ -90,23 +133,14 @@ SmoothSegmentedCurve::SegmentParameter SmoothSegmentedCurve::Locate(double x) co
       break;
     }
   }
-  const std::array<double, 6>& px = segments_[s].x;
-  // Newton's method on x(u) = x, kept inside a bracket [lo, hi] that bisection shrinks whenever
-  // a Newton step would leave it; x(u) increases with u.
-  double lo = 0.0, hi = 1.0;
-  double u = std::clamp((x - px[0]) / (px[5] - px[0]), 0.0, 1.0);
-  const double tolerance = 4.0 * kEps * std::max({std::abs(px[0]), std::abs(px[5]), 1.0});
-  for (int iteration = 0; iteration < 100; ++iteration) {
-    const BezierDerivatives xu = EvalQuintic(px, u);
-    const double f = xu.value - x;
-    if (std::abs(f) <= tolerance) break;
-    (f < 0.0 ? lo : hi) = u;
-    double next = xu.d1 > 0.0 ? u - f / xu.d1 : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (next == u) break;
-    u = next;
-  }
-  return {s, u};
+  const QuinticBezierSegment& seg = segments_[s];
+  const Polynomials& poly = polynomials_[s];
+  // First guess: the tabulated u, interpolated linearly in x.
+  const double t = std::clamp((x - seg.x[0]) / (seg.x[5] - seg.x[0]), 0.0, 1.0) *
+                   (kGuessPoints - 1);
+  const int j = std::min(static_cast<int>(t), kGuessPoints - 2);
+  const double guess = poly.u_at_x[j] + (t - j) * (poly.u_at_x[j + 1] - poly.u_at_x[j]);
+  return {s, SolveParameter(poly.x, x, guess, ParameterTolerance(seg))};
 }
 
 double SmoothSegmentedCurve::Value(double x) const { return Derivative(x, 0); }
@@ -119,10 +153,10 @@ double SmoothSegmentedCurve::Derivative(double x, int order) const {
   if (x < x0_) return order == 0 ? y0_ + dydx0_ * (x - x0_) : order == 1 ? dydx0_ : 0.0;
   if (x > x1_) return order == 0 ? y1_ + dydx1_ * (x - x1_) : order == 1 ? dydx1_ : 0.0;
   const SegmentParameter at = Locate(x);
-  const QuinticBezierSegment& seg = segments_[at.segment];
-  if (order == 0) return EvalBezier(seg.y, 5, at.u);
-  const BezierDerivatives xu = EvalQuintic(seg.x, at.u);
-  const BezierDerivatives yu = EvalQuintic(seg.y, at.u);
+  const Polynomials& poly = polynomials_[at.segment];
+  if (order == 0) return PolynomialValue(poly.y, at.u);
+  const PolynomialDerivatives xu = EvalPolynomial(poly.x, at.u);
+  const PolynomialDerivatives yu = EvalPolynomial(poly.y, at.u);
   if (order == 1) return yu.d1 / xu.d1;
   // d2y/dx2 = (y'' x' - y' x'') / x'^3, primes in u.
   return (yu.d2 * xu.d1 - yu.d1 * xu.d2) / (xu.d1 * xu.d1 * xu.d1);
@@ -132,9 +166,9 @@ SmoothSegmentedCurve::ValueAndSlope SmoothSegmentedCurve::ValueAndDerivative(dou
   if (x < x0_) return {y0_ + dydx0_ * (x - x0_), dydx0_};
   if (x > x1_) return {y1_ + dydx1_ * (x - x1_), dydx1_};
   const SegmentParameter at = Locate(x);
-  const QuinticBezierSegment& seg = segments_[at.segment];
-  const BezierDerivatives xu = EvalQuintic(seg.x, at.u);
-  const BezierDerivatives yu = EvalQuintic(seg.y, at.u);
+  const Polynomials& poly = polynomials_[at.segment];
+  const PolynomialDerivatives xu = EvalPolynomial(poly.x, at.u);
+  const PolynomialDerivatives yu = EvalPolynomial(poly.y, at.u);
   return {yu.value, yu.d1 / xu.d1};
 }
 
@@ -145,11 +179,11 @@ double SmoothSegmentedCurve::SegmentIntegral(int s, double u) const {
   static constexpr std::array<double, 5> kWeights = {0.5688888888888889, 0.4786286704993665,
                                                      0.4786286704993665, 0.2369268850561891,
                                                      0.2369268850561891};
-  const QuinticBezierSegment& seg = segments_[s];
+  const Polynomials& poly = polynomials_[s];
   double sum = 0.0;
   for (int k = 0; k < 5; ++k) {
     const double v = 0.5 * u * (kNodes[k] + 1.0);
-    sum += kWeights[k] * EvalBezier(seg.y, 5, v) * EvalQuintic(seg.x, v).d1;
+    sum += kWeights[k] * PolynomialValue(poly.y, v) * EvalPolynomial(poly.x, v).d1;
   }
   return 0.5 * u * sum;
 }

@@ -67,7 +67,16 @@ class SmoothSegmentedCurve {
   // The integral of y dx over segment s from u = 0 to u.
   double SegmentIntegral(int s, double u) const;
 
+  // A segment in monomial form (x(u) and y(u) as polynomials in u, evaluated by Horner's rule),
+  // with u tabulated at evenly spaced x for Newton's first guess.
+  static constexpr int kGuessPoints = 33;
+  struct Polynomials {
+    std::array<double, 6> x{}, y{};
+    std::array<double, kGuessPoints> u_at_x{};
+  };
+
   std::vector<QuinticBezierSegment> segments_;
+  std::vector<Polynomials> polynomials_;
   double x0_ = 0.0, x1_ = 0.0, y0_ = 0.0, y1_ = 0.0, dydx0_ = 0.0, dydx1_ = 0.0;
 };
 
