@@ -115,6 +115,33 @@ TEST(Millard2012EquilibriumTest, EquilibriumStaysPutUnderConstantActivation) {
   EXPECT_EQ(CalcMillard2012ActivationDerivative(m, a, a), 0.0);
 }
 
+// The stored energies are potentials of the elastic forces: d(fiber energy)/d(lce) is the
+// passive elastic fiber force and d(tendon energy)/d(tendon length) the tendon force (central
+// differences, step 1e-7 m: truncation below 1e-6 N for these curves).
+TEST(Millard2012EquilibriumTest, PotentialEnergiesArePotentialsOfTheElasticForces) {
+  const Millard2012Muscle m(Pennated());
+  const double h = 1e-7;
+  for (double lce : {0.11, 0.13, 0.15}) {
+    auto fiber_energy = [&](double l) {
+      return CalcMillard2012PotentialEnergy(m, CalcMillard2012Dynamics(m, 0.5, l, 0.36, 0.0))
+          .fiber;
+    };
+    const Millard2012Dynamics d = CalcMillard2012Dynamics(m, 0.5, lce, 0.36, 0.0);
+    EXPECT_NEAR((fiber_energy(lce + h) - fiber_energy(lce - h)) / (2 * h),
+                d.passive_elastic_fiber_force, 1e-6 * std::max(1.0, d.passive_elastic_fiber_force));
+  }
+  // The tendon's energy as a function of its length: move the path with the fiber fixed.
+  for (double path : {0.3, 0.305, 0.31}) {
+    auto tendon_energy = [&](double l) {
+      return CalcMillard2012PotentialEnergy(m, CalcMillard2012Dynamics(m, 0.5, 0.1, l, 0.0))
+          .tendon;
+    };
+    const Millard2012Dynamics d = CalcMillard2012Dynamics(m, 0.5, 0.1, path, 0.0);
+    EXPECT_NEAR((tendon_energy(path + h) - tendon_energy(path - h)) / (2 * h), d.tendon_force,
+                1e-6 * std::max(1.0, d.tendon_force));
+  }
+}
+
 TEST(Millard2012EquilibriumTest, ActivationDynamicsUsesMillardsTimeConstants) {
   const Millard2012Muscle m(Pennated());  // 0.010 s and 0.040 s, minimum 0.01
   // Rising: tau = 0.010 (0.5 + 1.5 a); falling: tau = 0.040 / (0.5 + 1.5 a).

@@ -208,6 +208,19 @@ Millard2012Dynamics CalcMillard2012Dynamics(const Millard2012Muscle& m, double a
   return d;
 }
 
+Millard2012PotentialEnergy CalcMillard2012PotentialEnergy(const Millard2012Muscle& m,
+                                                          const Millard2012Dynamics& d) {
+  const Millard2012Parameters& p = m.parameters();
+  Millard2012PotentialEnergy energy;
+  energy.fiber = p.optimal_fiber_length * p.max_isometric_force *
+                 m.fiber_force_length().Integral(d.norm_fiber_length);
+  if (!p.ignore_tendon_compliance) {
+    energy.tendon = p.tendon_slack_length * p.max_isometric_force *
+                    m.tendon_force_length().Integral(d.norm_tendon_length);
+  }
+  return energy;
+}
+
 double CalcMillard2012ActivationDerivative(const Millard2012Muscle& m, double activation,
                                            double excitation) {
   const Millard2012Parameters& p = m.parameters();

@@ -57,6 +57,18 @@ Millard2012Dynamics CalcMillard2012Dynamics(const Millard2012Muscle& muscle, dou
                                             double fiber_length, double path_length,
                                             double path_lengthening_speed);
 
+/// The elastic energy stored in the fiber's passive element and in the tendon (J), as OpenSim's
+/// calcMusclePotentialEnergyInfo defines it: optimal length Fiso times the passive curve's
+/// integral from its start to l~, and slack length Fiso times the tendon curve's integral
+/// (0 with a rigid tendon). Their derivatives with respect to the fiber and tendon lengths are
+/// the passive elastic fiber force and the tendon force.
+struct Millard2012PotentialEnergy {
+  double fiber = 0.0;
+  double tendon = 0.0;
+};
+Millard2012PotentialEnergy CalcMillard2012PotentialEnergy(const Millard2012Muscle& muscle,
+                                                          const Millard2012Dynamics& dynamics);
+
 /// Millard's first-order activation dynamics, da/dt = (u - a) / tau with
 /// tau = activation_time_constant (0.5 + 1.5 a) when u > a, deactivation_time_constant /
 /// (0.5 + 1.5 a) otherwise, a clamped to [minimum_activation, 1] first.
