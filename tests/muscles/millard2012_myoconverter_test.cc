@@ -7,12 +7,11 @@
 #include <sinew/muscles/millard2012_spec.h>
 
 #include <gtest/gtest.h>
+#include <myoconverter_csv.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -26,25 +25,11 @@ struct ReferenceRow {
   double activation, mtu_length, active_force, passive_force, total_force;
 };
 
-// The table's rows: "muscle,activation,pose,mtu_length,active_force,passive_force,total_force",
-// after '#' comments and the header.
+// The table's rows: "muscle,activation,pose,mtu_length,active_force,passive_force,total_force".
 std::vector<ReferenceRow> ReadKinetics(const std::string& file) {
-  std::ifstream in(file);
-  EXPECT_TRUE(in.good()) << file;
   std::vector<ReferenceRow> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<std::string> f;
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) f.push_back(cell);
-    EXPECT_EQ(f.size(), 7u) << line;
+  for (const std::vector<std::string>& f : testing::ReadMyoConverterCsv(file)) {
+    EXPECT_EQ(f.size(), 7u);
     if (f.size() != 7) continue;
     rows.push_back({f[0], f[2], std::stod(f[1]), std::stod(f[3]), std::stod(f[4]),
                     std::stod(f[5]), std::stod(f[6])});

@@ -1,5 +1,6 @@
 #include <sinew/common/error.h>
 #include <sinew/model/element_values.h>
+#include <sinew/muscles/internal/muscle_base_properties.h>
 #include <sinew/muscles/degroote_fregly2016_spec.h>
 
 namespace sinew::muscles {
@@ -13,15 +14,7 @@ DeGrooteFregly2016Muscle ReadDeGrooteFregly2016Muscle(const model::ForceSpec& fo
     v.Fail("optimal_force is ignored by DeGrooteFregly2016Muscle (OpenSim refuses a value other "
            "than 1): use max_isometric_force");
   }
-  p.max_isometric_force = v.Double("max_isometric_force", p.max_isometric_force);
-  p.optimal_fiber_length = v.Double("optimal_fiber_length", p.optimal_fiber_length);
-  p.tendon_slack_length = v.Double("tendon_slack_length", p.tendon_slack_length);
-  p.pennation_angle_at_optimal =
-      v.Double("pennation_angle_at_optimal", p.pennation_angle_at_optimal);
-  p.max_contraction_velocity = v.Double("max_contraction_velocity", p.max_contraction_velocity);
-  p.ignore_tendon_compliance = v.Bool("ignore_tendon_compliance", p.ignore_tendon_compliance);
-  p.ignore_activation_dynamics =
-      v.Bool("ignore_activation_dynamics", p.ignore_activation_dynamics);
+  internal::ReadMuscleBaseProperties(v, &p);
   p.activation_time_constant = v.Double("activation_time_constant", p.activation_time_constant);
   p.deactivation_time_constant =
       v.Double("deactivation_time_constant", p.deactivation_time_constant);

@@ -1,5 +1,6 @@
 #include <sinew/common/error.h>
 #include <sinew/model/element_values.h>
+#include <sinew/muscles/internal/muscle_base_properties.h>
 #include <sinew/muscles/millard2012_spec.h>
 
 namespace sinew::muscles {
@@ -30,15 +31,7 @@ Millard2012Parameters ReadMillard2012Parameters(const model::ForceSpec& force,
   const model::ElementValues v(force.element, file, force.path);
   Millard2012Parameters p;
   p.name = force.path;
-  p.max_isometric_force = v.Double("max_isometric_force", p.max_isometric_force);
-  p.optimal_fiber_length = v.Double("optimal_fiber_length", p.optimal_fiber_length);
-  p.tendon_slack_length = v.Double("tendon_slack_length", p.tendon_slack_length);
-  p.pennation_angle_at_optimal =
-      v.Double("pennation_angle_at_optimal", p.pennation_angle_at_optimal);
-  p.max_contraction_velocity = v.Double("max_contraction_velocity", p.max_contraction_velocity);
-  p.ignore_tendon_compliance = v.Bool("ignore_tendon_compliance", p.ignore_tendon_compliance);
-  p.ignore_activation_dynamics =
-      v.Bool("ignore_activation_dynamics", p.ignore_activation_dynamics);
+  internal::ReadMuscleBaseProperties(v, &p);
   p.fiber_damping = v.Double("fiber_damping", p.fiber_damping);
   p.default_activation = v.Double("default_activation", p.default_activation);
   p.default_fiber_length = Optional(v, force.element, "default_fiber_length");
