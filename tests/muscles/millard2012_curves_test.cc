@@ -271,6 +271,7 @@ TEST(Millard2012CurvesTest, ImpossiblePropertiesAreRefusedWithTheirNames) {
   compressive.curviness = 0.5;
   EXPECT_THROW(MakeFiberCompressiveForceLengthCurve(compressive), Error);
   EXPECT_THROW(MakeQuinticBezierCorner(0, 0, 1, 1, 1, 1, 1.5), Error);
+  EXPECT_THROW(SmoothSegmentedCurve().Value(-1.0), Error);
 }
 
 }  // namespace

@@ -145,7 +145,12 @@ SmoothSegmentedCurve::SegmentParameter SmoothSegmentedCurve::Locate(double x) co
 
 double SmoothSegmentedCurve::Value(double x) const { return Derivative(x, 0); }
 
+void SmoothSegmentedCurve::CheckBuilt() const {
+  if (segments_.empty()) throw Error("smooth segmented curve: evaluated before it was built");
+}
+
 double SmoothSegmentedCurve::Derivative(double x, int order) const {
+  CheckBuilt();
   if (order < 0 || order > 2) {
     throw Error("smooth segmented curve: derivative order " + std::to_string(order) +
                 " (0, 1 or 2 are available)");
@@ -163,6 +168,7 @@ double SmoothSegmentedCurve::Derivative(double x, int order) const {
 }
 
 SmoothSegmentedCurve::ValueAndSlope SmoothSegmentedCurve::ValueAndDerivative(double x) const {
+  CheckBuilt();
   if (x < x0_) return {y0_ + dydx0_ * (x - x0_), dydx0_};
   if (x > x1_) return {y1_ + dydx1_ * (x - x1_), dydx1_};
   const SegmentParameter at = Locate(x);
@@ -189,6 +195,7 @@ double SmoothSegmentedCurve::SegmentIntegral(int s, double u) const {
 }
 
 double SmoothSegmentedCurve::Integral(double x) const {
+  CheckBuilt();
   if (x <= x0_) return (x - x0_) * (y0_ + 0.5 * dydx0_ * (x - x0_));
   const double x_in = std::min(x, x1_);
   const SegmentParameter at = Locate(x_in);

@@ -31,6 +31,7 @@ double ScaleCurviness(double curviness);
 /// of x1, as OpenSim extrapolates (its first derivative there is the end slope, its second 0).
 class SmoothSegmentedCurve {
  public:
+  /// An empty curve; evaluating it throws sinew::Error.
   SmoothSegmentedCurve() = default;
   /// `segments` in increasing x; x0/x1 are the ends of the Bezier part, y0/y1 and dydx0/dydx1
   /// the values and slopes the lines continue with. Throws sinew::Error for no segments or
@@ -64,6 +65,8 @@ class SmoothSegmentedCurve {
     double u = 0.0;
   };
   SegmentParameter Locate(double x) const;
+  // Throws sinew::Error for a default-constructed (empty) curve.
+  void CheckBuilt() const;
   // The integral of y dx over segment s from u = 0 to u.
   double SegmentIntegral(int s, double u) const;
 
