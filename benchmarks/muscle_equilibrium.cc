@@ -1,12 +1,11 @@
 // The cost of the muscle mathematics the muscle element calls at every evaluation and at
 // initialization: one Millard2012 curve value, one Millard2012 state (fiber velocity by the
 // damped Newton iteration, forces), one Millard2012 equilibrium solve, and DeGroote's.
+#include <benchmark/benchmark.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/muscles/degroote_fregly2016_muscle.h>
 #include <sinew/muscles/millard2012_equilibrium.h>
 #include <sinew/muscles/millard2012_spec.h>
-
-#include <benchmark/benchmark.h>
 
 #include <string>
 #include <vector>
@@ -18,12 +17,13 @@ using namespace sinew::muscles;
 // Gait10dof18musc's 18 Millard2012 muscles (as in the MyoConverter reference test).
 const std::vector<Millard2012Muscle>& GaitMuscles() {
   static const std::vector<Millard2012Muscle> muscles = [] {
-    const std::string osim = std::string(SINEW_TEST_DATA_DIR) +
-                             "/MyoHub/myoconverter/models/osim/Gait10dof18musc/gait10dof18musc.osim";
+    const std::string osim =
+        std::string(SINEW_TEST_DATA_DIR) +
+        "/MyoHub/myoconverter/models/osim/Gait10dof18musc/gait10dof18musc.osim";
     const sinew::model::ModelSpec spec = sinew::io::ReadOsim(osim);
     std::vector<Millard2012Muscle> out;
     for (const sinew::model::ForceSpec& f : spec.forces) {
-      if (f.type == "Millard2012EquilibriumMuscle") out.push_back(ReadMillard2012Muscle(f, osim));
+      if (f.type == "Millard2012EquilibriumMuscle") out.push_back(ReadMillard2012Muscle(spec, f));
     }
     return out;
   }();

@@ -2,11 +2,10 @@
 // fal(1) = fv(0) = 1 and fv(-1) = 0; OpenSim's strains put fpe and fT at 1 where they say),
 // derivatives and integrals against finite differences and Simpson's rule, the explicit and
 // implicit forms of the tendon dynamics against each other, equilibrium, activation dynamics.
+#include <gtest/gtest.h>
 #include <sinew/common/error.h>
 #include <sinew/muscles/degroote_fregly2016_muscle.h>
 #include <sinew/muscles/degroote_fregly2016_spec.h>
-
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
@@ -159,15 +158,22 @@ TEST(DeGrooteFregly2016MuscleTest, SteepSmoothingGivesFirstOrderActivation) {
   DeGrooteFregly2016Parameters p = Pennated();
   p.activation_dynamics_smoothing = 1e6;  // tanh becomes the sign
   const DeGrooteFregly2016Muscle steep(p);
-  EXPECT_NEAR(CalcDeGrooteFregly2016ActivationDerivative(steep, 0.5, 1.0),
-              0.5 / (0.015 * 1.25), 1e-9);
-  EXPECT_NEAR(CalcDeGrooteFregly2016ActivationDerivative(steep, 0.5, 0.1),
-              -0.4 * 1.25 / 0.060, 1e-9);
+  EXPECT_NEAR(CalcDeGrooteFregly2016ActivationDerivative(steep, 0.5, 1.0), 0.5 / (0.015 * 1.25),
+              1e-9);
+  EXPECT_NEAR(CalcDeGrooteFregly2016ActivationDerivative(steep, 0.5, 0.1), -0.4 * 1.25 / 0.060,
+              1e-9);
   // The default smoothing (0.1) blends the two time constants: halfway at u = a.
   const DeGrooteFregly2016Muscle smooth(Pennated());
   const double a = 0.5, u = 0.5 + 1e-8;
   EXPECT_NEAR(CalcDeGrooteFregly2016ActivationDerivative(smooth, a, u) / (u - a),
               0.5 / (0.015 * 1.25) + 0.5 * 1.25 / 0.060, 1e-6);
+}
+
+model::ModelSpec ModelFile() {
+  model::ModelSpec spec;
+  spec.file = "m.osim";
+  spec.version = 40000;
+  return spec;
 }
 
 model::ForceSpec DeGrooteElement() {
@@ -185,18 +191,18 @@ model::ForceSpec DeGrooteElement() {
 }
 
 TEST(DeGrooteFregly2016SpecTest, ReadsPropertiesAndRefusesWhatOpenSimRefuses) {
-  const DeGrooteFregly2016Muscle m = ReadDeGrooteFregly2016Muscle(DeGrooteElement(), "m.osim");
+  const DeGrooteFregly2016Muscle m = ReadDeGrooteFregly2016Muscle(ModelFile(), DeGrooteElement());
   EXPECT_EQ(m.parameters().max_isometric_force, 800.0);
   EXPECT_EQ(m.parameters().activation_time_constant, 0.015);
   EXPECT_EQ(m.parameters().passive_fiber_strain_at_one_norm_force, 0.6);
   EXPECT_NEAR(m.curves().TendonForceLength(1.04), 1.0, 1e-14);
   model::ForceSpec force = DeGrooteElement();
   force.element.children.push_back({"optimal_force", "", "2", 17, {}});
-  EXPECT_THROW(ReadDeGrooteFregly2016Muscle(force, "m.osim"), Error);
+  EXPECT_THROW(ReadDeGrooteFregly2016Muscle(ModelFile(), force), Error);
   force = DeGrooteElement();
   force.element.children.push_back({"active_force_width_scale", "", "0.5", 18, {}});
   try {
-    ReadDeGrooteFregly2016Muscle(force, "m.osim");
+    ReadDeGrooteFregly2016Muscle(ModelFile(), force);
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_EQ(e.where().file, "m.osim");

@@ -3,10 +3,9 @@
 // Simpson's rule, the inverse force-velocity curve against the curve, and one corner evaluated
 // independently (power-basis Bernstein polynomials and bisection instead of de Casteljau and
 // Newton).
+#include <gtest/gtest.h>
 #include <sinew/common/error.h>
 #include <sinew/muscles/millard2012_curves.h>
-
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
@@ -122,15 +121,13 @@ TEST(Millard2012CurvesTest, ForceVelocityPassesThroughItsThreeDefiningPoints) {
   const SmoothSegmentedCurve c = MakeForceVelocityCurve(p);
   ExpectPointAndSlope(c, -1.0, 0.0, p.concentric_slope_at_vmax);
   ExpectPointAndSlope(c, 0.0, 1.0, p.isometric_slope);
-  ExpectPointAndSlope(c, 1.0, p.max_eccentric_velocity_force_multiplier,
-                      p.eccentric_slope_at_vmax);
+  ExpectPointAndSlope(c, 1.0, p.max_eccentric_velocity_force_multiplier, p.eccentric_slope_at_vmax);
   // Near vmax (|v| = 0.9) the slopes are the "near" ones, on the line averaging the two slopes.
   ExpectPointAndSlope(c, -0.9, 0.05 * (p.concentric_slope_near_vmax + p.concentric_slope_at_vmax),
                       p.concentric_slope_near_vmax);
-  ExpectPointAndSlope(
-      c, 0.9,
-      1.4 - 0.05 * (p.eccentric_slope_near_vmax + p.eccentric_slope_at_vmax),
-      p.eccentric_slope_near_vmax);
+  ExpectPointAndSlope(c, 0.9,
+                      1.4 - 0.05 * (p.eccentric_slope_near_vmax + p.eccentric_slope_at_vmax),
+                      p.eccentric_slope_near_vmax);
   ExpectMonotonic(c, -1.2, 1.2, +1);
   ExpectDerivativesMatchFiniteDifferences(c);
 }
@@ -216,10 +213,10 @@ TEST(Millard2012CurvesTest, OneCornerCurveAgreesWithAnIndependentEvaluation) {
   const SmoothSegmentedCurve c = MakeFiberCompressiveForceLengthCurve({});
   // Tangents: y = 1 - 4x from (0, 1) and y = 0 at (0.5, 0) meet at C = (0.25, 0).
   const double s = 0.5;
-  const std::array<double, 6> px = {0.0, s * 0.25, s * 0.25, 0.5 + s * (0.25 - 0.5),
-                                    0.5 + s * (0.25 - 0.5), 0.5};
-  const std::array<double, 6> py = {1.0, 1.0 + s * (0.0 - 1.0), 1.0 + s * (0.0 - 1.0), 0.0,
-                                    0.0, 0.0};
+  const std::array<double, 6> px = {
+      0.0, s * 0.25, s * 0.25, 0.5 + s * (0.25 - 0.5), 0.5 + s * (0.25 - 0.5), 0.5};
+  const std::array<double, 6> py = {1.0, 1.0 + s * (0.0 - 1.0), 1.0 + s * (0.0 - 1.0), 0.0, 0.0,
+                                    0.0};
   auto power_form = [](const std::array<double, 6>& p, double u) {
     const double w = 1.0 - u;
     return std::pow(w, 5) * p[0] + 5 * u * std::pow(w, 4) * p[1] +

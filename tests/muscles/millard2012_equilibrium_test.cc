@@ -1,10 +1,9 @@
 // Millard2012EquilibriumMuscle's fiber velocity, forces, equilibrium and activation dynamics
 // against the equations that define them, and its errors.
+#include <gtest/gtest.h>
 #include <sinew/common/error.h>
 #include <sinew/muscles/millard2012_equilibrium.h>
 #include <sinew/muscles/millard2012_spec.h>
-
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
@@ -32,9 +31,9 @@ TEST(Millard2012EquilibriumTest, DampedFiberVelocityBalancesFiberAndTendonForces
     const Millard2012Dynamics d = CalcMillard2012Dynamics(m, 0.6, lce, 0.305, 0.0);
     const double fse = m.tendon_force_length().Value(d.norm_tendon_length);
     // a fal fv(v~) + fpe + beta v~ = fse / cos(phi), solved to OpenSim's 1e-10 Fiso.
-    const double balance = 0.6 * d.active_force_length_multiplier *
-                               m.force_velocity().Value(d.norm_fiber_velocity) +
-                           d.passive_force_length_multiplier + beta * d.norm_fiber_velocity;
+    const double balance =
+        0.6 * d.active_force_length_multiplier * m.force_velocity().Value(d.norm_fiber_velocity) +
+        d.passive_force_length_multiplier + beta * d.norm_fiber_velocity;
     EXPECT_NEAR(fiso * balance * d.cos_pennation, fiso * fse, 1e-10 * fiso) << lce;
     EXPECT_DOUBLE_EQ(d.fiber_velocity, d.norm_fiber_velocity * 10.0 * 0.1);
     EXPECT_NEAR(d.tendon_force, d.fiber_force_along_tendon, 1e-10 * fiso);
@@ -123,8 +122,7 @@ TEST(Millard2012EquilibriumTest, PotentialEnergiesArePotentialsOfTheElasticForce
   const double h = 1e-7;
   for (double lce : {0.11, 0.13, 0.15}) {
     auto fiber_energy = [&](double l) {
-      return CalcMillard2012PotentialEnergy(m, CalcMillard2012Dynamics(m, 0.5, l, 0.36, 0.0))
-          .fiber;
+      return CalcMillard2012PotentialEnergy(m, CalcMillard2012Dynamics(m, 0.5, l, 0.36, 0.0)).fiber;
     };
     const Millard2012Dynamics d = CalcMillard2012Dynamics(m, 0.5, lce, 0.36, 0.0);
     EXPECT_NEAR((fiber_energy(lce + h) - fiber_energy(lce - h)) / (2 * h),
@@ -133,8 +131,7 @@ TEST(Millard2012EquilibriumTest, PotentialEnergiesArePotentialsOfTheElasticForce
   // The tendon's energy as a function of its length: move the path with the fiber fixed.
   for (double path : {0.3, 0.305, 0.31}) {
     auto tendon_energy = [&](double l) {
-      return CalcMillard2012PotentialEnergy(m, CalcMillard2012Dynamics(m, 0.5, 0.1, l, 0.0))
-          .tendon;
+      return CalcMillard2012PotentialEnergy(m, CalcMillard2012Dynamics(m, 0.5, 0.1, l, 0.0)).tendon;
     };
     const Millard2012Dynamics d = CalcMillard2012Dynamics(m, 0.5, 0.1, path, 0.0);
     EXPECT_NEAR((tendon_energy(path + h) - tendon_energy(path - h)) / (2 * h), d.tendon_force,
@@ -148,8 +145,7 @@ TEST(Millard2012EquilibriumTest, ActivationDynamicsUsesMillardsTimeConstants) {
   EXPECT_NEAR(CalcMillard2012ActivationDerivative(m, 0.5, 1.0), 0.5 / (0.010 * 1.25), 1e-12);
   EXPECT_NEAR(CalcMillard2012ActivationDerivative(m, 0.5, 0.1), -0.4 / (0.040 / 1.25), 1e-12);
   // Below the minimum the activation is taken at the minimum.
-  EXPECT_NEAR(CalcMillard2012ActivationDerivative(m, 0.0, 0.0), -0.01 / (0.040 / 0.515),
-              1e-12);
+  EXPECT_NEAR(CalcMillard2012ActivationDerivative(m, 0.0, 0.0), -0.01 / (0.040 / 0.515), 1e-12);
   EXPECT_EQ(m.ClampActivation(-1.0), 0.01);
   EXPECT_EQ(m.ClampActivation(2.0), 1.0);
 }
@@ -177,6 +173,14 @@ TEST(Millard2012EquilibriumTest, BadInputNamesTheMuscle) {
   }
 }
 
+// A model file's spec (4.x format) as far as the muscle readers look at it.
+model::ModelSpec ModelFile(int version = 40000) {
+  model::ModelSpec spec;
+  spec.file = "model.osim";
+  spec.version = version;
+  return spec;
+}
+
 // A Millard2012EquilibriumMuscle element as the reader keeps it.
 model::ForceSpec MuscleElement() {
   model::ForceSpec force;
@@ -201,7 +205,7 @@ model::ForceSpec MuscleElement() {
 }
 
 TEST(Millard2012SpecTest, ReadsPropertiesWithOpenSimsDefaults) {
-  const Millard2012Muscle m = ReadMillard2012Muscle(MuscleElement(), "model.osim");
+  const Millard2012Muscle m = ReadMillard2012Muscle(ModelFile(), MuscleElement());
   const Millard2012Parameters& p = m.parameters();
   EXPECT_EQ(p.max_isometric_force, 5000.0);
   EXPECT_EQ(p.tendon_force_length.strain_at_one_norm_force, 0.06);
@@ -215,11 +219,23 @@ TEST(Millard2012SpecTest, ReadsPropertiesWithOpenSimsDefaults) {
   EXPECT_NEAR(m.tendon_force_length().Value(1.06), 1.0, 1e-12);
 }
 
+// OpenSim drops a min_control of 0 from files older than format 30513 (it was written whatever
+// the minimum activation); in newer files it is kept, and then below the default minimum
+// activation 0.01 it is refused.
+TEST(Millard2012SpecTest, OldFilesMinControlOfZeroIsDropped) {
+  model::ForceSpec force = MuscleElement();
+  force.element.children.push_back({"min_control", "", "0", 48, {}});
+  EXPECT_FALSE(ReadMillard2012Parameters(ModelFile(30000), force).min_control.has_value());
+  EXPECT_NO_THROW(ReadMillard2012Muscle(ModelFile(30000), force));
+  EXPECT_EQ(ReadMillard2012Parameters(ModelFile(40000), force).min_control, 0.0);
+  EXPECT_THROW(ReadMillard2012Muscle(ModelFile(40000), force), Error);
+}
+
 TEST(Millard2012SpecTest, BadPropertiesNameFileLineAndMuscle) {
   model::ForceSpec force = MuscleElement();
   force.element.children[4].children[1].text = "0.4";  // curviness without the other optionals
   try {
-    ReadMillard2012Muscle(force, "model.osim");
+    ReadMillard2012Muscle(ModelFile(), force);
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_EQ(e.where().file, "model.osim");
@@ -230,7 +246,7 @@ TEST(Millard2012SpecTest, BadPropertiesNameFileLineAndMuscle) {
   force = MuscleElement();
   force.element.children[1].text = "short";
   try {
-    ReadMillard2012Muscle(force, "model.osim");
+    ReadMillard2012Muscle(ModelFile(), force);
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_EQ(e.where().line, 42);

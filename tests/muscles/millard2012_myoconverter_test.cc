@@ -2,12 +2,11 @@
 // Gait10dof18musc (OpenSim's equilibrateMuscles at activation 1 and several poses, then the
 // muscles' active, passive and total fiber forces), every row of every muscle. The musculotendon
 // length comes from the table, so no path is involved.
+#include <gtest/gtest.h>
+#include <myoconverter_csv.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/muscles/millard2012_equilibrium.h>
 #include <sinew/muscles/millard2012_spec.h>
-
-#include <gtest/gtest.h>
-#include <myoconverter_csv.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,8 +30,8 @@ std::vector<ReferenceRow> ReadKinetics(const std::string& file) {
   for (const std::vector<std::string>& f : testing::ReadMyoConverterCsv(file)) {
     EXPECT_EQ(f.size(), 7u);
     if (f.size() != 7) continue;
-    rows.push_back({f[0], f[2], std::stod(f[1]), std::stod(f[3]), std::stod(f[4]),
-                    std::stod(f[5]), std::stod(f[6])});
+    rows.push_back({f[0], f[2], std::stod(f[1]), std::stod(f[3]), std::stod(f[4]), std::stod(f[5]),
+                    std::stod(f[6])});
   }
   return rows;
 }
@@ -53,7 +52,7 @@ TEST(Millard2012MyoConverterTest, Gait10dof18muscEquilibriumForcesMatchOpenSim) 
   std::map<std::string, Millard2012Muscle> muscles;
   for (const model::ForceSpec& force : spec.forces) {
     if (force.type == "Millard2012EquilibriumMuscle") {
-      muscles.emplace(force.name, ReadMillard2012Muscle(force, osim));
+      muscles.emplace(force.name, ReadMillard2012Muscle(spec, force));
     }
   }
   ASSERT_EQ(muscles.size(), 18u);
@@ -84,13 +83,13 @@ TEST(Millard2012MyoConverterTest, Gait10dof18muscEquilibriumForcesMatchOpenSim) 
     if (d.fiber_state_clamped) ++clamped;
     worst_active = std::max(
         worst_active, expect_close(d.active_fiber_force, row.active_force, 0.0, where + " active"));
-    worst_total = std::max(
-        worst_total, expect_close(d.tendon_force, row.total_force, 0.0, where + " tendon"));
+    worst_total = std::max(worst_total,
+                           expect_close(d.tendon_force, row.total_force, 0.0, where + " tendon"));
     expect_close(d.fiber_force_along_tendon, row.total_force, 0.0, where + " fiber along tendon");
     const double residual_damping = 1e-8 * fiso / d.cos_pennation;
     if (std::abs(row.passive_force) > residual_damping) {
-      worst_passive = std::max(
-          worst_passive, expect_close(d.passive_fiber_force, row.passive_force, 0.0, where));
+      worst_passive = std::max(worst_passive,
+                               expect_close(d.passive_fiber_force, row.passive_force, 0.0, where));
       ++passive_compared;
     } else {
       expect_close(d.passive_fiber_force, row.passive_force, residual_damping, where + " passive");

@@ -98,9 +98,8 @@ double DeGrooteFregly2016Curves::PassiveForceLengthDerivative(double norm_fiber_
 double DeGrooteFregly2016Curves::PassiveForceLengthIntegral(double norm_fiber_length) const {
   if (ignore_passive_) return 0.0;
   const double offset = std::exp(kPE * (kMinNormFiberLength - 1.0) / passive_strain_);
-  const double exponential =
-      passive_strain_ / kPE *
-      (std::exp(kPE * (norm_fiber_length - 1.0) / passive_strain_) - offset);
+  const double exponential = passive_strain_ / kPE *
+                             (std::exp(kPE * (norm_fiber_length - 1.0) / passive_strain_) - offset);
   return (exponential - offset * (norm_fiber_length - kMinNormFiberLength)) /
          (std::exp(kPE) - offset);
 }

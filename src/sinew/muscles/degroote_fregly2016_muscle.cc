@@ -33,8 +33,7 @@ DeGrooteFregly2016Muscle::DeGrooteFregly2016Muscle(const DeGrooteFregly2016Param
   require(p_.tendon_slack_length > 0.0, "tendon_slack_length must be greater than 0");
   require(p_.max_contraction_velocity > 0.0, "max_contraction_velocity must be greater than 0");
   require(p_.activation_time_constant > 0.0, "activation_time_constant must be greater than 0");
-  require(p_.deactivation_time_constant > 0.0,
-          "deactivation_time_constant must be greater than 0");
+  require(p_.deactivation_time_constant > 0.0, "deactivation_time_constant must be greater than 0");
   require(p_.default_activation > 0.0, "default_activation must be greater than 0");
   require(p_.default_normalized_tendon_force >= 0.0 && p_.default_normalized_tendon_force <= 5.0,
           "default_normalized_tendon_force must be in [0, 5]");
@@ -82,13 +81,14 @@ DeGrooteFregly2016Dynamics CalcDeGrooteFregly2016Dynamics(
   if (!rigid && !norm_tendon_force_derivative) {
     const double denominator = activation * d.active_force_length_multiplier;
     if (!(std::abs(denominator) > 0.0) || !(d.cos_pennation > 0.0)) {
-      Fail(m, "the explicit tendon dynamics are singular at zero activation, zero active "
-              "force-length multiplier or 90 degrees pennation");
+      Fail(m,
+           "the explicit tendon dynamics are singular at zero activation, zero active "
+           "force-length multiplier or 90 degrees pennation");
     }
     d.force_velocity_multiplier =
         (norm_tendon_force / d.cos_pennation - d.passive_force_length_multiplier) / denominator;
-    d.norm_fiber_velocity = DeGrooteFregly2016Curves::ForceVelocityInverse(
-        d.force_velocity_multiplier);
+    d.norm_fiber_velocity =
+        DeGrooteFregly2016Curves::ForceVelocityInverse(d.force_velocity_multiplier);
     d.fiber_velocity = d.norm_fiber_velocity * vmax;
     d.fiber_velocity_along_tendon = d.fiber_velocity / d.cos_pennation;
     d.tendon_velocity = path_lengthening_speed - d.fiber_velocity_along_tendon;
@@ -131,9 +131,9 @@ DeGrooteFregly2016Dynamics CalcDeGrooteFregly2016Dynamics(
       d.fiber_stiffness * d.cos_pennation - d.fiber_force * d.sin_pennation * dphi_dlce;
   d.fiber_stiffness_along_tendon =
       dfmat_dlce / (d.cos_pennation - d.fiber_length * d.sin_pennation * dphi_dlce);
-  d.tendon_stiffness = rigid ? std::numeric_limits<double>::infinity()
-                             : fiso / p.tendon_slack_length *
-                                   c.TendonForceLengthDerivative(d.norm_tendon_length);
+  d.tendon_stiffness =
+      rigid ? std::numeric_limits<double>::infinity()
+            : fiso / p.tendon_slack_length * c.TendonForceLengthDerivative(d.norm_tendon_length);
   return d;
 }
 

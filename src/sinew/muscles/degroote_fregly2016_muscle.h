@@ -103,16 +103,14 @@ DeGrooteFregly2016Dynamics CalcDeGrooteFregly2016Dynamics(
 double CalcDeGrooteFregly2016EquilibriumResidual(const DeGrooteFregly2016Muscle& muscle,
                                                  double activation, double norm_tendon_force,
                                                  double norm_tendon_force_derivative,
-                                                 double path_length,
-                                                 double path_lengthening_speed);
+                                                 double path_length, double path_lengthening_speed);
 
 /// OpenSim's computeInitialFiberEquilibrium: the normalized tendon force in [0, 5] that zeroes
 /// the implicit residual with a zero tendon force derivative, by bisection to an interval of
 /// 1e-10 (at most 100 halvings). Returns 0 with a rigid tendon (no state). Throws sinew::Error
 /// naming the muscle when the residual has the same sign at 0 and 5 (no equilibrium there).
-double SolveDeGrooteFregly2016Equilibrium(const DeGrooteFregly2016Muscle& muscle,
-                                          double activation, double path_length,
-                                          double path_lengthening_speed);
+double SolveDeGrooteFregly2016Equilibrium(const DeGrooteFregly2016Muscle& muscle, double activation,
+                                          double path_length, double path_lengthening_speed);
 
 /// da/dt = (u - a) [ (f + 1/2) / (tau_a (0.5 + 1.5 a)) + (1/2 - f) (0.5 + 1.5 a) / tau_d ] with
 /// f = tanh(activation_dynamics_smoothing (u - a)) / 2 (the paper's smoothed switch).

@@ -9,10 +9,10 @@
 
 namespace sinew::muscles {
 
-/// The muscle `force` (read from `file`) describes. A malformed value, an optimal_force other
+/// The muscle `force` of `spec` describes. A malformed value, an optimal_force other
 /// than 1 (OpenSim ignores it for this muscle and refuses a changed one) or properties OpenSim
 /// refuses are a sinew::Error naming the file, the line and the force.
-DeGrooteFregly2016Muscle ReadDeGrooteFregly2016Muscle(const model::ForceSpec& force,
-                                                      const std::string& file);
+DeGrooteFregly2016Muscle ReadDeGrooteFregly2016Muscle(const model::ModelSpec& spec,
+                                                      const model::ForceSpec& force);
 
 }  // namespace sinew::muscles

@@ -27,9 +27,8 @@ FixedWidthPennation::FixedWidthPennation(double optimal_fiber_length,
   }
   height_ = optimal_fiber_length * std::sin(pennation_angle_at_optimal);
   maximum_sin_ = std::sin(maximum_pennation_angle);
-  minimum_fiber_length_ = maximum_pennation_angle > kSignificantReal
-                              ? height_ / maximum_sin_
-                              : 0.01 * optimal_fiber_length;
+  minimum_fiber_length_ = maximum_pennation_angle > kSignificantReal ? height_ / maximum_sin_
+                                                                     : 0.01 * optimal_fiber_length;
   minimum_along_tendon_ = minimum_fiber_length_ * std::cos(maximum_pennation_angle);
 }
 

@@ -31,8 +31,7 @@ class FixedWidthPennation {
   /// d(phi)/d(l) = -(h / l^2) / sqrt(1 - (h / l)^2), for l > h.
   double DPennationAngleDFiberLength(double fiber_length) const;
   /// d(phi)/dt = -(v / l) tan(phi) (0 for a muscle without pennation).
-  double PennationAngularVelocity(double tan_phi, double fiber_length,
-                                  double fiber_velocity) const;
+  double PennationAngularVelocity(double tan_phi, double fiber_length, double fiber_velocity) const;
 
  private:
   double pennation_at_optimal_;

@@ -26,8 +26,7 @@ std::string Number(double value) {
 }
 
 // The curve through the given corners, continued by lines with the end slopes.
-SmoothSegmentedCurve Join(std::vector<QuinticBezierSegment> segments, double dydx0,
-                          double dydx1) {
+SmoothSegmentedCurve Join(std::vector<QuinticBezierSegment> segments, double dydx0, double dydx1) {
   const double x0 = segments.front().x[0], y0 = segments.front().y[0];
   const double x1 = segments.back().x[5], y1 = segments.back().y[5];
   return SmoothSegmentedCurve(std::move(segments), x0, x1, y0, y1, dydx0, dydx1);
@@ -40,11 +39,11 @@ std::vector<QuinticBezierSegment> ForceVelocityCorners(const ForceVelocityCurveP
   const double c_ecc = ScaleCurviness(p.eccentric_curviness);
   const double fmax = p.max_eccentric_velocity_force_multiplier;
   const double x_near_c = -0.9;
-  const double y_near_c = 0.5 * (p.concentric_slope_near_vmax + p.concentric_slope_at_vmax) *
-                          (x_near_c + 1.0);
+  const double y_near_c =
+      0.5 * (p.concentric_slope_near_vmax + p.concentric_slope_at_vmax) * (x_near_c + 1.0);
   const double x_near_e = 0.9;
-  const double y_near_e = fmax + 0.5 * (p.eccentric_slope_near_vmax + p.eccentric_slope_at_vmax) *
-                                     (x_near_e - 1.0);
+  const double y_near_e =
+      fmax + 0.5 * (p.eccentric_slope_near_vmax + p.eccentric_slope_at_vmax) * (x_near_e - 1.0);
   return {MakeQuinticBezierCorner(-1.0, 0.0, p.concentric_slope_at_vmax, x_near_c, y_near_c,
                                   p.concentric_slope_near_vmax, c_conc),
           MakeQuinticBezierCorner(x_near_c, y_near_c, p.concentric_slope_near_vmax, 0.0, 1.0,
@@ -66,10 +65,11 @@ void CheckForceVelocityShape(const ForceVelocityCurveParameters& p, const char* 
   Require(p.isometric_slope > 1.0, curve, "isometric_slope must be greater than 1");
   Require(p.eccentric_slope_at_vmax >= 0.0 && p.eccentric_slope_at_vmax < fmax - 1.0, curve,
           "eccentric_slope_at_vmax must be in [0, " + Number(fmax - 1.0) + ")");
-  Require(p.eccentric_slope_near_vmax >= p.eccentric_slope_at_vmax &&
-              p.eccentric_slope_near_vmax < fmax - 1.0,
-          curve, "eccentric_slope_near_vmax must be in [eccentric_slope_at_vmax, " +
-                     Number(fmax - 1.0) + ")");
+  Require(
+      p.eccentric_slope_near_vmax >= p.eccentric_slope_at_vmax &&
+          p.eccentric_slope_near_vmax < fmax - 1.0,
+      curve,
+      "eccentric_slope_near_vmax must be in [eccentric_slope_at_vmax, " + Number(fmax - 1.0) + ")");
   Require(p.concentric_curviness >= 0.0 && p.concentric_curviness <= 1.0, curve,
           "concentric_curviness must be in [0, 1]");
   Require(p.eccentric_curviness >= 0.0 && p.eccentric_curviness <= 1.0, curve,
@@ -194,10 +194,10 @@ SmoothSegmentedCurve MakeTendonForceLengthCurve(const TendonForceLengthCurvePara
   const double dydx_toe_mid = y_toe_mid / (x_toe_mid - x_foot);
   const double x_toe_ctrl = x_foot + 0.5 * (x_toe_mid - x_foot);
   const double y_toe_ctrl = dydx_toe_mid * (x_toe_ctrl - x_foot);
-  return Join({MakeQuinticBezierCorner(1.0, 0.0, 0.0, x_toe_ctrl, y_toe_ctrl, dydx_toe_mid, c),
-               MakeQuinticBezierCorner(x_toe_ctrl, y_toe_ctrl, dydx_toe_mid, x_toe, f_toe, k_iso,
-                                       c)},
-              0.0, k_iso);
+  return Join(
+      {MakeQuinticBezierCorner(1.0, 0.0, 0.0, x_toe_ctrl, y_toe_ctrl, dydx_toe_mid, c),
+       MakeQuinticBezierCorner(x_toe_ctrl, y_toe_ctrl, dydx_toe_mid, x_toe, f_toe, k_iso, c)},
+      0.0, k_iso);
 }
 
 SmoothSegmentedCurve MakeFiberCompressiveForceLengthCurve(
@@ -212,8 +212,8 @@ SmoothSegmentedCurve MakeFiberCompressiveForceLengthCurve(
   Require(k < -1.0 / l_max, kCurve,
           "stiffness_at_zero_length must be less than " + Number(-1.0 / l_max));
   Require(curviness >= 0.0 && curviness <= 1.0, kCurve, "curviness must be in [0, 1]");
-  return Join({MakeQuinticBezierCorner(0.0, 1.0, k, l_max, 0.0, 0.0, ScaleCurviness(curviness))},
-              k, 0.0);
+  return Join({MakeQuinticBezierCorner(0.0, 1.0, k, l_max, 0.0, 0.0, ScaleCurviness(curviness))}, k,
+              0.0);
 }
 
 SmoothSegmentedCurve MakeFiberCompressiveForceCosPennationCurve(
@@ -229,9 +229,8 @@ SmoothSegmentedCurve MakeFiberCompressiveForceCosPennationCurve(
   Require(k < -1.0 / cos_phi0, kCurve,
           "stiffness_at_perpendicular must be less than " + Number(-1.0 / cos_phi0));
   Require(curviness >= 0.0 && curviness <= 1.0, kCurve, "curviness must be in [0, 1]");
-  return Join(
-      {MakeQuinticBezierCorner(0.0, 1.0, k, cos_phi0, 0.0, 0.0, ScaleCurviness(curviness))}, k,
-      0.0);
+  return Join({MakeQuinticBezierCorner(0.0, 1.0, k, cos_phi0, 0.0, 0.0, ScaleCurviness(curviness))},
+              k, 0.0);
 }
 
 }  // namespace sinew::muscles

@@ -71,7 +71,8 @@ DampedVelocity SolveDampedNormFiberVelocity(const Millard2012Muscle& m, double f
   double dlceN = std::clamp(m.force_velocity_inverse().Value(fv), -1.0, 1.0);
   double err = 1.0e10;
   for (int iteration = 0; std::abs(err) > tolerance && iteration < 20; ++iteration) {
-    const SmoothSegmentedCurve::ValueAndSlope fv_eval = m.force_velocity().ValueAndDerivative(dlceN);
+    const SmoothSegmentedCurve::ValueAndSlope fv_eval =
+        m.force_velocity().ValueAndDerivative(dlceN);
     fv = fv_eval.value;
     err = FiberForce(fiso, a, fal, fv, fpe, dlceN, beta) * cos_phi - fse * fiso;
     // beta > 0 and fv' >= 0 keep the slope positive (OpenSim perturbs randomly if it is not).
@@ -97,7 +98,9 @@ ForceLengthSlopes CalcLengths(const Millard2012Muscle& m, double lce, double pat
   d->sin_pennation = std::sin(d->pennation_angle);
   d->fiber_length_along_tendon = lce * d->cos_pennation;
   d->tendon_length = path_length - lce * d->cos_pennation;
-  d->norm_tendon_length = d->tendon_length / p.tendon_slack_length;
+  // (A rigid tendon of slack length 0 is at its slack length.)
+  d->norm_tendon_length =
+      p.tendon_slack_length > 0.0 ? d->tendon_length / p.tendon_slack_length : 1.0;
   const SmoothSegmentedCurve::ValueAndSlope fal =
       m.active_force_length().ValueAndDerivative(d->norm_fiber_length);
   const SmoothSegmentedCurve::ValueAndSlope fpe =
@@ -154,8 +157,7 @@ Millard2012Dynamics CalcMillard2012Dynamics(const Millard2012Muscle& m, double a
   } else {
     const DampedVelocity v =
         SolveDampedNormFiberVelocity(m, fiso, a, d.active_force_length_multiplier,
-                                     d.passive_force_length_multiplier, fse, beta,
-                                     d.cos_pennation);
+                                     d.passive_force_length_multiplier, fse, beta, d.cos_pennation);
     if (!v.converged) Fail(m, "the fiber velocity Newton iteration did not converge");
     dlceN = v.norm_velocity;
     dlce = dlceN * lopt * vmax;
@@ -163,9 +165,9 @@ Millard2012Dynamics CalcMillard2012Dynamics(const Millard2012Muscle& m, double a
   }
   double dphidt = m.pennation().PennationAngularVelocity(std::tan(d.pennation_angle), lce, dlce);
   double dlceAT = dlce * d.cos_pennation - lce * d.sin_pennation * dphidt;
-  double dtl = rigid ? 0.0
-                     : path_lengthening_speed - dlce * d.cos_pennation +
-                           lce * d.sin_pennation * dphidt;
+  double dtl =
+      rigid ? 0.0
+            : path_lengthening_speed - dlce * d.cos_pennation + lce * d.sin_pennation * dphidt;
   const double min_length = m.minimum_fiber_length();
   d.fiber_state_clamped = (lce <= min_length && dlce <= 0.0) || lce < min_length;
   if (d.fiber_state_clamped) {

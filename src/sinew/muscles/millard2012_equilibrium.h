@@ -19,11 +19,11 @@ struct Millard2012Dynamics {
   double sin_pennation = 0.0;
   double fiber_length_along_tendon = 0.0;
   double tendon_length = 0.0;
-  double norm_tendon_length = 0.0;  ///< tendon length / slack length
+  double norm_tendon_length = 0.0;               ///< tendon length / slack length
   double active_force_length_multiplier = 0.0;   ///< fal(l~)
   double passive_force_length_multiplier = 0.0;  ///< fpe(l~)
   // Velocities.
-  double fiber_velocity = 0.0;  ///< d(fiber_length)/dt, the fiber_length state's derivative
+  double fiber_velocity = 0.0;       ///< d(fiber_length)/dt, the fiber_length state's derivative
   double norm_fiber_velocity = 0.0;  ///< fiber velocity / (vmax optimal length)
   double fiber_velocity_along_tendon = 0.0;
   double pennation_angular_velocity = 0.0;
@@ -42,9 +42,9 @@ struct Millard2012Dynamics {
   double fiber_force_along_tendon = 0.0;     ///< fiber_force cos(phi)
   double tendon_force = 0.0;                 ///< Fiso fse(l~T) (rigid tendon: fiber force along it)
   double norm_tendon_force = 0.0;
-  double fiber_stiffness = 0.0;                ///< dFm/dlce, N/m
-  double fiber_stiffness_along_tendon = 0.0;   ///< d(Fm cos phi)/d(lce cos phi)
-  double tendon_stiffness = 0.0;               ///< dFt/dlt (infinite for a rigid tendon)
+  double fiber_stiffness = 0.0;               ///< dFm/dlce, N/m
+  double fiber_stiffness_along_tendon = 0.0;  ///< d(Fm cos phi)/d(lce cos phi)
+  double tendon_stiffness = 0.0;              ///< dFt/dlt (infinite for a rigid tendon)
 };
 
 /// The muscle's state of length, velocity and force. `activation` is the activation state (or

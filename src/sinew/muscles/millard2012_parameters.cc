@@ -35,8 +35,9 @@ Millard2012Parameters Adjusted(Millard2012Parameters p, bool use_damping,
     constexpr const char* kModel = "classic Hill";
     if (p.minimum_activation > 1.0) fail("minimum_activation cannot be greater than 1");
     if (p.minimum_activation < 0.01) {
-      fail("minimum_activation cannot be less than 0.01 with an elastic tendon and no fiber "
-           "damping (the fiber velocity is singular at activation 0)");
+      fail(
+          "minimum_activation cannot be less than 0.01 with an elastic tendon and no fiber "
+          "damping (the fiber velocity is singular at activation 0)");
     }
     if (p.active_force_length.minimum_value < 0.1) {
       notes->push_back(Update(kModel, "ActiveForceLengthCurve minimum_value",
@@ -83,7 +84,12 @@ Millard2012Parameters Adjusted(Millard2012Parameters p, bool use_damping,
     fail("activation_time_constant and deactivation_time_constant must be greater than 0");
   }
   if (!(p.max_isometric_force > 0.0)) fail("max_isometric_force must be greater than 0");
-  if (!(p.tendon_slack_length > 0.0)) fail("tendon_slack_length must be greater than 0");
+  // A rigid tendon may have length 0 (ThoracoscapularShoulderModel's do); an elastic one needs a
+  // length to be normalized by.
+  if (!(p.tendon_slack_length > 0.0) &&
+      !(p.ignore_tendon_compliance && p.tendon_slack_length == 0.0)) {
+    fail("tendon_slack_length must be greater than 0 (or 0 with ignore_tendon_compliance)");
+  }
   if (!(p.max_contraction_velocity > 0.0)) fail("max_contraction_velocity must be greater than 0");
   return p;
 }
@@ -107,9 +113,8 @@ Millard2012Muscle::Millard2012Muscle(const Millard2012Parameters& parameters)
   tendon_force_length_ = MakeTendonForceLengthCurve(p_.tendon_force_length);
   const double min_active =
       p_.active_force_length.min_norm_active_fiber_length * p_.optimal_fiber_length;
-  minimum_fiber_length_ =
-      std::max(std::pow(std::numeric_limits<double>::epsilon(), 0.875),
-               std::max(min_active, pennation_.minimum_fiber_length()));
+  minimum_fiber_length_ = std::max(std::pow(std::numeric_limits<double>::epsilon(), 0.875),
+                                   std::max(min_active, pennation_.minimum_fiber_length()));
 }
 
 double Millard2012Muscle::ClampFiberLength(double fiber_length) const {

@@ -30,7 +30,7 @@ struct Millard2012Parameters {
   double activation_time_constant = 0.010;     ///< s
   double deactivation_time_constant = 0.040;   ///< s
   double minimum_activation = 0.01;
-  std::optional<double> min_control;              ///< minimum_activation when absent
+  std::optional<double> min_control;                ///< minimum_activation when absent
   double maximum_pennation_angle = std::acos(0.1);  ///< rad
   ActiveForceLengthCurveParameters active_force_length;
   ForceVelocityCurveParameters force_velocity;

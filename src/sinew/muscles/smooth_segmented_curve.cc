@@ -15,8 +15,8 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // The monomial coefficients of a quintic Bezier coordinate: a_k = C(5, k) sum_i (-1)^(k-i)
 // C(k, i) p_i.
 std::array<double, 6> MonomialCoefficients(const std::array<double, 6>& p) {
-  static constexpr int kBinomial[6][6] = {{1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1},
-                                          {1, 5, 10, 10, 5, 1}};
+  static constexpr int kBinomial[6][6] = {{1},          {1, 1},          {1, 2, 1},
+                                          {1, 3, 3, 1}, {1, 4, 6, 4, 1}, {1, 5, 10, 10, 5, 1}};
   std::array<double, 6> a{};
   for (int k = 0; k <= 5; ++k) {
     double sum = 0.0;
@@ -108,7 +108,8 @@ SmoothSegmentedCurve::SmoothSegmentedCurve(std::vector<QuinticBezierSegment> seg
   if (segments_.empty()) throw Error("smooth segmented curve: no segments");
   for (size_t s = 0; s < segments_.size(); ++s) {
     const QuinticBezierSegment& seg = segments_[s];
-    if (!(seg.x[5] > seg.x[0])) throw Error("smooth segmented curve: a segment does not advance in x");
+    if (!(seg.x[5] > seg.x[0]))
+      throw Error("smooth segmented curve: a segment does not advance in x");
     if (s > 0 && (seg.x[0] != segments_[s - 1].x[5] || seg.y[0] != segments_[s - 1].y[5])) {
       throw Error("smooth segmented curve: segment " + std::to_string(s) +
                   " does not start where the previous one ends");
@@ -136,8 +137,8 @@ SmoothSegmentedCurve::SegmentParameter SmoothSegmentedCurve::Locate(double x) co
   const QuinticBezierSegment& seg = segments_[s];
   const Polynomials& poly = polynomials_[s];
   // First guess: the tabulated u, interpolated linearly in x.
-  const double t = std::clamp((x - seg.x[0]) / (seg.x[5] - seg.x[0]), 0.0, 1.0) *
-                   (kGuessPoints - 1);
+  const double t =
+      std::clamp((x - seg.x[0]) / (seg.x[5] - seg.x[0]), 0.0, 1.0) * (kGuessPoints - 1);
   const int j = std::min(static_cast<int>(t), kGuessPoints - 2);
   const double guess = poly.u_at_x[j] + (t - j) * (poly.u_at_x[j + 1] - poly.u_at_x[j]);
   return {s, SolveParameter(poly.x, x, guess, ParameterTolerance(seg))};

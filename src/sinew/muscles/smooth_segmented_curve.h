@@ -36,8 +36,8 @@ class SmoothSegmentedCurve {
   /// `segments` in increasing x; x0/x1 are the ends of the Bezier part, y0/y1 and dydx0/dydx1
   /// the values and slopes the lines continue with. Throws sinew::Error for no segments or
   /// segments that do not join.
-  SmoothSegmentedCurve(std::vector<QuinticBezierSegment> segments, double x0, double x1,
-                       double y0, double y1, double dydx0, double dydx1);
+  SmoothSegmentedCurve(std::vector<QuinticBezierSegment> segments, double x0, double x1, double y0,
+                       double y1, double dydx0, double dydx1);
 
   /// y(x).
   double Value(double x) const;
