@@ -26,18 +26,19 @@ std::array<double, 6> MonomialCoefficients(const std::array<double, 6>& p) {
   return a;
 }
 
-// The value and the first two u-derivatives of a quintic in monomial form at u (Horner).
+// A quintic in monomial form at u, and its first two u-derivatives (Horner's rule).
+double PolynomialValue(const std::array<double, 6>& a, double u) {
+  return a[0] + u * (a[1] + u * (a[2] + u * (a[3] + u * (a[4] + u * a[5]))));
+}
+double PolynomialSlope(const std::array<double, 6>& a, double u) {
+  return a[1] + u * (2 * a[2] + u * (3 * a[3] + u * (4 * a[4] + u * 5 * a[5])));
+}
 struct PolynomialDerivatives {
   double value, d1, d2;
 };
 PolynomialDerivatives EvalPolynomial(const std::array<double, 6>& a, double u) {
-  const double value = a[0] + u * (a[1] + u * (a[2] + u * (a[3] + u * (a[4] + u * a[5]))));
-  const double d1 = a[1] + u * (2 * a[2] + u * (3 * a[3] + u * (4 * a[4] + u * 5 * a[5])));
-  const double d2 = 2 * a[2] + u * (6 * a[3] + u * (12 * a[4] + u * 20 * a[5]));
-  return {value, d1, d2};
-}
-double PolynomialValue(const std::array<double, 6>& a, double u) {
-  return a[0] + u * (a[1] + u * (a[2] + u * (a[3] + u * (a[4] + u * a[5]))));
+  return {PolynomialValue(a, u), PolynomialSlope(a, u),
+          2 * a[2] + u * (6 * a[3] + u * (12 * a[4] + u * 20 * a[5]))};
 }
 
 // The u in [0, 1] at which x(u) = x: Newton's method from `u`, kept inside a bracket [lo, hi]
@@ -50,8 +51,7 @@ double SolveParameter(const std::array<double, 6>& ax, double x, double u, doubl
     const double f = value - x;
     if (std::abs(f) <= tolerance) break;
     (f < 0.0 ? lo : hi) = u;
-    const double slope =
-        ax[1] + u * (2 * ax[2] + u * (3 * ax[3] + u * (4 * ax[4] + u * 5 * ax[5])));
+    const double slope = PolynomialSlope(ax, u);
     double next = slope > 0.0 ? u - f / slope : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     if (next == u) break;
