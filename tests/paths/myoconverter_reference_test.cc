@@ -7,10 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "corpus.h"
+#include "myoconverter_csv.h"
 #include "paths/path_test_util.h"
 
 namespace sinew::paths {
@@ -19,26 +19,7 @@ namespace {
 using testing::PathModel;
 
 // Rows of a MyoConverter csv (comment lines start with '#', then a header line).
-std::vector<std::vector<std::string>> ReadCsv(const std::string& file) {
-  std::ifstream in(file);
-  EXPECT_TRUE(in) << file;
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<std::string> fields;
-    std::stringstream fields_in(line);
-    std::string field;
-    while (std::getline(fields_in, field, ',')) fields.push_back(field);
-    rows.push_back(fields);
-  }
-  return rows;
-}
+auto& ReadCsv = ::sinew::testing::ReadMyoConverterCsv;
 
 // True when path p has a wrap object (it cannot match OpenSim until wrapping is connected).
 bool Wraps(const PathModel& m, int p) { return !m.paths.paths()[p].wraps().empty(); }

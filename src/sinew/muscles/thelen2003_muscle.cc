@@ -103,7 +103,7 @@ double Thelen2003Muscle::EquilibriumError(double lce, double a, double fv, doubl
                         ofl;
   // d(cos phi)/dlce = h^2 / (lce^3 cos phi) while the fiber pennates freely; d(lce cos phi)/dlce
   // = 1 / cos phi there, so the tendon shortens by 1 / cos phi per unit of fiber length.
-  const double h = pennation_.height();
+  const double h = pennation_.parallelogram_height();
   const bool free = phi > 0.0 && lce > pennation_.minimum_fiber_length();
   const double dcos = free ? h * h / (lce * lce * lce * cos_phi) : 0.0;
   const double dtendon = free ? -1.0 / cos_phi : -cos_phi;
