@@ -157,7 +157,10 @@ WrapCylinder::WrapCylinder(double radius, double length, WrapQuadrant quadrant)
 WrapResult WrapCylinder::Wrap(const Vec3& p_WP, const Vec3& p_WS,
                               const WrapOptions& options) const {
   WrapResult result;
-  if (Radial(p_WP).norm() < radius_ || Radial(p_WS).norm() < radius_) return result;
+  if (Radial(p_WP).norm() < radius_ || Radial(p_WS).norm() < radius_) {
+    result.point_inside = true;
+    return result;
+  }
 
   // Whether the segment crosses the (infinite) cylinder: its closest approach to the axis lies
   // between P and S and within the radius.

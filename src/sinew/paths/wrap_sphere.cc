@@ -95,7 +95,10 @@ WrapSphere::WrapSphere(double radius, WrapQuadrant quadrant)
 WrapResult WrapSphere::Wrap(const Vec3& p_WP, const Vec3& p_WS, const WrapOptions&) const {
   WrapResult result;
   // A point inside the sphere, or a segment that does not enter it: the path stays straight.
-  if (p_WP.norm() < radius_ || p_WS.norm() < radius_) return result;
+  if (p_WP.norm() < radius_ || p_WS.norm() < radius_) {
+    result.point_inside = true;
+    return result;
+  }
   if (!SegmentCrossesSphere(p_WP, p_WS, radius_)) return result;
 
   const Vec3 n = WrapPlaneNormal(p_WP, p_WS, quadrant_);

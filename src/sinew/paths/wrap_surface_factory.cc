@@ -65,6 +65,8 @@ std::unique_ptr<WrapSurface> MakeWrapSurface(const model::WrapObjectSpec& spec) 
   return builder->second(spec);
 }
 
+bool IsWrapSurfaceSupported(const std::string& type) { return Registry().contains(type); }
+
 std::vector<std::string> SupportedWrapSurfaceTypes() {
   std::vector<std::string> types;
   for (const auto& [type, builder] : Registry()) types.push_back(type);
