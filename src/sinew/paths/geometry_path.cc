@@ -130,7 +130,8 @@ void GeometryPath::CalcSegments(PathState& state) {
 // length is replaced by P-T1, the arc, T2-S. Returns false when the range has no active point
 // (OpenSim then abandons wrapping for the whole path).
 bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const Transform> X_GB,
-                             PathState& state, WrapOutcome& outcome) const {
+                             PathState& state, WrapOutcome& outcome,
+                             TangentPointReads& reads) const {
   RemoveTangentPoints(w, state);
   outcome = WrapOutcome::kNoWrap;
   const PathWrap& wrap = wraps_[static_cast<size_t>(w)];
@@ -159,7 +160,8 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
     const PathPointState& a = state.points[static_cast<size_t>(k)];
     const PathPointState& b = state.points[static_cast<size_t>(k) + 1];
     if (a.arc_length_to_next >= 0.0) continue;  // the arc over another surface
-    const Vec3 p_WP = X_WG * a.p_GP, p_WS = X_WG * b.p_GP;
+    // The surface sees the points where they are now.
+    const Vec3 p_WP = X_WG * reads.CurrentLocation(a), p_WS = X_WG * reads.CurrentLocation(b);
     WrapResult result = wrap.surface->Wrap(p_WP, p_WS, options);
     // As OpenSim, the outcome reported is the last segment's (or the mandatory one's).
     outcome = result.wrapped   ? WrapOutcome::kWrapped
@@ -171,8 +173,11 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
       best = std::move(result);
       break;
     }
-    const double change = (result.p_WT1 - p_WP).norm() + result.arc_length +
-                          (p_WS - result.p_WT2).norm() - (p_WS - p_WP).norm();
+    // OpenSim measures the change with the ground locations it has read (and now reads).
+    reads.Read(state.points[static_cast<size_t>(k)]);
+    reads.Read(state.points[static_cast<size_t>(k) + 1]);
+    const double change = (X_GW * result.p_WT1 - a.p_GP).norm() + result.arc_length +
+                          (b.p_GP - X_GW * result.p_WT2).norm() - (b.p_GP - a.p_GP).norm();
     if (change < best_change) {
       best_change = change;
       best_segment = k;
@@ -188,9 +193,46 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
   t1.p_GP = X_GW * best.p_WT1;
   t2.p_GP = X_GW * best.p_WT2;
   t1.arc_length_to_next = best.arc_length;
+  reads.Place(t1);
+  reads.Place(t2);
   const auto at = state.points.begin() + best_segment + 1;
   state.points.insert(state.points.insert(at, t1) + 1, t2);
   return true;
+}
+
+GeometryPath::TangentPointReads::TangentPointReads(int num_wraps)
+    : read(static_cast<size_t>(num_wraps)),
+      p_BP_read(static_cast<size_t>(num_wraps)),
+      p_GP_read(static_cast<size_t>(num_wraps)),
+      p_GP_current(static_cast<size_t>(num_wraps)) {}
+
+void GeometryPath::TangentPointReads::Read(PathPointState& point) {
+  if (point.wrap < 0) return;
+  const size_t w = static_cast<size_t>(point.wrap);
+  const size_t which = point.arc_length_to_next >= 0.0 ? 0 : 1;
+  if (!read[w][which]) {
+    read[w][which] = true;
+    p_BP_read[w][which] = point.p_BP;
+    p_GP_read[w][which] = point.p_GP;
+  }
+  point.p_BP = p_BP_read[w][which];
+  point.p_GP = p_GP_read[w][which];
+}
+
+void GeometryPath::TangentPointReads::Place(PathPointState& point) {
+  const size_t w = static_cast<size_t>(point.wrap);
+  const size_t which = point.arc_length_to_next >= 0.0 ? 0 : 1;
+  p_GP_current[w][which] = point.p_GP;
+  if (read[w][which]) {
+    point.p_BP = p_BP_read[w][which];
+    point.p_GP = p_GP_read[w][which];
+  }
+}
+
+Vec3 GeometryPath::TangentPointReads::CurrentLocation(const PathPointState& point) const {
+  if (point.wrap < 0) return point.p_GP;
+  const size_t which = point.arc_length_to_next >= 0.0 ? 0 : 1;
+  return p_GP_current[static_cast<size_t>(point.wrap)][which];
 }
 
 void GeometryPath::RemoveTangentPoints(int w, PathState& state) {
@@ -209,21 +251,30 @@ void GeometryPath::RemoveTangentPoints(int w, PathState& state) {
 // when the first object does not wrap and the second has a point inside it, the two swap.
 void GeometryPath::ApplyWraps(std::span<const double> q, std::span<const Transform> X_GB,
                               PathState& state) const {
+  state.stale_tangent_points = 0;
   const int num_wraps = static_cast<int>(wraps_.size());
   if (num_wraps == 0) return;
   std::vector<int> order(static_cast<size_t>(num_wraps));
   for (int i = 0; i < num_wraps; ++i) order[static_cast<size_t>(i)] = i;
   std::vector<WrapOutcome> outcomes(static_cast<size_t>(num_wraps), WrapOutcome::kNoWrap);
+  TangentPointReads reads(num_wraps);
   const int max_passes = num_wraps < 2 ? 1 : kMaxWrapPasses;
   double last_length = std::numeric_limits<double>::infinity();
   for (int pass = 0; pass < max_passes; ++pass) {
     for (int i = 0; i < num_wraps; ++i) {
       if (!ApplyWrap(order[static_cast<size_t>(i)], q, X_GB, state,
-                     outcomes[static_cast<size_t>(i)])) {
+                     outcomes[static_cast<size_t>(i)], reads)) {
         return;
       }
     }
+    for (PathPointState& point : state.points) reads.Read(point);
     CalcSegments(state);
+    state.stale_tangent_points = 0;
+    for (const PathPointState& point : state.points) {
+      if (point.wrap >= 0 && reads.CurrentLocation(point) != point.p_GP) {
+        ++state.stale_tangent_points;
+      }
+    }
     if (std::abs(state.length - last_length) < kWrapPassTolerance) break;
     last_length = state.length;
     if (pass == 0 && num_wraps > 1 && outcomes[0] == WrapOutcome::kNoWrap &&

@@ -55,6 +55,10 @@ struct PathState {
   /// Per segment: its length (m); the arc length for a segment over a wrap surface.
   std::vector<double> segment_length;
   double length = 0.0;  ///< Sum of segment lengths (m).
+  /// Tangent points that stand where an earlier wrapping pass put them, not where the last
+  /// pass did: OpenSim's length keeps a point's first location in ground (docs/paths.md), and
+  /// Sinew reproduces it. Zero for a path with one wrap object.
+  int stale_tangent_points = 0;
 };
 
 /// With several wrap objects, OpenSim repeats its wrapping passes at most this many times...
@@ -95,10 +99,26 @@ class GeometryPath {
  private:
   // What wrapping one object over its range gave (OpenSim's WrapAction, for its reordering).
   enum class WrapOutcome { kNoWrap, kPointInside, kWrapped };
+  // OpenSim caches a point's location in ground the first time it is read in an evaluation;
+  // moving a tangent point in a later pass does not refresh that cache, so the path's
+  // straight segments (its length) keep the location first read, while the surfaces wrap the
+  // point where it is now (docs/paths.md). Per wrap, for T1 and T2: whether read, the location
+  // read (in the body and in ground), and where the point is now.
+  struct TangentPointReads {
+    explicit TangentPointReads(int num_wraps);
+    // Reads `point`: the first read of a tangent point keeps its location, later reads give it.
+    void Read(PathPointState& point);
+    // A tangent point just placed: remembers where it is, and takes the location read, if any.
+    void Place(PathPointState& point);
+    // Where a path point is now (for the surfaces), in ground.
+    Vec3 CurrentLocation(const PathPointState& point) const;
+    std::vector<std::array<bool, 2>> read;
+    std::vector<std::array<Vec3, 2>> p_BP_read, p_GP_read, p_GP_current;
+  };
   void ApplyWraps(std::span<const double> q, std::span<const Transform> X_GB,
                   PathState& state) const;
   bool ApplyWrap(int wrap, std::span<const double> q, std::span<const Transform> X_GB,
-                 PathState& state, WrapOutcome& outcome) const;
+                 PathState& state, WrapOutcome& outcome, TangentPointReads& reads) const;
   static void RemoveTangentPoints(int wrap, PathState& state);
   static void CalcSegments(PathState& state);
 
