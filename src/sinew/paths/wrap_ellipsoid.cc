@@ -229,8 +229,10 @@ WrapResult WrapEllipsoid::Wrap(const Vec3& p_WP, const Vec3& p_WS,
   result.p_WT1 = r1 / factor;
   result.p_WT2 = r2 / factor;
   result.arc_length = arc.length / factor;
-  result.arc_points.reserve(arc.points.size());
-  for (const Vec3& point : arc.points) result.arc_points.push_back(point / factor);
+  if (options.with_arc_points) {
+    result.arc_points.reserve(arc.points.size());
+    for (const Vec3& point : arc.points) result.arc_points.push_back(point / factor);
+  }
   return result;
 }
 
