@@ -1,4 +1,5 @@
 #include <sinew/paths/ellipsoid_tangent_point.h>
+#include <sinew/paths/unit_vector.h>
 
 #include <cmath>
 #include <limits>
@@ -14,11 +15,6 @@ constexpr double kOnSurface = 1e-4;
 constexpr double kConverged = 1e-8;
 constexpr int kMaxSteps = 50;
 constexpr int kMaxInnerSteps = 1000;
-
-Vec3 NormalizedOrZero(const Vec3& v) {
-  const double norm = v.norm();
-  return norm >= std::numeric_limits<double>::epsilon() ? Vec3(v * (1.0 / norm)) : Vec3::Zero();
-}
 
 // The residuals at r with tangent-plane offset d1: r in the plane; r on the ellipsoid; the
 // tangent plane g . x + d1 = 0 (g = 2 r / radii^2, the gradient) through r, and through p.

@@ -1,6 +1,7 @@
 #include <sinew/common/error.h>
 #include <sinew/paths/ellipsoid_closest_point.h>
 #include <sinew/paths/ellipsoid_tangent_point.h>
+#include <sinew/paths/unit_vector.h>
 #include <sinew/paths/wrap_ellipsoid.h>
 
 #include <algorithm>
@@ -26,11 +27,6 @@ constexpr double kChordEndBlend = 0.3;
 // The arc is a polyline of chords this long (m; OpenSim assumes metres), at most kMaxChords.
 constexpr double kChordLength = 0.001;
 constexpr int kMaxChords = 499;
-
-Vec3 NormalizedOrZero(const Vec3& v) {
-  const double norm = v.norm();
-  return norm >= std::numeric_limits<double>::epsilon() ? Vec3(v * (1.0 / norm)) : Vec3::Zero();
-}
 
 // The surface point c1 that, with P and S, spans the wrap plane, for OpenSim's `method`; all in
 // scaled coordinates. r1 and r2 are where the segment enters and leaves the ellipsoid.
