@@ -26,12 +26,12 @@ TEST_F(Inspect, TextSummary) {
             std::string::npos)
       << run.out;
   EXPECT_NE(run.out.find("Thelen2003Muscle: 6"), std::string::npos) << run.out;
-  // The muscles are simulated; the wrap objects are not yet.
+  // The muscles and the wrap objects (cylinders, ellipsoids) are simulated.
   EXPECT_NE(run.out.find("TRIlong                     Thelen2003Muscle      simulated"),
             std::string::npos)
       << run.out;
   EXPECT_EQ(run.out.find("/forceset/TRIlong: Thelen2003Muscle"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("/bodyset/r_humerus/wrapobjectset/TRI: WrapCylinder"), std::string::npos)
+  EXPECT_EQ(run.out.find("/bodyset/r_humerus/wrapobjectset/TRI: WrapCylinder"), std::string::npos)
       << run.out;
 }
 
@@ -46,12 +46,17 @@ TEST_F(Inspect, PathsAreListedWithTheirPointsAndWrapsAndWhatIsNotComputed) {
   EXPECT_NE(run.out.find("  BICshort  6 points (0 conditional, 0 moving), 0 wraps\n"),
             std::string::npos)
       << run.out;
-  // 7 PathWraps over 5 paths: each named with its path until wrapping is connected.
-  EXPECT_NE(run.out.find("path parts not computed (7):"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("/forceset/TRIlong: wrap object 'TRIlonghh' (WrapEllipsoid) is not "
-                         "applied yet"),
+  // 7 PathWraps over 5 paths, all over cylinders and ellipsoids: all computed.
+  EXPECT_NE(run.out.find("path parts not computed (0):"), std::string::npos) << run.out;
+  // The same model with its two ellipsoids made tori: those 2 PathWraps are named with their
+  // path (not applied).
+  const CliRun tori = Run("inspect " + CopyWithTorusWraps(kArm26));
+  ASSERT_EQ(tori.exit_code, 0) << tori.err;
+  EXPECT_NE(tori.out.find("path parts not computed (2):"), std::string::npos) << tori.out;
+  EXPECT_NE(tori.out.find("/forceset/TRIlong: wrap object 'TRIlonghh' (WrapTorus) is not "
+                          "applied yet"),
             std::string::npos)
-      << run.out;
+      << tori.out;
   const CliRun json = Run("inspect --json " + kArm26);
   ASSERT_EQ(json.exit_code, 0) << json.err;
   const nlohmann::json j = nlohmann::json::parse(json.out);
@@ -59,7 +64,7 @@ TEST_F(Inspect, PathsAreListedWithTheirPointsAndWrapsAndWhatIsNotComputed) {
   EXPECT_EQ(j["paths"][0]["name"], "TRIlong");
   EXPECT_EQ(j["paths"][0]["points"], 5);
   EXPECT_EQ(j["paths"][0]["wrap_objects"].size(), 3u);
-  EXPECT_EQ(j["paths_not_computed"].size(), 7u);
+  EXPECT_EQ(j["paths_not_computed"].size(), 0u);
 }
 
 TEST_F(Inspect, JsonFields) {
@@ -89,7 +94,7 @@ TEST_F(Inspect, JsonFields) {
   ASSERT_EQ(j["markers"].size(), 3u);
   EXPECT_EQ(j["markers"][0]["body"], "base");
   EXPECT_TRUE(j["warnings"].is_array());
-  EXPECT_EQ(j["not_simulated"].size(), 4u);  // the wrap objects
+  EXPECT_EQ(j["not_simulated"].size(), 0u);  // muscles and wrap objects are all simulated
 }
 
 TEST_F(Inspect, BadInputExitsWithTwo) {

@@ -2,6 +2,7 @@
 #include <sinew/opensim/internal/constraint_registry.h>
 #include <sinew/opensim/internal/force_registry.h>
 #include <sinew/opensim/support.h>
+#include <sinew/paths/wrap_surface_factory.h>
 
 #include <algorithm>
 #include <array>
@@ -21,7 +22,9 @@ bool IsControllerSimulated(const model::ControllerSpec& controller) {
   return controller.type == "PrescribedController";
 }
 bool IsContactGeometrySimulated(const model::ContactGeometrySpec& /*contact*/) { return false; }
-bool IsWrapObjectSimulated(const model::WrapObjectSpec& /*wrap*/) { return false; }
+bool IsWrapObjectSimulated(const model::WrapObjectSpec& wrap) {
+  return paths::IsWrapSurfaceSupported(wrap.type);
+}
 
 std::vector<NotSimulatedElement> FindNotSimulated(const model::ModelSpec& spec,
                                                   const std::vector<std::string>& disabled_forces) {

@@ -22,7 +22,8 @@ bool IsConstraintSimulated(const model::ConstraintSpec& constraint);
 bool IsControllerSimulated(const model::ControllerSpec& controller);
 /// True if the engine uses contact geometry of this OpenSim class (none yet).
 bool IsContactGeometrySimulated(const model::ContactGeometrySpec& contact);
-/// True if the engine wraps paths over wrap objects of this class (none yet).
+/// True if paths wrap over wrap objects of this class (paths::IsWrapSurfaceSupported:
+/// WrapCylinder, WrapSphere, WrapEllipsoid).
 bool IsWrapObjectSimulated(const model::WrapObjectSpec& wrap);
 
 /// The kinds of element counted in a summary of what is not simulated.
