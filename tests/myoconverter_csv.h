@@ -33,4 +33,24 @@ inline std::vector<std::vector<std::string>> ReadMyoConverterCsv(const std::stri
   return rows;
 }
 
+/// One row of a MyoConverter muscle_kinetics.csv: OpenSim's equilibrium fiber forces (N) of a
+/// muscle at an activation and the musculotendon length (m) of a pose.
+struct MuscleKineticsRow {
+  std::string muscle, pose;
+  double activation, mtu_length, active_force, passive_force, total_force;
+};
+
+/// The rows of a muscle_kinetics.csv
+/// ("muscle,activation,pose,mtu_length,active_force,passive_force,total_force").
+inline std::vector<MuscleKineticsRow> ReadMuscleKinetics(const std::string& file) {
+  std::vector<MuscleKineticsRow> rows;
+  for (const std::vector<std::string>& f : ReadMyoConverterCsv(file)) {
+    EXPECT_EQ(f.size(), 7u);
+    if (f.size() != 7) continue;
+    rows.push_back({f[0], f[2], std::stod(f[1]), std::stod(f[3]), std::stod(f[4]), std::stod(f[5]),
+                    std::stod(f[6])});
+  }
+  return rows;
+}
+
 }  // namespace sinew::testing

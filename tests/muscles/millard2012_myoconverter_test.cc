@@ -19,22 +19,7 @@ namespace {
 
 const std::string kData = std::string(SINEW_TEST_DATA_DIR) + "/MyoHub/myoconverter/";
 
-struct ReferenceRow {
-  std::string muscle, pose;
-  double activation, mtu_length, active_force, passive_force, total_force;
-};
 
-// The table's rows: "muscle,activation,pose,mtu_length,active_force,passive_force,total_force".
-std::vector<ReferenceRow> ReadKinetics(const std::string& file) {
-  std::vector<ReferenceRow> rows;
-  for (const std::vector<std::string>& f : testing::ReadMyoConverterCsv(file)) {
-    EXPECT_EQ(f.size(), 7u);
-    if (f.size() != 7) continue;
-    rows.push_back({f[0], f[2], std::stod(f[1]), std::stod(f[3]), std::stod(f[4]), std::stod(f[5]),
-                    std::stod(f[6])});
-  }
-  return rows;
-}
 
 // Active and total fiber force (the tendon force, which equals the fiber force along the tendon
 // at equilibrium) within 1e-6 relative, as issue 12 asks; where OpenSim's are 0 (48 rows: the
@@ -56,8 +41,8 @@ TEST(Millard2012MyoConverterTest, Gait10dof18muscEquilibriumForcesMatchOpenSim) 
     }
   }
   ASSERT_EQ(muscles.size(), 18u);
-  const std::vector<ReferenceRow> rows =
-      ReadKinetics(kData + "reference-csv/Gait10dof18musc/muscle_kinetics.csv");
+  const std::vector<testing::MuscleKineticsRow> rows =
+      testing::ReadMuscleKinetics(kData + "reference-csv/Gait10dof18musc/muscle_kinetics.csv");
   ASSERT_EQ(rows.size(), 270u);
   double worst_active = 0, worst_total = 0, worst_passive = 0;
   int clamped = 0, passive_compared = 0;
@@ -68,7 +53,7 @@ TEST(Millard2012MyoConverterTest, Gait10dof18muscEquilibriumForcesMatchOpenSim) 
         << what << ": " << value << " vs OpenSim's " << reference;
     return error == 0.0 ? 0.0 : error / std::abs(reference);
   };
-  for (const ReferenceRow& row : rows) {
+  for (const testing::MuscleKineticsRow& row : rows) {
     const auto it = muscles.find(row.muscle);
     ASSERT_NE(it, muscles.end()) << row.muscle;
     const Millard2012Muscle& m = it->second;

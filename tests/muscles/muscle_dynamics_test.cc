@@ -1,12 +1,14 @@
-// Path actuators and Thelen2003Muscle through the OpenSim parser and the engine, against
-// closed forms: a PathActuator's constant tension accelerating a block, activation under a
-// constant excitation (the separable first-order equation), a muscle at equilibrium staying
-// there, and the errors of bad muscle parameters.
+// Path actuators, Thelen2003Muscle and Millard2012EquilibriumMuscle through the OpenSim parser
+// and the engine, against closed forms: a PathActuator's constant tension accelerating a block,
+// activation under a constant excitation (the separable first-order equation), a muscle at
+// equilibrium staying there, and the errors of bad muscle parameters; Rajagopal2016's 80
+// Millard muscles built and simulated.
 #include <gtest/gtest.h>
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/energy.h>
 #include <sinew/engine/integrator.h>
+#include <sinew/engine/pose.h>
 #include <sinew/functions/constant.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/muscles/path_actuator.h>
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace sinew::muscles {
 namespace {
@@ -50,6 +53,15 @@ std::string Thelen(const std::string& extra) {
 <activation_time_constant>0.01</activation_time_constant><deactivation_time_constant>0.04</deactivation_time_constant>
 <default_activation>0.2</default_activation>)" +
          extra + "</Thelen2003Muscle>";
+}
+
+std::string Millard(const std::string& extra) {
+  return std::string(R"(<Millard2012EquilibriumMuscle name="musc">)") + kPath +
+         R"(<max_isometric_force>500</max_isometric_force><optimal_fiber_length>0.12</optimal_fiber_length>
+<tendon_slack_length>0.27</tendon_slack_length><pennation_angle_at_optimal>0.2</pennation_angle_at_optimal>
+<activation_time_constant>0.01</activation_time_constant><deactivation_time_constant>0.04</deactivation_time_constant>
+<default_activation>0.2</default_activation>)" +
+         extra + "</Millard2012EquilibriumMuscle>";
 }
 
 struct Parsed {
@@ -146,6 +158,77 @@ TEST(ThelenMuscleTest, MuscleAtEquilibriumStaysThereUnderConstantExcitation) {
   // The fiber may move by the integrator's 1e-12; the musculotendon stiffness along the fiber
   // here is about 5e4 N/m, so the tendon force by 5e-8 N.
   EXPECT_NEAR(q1.tendon_force, q0.tendon_force, 1e-7);
+}
+
+// Millard's activation dynamics are Thelen's equation with the same time constants, so the
+// same closed form holds.
+TEST(Millard2012MuscleTest, ActivationRisesAsTheClosedFormOfItsFirstOrderEquation) {
+  auto parsed = Parse(SliderModel(Millard(""), true));
+  const double u = 0.8, a0 = 0.2, tau = 0.01;
+  parsed->parser.SetExcitationFunction("musc", std::make_shared<functions::Constant>(u));
+  auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-10});
+  integrator->SetController(parsed->parser.GetController());
+  engine::State state = engine::MakeDefaultState(*parsed->system);
+  for (double a : {0.3, 0.5, 0.7, 0.79}) {
+    const double t = tau * (-1.5 * (a - a0) - (0.5 + 1.5 * u) * std::log((u - a) / (u - a0)));
+    integrator->StepTo(state, t);
+    EXPECT_NEAR(state.z[0], a, 1e-8) << "t = " << t;
+  }
+}
+
+TEST(Millard2012MuscleTest, MuscleAtEquilibriumStaysThereUnderConstantExcitation) {
+  auto parsed = Parse(SliderModel(Millard(""), true), /*equilibrate=*/true);
+  parsed->parser.SetExcitationFunction("musc", std::make_shared<functions::Constant>(0.2));
+  auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-12});
+  integrator->SetController(parsed->parser.GetController());
+  engine::State state = engine::MakeDefaultState(*parsed->system);
+  ASSERT_EQ(parsed->system->state_variable_names(),
+            (std::vector<std::string>{"musc/activation", "musc/fiber_length"}));
+  const double fiber0 = state.z[1];
+  const auto* muscle = dynamic_cast<const PathActuator*>(parsed->system->force_elements()[0].get());
+  ASSERT_NE(muscle, nullptr);
+  const MuscleQuantities q0 = muscle->CalcQuantities(parsed->system->MakeForceContext(0, state));
+  // OpenSim's equilibrium tolerance is 1e-8 max_isometric_force on the force balance.
+  EXPECT_NEAR((q0.active_fiber_force + q0.passive_fiber_force) * std::cos(q0.pennation_angle),
+              q0.tendon_force, 1e-8 * 500);
+  EXPECT_GT(q0.tendon_force, 10.0);
+  integrator->StepTo(state, 1.0);
+  EXPECT_NEAR(state.z[0], 0.2, 1e-12);
+  // That residual (5e-6 N) over a musculotendon stiffness of order 1e4 N/m moves the fiber by
+  // at most about 1e-9 m while it settles.
+  EXPECT_NEAR(state.z[1], fiber0, 1e-9);
+  const MuscleQuantities q1 = muscle->CalcQuantities(parsed->system->MakeForceContext(0, state));
+  EXPECT_NEAR(q1.tendon_force, q0.tendon_force, 1e-8 * 500);
+}
+
+// Rajagopal2016: its 80 Millard2012EquilibriumMuscles (some with rigid tendons) are built on
+// their wrapped paths, start at equilibrium at the default pose, and 20 ms of the model falling
+// under gravity, muscles at their default activations, integrate to finite states.
+TEST(Millard2012MuscleTest, Rajagopal2016BuildsAndSimulates) {
+  const std::string osim = std::string(SINEW_TEST_DATA_DIR) +
+                           "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
+  auto parsed = std::make_unique<Parsed>();
+  parsed->parser.EquilibrateMuscles(true);
+  const model::ModelSpec spec = io::ReadOsim(osim);
+  parsed->system = std::make_unique<engine::System>(spec.gravity);
+  parsed->parser.ParseSpec(*parsed->system, spec);
+  parsed->system->Finalize();
+  int millard = 0, rigid = 0;
+  for (const auto& element : parsed->system->force_elements()) {
+    const auto* actuator = dynamic_cast<const PathActuator*>(element.get());
+    if (!actuator || actuator->StateVariableNames().empty()) continue;
+    ++millard;
+    rigid += actuator->StateVariableNames().size() == 1 ? 1 : 0;
+  }
+  EXPECT_EQ(millard, 80);
+  EXPECT_GT(rigid, 0);
+  auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-5});
+  integrator->SetController(parsed->parser.GetController());
+  engine::State state = engine::MakeDefaultState(*parsed->system);
+  integrator->StepTo(state, 0.02);
+  EXPECT_DOUBLE_EQ(state.t, 0.02);
+  EXPECT_TRUE(state.z.allFinite());
+  for (const engine::BodyState& body : state.bodies) EXPECT_TRUE(engine::PoseOf(body).p.allFinite());
 }
 
 TEST(ThelenMuscleTest, IgnoredFlagsAreReported) {

@@ -7,22 +7,18 @@
 // csv's mtu_length, so it checks the muscle model alone (paths and wrapping are tested in
 // tests/paths).
 #include <gtest/gtest.h>
+#include <myoconverter_csv.h>
 #include <sinew/model/model_spec.h>
 #include <sinew/muscles/path_actuator.h>
 #include <sinew/opensim/parser.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 namespace sinew::muscles {
 namespace {
 
-struct KineticsRow {
-  std::string muscle, pose;
-  double activation, mtu_length, active, passive, total;
-};
 
 // Whether a pose "coord=value;coord=value" puts a coordinate outside its range. MyoConverter
 // prints poses with 5 digits, so a sweep's end can lie just beyond a range (-2.0944 below
@@ -45,28 +41,6 @@ bool PoseOutsideRange(const model::ModelSpec& spec, const std::string& pose) {
   return false;
 }
 
-std::vector<KineticsRow> ReadKinetics(const std::string& file) {
-  std::ifstream in(file);
-  EXPECT_TRUE(in) << file;
-  std::vector<KineticsRow> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<std::string> f;
-    std::stringstream fields(line);
-    std::string field;
-    while (std::getline(fields, field, ',')) f.push_back(field);
-    EXPECT_EQ(f.size(), 7u) << line;
-    rows.push_back({f[0], f[2], std::stod(f[1]), std::stod(f[3]), std::stod(f[4]), std::stod(f[5]),
-                    std::stod(f[6])});
-  }
-  return rows;
-}
 
 // Every row of a model's csv: the muscle's model, equilibrated at the row's activation and
 // length with zero speed, gives OpenSim's forces to 1e-6 of the total (at least 1 N).
@@ -83,14 +57,14 @@ void ExpectEquilibriumForces(const std::string& model_dir, const std::string& os
   const std::string data = std::string(SINEW_TEST_DATA_DIR) + "/MyoHub/myoconverter/";
   OpenSimParser parser;
   const auto system = parser.Parse(data + "models/osim/" + model_dir + "/" + osim);
-  const std::vector<KineticsRow> rows =
-      ReadKinetics(data + "reference-csv/" + model_dir + "/muscle_kinetics.csv");
+  const std::vector<testing::MuscleKineticsRow> rows =
+      testing::ReadMuscleKinetics(data + "reference-csv/" + model_dir + "/muscle_kinetics.csv");
   ASSERT_EQ(static_cast<int>(rows.size()), expected_rows);
   double worst = 0.0;
   std::string worst_row;
   int at_minimum = 0, outside_range = 0;
   double worst_outside = 0.0;
-  for (const KineticsRow& row : rows) {
+  for (const testing::MuscleKineticsRow& row : rows) {
     const auto& forces = parser.GetReport().forces();
     const auto it = forces.find(row.muscle);
     ASSERT_NE(it, forces.end()) << row.muscle;
@@ -102,7 +76,7 @@ void ExpectEquilibriumForces(const std::string& model_dir, const std::string& os
     const PathKinematics path{row.mtu_length, 0.0};
     const EquilibriumStatus status = model.Equilibrate(path, row.muscle, z);
     const MuscleQuantities q = model.Calc(z, row.activation, path);
-    if (row.active == 0.0 && row.passive == 0.0 && row.total == 0.0 && q.tendon_force > 0.0) {
+    if (row.active_force == 0.0 && row.passive_force == 0.0 && row.total_force == 0.0 && q.tendon_force > 0.0) {
       EXPECT_EQ(status, EquilibriumStatus::kFiberAtMinimumLength) << row.muscle;
       ++at_minimum;
       continue;
@@ -111,13 +85,13 @@ void ExpectEquilibriumForces(const std::string& model_dir, const std::string& os
     // Rows of a pose outside a range: the forces of a length within 2e-6 m of the printed
     // one, times a musculotendon stiffness below 1.2e4 N/m per N of force (5e-5 relative
     // at most on these models' rows; see PoseOutsideRange).
-    const double scale = std::max(std::abs(row.total), 1.0);
+    const double scale = std::max(std::abs(row.total_force), 1.0);
     const bool outside = PoseOutsideRange(parser.GetSpec(), row.pose);
     outside_range += outside ? 1 : 0;
     const double bound = outside ? 5e-5 : 1e-6;
     for (const auto& [value, reference] :
-         {std::pair{q.active_fiber_force, row.active},
-          std::pair{q.passive_fiber_force, row.passive}, std::pair{q.tendon_force, row.total}}) {
+         {std::pair{q.active_fiber_force, row.active_force},
+          std::pair{q.passive_fiber_force, row.passive_force}, std::pair{q.tendon_force, row.total_force}}) {
       const double error = std::abs(value - reference) / scale;
       if (outside) worst_outside = std::max(worst_outside, error);
       if (!outside && error > worst) {
@@ -152,6 +126,13 @@ TEST(MyoConverterEquilibriumTest, TugOfWarThelenMusclesMatchOpenSim) {
 
 TEST(MyoConverterEquilibriumTest, Gait2354ThelenMusclesMatchOpenSim) {
   ExpectEquilibriumForces("Gait2354Simbody", "gait2354.osim", 810, 4, 448);
+}
+
+// Gait10dof18musc's 18 Millard2012EquilibriumMuscles built by the parser as path actuators:
+// the element's model gives OpenSim's equilibrium forces (millard2012_myoconverter_test.cc
+// checks the same rows on the pure functions).
+TEST(MyoConverterEquilibriumTest, Gait10dof18muscMillardMusclesThroughTheElementMatchOpenSim) {
+  ExpectEquilibriumForces("Gait10dof18musc", "gait10dof18musc.osim", 270, 0, 38);
 }
 
 }  // namespace

@@ -119,6 +119,8 @@ const ForceType* FindForceType(const std::string& opensim_class) {
       {"PathSpring", {&BuildPathSpring, false}},
       {"Thelen2003Muscle", {&BuildThelen2003Muscle, true}},
       {"Thelen2003Muscle_Deprecated", {&BuildThelen2003MuscleDeprecated, true}},
+      {"Millard2012EquilibriumMuscle", {&BuildMillard2012EquilibriumMuscle, true}},
+      {"DeGrooteFregly2016Muscle", {&BuildDeGrooteFregly2016Muscle, true}},
   };
   const auto it = registry.find(opensim_class);
   return it == registry.end() ? nullptr : &it->second;

@@ -2,6 +2,10 @@
 // each a muscles::PathActuator with its tension model. The properties keep OpenSim's names
 // and defaults (Muscle.cpp, Thelen2003Muscle.cpp, ActivationFiberLengthMuscle.cpp).
 #include <sinew/model/element_values.h>
+#include <sinew/muscles/degroote_fregly2016_spec.h>
+#include <sinew/muscles/degroote_fregly2016_tension.h>
+#include <sinew/muscles/millard2012_spec.h>
+#include <sinew/muscles/millard2012_tension.h>
 #include <sinew/muscles/path_actuator.h>
 #include <sinew/muscles/path_spring.h>
 #include <sinew/muscles/thelen2003_muscle.h>
@@ -9,6 +13,7 @@
 #include <sinew/opensim/internal/force_registry.h>
 
 #include <limits>
+#include <optional>
 
 namespace sinew::opensim::internal {
 namespace {
@@ -143,6 +148,32 @@ std::shared_ptr<engine::ForceElement> BuildThelen2003MuscleDeprecated(const Forc
     v.Fail(error.message());
   }
   return MakePathActuator(in, v.Double("optimal_force", 1.0), std::move(model), 0.0, 1.0);
+}
+
+std::shared_ptr<engine::ForceElement> BuildMillard2012EquilibriumMuscle(const ForceBuildInput& in) {
+  // ReadMillard2012Muscle names the file, the line and the muscle in its errors.
+  const muscles::Millard2012Muscle muscle = muscles::ReadMillard2012Muscle(in.spec, in.force);
+  if (in.notes) {
+    for (const std::string& adjustment : muscle.adjustments()) {
+      in.notes->push_back({in.force.where, in.force.path, adjustment});
+    }
+  }
+  const muscles::Millard2012Parameters& p = muscle.parameters();
+  const double min_control = p.min_control.value_or(p.minimum_activation);
+  return MakePathActuator(in, in.values.Double("optimal_force", 1.0),
+                          std::make_shared<muscles::Millard2012Tension>(muscle), min_control, 1.0);
+}
+
+std::shared_ptr<engine::ForceElement> BuildDeGrooteFregly2016Muscle(const ForceBuildInput& in) {
+  std::shared_ptr<const muscles::DeGrooteFregly2016Tension> model;
+  try {
+    model = std::make_shared<muscles::DeGrooteFregly2016Tension>(
+        muscles::ReadDeGrooteFregly2016Muscle(in.spec, in.force));
+  } catch (const Error& error) {
+    if (!error.where().file.empty()) throw;
+    in.values.Fail(error.message());
+  }
+  return MakePathActuator(in, 1.0, std::move(model), 0.0, 1.0);
 }
 
 }  // namespace sinew::opensim::internal

@@ -90,6 +90,8 @@ std::shared_ptr<engine::ForceElement> BuildPathActuator(const ForceBuildInput& i
 std::shared_ptr<engine::ForceElement> BuildPathSpring(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildThelen2003MuscleDeprecated(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildMillard2012EquilibriumMuscle(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildDeGrooteFregly2016Muscle(const ForceBuildInput& in);
 
 /// The entry for OpenSim class `opensim_class`, or null when Sinew does not simulate it.
 const ForceType* FindForceType(const std::string& opensim_class);
