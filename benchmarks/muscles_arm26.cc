@@ -1,8 +1,8 @@
 // One simulated second of OpenSim's arm26 forward test (tests/muscles/arm26_forward_test.cc):
 // 6 muscles (Thelen2003Muscle, and Thelen2003Muscle_Deprecated as OpenSim's test reads them)
 // driven by arm26_StaticOptimization_controls.xml from arm26_InitialStates.sto, RK45 at
-// accuracy 1e-5 (OpenSim's integrator_error_tolerance in the setup) and 1e-7. Wrap objects are
-// not connected yet, so paths are straight. Reports simulated seconds per wall second.
+// accuracy 1e-5 (OpenSim's integrator_error_tolerance in the setup) and 1e-7, the paths wrapped
+// over arm26's cylinders and ellipsoids. Reports simulated seconds per wall second.
 #include <benchmark/benchmark.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/integrator.h>
@@ -13,6 +13,8 @@
 
 #include <memory>
 #include <string>
+
+#include "one_second_run.h"
 
 namespace {
 
@@ -37,19 +39,7 @@ void RunArm26(benchmark::State& bench, bool deprecated, double accuracy) {
     const int z = sinew::opensim::FindStateVariableColumn(system, initial.labels[i]);
     if (z >= 0) start.z[z] = initial.Value(0, static_cast<int>(i));
   }
-  double simulated = 0.0, steps = 0.0, evaluations = 0.0;
-  for (auto _ : bench) {
-    sinew::engine::State state = start;
-    auto integrator = sinew::engine::MakeIntegrator("rk45", system, {.accuracy = accuracy});
-    integrator->SetController(parser.GetController());
-    integrator->StepTo(state, 1.0);
-    simulated += 1.0;
-    steps += static_cast<double>(integrator->stats().steps);
-    evaluations += static_cast<double>(integrator->stats().evaluations);
-  }
-  bench.counters["sim_s_per_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
-  bench.counters["steps"] = benchmark::Counter(steps, benchmark::Counter::kAvgIterations);
-  bench.counters["evals"] = benchmark::Counter(evaluations, benchmark::Counter::kAvgIterations);
+  RunOneSecond(bench, system, parser.GetController(), start, accuracy);
 }
 
 void BM_Arm26Thelen2003(benchmark::State& bench) { RunArm26(bench, false, bench.range(0) * 1e-7); }

@@ -12,6 +12,8 @@
 #include <memory>
 #include <string>
 
+#include "one_second_run.h"
+
 namespace {
 
 void BM_Rajagopal2016MillardOneSecond(benchmark::State& bench) {
@@ -27,19 +29,7 @@ void BM_Rajagopal2016MillardOneSecond(benchmark::State& bench) {
   parser.ParseSpec(system, spec);
   system.Finalize();
   const sinew::engine::State start = sinew::engine::MakeDefaultState(system);
-  double simulated = 0.0, steps = 0.0, evaluations = 0.0;
-  for (auto _ : bench) {
-    sinew::engine::State state = start;
-    auto integrator = sinew::engine::MakeIntegrator("rk45", system, {.accuracy = 1e-5});
-    integrator->SetController(parser.GetController());
-    integrator->StepTo(state, 1.0);
-    simulated += 1.0;
-    steps += static_cast<double>(integrator->stats().steps);
-    evaluations += static_cast<double>(integrator->stats().evaluations);
-  }
-  bench.counters["sim_s_per_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
-  bench.counters["steps"] = benchmark::Counter(steps, benchmark::Counter::kAvgIterations);
-  bench.counters["evals"] = benchmark::Counter(evaluations, benchmark::Counter::kAvgIterations);
+  RunOneSecond(bench, system, parser.GetController(), start, 1e-5);
 }
 BENCHMARK(BM_Rajagopal2016MillardOneSecond)->Unit(benchmark::kMillisecond);
 

@@ -1,0 +1,28 @@
+// The loop the muscle benchmarks share: one simulated second with RK45 from `start` per
+// iteration, reporting simulated seconds per second and the average steps and evaluations.
+#pragma once
+
+#include <benchmark/benchmark.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/engine/state.h>
+#include <sinew/engine/system.h>
+
+#include <memory>
+
+inline void RunOneSecond(benchmark::State& bench, const sinew::engine::System& system,
+                         std::shared_ptr<const sinew::engine::Controller> controller,
+                         const sinew::engine::State& start, double accuracy) {
+  double simulated = 0.0, steps = 0.0, evaluations = 0.0;
+  for (auto _ : bench) {
+    sinew::engine::State state = start;
+    auto integrator = sinew::engine::MakeIntegrator("rk45", system, {.accuracy = accuracy});
+    integrator->SetController(controller);
+    integrator->StepTo(state, 1.0);
+    simulated += 1.0;
+    steps += static_cast<double>(integrator->stats().steps);
+    evaluations += static_cast<double>(integrator->stats().evaluations);
+  }
+  bench.counters["sim_s_per_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
+  bench.counters["steps"] = benchmark::Counter(steps, benchmark::Counter::kAvgIterations);
+  bench.counters["evals"] = benchmark::Counter(evaluations, benchmark::Counter::kAvgIterations);
+}
