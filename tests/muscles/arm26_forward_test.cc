@@ -138,9 +138,9 @@ TEST(Arm26ForwardTest, NonWrappingMuscleFollowsOpenSimAlongOpenSimsTrajectory) {
   EXPECT_LT(worst_fiber, 5e-6);
 }
 
-// DISABLED: with wrapping connected it does not match yet: worst 3.24e-2 (r_elbow_flex_u at
-// t = 0.09 s; BIClong's fiber length, over its ellipsoid, is the worst muscle state), against
-// OpenSim's own tolerance 5e-3 (docs/forward.md).
+// DISABLED: with wrapping connected it does not match yet: worst 3.24e-2 rad/s (r_elbow_flex_u
+// at t = 0.09 s; r_shoulder_elev_u 1.13e-2; every other state within 5e-3), against OpenSim's
+// own tolerance 5e-3 (docs/forward.md).
 TEST(Arm26ForwardTest, DISABLED_ReproducesOpenSimsForwardRun) {
   auto arm = LoadArm26();
   const io::Storage reference = io::ReadStorage(kDir + "std_arm26_states.sto");
