@@ -6,35 +6,30 @@
 namespace sinew::muscles {
 
 DeGrooteFregly2016Tension::DeGrooteFregly2016Tension(DeGrooteFregly2016Muscle muscle)
-    : muscle_(std::move(muscle)) {
+    : muscle_(std::move(muscle)),
+      layout_(muscle_.parameters().ignore_activation_dynamics,
+              muscle_.parameters().ignore_tendon_compliance) {
   if (!muscle_.explicit_tendon_dynamics() && !muscle_.parameters().ignore_tendon_compliance) {
     throw Error("tendon_compliance_dynamics_mode 'implicit' needs the tendon force derivative "
                 "a direct collocation solver gives; a forward simulation uses 'explicit'");
   }
-  int next = 0;
-  if (!muscle_.parameters().ignore_activation_dynamics) activation_index_ = next++;
-  if (!muscle_.parameters().ignore_tendon_compliance) tendon_force_index_ = next++;
 }
 
 std::vector<std::string> DeGrooteFregly2016Tension::StateVariableNames() const {
-  std::vector<std::string> names;
-  if (activation_index_ >= 0) names.push_back("activation");
-  if (tendon_force_index_ >= 0) names.push_back("normalized_tendon_force");
-  return names;
+  return layout_.Names("normalized_tendon_force");
 }
 
 void DeGrooteFregly2016Tension::SetDefaultStateVariables(Eigen::Ref<VecX> z) const {
   const DeGrooteFregly2016Parameters& p = muscle_.parameters();
-  if (activation_index_ >= 0) z[activation_index_] = p.default_activation;
-  if (tendon_force_index_ >= 0) z[tendon_force_index_] = p.default_normalized_tendon_force;
+  if (layout_.activation >= 0) z[layout_.activation] = p.default_activation;
+  if (layout_.fiber >= 0) z[layout_.fiber] = p.default_normalized_tendon_force;
 }
 
 DeGrooteFregly2016Dynamics DeGrooteFregly2016Tension::Dynamics(Eigen::Ref<const VecX> z,
                                                                double excitation,
                                                                const PathKinematics& path) const {
-  const double activation = activation_index_ >= 0 ? z[activation_index_] : excitation;
-  const double tendon_force = tendon_force_index_ >= 0 ? z[tendon_force_index_] : 0.0;
-  return CalcDeGrooteFregly2016Dynamics(muscle_, activation, tendon_force, path.length,
+  return CalcDeGrooteFregly2016Dynamics(muscle_, layout_.Activation(z, excitation),
+                                        layout_.Fiber(z, 0.0), path.length,
                                         path.lengthening_speed);
 }
 
@@ -58,23 +53,22 @@ void DeGrooteFregly2016Tension::CalcStateVariableDerivatives(Eigen::Ref<const Ve
                                                              const PathKinematics& path,
                                                              const MuscleQuantities& /*quantities*/,
                                                              Eigen::Ref<VecX> zdot) const {
-  if (activation_index_ >= 0) {
-    zdot[activation_index_] =
-        CalcDeGrooteFregly2016ActivationDerivative(muscle_, z[activation_index_], excitation);
+  if (layout_.activation >= 0) {
+    zdot[layout_.activation] =
+        CalcDeGrooteFregly2016ActivationDerivative(muscle_, z[layout_.activation], excitation);
   }
-  if (tendon_force_index_ >= 0) {
-    zdot[tendon_force_index_] = Dynamics(z, excitation, path).norm_tendon_force_derivative;
+  if (layout_.fiber >= 0) {
+    zdot[layout_.fiber] = Dynamics(z, excitation, path).norm_tendon_force_derivative;
   }
 }
 
 EquilibriumStatus DeGrooteFregly2016Tension::Equilibrate(const PathKinematics& path,
                                                          const std::string& component,
                                                          Eigen::Ref<VecX> z) const {
-  if (tendon_force_index_ < 0) return EquilibriumStatus::kBalanced;
-  const double activation = activation_index_ >= 0 ? z[activation_index_]
-                                                   : muscle_.parameters().default_activation;
+  if (layout_.fiber < 0) return EquilibriumStatus::kBalanced;
+  const double activation = layout_.Activation(z, muscle_.parameters().default_activation);
   try {
-    z[tendon_force_index_] =
+    z[layout_.fiber] =
         SolveDeGrooteFregly2016Equilibrium(muscle_, activation, path.length, path.lengthening_speed);
   } catch (const Error& error) {
     throw Error({}, component, error.message());

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <sinew/muscles/degroote_fregly2016_muscle.h>
+#include <sinew/muscles/muscle_state_layout.h>
 #include <sinew/muscles/tension_model.h>
 
 namespace sinew::muscles {
@@ -35,8 +36,7 @@ class DeGrooteFregly2016Tension final : public TensionModel {
                                       const PathKinematics& path) const;
 
   DeGrooteFregly2016Muscle muscle_;
-  int activation_index_ = -1;   // into z, or -1
-  int tendon_force_index_ = -1;  // into z, or -1
+  MuscleStateLayout layout_;
 };
 
 }  // namespace sinew::muscles

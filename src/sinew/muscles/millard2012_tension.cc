@@ -6,36 +6,28 @@
 
 namespace sinew::muscles {
 
-Millard2012Tension::Millard2012Tension(Millard2012Muscle muscle) : muscle_(std::move(muscle)) {
-  int next = 0;
-  if (!muscle_.parameters().ignore_activation_dynamics) activation_index_ = next++;
-  if (!muscle_.parameters().ignore_tendon_compliance) fiber_length_index_ = next++;
-}
+Millard2012Tension::Millard2012Tension(Millard2012Muscle muscle)
+    : muscle_(std::move(muscle)),
+      layout_(muscle_.parameters().ignore_activation_dynamics,
+              muscle_.parameters().ignore_tendon_compliance) {}
 
 std::vector<std::string> Millard2012Tension::StateVariableNames() const {
-  std::vector<std::string> names;
-  if (activation_index_ >= 0) names.push_back("activation");
-  if (fiber_length_index_ >= 0) names.push_back("fiber_length");
-  return names;
+  return layout_.Names("fiber_length");
 }
 
 void Millard2012Tension::SetDefaultStateVariables(Eigen::Ref<VecX> z) const {
   const Millard2012Parameters& p = muscle_.parameters();
-  if (activation_index_ >= 0) z[activation_index_] = p.default_activation;
-  if (fiber_length_index_ >= 0) {
-    z[fiber_length_index_] = p.default_fiber_length.value_or(p.optimal_fiber_length);
+  if (layout_.activation >= 0) z[layout_.activation] = p.default_activation;
+  if (layout_.fiber >= 0) {
+    z[layout_.fiber] = p.default_fiber_length.value_or(p.optimal_fiber_length);
   }
-}
-
-double Millard2012Tension::Activation(Eigen::Ref<const VecX> z, double excitation) const {
-  return activation_index_ >= 0 ? z[activation_index_] : excitation;
 }
 
 MuscleQuantities Millard2012Tension::Calc(Eigen::Ref<const VecX> z, double excitation,
                                           const PathKinematics& path) const {
-  const double fiber_length = fiber_length_index_ >= 0 ? z[fiber_length_index_] : 0.0;
-  const Millard2012Dynamics d = CalcMillard2012Dynamics(
-      muscle_, Activation(z, excitation), fiber_length, path.length, path.lengthening_speed);
+  const Millard2012Dynamics d =
+      CalcMillard2012Dynamics(muscle_, layout_.Activation(z, excitation), layout_.Fiber(z, 0.0),
+                              path.length, path.lengthening_speed);
   MuscleQuantities out;
   out.activation = d.activation;
   out.fiber_length = d.fiber_length;
@@ -53,19 +45,18 @@ void Millard2012Tension::CalcStateVariableDerivatives(Eigen::Ref<const VecX> z,
                                                       const PathKinematics& /*path*/,
                                                       const MuscleQuantities& quantities,
                                                       Eigen::Ref<VecX> zdot) const {
-  if (activation_index_ >= 0) {
-    zdot[activation_index_] =
-        CalcMillard2012ActivationDerivative(muscle_, z[activation_index_], excitation);
+  if (layout_.activation >= 0) {
+    zdot[layout_.activation] =
+        CalcMillard2012ActivationDerivative(muscle_, z[layout_.activation], excitation);
   }
-  if (fiber_length_index_ >= 0) zdot[fiber_length_index_] = quantities.fiber_velocity;
+  if (layout_.fiber >= 0) zdot[layout_.fiber] = quantities.fiber_velocity;
 }
 
 EquilibriumStatus Millard2012Tension::Equilibrate(const PathKinematics& path,
                                                   const std::string& component,
                                                   Eigen::Ref<VecX> z) const {
-  if (fiber_length_index_ < 0) return EquilibriumStatus::kBalanced;
-  const double activation = activation_index_ >= 0 ? z[activation_index_]
-                                                   : muscle_.parameters().default_activation;
+  if (layout_.fiber < 0) return EquilibriumStatus::kBalanced;
+  const double activation = layout_.Activation(z, muscle_.parameters().default_activation);
   Millard2012Equilibrium equilibrium;
   try {
     equilibrium =
@@ -73,7 +64,7 @@ EquilibriumStatus Millard2012Tension::Equilibrate(const PathKinematics& path,
   } catch (const Error& error) {
     throw Error({}, component, error.message());
   }
-  z[fiber_length_index_] = equilibrium.fiber_length;
+  z[layout_.fiber] = equilibrium.fiber_length;
   return equilibrium.status == Millard2012Equilibrium::Status::kFiberAtLowerBound
              ? EquilibriumStatus::kFiberAtMinimumLength
              : EquilibriumStatus::kBalanced;

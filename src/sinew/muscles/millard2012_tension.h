@@ -6,6 +6,7 @@
 #pragma once
 
 #include <sinew/muscles/millard2012_parameters.h>
+#include <sinew/muscles/muscle_state_layout.h>
 #include <sinew/muscles/tension_model.h>
 
 namespace sinew::muscles {
@@ -33,11 +34,8 @@ class Millard2012Tension final : public TensionModel {
                                 Eigen::Ref<VecX> z) const override;
 
  private:
-  double Activation(Eigen::Ref<const VecX> z, double excitation) const;
-
   Millard2012Muscle muscle_;
-  int activation_index_ = -1;    // into z, or -1
-  int fiber_length_index_ = -1;  // into z, or -1
+  MuscleStateLayout layout_;
 };
 
 }  // namespace sinew::muscles
