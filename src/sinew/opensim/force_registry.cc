@@ -115,6 +115,9 @@ const ForceType* FindForceType(const std::string& opensim_class) {
       {"ExpressionBasedCoordinateForce", {&BuildExpressionBasedCoordinateForce, false}},
       {"ExpressionBasedPointToPointForce", {&BuildExpressionBasedPointToPointForce, false}},
       {"PrescribedForce", {&BuildPrescribedForce, false}},
+      {"HuntCrossleyForce", {&BuildHuntCrossleyForce, false}},
+      {"ElasticFoundationForce", {&BuildElasticFoundationForce, false}},
+      {"SmoothSphereHalfSpaceForce", {&BuildSmoothSphereHalfSpaceForce, false}},
   };
   const auto it = registry.find(opensim_class);
   return it == registry.end() ? nullptr : &it->second;

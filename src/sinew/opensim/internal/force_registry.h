@@ -82,6 +82,10 @@ std::shared_ptr<engine::ForceElement> BuildExpressionBasedPointToPointForce(
     const ForceBuildInput& in);
 /// PrescribedForce (prescribed_force_builder.cc).
 std::shared_ptr<engine::ForceElement> BuildPrescribedForce(const ForceBuildInput& in);
+/// HuntCrossleyForce, ElasticFoundationForce, SmoothSphereHalfSpaceForce (contact_builders.cc).
+std::shared_ptr<engine::ForceElement> BuildHuntCrossleyForce(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildElasticFoundationForce(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildSmoothSphereHalfSpaceForce(const ForceBuildInput& in);
 
 /// The entry for OpenSim class `opensim_class`, or null when Sinew does not simulate it.
 const ForceType* FindForceType(const std::string& opensim_class);
