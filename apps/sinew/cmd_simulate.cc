@@ -6,11 +6,14 @@
 // builds (skeleton, forces, constraints, external loads, actuators and their excitations).
 // Writes DIR/states.sto (every coordinate's value and speed, OpenSim 4 labels, radians and
 // metres), DIR/bodies.sto (OpenSim BodyKinematics positions), DIR/forces.sto (every force's
-// columns, OpenSim's ForceReporter layout) and, when asked, DIR/constraints.sto (the forces of
+// columns, OpenSim's ForceReporter layout), DIR/contacts.sto when the model has contact forces
+// (each one's force and torque per body and its active contacts) and, when asked,
+// DIR/constraints.sto (the forces of
 // the model's constraints, OpenSim's record labels), all streamed as rows are computed. SIGINT
 // or SIGTERM stops the run cleanly: the rows so far are kept, in files whose header says
 // status=partial, and the exit code is 128 + the signal.
 #include <sinew/common/error.h>
+#include <sinew/contact/contact_table.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/force_reporter.h>
 #include <sinew/engine/integrator.h>
@@ -176,6 +179,15 @@ void RunSimulate(const SimulateOptions& options) {
   std::optional<io::StorageWriter> constraints;
   engine::Data data(*system);
   std::vector<double> constraint_row;
+  // contacts.sto when the model has contact forces.
+  std::optional<io::StorageWriter> contacts;
+  std::vector<double> contact_row;
+  if (std::vector<std::string> labels = contact::ContactTableLabels(*system); !labels.empty()) {
+    io::Storage header;
+    header.name = "Contacts";
+    header.labels = std::move(labels);
+    contacts.emplace(options.out + "/contacts.sto", header);
+  }
   if (options.report_constraint_forces) {
     io::Storage header;
     header.name = "ConstraintForces";
@@ -193,6 +205,10 @@ void RunSimulate(const SimulateOptions& options) {
     bodies.AppendRow(s.t, kinematics::CalcBodyKinematicsRow(spec, X_GB));
     force_reporter.CalcRow(s, force_row);
     forces.AppendRow(s.t, force_row);
+    if (contacts) {
+      contact::ContactTableRow(*system, s, contact_row);
+      contacts->AppendRow(s.t, contact_row);
+    }
     if (constraints) {
       // External loads are force elements of the system, so no loads are passed besides them.
       opensim::ConstraintForcesRow(*system, s, nullptr, data, constraint_row);
@@ -220,6 +236,7 @@ void RunSimulate(const SimulateOptions& options) {
   bodies.Finish(partial);
   forces.Finish(partial);
   if (constraints) constraints->Finish(partial);
+  if (contacts) contacts->Finish(partial);
   if (!result.completed) {
     std::cerr << "sinew: " << partial << ": kept the " << states.rows() << " rows computed in "
               << options.out
@@ -238,7 +255,7 @@ void RunSimulate(const SimulateOptions& options) {
     std::cout << "simulated " << options.duration << " s of " << spec.name << ": " << stats.steps
               << " steps (" << stats.rejected << " rejected), " << stats.evaluations
               << " evaluations; wrote " << options.out << "/states.sto, bodies.sto, forces.sto"
-              << (constraints ? " and constraints.sto\n" : "\n");
+              << (contacts ? ", contacts.sto" : "") << (constraints ? " and constraints.sto\n" : "\n");
   }
 }
 

@@ -85,9 +85,9 @@ double NonNegative(const model::ElementValues& v, const model::Element& element,
   const double value = v.Double(tag, fallback);
   if (value < 0.0 || (positive && value == 0.0)) {
     const model::Element* property = element.Child(tag);
-    v.Fail(std::string(tag) + " is " + std::to_string(value) + "; it must be " +
-               (positive ? "> 0" : ">= 0"),
-           property ? property->line : 0);
+    std::ostringstream message;
+    message << tag << " is " << value << "; it must be " << (positive ? "> 0" : ">= 0");
+    v.Fail(message.str(), property ? property->line : 0);
   }
   return value;
 }
