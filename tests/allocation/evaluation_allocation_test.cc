@@ -7,6 +7,7 @@
 #include <sinew/engine/system.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/opensim/build_system.h>
+#include <sinew/opensim/parser.h>
 
 #include <atomic>
 #include <cmath>
@@ -66,6 +67,20 @@ TEST(EvaluationAllocationTest, ChainWithCouplersEvaluatesWithoutHeapUse) {
   const System system = testing::MakeChain(20, JointForm::kParameterized, 3);
   const State state = MakeDefaultState(system);
   EXPECT_EQ(AllocationsPerEvaluations(system, state, 10), 0);
+}
+
+TEST(EvaluationAllocationTest, ContactForcesEvaluateWithoutHeapUse) {
+  // OpenSim's three bouncing balls resting in contact: Hunt-Crossley, elastic foundation on a
+  // 720-face mesh, smoothed sphere/half-space.
+  for (const char* file : {"BouncingBall_HuntCrossley.osim", "BouncingBallModelEF.osim",
+                           "BouncingBall_SmoothSphereHalfSpace.osim"}) {
+    opensim::OpenSimParser parser;
+    const auto system = parser.Parse(std::string(SINEW_TEST_DATA_DIR) +
+                                     "/opensim-org/opensim-core/OpenSim/Simulation/Test/" + file);
+    State state = MakeDefaultState(*system);
+    SetCoordinateValue(*system, state, "ball_ty", 0.4995);
+    EXPECT_EQ(AllocationsPerEvaluations(*system, state, 10), 0) << file;
+  }
 }
 
 TEST(EvaluationAllocationTest, TheCounterCounts) {
