@@ -1,7 +1,10 @@
 // sinew.load and sinew.Model: a parsed model, its names (coordinates, bodies, actuators, state
 // variables), the parser's Report as plain data, and its default state.
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 #include <sinew/engine/assemble.h>
+
+#include <filesystem>
 
 #include "bindings.h"
 #include "state_handle.h"
@@ -59,14 +62,14 @@ py::dict ReportToDict(const opensim::Report& report) {
 void BindModel(py::module_& m) {
   m.def(
       "load",
-      [](const std::string& path, const std::optional<std::string>& visualization, bool collision,
+      [](const std::filesystem::path& path, const std::optional<std::string>& visualization, bool collision,
          const std::string& contact, bool strict) {
         LoadOptions options;
         options.visualization = visualization.value_or("none");
         options.collision = collision;
         options.contact = contact;
         options.strict = strict;
-        return ModelHandle::Load(path, options);
+        return ModelHandle::Load(path.string(), options);
       },
       py::arg("path"), py::kw_only(), py::arg("visualization") = py::none(),
       py::arg("collision") = false, py::arg("contact") = "nsc", py::arg("strict") = false,

@@ -1,0 +1,61 @@
+"""Bad input raises sinew.Error with the file, the line and the component, never a crash."""
+import numpy as np
+import pytest
+
+import sinew
+from conftest import CHRONO, RESOURCES
+
+
+def test_malformed_model_names_file_and_line(tmp_path):
+    text = (RESOURCES / "SinglePin.osim").read_text()
+    mass = "0.75000000"
+    broken = text.replace(mass, "heavy", 1)
+    line = text[:text.index(mass)].count("\n") + 1
+    path = tmp_path / "broken.osim"
+    path.write_text(broken)
+    with pytest.raises(sinew.Error) as error:
+        sinew.load(path)
+    assert error.value.file == str(path)
+    assert error.value.line == line
+    assert "rod1" in error.value.component
+    assert str(error.value).startswith(f"{path}:{line}: ")
+
+
+def test_missing_file():
+    with pytest.raises(sinew.Error) as error:
+        sinew.load(RESOURCES / "no_such_model.osim")
+    assert error.value.file.endswith("no_such_model.osim")
+
+
+def test_unknown_names_and_options():
+    model = sinew.load(RESOURCES / "DoublePendulum3D.osim")
+    state = model.default_state()
+    with pytest.raises(sinew.Error) as error:
+        state.value("no_such_coordinate")
+    assert error.value.component == "no_such_coordinate"
+    assert error.value.file == model.path
+    with pytest.raises(sinew.Error, match="integrator"):
+        model.simulate(0.1, integrator="leapfrog")
+    with pytest.raises(sinew.Error):
+        sinew.load(RESOURCES / "SinglePin.osim", contact="magic")
+    with pytest.raises(sinew.Error, match="no_such_actuator|actuator"):
+        sinew.load(CHRONO / "torque-actuator.osim").simulate(
+            0.1, excitations={"no_such_actuator": 1.0})
+    with pytest.raises(sinew.Error, match="2 values"):
+        state.q = np.zeros(3)
+    with pytest.raises(sinew.Error):
+        model.simulate(0.1, initial_states=RESOURCES / "no_such_states.sto")
+
+
+def test_bad_controls_and_batches():
+    model = sinew.load(CHRONO / "double_pendulum.osim")
+    simulator = model.simulator(1e-3)
+    with pytest.raises(sinew.Error, match="controls"):
+        simulator.step(np.zeros(3))
+    batch = sinew.Batch(model, 4, step=1e-3)
+    with pytest.raises(sinew.Error, match="controls"):
+        batch.step(np.zeros((4, 1)))
+    with pytest.raises(sinew.Error, match="actuators"):
+        batch.step()
+    with pytest.raises(sinew.Error, match="step"):
+        sinew.Batch(model, 4, step=0.0)
