@@ -49,7 +49,7 @@ def sweep(model_path: "os.PathLike[str] | str", cases: Sequence[Mapping[str, Any
     own = client is None
     if own:
         cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+                               dashboard_address=":0")
         client = Client(cluster)
     try:
         futures = client.map(run_case, [path] * len(cases), cases, pure=False)
