@@ -151,9 +151,10 @@ class Simulator:
     controls given to step (the model's own controllers are not used)."""
     def reset(self, state: Optional[State] = None) -> np.ndarray:
         """Starts again from `state` (default: the initial state); returns [q, u]."""
-    def step(self, controls: Optional[ArrayLike] = None) -> np.ndarray:
-        """Sets the inputs to `controls` (one per actuator; omitted: unchanged), advances one
-        step, returns the observation [q, u] (a new array of 2 x coordinates)."""
+    def step(self, controls: Optional[ArrayLike] = None, repeat: int = 1) -> np.ndarray:
+        """Sets the inputs to `controls` (one per actuator; omitted: unchanged), advances
+        `repeat` steps (default 1, an action repeat) with them, returns the observation [q, u]
+        (a new array of 2 x coordinates)."""
     @property
     def t(self) -> float: ...
     @property

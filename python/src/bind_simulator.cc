@@ -37,17 +37,14 @@ class Simulator {
     return Observation();
   }
 
-  py::array_t<double> Step(const std::optional<DoubleArray>& controls) {
+  py::array_t<double> Step(const std::optional<DoubleArray>& controls, int repeat) {
     const engine::State& s = copy_.state();
-    if (controls) {
-      if (controls->ndim() != 1 || controls->shape(0) != s.inputs.size()) {
-        throw Error("controls must be a 1-D array of " + std::to_string(s.inputs.size()) +
-                    " values (one per actuator)");
-      }
-      copy_.Step(controls->data());
-    } else {
-      copy_.Step(nullptr);
+    if (controls && (controls->ndim() != 1 || controls->shape(0) != s.inputs.size())) {
+      throw Error("controls must be a 1-D array of " + std::to_string(s.inputs.size()) +
+                  " values (one per actuator)");
     }
+    if (repeat < 1) throw Error("repeat must be >= 1, not " + std::to_string(repeat));
+    for (int k = 0; k < repeat; ++k) copy_.Step(controls ? controls->data() : nullptr);
     return Observation();
   }
 
@@ -82,9 +79,10 @@ void BindSimulator(py::module_& m) {
                         "controllers are not used.")
       .def("reset", &Simulator::Reset, py::arg("state") = py::none(),
            "Starts again from `state` (default: the initial state); returns the observation.")
-      .def("step", &Simulator::Step, py::arg("controls") = py::none(),
+      .def("step", &Simulator::Step, py::arg("controls") = py::none(), py::arg("repeat") = 1,
            "Sets the actuators' inputs to `controls` (one per actuator; omitted: unchanged) and "
-           "advances one step; returns the observation [q, u] (a new array of 2 x coordinates).")
+           "advances `repeat` steps (default 1) with them; returns the observation [q, u] (a "
+           "new array of 2 x coordinates).")
       .def_property_readonly("t", [](const Simulator& s) { return s.state().t; })
       .def_property_readonly("q", [](const Simulator& s) { return ToArray(s.state().q); })
       .def_property_readonly("u", [](const Simulator& s) { return ToArray(s.state().u); })

@@ -75,3 +75,13 @@ def test_one_thread_equals_two_threads():
         results.append((batch.q, batch.u))
     assert np.array_equal(results[0][0], results[1][0])
     assert np.array_equal(results[0][1], results[1][1])
+
+
+def test_step_repeat_equals_repeated_steps():
+    model = sinew.load(CHRONO / "double_pendulum.osim")
+    controls = np.array([0.3, -0.2])
+    one_by_one, at_once = model.simulator(H), model.simulator(H)
+    for _ in range(25):
+        observation = one_by_one.step(controls)
+    assert np.array_equal(at_once.step(controls, repeat=25), observation)
+    assert at_once.t == one_by_one.t == 25 * H
