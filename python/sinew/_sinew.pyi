@@ -115,6 +115,21 @@ class Model:
         number or Function, over the model's controllers. controls: an OpenSim ControlSet file.
         Ctrl-C raises KeyboardInterrupt between steps.
         """
+    def kinematics(self, motion: Union[None, PathLike, Result] = None) -> Dict[str, object]:
+        """Body poses and marker positions in ground along `motion`: None (the default pose), a
+        motion or states table (.mot/.sto; coordinates by name or OpenSim 4 path, degrees
+        converted, coupler-driven coordinates following their drivers), or a Result.
+
+        Returns time [n], bodies (names), p_GB [n, bodies, 3] (body origins, m), R_GB
+        [n, bodies, 3, 3] (orientations), markers (names), marker_positions [n, markers, 3] (m).
+        Constraints are not enforced (as `sinew kinematics`).
+        """
+    def export(self, path: PathLike, motion: Union[None, PathLike, Result] = None, *,
+               visualization: str = "mesh", geometry_dirs: Sequence[str] = (),
+               fps: float = 0.0) -> None:
+        """Writes `motion` (as for kinematics) as a glTF file (.glb) or a self-contained HTML
+        viewer (.html), byte for byte what `sinew export` writes. fps > 0 drops frames closer
+        than 1/fps s. Missing meshes are a UserWarning."""
     def simulator(self, step: float, *, integrator: str = "euler", accuracy: float = 1e-6,
                   initial_states: Union[None, "State", PathLike] = None) -> "Simulator":
         """A Simulator that advances this model by `step` s per call."""

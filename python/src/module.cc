@@ -12,4 +12,5 @@ PYBIND11_MODULE(_sinew, m) {
   BindSimulate(m);
   BindSimulator(m);
   BindBatch(m);
+  BindMotion(m);
 }
