@@ -1,5 +1,6 @@
 """State getters and setters round-trip, by name and as arrays, and states are values."""
 import numpy as np
+import pytest
 
 import sinew
 from conftest import CHRONO, RESOURCES
@@ -56,3 +57,33 @@ def test_inputs_and_report():
     assert {f["name"] for f in report["forces"] if f["actuator"]} == {"Torq1", "Torq2"}
     assert [b["name"] for b in report["bodies"]]
     assert report["stand_ins"] == []
+
+
+def test_report_names_stand_ins_and_strict_refuses_them(tmp_path):
+    # DoublePendulum3D with pin2 retyped as a joint class no one knows (as StandInTest does).
+    text = (RESOURCES / "DoublePendulum3D.osim").read_text()
+    text = text.replace('<CustomJoint name="pin2">', '<FancyJoint name="pin2">', 1)
+    at = text.index('<FancyJoint name="pin2">')
+    end = text.index("</CustomJoint>", at)
+    text = text[:end] + "</FancyJoint>" + text[end + len("</CustomJoint>"):]
+    path = tmp_path / "fancy.osim"
+    path.write_text(text)
+    report = sinew.load(path).report
+    assert report["stand_ins"] == ["pin2"]
+    assert any("FancyJoint" in w["message"] and w["component"].endswith("pin2")
+               for w in report["warnings"])
+    with pytest.raises(sinew.Error):
+        sinew.load(path, strict=True)
+
+
+def test_to_pandas_is_optional():
+    result = sinew.load(RESOURCES / "SinglePin.osim").simulate(0.05)
+    try:
+        import pandas  # noqa: F401
+    except ImportError:
+        with pytest.raises(ImportError, match="pandas"):
+            result.to_pandas()
+    else:
+        frame = result.to_pandas()
+        assert list(frame.columns) == result.labels
+        assert np.array_equal(frame.to_numpy(), result.states)
