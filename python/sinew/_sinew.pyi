@@ -130,6 +130,13 @@ class Model:
         """Writes `motion` (as for kinematics) as a glTF file (.glb) or a self-contained HTML
         viewer (.html), byte for byte what `sinew export` writes. fps > 0 drops frames closer
         than 1/fps s. Missing meshes are a UserWarning."""
+    def render(self, path: PathLike, motion: Union[None, PathLike, Result] = None, *,
+               time: Optional[float] = None, visualization: str = "mesh",
+               geometry_dirs: Sequence[str] = (), width: int = 800, height: int = 800,
+               view: str = "iso", floor: bool = True) -> None:
+        """Writes a PNG picture of the model at `time` (s) of `motion` (default: its first row;
+        no motion: the default pose), byte for byte what `sinew render` writes. view: "iso",
+        "front", "back", "right", "left" or "top"."""
     def simulator(self, step: float, *, integrator: str = "euler", accuracy: float = 1e-6,
                   initial_states: Union[None, "State", PathLike] = None) -> "Simulator":
         """A Simulator that advances this model by `step` s per call."""

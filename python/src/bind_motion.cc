@@ -1,14 +1,18 @@
-// Model.kinematics and Model.export: body poses and marker positions along a motion, and the
-// glTF/HTML export of it, through the library's viz::MotionFromTable (coordinates by name or
-// OpenSim 4 state path, degrees converted, coupler-driven coordinates following their
-// drivers), kinematics::CalcMarkerLocationRow and viz::ExportAnimation, on the spec the model's
-// System was built from (stand-ins included).
+// Model.kinematics, Model.export and Model.render: body poses and marker positions along a
+// motion, its glTF/HTML export and a PNG picture, through the library's viz::MotionFromTable and
+// viz::PosesAtTime (coordinates by name or OpenSim 4 state path, degrees converted,
+// coupler-driven coordinates following their drivers), kinematics::CalcMarkerLocationRow,
+// viz::ExportAnimation and viz::RenderFramed, on the spec the model's System was built from
+// (stand-ins included), as `sinew kinematics`, `export` and `render` use them.
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 #include <sinew/io/storage.h>
 #include <sinew/kinematics/body_kinematics.h>
 #include <sinew/viz/export_animation.h>
+#include <sinew/viz/gltf_writer.h>
+#include <sinew/viz/image.h>
 #include <sinew/viz/motion_poses.h>
+#include <sinew/viz/rasterizer.h>
 
 #include <filesystem>
 #include <optional>
@@ -28,23 +32,26 @@ void WarnNotes(const Diagnostics& notes, const std::string& what) {
   if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
 }
 
-// The body poses along `motion`: None (the default pose), the path of a motion or states
-// table, or a sinew.Result (its states table).
+// The table of `motion`: the path of a motion or states table, or a sinew.Result (its states).
+io::Storage TableOf(const py::object& motion) {
+  if (!py::hasattr(motion, "states") || !py::hasattr(motion, "labels")) {
+    return io::ReadStorage(py::str(py::module_::import("os").attr("fspath")(motion)));
+  }
+  io::Storage table;
+  table.name = "states";
+  table.labels = motion.attr("labels").cast<std::vector<std::string>>();
+  const auto time = motion.attr("time").cast<DoubleArray>();
+  const auto states = motion.attr("states").cast<DoubleArray>();
+  table.time.assign(time.data(), time.data() + time.size());
+  table.values.assign(states.data(), states.data() + states.size());
+  return table;
+}
+
+// The body poses along `motion`: None (the default pose) or as TableOf.
 viz::BodyMotion MotionOf(const ModelHandle& model, const py::object& motion) {
   if (motion.is_none()) return viz::DefaultPoseMotion(model.spec());
-  io::Storage table;
-  if (py::hasattr(motion, "states") && py::hasattr(motion, "labels")) {
-    table.name = "states";
-    table.labels = motion.attr("labels").cast<std::vector<std::string>>();
-    const auto time = motion.attr("time").cast<DoubleArray>();
-    const auto states = motion.attr("states").cast<DoubleArray>();
-    table.time.assign(time.data(), time.data() + time.size());
-    table.values.assign(states.data(), states.data() + states.size());
-  } else {
-    table = io::ReadStorage(py::str(py::module_::import("os").attr("fspath")(motion)));
-  }
   Diagnostics notes;
-  viz::BodyMotion poses = viz::MotionFromTable(model.spec(), table, &notes);
+  viz::BodyMotion poses = viz::MotionFromTable(model.spec(), TableOf(motion), &notes);
   WarnNotes(notes, "motion");
   return poses;
 }
@@ -90,6 +97,36 @@ void Export(const ModelPtr& model, const std::filesystem::path& path, const py::
             "export");
 }
 
+void Render(const ModelPtr& model, const std::filesystem::path& path, const py::object& motion,
+            std::optional<double> time, const std::string& visualization,
+            const std::vector<std::string>& geometry_dirs, int width, int height,
+            const std::string& view, bool floor) {
+  viz::RenderOptions options;
+  options.width = width;
+  options.height = height;
+  options.floor = floor;
+  options.view_direction = viz::ParseViewDirection(view);
+  viz::CheckRenderSize(width, height);
+  const model::ModelSpec& spec = model->spec();
+  std::vector<Transform> X_GB;
+  if (motion.is_none()) {
+    if (time) throw Error("render: a time needs a motion");
+    X_GB = viz::DefaultPoseMotion(spec).X_GB[0];
+  } else {
+    const io::Storage table = TableOf(motion);
+    Diagnostics notes;
+    X_GB = viz::PosesAtTime(spec, table, time.value_or(table.time.empty() ? 0.0 : table.time[0]),
+                            &notes);
+    WarnNotes(notes, "motion");
+  }
+  viz::VisualOptions visual;
+  visual.mode = viz::ParseVisType(visualization);
+  visual.geometry_dirs = geometry_dirs;
+  const viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
+  WarnNotes(scene.warnings, "render");
+  viz::WriteFileBytes(path.string(), viz::EncodePng(viz::RenderFramed(scene, X_GB, options)));
+}
+
 }  // namespace
 
 void BindMotion(py::module_& m) {
@@ -104,6 +141,12 @@ void BindMotion(py::module_& m) {
             py::arg("fps") = 0.0,
             "Writes `motion` (as for kinematics) as a glTF (.glb) or a self-contained HTML "
             "viewer (.html), as `sinew export` does.");
+  model.def("render", &Render, py::arg("path"), py::arg("motion") = py::none(), py::kw_only(),
+            py::arg("time") = py::none(), py::arg("visualization") = "mesh",
+            py::arg("geometry_dirs") = std::vector<std::string>{}, py::arg("width") = 800,
+            py::arg("height") = 800, py::arg("view") = "iso", py::arg("floor") = true,
+            "Writes a PNG picture of the model at `time` of `motion` (default: its first row; "
+            "no motion: the default pose), as `sinew render` does.");
 }
 
 }  // namespace sinew::python

@@ -15,6 +15,6 @@ void BindState(py::module_& m);      // State (t, q, u, z, inputs, by name and a
 void BindSimulate(py::module_& m);   // Model.simulate, write_states
 void BindSimulator(py::module_& m);  // Model.simulator, Simulator (reset, step)
 void BindBatch(py::module_& m);      // Batch (n copies stepped across threads)
-void BindMotion(py::module_& m);     // Model.kinematics, Model.export
+void BindMotion(py::module_& m);     // Model.kinematics, Model.export, Model.render
 
 }  // namespace sinew::python

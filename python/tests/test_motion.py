@@ -5,6 +5,7 @@ import os
 import subprocess
 
 import numpy as np
+import pytest
 
 import sinew
 from conftest import DATA, RESOURCES, read_sto
@@ -64,3 +65,23 @@ def test_export_equals_cli(tmp_path):
     sinew.load(model_file).export(tmp_path / "result.glb", result, visualization="primitives")
     assert (tmp_path / "result.glb").read_bytes() == (tmp_path / "python.glb").read_bytes()
     assert (tmp_path / "python.glb").read_bytes()[:4] == b"glTF"
+
+
+def test_render_equals_cli(tmp_path):
+    model_file = RESOURCES / "DoublePendulum3D.osim"
+    result = sinew.load(model_file).simulate(0.3)
+    result.to_sto(tmp_path / "states.sto")
+    model = sinew.load(model_file)
+    model.render(tmp_path / "python.png", result, time=0.2, visualization="primitives",
+                 width=160, height=120, view="front")
+    png = (tmp_path / "python.png").read_bytes()
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    program = os.environ.get("SINEW_CLI")
+    if program:
+        subprocess.run([program, "render", model_file, "--states", tmp_path / "states.sto",
+                        "--time", "0.2", "--vis", "primitives", "--width", "160", "--height",
+                        "120", "--view", "front", "--out", tmp_path / "cli.png"],
+                       check=True, capture_output=True)
+        assert png == (tmp_path / "cli.png").read_bytes()
+    with pytest.raises(sinew.Error):
+        model.render(tmp_path / "bad.png", width=0)
