@@ -59,3 +59,21 @@ def test_bad_controls_and_batches():
         batch.step()
     with pytest.raises(sinew.Error, match="step"):
         sinew.Batch(model, 4, step=0.0)
+
+
+def test_unused_initial_state_columns_warn_or_fail_when_strict(tmp_path):
+    # SinglePin's initial states plus a column naming nothing in the model.
+    lines = (RESOURCES / "SinglePin_InitialStates.sto").read_text().splitlines()
+    end = [line.strip() for line in lines].index("endheader")
+    lines[end + 1] += "\tnot_a_coordinate"
+    for i in range(end + 2, len(lines)):
+        if lines[i].strip():
+            lines[i] += "\t1.0"
+    states = tmp_path / "states.sto"
+    states.write_text("\n".join(lines) + "\n")
+    with pytest.warns(UserWarning, match="not_a_coordinate"):
+        sinew.load(RESOURCES / "SinglePin.osim").simulate(0.01, initial_states=states)
+    with pytest.raises(sinew.Error) as error:
+        sinew.load(RESOURCES / "SinglePin.osim", strict=True).simulate(0.01, initial_states=states)
+    assert error.value.file == str(states)
+    assert error.value.component == "not_a_coordinate"
