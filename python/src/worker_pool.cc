@@ -2,10 +2,12 @@
 
 namespace sinew::python {
 
-WorkerPool::WorkerPool(int threads) : errors_(threads > 1 ? threads : 1) {
-  for (int chunk = 1; chunk < threads; ++chunk) {
-    workers_.emplace_back([this, chunk] { WorkerLoop(chunk); });
-  }
+namespace {
+constexpr uint64_t kIndexMask = 0xFFFFFFFFu;
+}  // namespace
+
+WorkerPool::WorkerPool(int threads) {
+  for (int k = 1; k < threads; ++k) workers_.emplace_back([this] { WorkerLoop(); });
 }
 
 WorkerPool::~WorkerPool() {
@@ -17,19 +19,31 @@ WorkerPool::~WorkerPool() {
   for (std::thread& worker : workers_) worker.join();
 }
 
-void WorkerPool::RunChunk(int chunk) {
-  const int count = threads();
-  const int begin = static_cast<int>(static_cast<long>(chunk) * n_ / count);
-  const int end = static_cast<int>(static_cast<long>(chunk + 1) * n_ / count);
-  try {
-    for (int i = begin; i < end; ++i) (*work_)(i);
-  } catch (...) {
-    errors_[chunk] = std::current_exception();
+void WorkerPool::Work() {
+  uint64_t ticket = ticket_.load(std::memory_order_acquire);
+  for (;;) {
+    // A claimed index's run cannot end before the index is done, so work_ is that run's (the
+    // successful claim acquires the ticket Run released after setting it). n_ may already be
+    // the next run's for a stale ticket: then the claim fails and the ticket is read again.
+    const uint64_t index = ticket & kIndexMask;
+    if (index >= static_cast<uint64_t>(n_.load(std::memory_order_relaxed))) return;
+    if (!ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel,
+                                       std::memory_order_acquire)) {
+      continue;  // another thread claimed it, or a new run began: `ticket` is reloaded
+    }
+    try {
+      (*work_)(static_cast<int>(index));
+    } catch (...) {
+      std::lock_guard lock(error_mutex_);
+      if (!error_) error_ = std::current_exception();
+    }
+    done_.fetch_add(1, std::memory_order_acq_rel);
+    ticket = ticket_.load(std::memory_order_acquire);
   }
 }
 
-void WorkerPool::WorkerLoop(int chunk) {
-  long seen = 0;
+void WorkerPool::WorkerLoop() {
+  uint32_t seen = 0;
   for (;;) {
     {
       std::unique_lock lock(mutex_);
@@ -37,30 +51,28 @@ void WorkerPool::WorkerLoop(int chunk) {
       if (quit_) return;
       seen = generation_;
     }
-    RunChunk(chunk);
-    std::lock_guard lock(mutex_);
-    if (--pending_ == 0) done_.notify_one();
+    Work();
   }
 }
 
 void WorkerPool::Run(int n, const std::function<void(int)>& work) {
+  uint64_t ticket;
   {
     std::lock_guard lock(mutex_);
-    n_ = n;
+    // The ticket is closed, so no thread claims an index while n_ and work_ change.
+    n_.store(n, std::memory_order_relaxed);
     work_ = &work;
-    for (auto& error : errors_) error = nullptr;
-    pending_ = static_cast<int>(workers_.size());
+    error_ = nullptr;
+    done_.store(0, std::memory_order_relaxed);
     ++generation_;
+    ticket = static_cast<uint64_t>(generation_) << 32;
+    ticket_.store(ticket, std::memory_order_release);
   }
   start_.notify_all();
-  RunChunk(0);
-  {
-    std::unique_lock lock(mutex_);
-    done_.wait(lock, [&] { return pending_ == 0; });
-  }
-  for (const auto& error : errors_) {
-    if (error) std::rethrow_exception(error);
-  }
+  Work();
+  while (done_.load(std::memory_order_acquire) < n) std::this_thread::yield();
+  ticket_.store(ticket | kIndexMask, std::memory_order_release);  // close the run
+  if (error_) std::rethrow_exception(error_);
 }
 
 }  // namespace sinew::python
