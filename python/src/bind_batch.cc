@@ -49,8 +49,8 @@ class Batch {
     } else {
       const auto list = states.cast<std::vector<const StateHandle*>>();
       if (list.size() != copies_.size()) {
-        throw Error("reset needs one State per copy: " + std::to_string(copies_.size()) +
-                    ", not " + std::to_string(list.size()));
+        throw Error("reset needs one State per copy: " + std::to_string(copies_.size()) + ", not " +
+                    std::to_string(list.size()));
       }
       for (size_t i = 0; i < list.size(); ++i) copies_[i].Reset(list[i]->state);
     }
@@ -116,8 +116,7 @@ void BindBatch(py::module_& m) {
   py::class_<Batch>(m, "Batch",
                     "n independent copies of a model stepped together by fixed intervals, "
                     "across threads with the GIL released.")
-      .def(py::init<const ModelPtr&, int, double, const std::string&, std::optional<int>,
-                    double>(),
+      .def(py::init<const ModelPtr&, int, double, const std::string&, std::optional<int>, double>(),
            py::arg("model"), py::arg("n"), py::kw_only(), py::arg("step"),
            py::arg("integrator") = "euler", py::arg("threads") = py::none(),
            py::arg("accuracy") = 1e-6)
@@ -127,10 +126,12 @@ void BindBatch(py::module_& m) {
       .def("step", &Batch::Step, py::arg("controls") = py::none(),
            "Advances every copy by one step; controls is an [n, actuators] array (may be "
            "omitted for a model without actuators).")
-      .def_property_readonly("q", [](const Batch& b) { return b.Coordinates(false); },
-                             "Coordinate values, [n, coordinates] (a copy).")
-      .def_property_readonly("u", [](const Batch& b) { return b.Coordinates(true); },
-                             "Coordinate speeds, [n, coordinates] (a copy).")
+      .def_property_readonly(
+          "q", [](const Batch& b) { return b.Coordinates(false); },
+          "Coordinate values, [n, coordinates] (a copy).")
+      .def_property_readonly(
+          "u", [](const Batch& b) { return b.Coordinates(true); },
+          "Coordinate speeds, [n, coordinates] (a copy).")
       .def_property_readonly("t", &Batch::Times, "Times, [n] (a copy).")
       .def("state", &Batch::State, py::arg("i"), "A copy of copy i's state.")
       .def_property_readonly("n", &Batch::size)

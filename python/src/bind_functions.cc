@@ -13,10 +13,10 @@ namespace sinew::python {
 void BindFunctions(py::module_& m) {
   using functions::Function;
   py::class_<Function, std::shared_ptr<Function>>(m, "Function",
-                                                   "A function of time u(t) (an excitation).")
+                                                  "A function of time u(t) (an excitation).")
       .def("__call__", &Function::Calc, py::arg("t"), "The value at time t (s).");
-  py::class_<functions::Constant, Function, std::shared_ptr<functions::Constant>>(
-      m, "Constant", "u(t) = value.")
+  py::class_<functions::Constant, Function, std::shared_ptr<functions::Constant>>(m, "Constant",
+                                                                                  "u(t) = value.")
       .def(py::init<double>(), py::arg("value"))
       .def_property_readonly("value", &functions::Constant::value)
       .def(py::pickle([](const functions::Constant& f) { return py::make_tuple(f.value()); },

@@ -62,8 +62,8 @@ py::dict ReportToDict(const opensim::Report& report) {
 void BindModel(py::module_& m) {
   m.def(
       "load",
-      [](const std::filesystem::path& path, const std::optional<std::string>& visualization, bool collision,
-         const std::string& contact, bool strict) {
+      [](const std::filesystem::path& path, const std::optional<std::string>& visualization,
+         bool collision, const std::string& contact, bool strict) {
         LoadOptions options;
         options.visualization = visualization.value_or("none");
         options.collision = collision;
@@ -91,8 +91,7 @@ void BindModel(py::module_& m) {
       .def_property_readonly("actuators", &ModelHandle::actuators,
                              "Actuator names, in the column order of controls.")
       .def_property_readonly(
-          "state_variables",
-          [](const ModelHandle& h) { return h.system().state_variable_names(); },
+          "state_variables", [](const ModelHandle& h) { return h.system().state_variable_names(); },
           "Auxiliary state variable names (<element>/<variable>), the column order of z.")
       .def_property_readonly(
           "report", [](const ModelHandle& h) { return ReportToDict(h.parser().GetReport()); },
@@ -100,7 +99,9 @@ void BindModel(py::module_& m) {
           "not_simulated.")
       .def(
           "default_state",
-          [](const ModelPtr& h) { return StateHandle{h, h->DefaultState()}; },
+          [](const ModelPtr& h) {
+            return StateHandle{h, h->DefaultState()};
+          },
           "The state with every coordinate at its default value and speed, assembled.")
       .def("__repr__", [](const ModelHandle& h) {
         return "<sinew.Model '" + h.spec().name + "' from " + h.path() + ": " +

@@ -93,8 +93,7 @@ void Export(const ModelPtr& model, const std::filesystem::path& path, const py::
   options.visual.geometry_dirs = geometry_dirs;
   options.max_fps = fps;
   const viz::BodyMotion poses = MotionOf(*model, motion);
-  WarnNotes(viz::ExportAnimation(model->spec(), poses, path.string(), options).warnings,
-            "export");
+  WarnNotes(viz::ExportAnimation(model->spec(), poses, path.string(), options).warnings, "export");
 }
 
 void Render(const ModelPtr& model, const std::filesystem::path& path, const py::object& motion,
@@ -137,8 +136,8 @@ void BindMotion(py::module_& m) {
             "a .mot/.sto path; a sinew.Result): a dict of time [n], bodies, p_GB [n, bodies, 3] "
             "(m), R_GB [n, bodies, 3, 3], markers, marker_positions [n, markers, 3] (m).");
   model.def("export", &Export, py::arg("path"), py::arg("motion") = py::none(), py::kw_only(),
-            py::arg("visualization") = "mesh", py::arg("geometry_dirs") = std::vector<std::string>{},
-            py::arg("fps") = 0.0,
+            py::arg("visualization") = "mesh",
+            py::arg("geometry_dirs") = std::vector<std::string>{}, py::arg("fps") = 0.0,
             "Writes `motion` (as for kinematics) as a glTF (.glb) or a self-contained HTML "
             "viewer (.html), as `sinew export` does.");
   model.def("render", &Render, py::arg("path"), py::arg("motion") = py::none(), py::kw_only(),

@@ -28,7 +28,8 @@ namespace {
 // A rows x columns array copied from row-major `values`.
 py::array_t<double> ToMatrix(const std::vector<double>& values, size_t rows, size_t columns) {
   py::array_t<double> array({rows, columns});
-  if (!values.empty()) std::memcpy(array.mutable_data(), values.data(), sizeof(double) * values.size());
+  if (!values.empty())
+    std::memcpy(array.mutable_data(), values.data(), sizeof(double) * values.size());
   return array;
 }
 
@@ -95,14 +96,13 @@ py::object Simulate(const ModelPtr& model, double duration, double accuracy,
   py::dict statistics(py::arg("steps") = stats.steps, py::arg("rejected") = stats.rejected,
                       py::arg("evaluations") = stats.evaluations);
   py::object result_type = py::module_::import("sinew.result").attr("Result");
-  return result_type(py::arg("time") = time_array, py::arg("q") = ToMatrix(q, n, nc),
-                     py::arg("u") = ToMatrix(u, n, nc), py::arg("z") = ToMatrix(z, n, nz),
-                     py::arg("coordinates") = setup.model->CoordinateNames(),
-                     py::arg("state_variables") = system.state_variable_names(),
-                     py::arg("labels") = labels,
-                     py::arg("states") = ToMatrix(table, n, labels.size()),
-                     py::arg("final_state") = StateHandle{setup.model, state},
-                     py::arg("statistics") = statistics);
+  return result_type(
+      py::arg("time") = time_array, py::arg("q") = ToMatrix(q, n, nc),
+      py::arg("u") = ToMatrix(u, n, nc), py::arg("z") = ToMatrix(z, n, nz),
+      py::arg("coordinates") = setup.model->CoordinateNames(),
+      py::arg("state_variables") = system.state_variable_names(), py::arg("labels") = labels,
+      py::arg("states") = ToMatrix(table, n, labels.size()),
+      py::arg("final_state") = StateHandle{setup.model, state}, py::arg("statistics") = statistics);
 }
 
 // Writes a storage file with io::StorageWriter: header `name`, `labels`, then one row per time.
@@ -111,7 +111,8 @@ void WriteTable(const std::filesystem::path& path, const std::string& name,
                 const DoubleArray& values) {
   if (time.ndim() != 1 || values.ndim() != 2 || values.shape(0) != time.shape(0) ||
       values.shape(1) != static_cast<py::ssize_t>(labels.size())) {
-    throw Error({path.string(), 0}, "", "the table must have one row per time and one column per label");
+    throw Error({path.string(), 0}, "",
+                "the table must have one row per time and one column per label");
   }
   io::Storage header;
   header.name = name;

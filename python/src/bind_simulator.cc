@@ -87,7 +87,10 @@ void BindSimulator(py::module_& m) {
       .def_property_readonly("q", [](const Simulator& s) { return ToArray(s.state().q); })
       .def_property_readonly("u", [](const Simulator& s) { return ToArray(s.state().u); })
       .def_property_readonly(
-          "state", [](const Simulator& s) { return StateHandle{s.model(), s.state()}; },
+          "state",
+          [](const Simulator& s) {
+            return StateHandle{s.model(), s.state()};
+          },
           "A copy of the current state.")
       .def_property_readonly("model", &Simulator::model);
 
@@ -100,8 +103,8 @@ void BindSimulator(py::module_& m) {
         return Simulator(PrepareRun(h, initial_states, std::nullopt, std::nullopt), step,
                          integrator, accuracy);
       },
-      py::arg("step"), py::kw_only(), py::arg("integrator") = "euler",
-      py::arg("accuracy") = 1e-6, py::arg("initial_states") = py::none(),
+      py::arg("step"), py::kw_only(), py::arg("integrator") = "euler", py::arg("accuracy") = 1e-6,
+      py::arg("initial_states") = py::none(),
       "A Simulator stepping this model by `step` seconds per call.");
 }
 

@@ -67,7 +67,8 @@ void BindState(py::module_& m) {
             engine::PlaceBodies(s.model->system(), s.state);
           },
           py::arg("coordinate"), py::arg("speed"), "Sets a coordinate's speed; places the bodies.")
-      .def("copy", [](const StateHandle& s) { return s; }, "An independent copy.")
+      .def(
+          "copy", [](const StateHandle& s) { return s; }, "An independent copy.")
       .def("__copy__", [](const StateHandle& s) { return s; })
       .def("__deepcopy__", [](const StateHandle& s, const py::dict&) { return s; })
       .def("__repr__", [](const StateHandle& s) {

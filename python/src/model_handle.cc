@@ -9,15 +9,15 @@
 namespace sinew::python {
 
 std::shared_ptr<ModelHandle> ModelHandle::Load(const std::string& path,
-                                                     const LoadOptions& options) {
+                                               const LoadOptions& options) {
   return Build(path, io::ReadOsim(path), options, 0.0);
 }
 
-std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path,
-                                                      model::ModelSpec spec,
-                                                      const LoadOptions& options, double t0) {
+std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::ModelSpec spec,
+                                                const LoadOptions& options, double t0) {
   if (options.contact != "nsc" && options.contact != "smc") {
-    throw Error({path, 0}, "", "contact must be \"nsc\" or \"smc\", not \"" + options.contact + "\"");
+    throw Error({path, 0}, "",
+                "contact must be \"nsc\" or \"smc\", not \"" + options.contact + "\"");
   }
   auto handle = std::shared_ptr<ModelHandle>(new ModelHandle());
   handle->path_ = path;
@@ -39,9 +39,9 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path,
   return handle;
 }
 
-std::shared_ptr<ModelHandle> ModelHandle::Rebuild(
-    const std::string& states_file, const std::string& controls_file,
-    std::vector<std::string>& unused_labels) const {
+std::shared_ptr<ModelHandle> ModelHandle::Rebuild(const std::string& states_file,
+                                                  const std::string& controls_file,
+                                                  std::vector<std::string>& unused_labels) const {
   model::ModelSpec spec = io::ReadOsim(path_);
   double t0 = 0.0;
   unused_labels.clear();

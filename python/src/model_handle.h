@@ -29,16 +29,15 @@ class ModelHandle {
  public:
   /// Reads `path` and builds its System as `sinew simulate` does (io::ReadOsim, then
   /// OpenSimParser::ParseSpec). Throws sinew::Error.
-  static std::shared_ptr<ModelHandle> Load(const std::string& path,
-                                                 const LoadOptions& options);
+  static std::shared_ptr<ModelHandle> Load(const std::string& path, const LoadOptions& options);
   /// The same file built again as `sinew simulate --initial-states F --controls C` builds it:
   /// the first row of the states table `states_file` ("" for none) as the coordinates'
   /// defaults (opensim::ApplyInitialStates; t0() is the row's time, `unused_labels` gets the
   /// columns it could not use, an error when strict), driven by the ControlSet file
   /// `controls_file` ("" for the model's own controllers).
   std::shared_ptr<ModelHandle> Rebuild(const std::string& states_file,
-                                             const std::string& controls_file,
-                                             std::vector<std::string>& unused_labels) const;
+                                       const std::string& controls_file,
+                                       std::vector<std::string>& unused_labels) const;
 
   const std::string& path() const { return path_; }
   const LoadOptions& options() const { return options_; }
@@ -59,7 +58,7 @@ class ModelHandle {
 
  private:
   static std::shared_ptr<ModelHandle> Build(const std::string& path, model::ModelSpec spec,
-                                                  const LoadOptions& options, double t0);
+                                            const LoadOptions& options, double t0);
 
   std::string path_;
   LoadOptions options_;

@@ -20,8 +20,8 @@ namespace sinew::python {
 namespace py = pybind11;
 
 struct RunSetup {
-  ModelPtr model;        ///< the model to run (`model`, or it built again)
-  engine::State state;   ///< the initial state
+  ModelPtr model;       ///< the model to run (`model`, or it built again)
+  engine::State state;  ///< the initial state
   std::shared_ptr<const engine::Controller> controller;  ///< the excitations (may be null)
 };
 
