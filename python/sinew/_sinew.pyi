@@ -1,6 +1,6 @@
 """Type stubs of the compiled module sinew._sinew (re-exported by `sinew`)."""
 import os
-from typing import Dict, List, Mapping, Optional, Sequence, Union
+from typing import Callable, Dict, List, Mapping, Optional, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -59,7 +59,7 @@ class Sine(Function):
     def offset(self) -> float: ...
 
 
-Excitation = Union[float, Function]
+Excitation = Union[float, Function, Callable[[float], float]]
 
 
 def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool = False,
@@ -112,7 +112,8 @@ class Model:
         `step`); for rk45, step bounds the step. Reports at every multiple of report_interval
         and at the end. initial_states: a State, or a states table (.sto) whose first row
         gives the coordinates as OpenSim's Forward tool takes it. excitations: actuator name ->
-        number or Function, over the model's controllers. controls: an OpenSim ControlSet file.
+        number, Function, or Python function of time (called at every evaluation, slower),
+        over the model's controllers. controls: an OpenSim ControlSet file.
         Ctrl-C raises KeyboardInterrupt between steps.
         """
     def kinematics(self, motion: Union[None, PathLike, Result] = None) -> Dict[str, object]:

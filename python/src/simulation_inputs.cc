@@ -3,6 +3,7 @@
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/functions/constant.h>
+#include <sinew/functions/excitations.h>
 
 #include <vector>
 
@@ -18,8 +19,23 @@ functions::FunctionPtr ToFunction(const std::string& actuator, const py::object&
   if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) {
     return std::make_shared<functions::Constant>(value.cast<double>());
   }
+  if (PyCallable_Check(value.ptr())) {
+    // A Python function of time, called with the GIL taken (the engine runs without it); the
+    // object is released with the GIL held, whichever thread drops the last reference.
+    std::shared_ptr<py::object> callable(new py::object(value), [](py::object* object) {
+      py::gil_scoped_acquire gil;
+      delete object;
+    });
+    return std::make_shared<functions::CallableFunction>(
+        [callable](double t) {
+          py::gil_scoped_acquire gil;
+          return (*callable)(t).cast<double>();
+        },
+        "PythonFunction");
+  }
   throw Error({}, actuator,
-              "an excitation must be a number or a sinew.Function (Constant, Ramp, Sine), not " +
+              "an excitation must be a number, a sinew.Function (Constant, Ramp, Sine) or a "
+              "Python function of time, not " +
                   py::repr(value).cast<std::string>());
 }
 

@@ -27,7 +27,8 @@ struct RunSetup {
 
 /// `initial_states`: None (the default state), a sinew.State, or the path of a states table
 /// whose first row gives the coordinates (a warning lists the columns it could not use).
-/// `excitations`: actuator name -> a number (constant) or a sinew.Function. `controls`: an
+/// `excitations`: actuator name -> a number (constant), a sinew.Function, or a Python
+/// callable f(t) -> float (called with the GIL at every evaluation: slower). `controls`: an
 /// OpenSim ControlSet file. Throws sinew::Error for bad input.
 RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
                     const std::optional<std::map<std::string, py::object>>& excitations,

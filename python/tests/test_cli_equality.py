@@ -48,3 +48,16 @@ def test_constant_excitation_equals_cli(cli, tmp_path):
                   "grav=constant:0.7"], tmp_path / "cli")
     result = sinew.load(CHRONO / "torque-actuator.osim").simulate(0.3, excitations={"grav": 0.7})
     assert np.array_equal(read_sto(states)[2], result.states)
+
+
+def test_python_function_excitation_equals_the_library_function():
+    # A Python callable is called at every evaluation; t -> t is Ramp(0, 1) to the last bit.
+    model = sinew.load(CHRONO / "torque-actuator.osim")
+    ramp = model.simulate(0.5, excitations={"grav": sinew.Ramp(0.0, 1.0)})
+    function = model.simulate(0.5, excitations={"grav": lambda t: t})
+    assert np.array_equal(ramp.states, function.states)
+
+    def broken(t):
+        raise ValueError("no excitation at this time")
+    with pytest.raises(ValueError, match="no excitation"):
+        model.simulate(0.5, excitations={"grav": broken})
