@@ -41,12 +41,15 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
 
 std::shared_ptr<ModelHandle> ModelHandle::Rebuild(const std::string& states_file,
                                                   const std::string& controls_file,
-                                                  std::vector<std::string>& unused_labels) const {
+                                                  std::vector<std::string>& unused_labels,
+                                                  Diagnostics& table_notes) const {
   model::ModelSpec spec = io::ReadOsim(path_);
   double t0 = 0.0;
   unused_labels.clear();
+  table_notes.clear();
   if (!states_file.empty()) {
     io::Storage storage = io::ReadStorage(states_file);
+    table_notes = storage.notes;
     const opensim::InitialStates initial = opensim::ApplyInitialStates(storage, states_file, spec);
     unused_labels = initial.unused_labels;
     t0 = initial.t0;

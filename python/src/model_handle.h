@@ -33,11 +33,13 @@ class ModelHandle {
   /// The same file built again as `sinew simulate --initial-states F --controls C` builds it:
   /// the first row of the states table `states_file` ("" for none) as the coordinates'
   /// defaults (opensim::ApplyInitialStates; t0() is the row's time, `unused_labels` gets the
-  /// columns it could not use, an error when strict), driven by the ControlSet file
-  /// `controls_file` ("" for the model's own controllers).
+  /// columns it could not use, an error when strict, and `table_notes` what the reader read
+  /// leniently), driven by the ControlSet file `controls_file` ("" for the model's own
+  /// controllers).
   std::shared_ptr<ModelHandle> Rebuild(const std::string& states_file,
                                        const std::string& controls_file,
-                                       std::vector<std::string>& unused_labels) const;
+                                       std::vector<std::string>& unused_labels,
+                                       Diagnostics& table_notes) const;
 
   const std::string& path() const { return path_; }
   const LoadOptions& options() const { return options_; }

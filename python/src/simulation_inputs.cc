@@ -39,14 +39,21 @@ functions::FunctionPtr ToFunction(const std::string& actuator, const py::object&
                   py::repr(value).cast<std::string>());
 }
 
-// Warns (Python's warnings) about the columns of `file` that name nothing simulated.
-void WarnUnusedColumns(const std::vector<std::string>& labels, const std::string& file) {
+void Warn(const std::string& message) {
+  if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
+}
+
+// Warns (Python's warnings) about what the reader of `file` read leniently, and about its
+// columns that name nothing simulated.
+void WarnAboutTable(const Diagnostics& notes, const std::vector<std::string>& labels,
+                    const std::string& file) {
+  for (const Diagnostic& note : notes) Warn(note.Format());
   if (labels.empty()) return;
   std::string message = file + ": " + std::to_string(labels.size()) +
                         " column(s) name no coordinate value or speed that is simulated: ";
   for (size_t i = 0; i < labels.size() && i < 3; ++i) message += (i ? ", " : "") + labels[i];
   if (labels.size() > 3) message += ", ...";
-  if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
+  Warn(message);
 }
 
 }  // namespace
@@ -62,8 +69,9 @@ RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
   }
   if (!states_file.empty() || controls) {
     std::vector<std::string> unused;
-    setup.model = model->Rebuild(states_file, controls ? controls->string() : "", unused);
-    WarnUnusedColumns(unused, states_file);
+    Diagnostics notes;
+    setup.model = model->Rebuild(states_file, controls ? controls->string() : "", unused, notes);
+    WarnAboutTable(notes, unused, states_file);
   }
   if (is_state) {
     setup.state = initial_states.cast<const StateHandle&>().state;

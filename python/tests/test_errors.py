@@ -77,3 +77,11 @@ def test_unused_initial_state_columns_warn_or_fail_when_strict(tmp_path):
         sinew.load(RESOURCES / "SinglePin.osim", strict=True).simulate(0.01, initial_states=states)
     assert error.value.file == str(states)
     assert error.value.component == "not_a_coordinate"
+
+
+def test_what_the_table_reader_read_leniently_is_a_warning_with_file_and_line():
+    # OpenSim's DoublePendulum3D_InitialStates.sto says nColumns=4 above 5 labels (the CLI
+    # prints the same note).
+    states = RESOURCES / "DoublePendulum3D_InitialStates.sto"
+    with pytest.warns(UserWarning, match=f"{states}:3: nColumns=4"):
+        sinew.load(RESOURCES / "DoublePendulum3D.osim").simulate(0.01, initial_states=states)
