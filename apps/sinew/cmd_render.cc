@@ -64,10 +64,8 @@ void RunRender(const RenderArgs& args) {
   options.width = args.width;
   options.height = args.height;
   options.floor = !args.no_floor;
-  const viz::Camera camera =
-      viz::FrameCamera(viz::SceneBounds(scene, X_GB), viz::ParseViewDirection(args.view),
-                       static_cast<double>(args.width) / args.height);
-  viz::WriteFileBytes(args.out, viz::EncodePng(viz::RenderScene(scene, X_GB, camera, options)));
+  options.view_direction = viz::ParseViewDirection(args.view);
+  viz::WriteFileBytes(args.out, viz::EncodePng(viz::RenderFramed(scene, X_GB, options)));
   std::cout << "wrote " << args.out << " (" << args.width << "x" << args.height << ")\n";
 }
 

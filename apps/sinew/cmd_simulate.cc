@@ -25,6 +25,7 @@
 #include <sinew/io/storage_writer.h>
 #include <sinew/kinematics/body_kinematics.h>
 #include <sinew/opensim/constraint_forces_table.h>
+#include <sinew/opensim/initial_states.h>
 #include <sinew/opensim/parser.h>
 #include <sinew/opensim/states_table.h>
 #include <sinew/opensim/support.h>
@@ -82,27 +83,10 @@ struct SimulateOptions {
 // error with `strict`. Returns the row's time.
 double ApplyInitialStates(const std::string& path, bool strict, model::ModelSpec& spec) {
   io::Storage storage = ReadTableFor(path, spec);
-  if (storage.NumRows() == 0) throw Error({path, 0}, "", "the initial-states file has no rows");
-  std::vector<std::string> rotational, simulated;
-  for (const model::CoordinateSpec& c : spec.coordinates) {
-    if (c.joint == model::kNone || !opensim::IsJointSimulated(spec.joints[c.joint])) continue;
-    simulated.push_back(c.name);
-    if (c.motion_type == model::MotionType::kRotational) rotational.push_back(c.name);
-  }
-  std::vector<std::string> unused;
-  for (const std::string& label : storage.labels) {
-    if (!io::ParseColumnLabel(label, simulated)) unused.push_back(label);
-  }
-  WarnUnusedColumns(unused, path, "they name no coordinate value or speed that is simulated",
-                    strict);
-  io::ConvertDegreesToRadians(storage, rotational);
-  for (model::CoordinateSpec& c : spec.coordinates) {
-    const int value = io::FindCoordinateColumn(storage, c.name, io::CoordinateColumnKind::kValue);
-    const int speed = io::FindCoordinateColumn(storage, c.name, io::CoordinateColumnKind::kSpeed);
-    if (value >= 0) c.default_value = storage.Value(0, value);
-    if (speed >= 0) c.default_speed_value = storage.Value(0, speed);
-  }
-  return storage.time[0];
+  const opensim::InitialStates initial = opensim::ApplyInitialStates(storage, path, spec);
+  WarnUnusedColumns(initial.unused_labels, path,
+                    "they name no coordinate value or speed that is simulated", strict);
+  return initial.t0;
 }
 
 void ShowProgress(double fraction, double t) {

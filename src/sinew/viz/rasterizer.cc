@@ -255,4 +255,12 @@ Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
   return canvas.Resolve(options.width, options.height, kSupersample);
 }
 
+Image RenderFramed(const VisualScene& scene, const std::vector<Transform>& X_GB,
+                   const RenderOptions& options) {
+  CheckRenderSize(options.width, options.height);
+  const Camera camera = FrameCamera(SceneBounds(scene, X_GB), options.view_direction,
+                                    static_cast<double>(options.width) / options.height);
+  return RenderScene(scene, X_GB, camera, options);
+}
+
 }  // namespace sinew::viz

@@ -60,4 +60,10 @@ void CheckRenderSize(int width, int height);
 Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
                   const Camera& camera, const RenderOptions& options);
 
+/// Renders the scene posed at X_GB with the camera framed automatically: FrameCamera on its
+/// SceneBounds from options.view_direction, at the aspect ratio of the image (what
+/// `sinew render` and Python's Model.render draw). Throws as RenderScene.
+Image RenderFramed(const VisualScene& scene, const std::vector<Transform>& X_GB,
+                   const RenderOptions& options);
+
 }  // namespace sinew::viz
