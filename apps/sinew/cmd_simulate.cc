@@ -6,35 +6,16 @@
 // builds (skeleton, forces, constraints, external loads, actuators and their excitations).
 // Writes DIR/states.sto (every coordinate's value and speed, OpenSim 4 labels, radians and
 // metres), DIR/bodies.sto (OpenSim BodyKinematics positions), DIR/forces.sto (every force's
-// columns, OpenSim's ForceReporter layout), DIR/contacts.sto when the model has contact forces
-// (each one's force and torque per body and its active contacts) and, when asked,
-// DIR/constraints.sto (the forces of
+// columns, OpenSim's ForceReporter layout) and, when asked, DIR/constraints.sto (the forces of
 // the model's constraints, OpenSim's record labels), all streamed as rows are computed. SIGINT
 // or SIGTERM stops the run cleanly: the rows so far are kept, in files whose header says
 // status=partial, and the exit code is 128 + the signal.
-#include <sinew/common/error.h>
-#include <sinew/contact/contact_table.h>
-#include <sinew/engine/assemble.h>
-#include <sinew/engine/force_reporter.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/pose.h>
-#include <sinew/engine/simulation.h>
 #include <sinew/io/osim_reader.h>
-#include <sinew/io/storage.h>
-#include <sinew/io/storage_labels.h>
-#include <sinew/io/storage_writer.h>
-#include <sinew/kinematics/body_kinematics.h>
-#include <sinew/opensim/constraint_forces_table.h>
-#include <sinew/opensim/initial_states.h>
-#include <sinew/opensim/parser.h>
-#include <sinew/opensim/states_table.h>
-#include <sinew/opensim/support.h>
 #include <sinew/viz/export_animation.h>
-#include <unistd.h>
 
-#include <cmath>
-#include <cstdio>
-#include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -42,12 +23,11 @@
 #include <vector>
 
 #include "apps/sinew/commands.h"
-#include "apps/sinew/excitation_option.h"
-#include "apps/sinew/interrupt_guard.h"
+#include "apps/sinew/initial_states.h"
 #include "apps/sinew/notices.h"
 #include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
-#include "apps/sinew/tables.h"
+#include "apps/sinew/run_simulation.h"
 
 namespace sinew::cli {
 namespace {
@@ -75,28 +55,6 @@ struct SimulateOptions {
   bool report_constraint_forces = false;
 };
 
-// Takes the first row of an initial-states file (OpenSim 4 paths or old names; rotational
-// columns converted when the file is in degrees) as the coordinates' default values and speeds,
-// so that locked coordinates are held at the file's value, as OpenSim's Forward tool does.
-// Coordinates the file does not name keep their defaults; columns that name no simulated
-// coordinate (muscle states, coordinates of stand-in joints) are reported in one line, an
-// error with `strict`. Returns the row's time.
-double ApplyInitialStates(const std::string& path, bool strict, model::ModelSpec& spec) {
-  io::Storage storage = ReadTableFor(path, spec);
-  const opensim::InitialStates initial = opensim::ApplyInitialStates(storage, path, spec);
-  WarnUnusedColumns(initial.unused_labels, path,
-                    "they name no coordinate value or speed that is simulated", strict);
-  return initial.t0;
-}
-
-void ShowProgress(double fraction, double t) {
-  const int width = 40;
-  const int filled = static_cast<int>(fraction * width);
-  std::fprintf(stderr, "\r[%s%s] %3d%%  t = %.3f s", std::string(filled, '#').c_str(),
-               std::string(width - filled, ' ').c_str(), static_cast<int>(100 * fraction), t);
-  std::fflush(stderr);
-}
-
 void RunSimulate(const SimulateOptions& options) {
   // Before any work: a run of absurd size, or outputs that cannot be written, is a usage error.
   CheckSimulationSize(options.duration, options.report_interval, options.step);
@@ -106,127 +64,45 @@ void RunSimulate(const SimulateOptions& options) {
     PrepareOutputFile(options.export_file, "--export");
   }
   model::ModelSpec spec = io::ReadOsim(options.model);
-  double t0 = 0.0;
+  std::optional<InitialStates> initial;
   if (!options.initial_states.empty()) {
-    t0 = ApplyInitialStates(options.initial_states, options.strict, spec);
+    initial = ApplyInitialStates(options.initial_states, options.strict, spec);
   }
-  WarnNotSimulated(spec, options.model, options.strict, options.disabled_forces);
-  opensim::OpenSimParser parser;
-  parser.ActivateActuators(options.activate_actuators);
-  parser.SetControlsFile(options.controls);
-  parser.SetStrict(options.strict);
-  for (const std::string& file : options.external_loads) parser.AddExternalLoads(file);
-  for (const std::string& name : options.disabled_forces) parser.DisableForce(name);
-  auto system = std::make_unique<engine::System>();
-  parser.ParseSpec(*system, spec);
-  system->Finalize();
-  for (const std::string& option : options.excitations) {
-    auto [name, function] = ParseExcitationOption(option);
-    parser.SetExcitationFunction(name, std::move(function));
-  }
-  const opensim::Report& report = parser.GetReport();
-  if (!options.quiet && !report.warnings().empty()) {
-    std::cerr << "sinew: note: " << report.warnings().size()
-              << " warning(s) from reading and building the model; `sinew inspect " << options.model
-              << "` lists them\n";
-  }
-  engine::State state;
-  try {
-    state = engine::MakeDefaultState(*system, t0);
-  } catch (const Error& error) {  // e.g. constraints that cannot be assembled: name the model
-    if (!error.where().file.empty()) throw;
-    throw Error({options.model, 0}, error.component(), error.message());
-  }
+  BuiltModel built = BuildModel(spec, {.model_path = options.model,
+                                       .strict = options.strict,
+                                       .quiet = options.quiet,
+                                       .activate_actuators = options.activate_actuators,
+                                       .controls = options.controls,
+                                       .external_loads = options.external_loads,
+                                       .disabled_forces = options.disabled_forces,
+                                       .excitations = options.excitations});
+  const engine::System& system = *built.system;
+  engine::State state = MakeInitialState(system, initial ? initial->time() : 0.0, options.model);
+  if (initial) ApplyInitialStateVariables(*initial, system, state);
   engine::IntegratorSettings settings;
   settings.accuracy = options.accuracy;
   settings.step = options.step;
-  const auto integrator = engine::MakeIntegrator(options.integrator, *system, settings);
-  integrator->SetController(parser.GetController());
+  const auto integrator = engine::MakeIntegrator(options.integrator, system, settings);
+  integrator->SetController(built.parser.GetController());
 
-  // The tables are streamed to disk as the run computes them (bounded memory).
-  io::Storage states_header, bodies_header, forces_header;
-  states_header.name = "states";
-  states_header.labels = opensim::StatesLabels(*system);
-  // bodies.sto as `sinew kinematics` writes it (OpenSim BodyKinematics positions; the angles
-  // are degrees, and the header says so).
-  bodies_header.name = "Positions";
-  bodies_header.labels = kinematics::BodyKinematicsLabels(spec);
-  bodies_header.in_degrees = true;
-  // forces.sto as OpenSim's ForceReporter writes it (forces with appliesForce false are left out).
-  const engine::ForceReporter force_reporter(*system);
-  forces_header.name = "ForceReporter";
-  forces_header.labels = force_reporter.labels();
-  io::StorageWriter states(options.out + "/states.sto", states_header);
-  io::StorageWriter bodies(options.out + "/bodies.sto", bodies_header);
-  io::StorageWriter forces(options.out + "/forces.sto", forces_header);
-  std::vector<double> force_row;
-  std::optional<io::StorageWriter> constraints;
-  engine::Data data(*system);
-  std::vector<double> constraint_row;
-  // contacts.sto when the model has contact forces.
-  std::optional<io::StorageWriter> contacts;
-  std::vector<double> contact_row;
-  if (std::vector<std::string> labels = contact::ContactTableLabels(*system); !labels.empty()) {
-    io::Storage header;
-    header.name = "Contacts";
-    header.labels = std::move(labels);
-    contacts.emplace(options.out + "/contacts.sto", header);
-  }
-  if (options.report_constraint_forces) {
-    io::Storage header;
-    header.name = "ConstraintForces";
-    header.labels = opensim::ConstraintForcesLabels(*system);
-    constraints.emplace(options.out + "/constraints.sto", header);
-  }
-  // A fresh system holds the spec's bodies in spec order (stand-ins add none).
-  std::vector<Transform> X_GB(system->num_bodies());
-  std::vector<double> row;
+  TableFiles files;
+  files.states = options.out + "/states.sto";
+  files.bodies = options.out + "/bodies.sto";
+  files.forces = options.out + "/forces.sto";
+  if (options.report_constraint_forces) files.constraints = options.out + "/constraints.sto";
+  RunTables tables(system, spec, files);
   viz::BodyMotion motion;
-  auto record = [&](const engine::State& s) {
-    opensim::StatesRow(*system, s, row);
-    states.AppendRow(s.t, row);
-    for (int b = 0; b < system->num_bodies(); ++b) X_GB[b] = engine::PoseOf(s.bodies[b]);
-    bodies.AppendRow(s.t, kinematics::CalcBodyKinematicsRow(spec, X_GB));
-    force_reporter.CalcRow(s, force_row);
-    forces.AppendRow(s.t, force_row);
-    if (contacts) {
-      contact::ContactTableRow(*system, s, contact_row);
-      contacts->AppendRow(s.t, contact_row);
-    }
-    if (constraints) {
-      // External loads are force elements of the system, so no loads are passed besides them.
-      opensim::ConstraintForcesRow(*system, s, nullptr, data, constraint_row);
-      constraints->AppendRow(s.t, constraint_row);
-    }
-    if (!options.export_file.empty()) {
+  std::function<void(const engine::State&)> record_motion;
+  if (!options.export_file.empty()) {
+    record_motion = [&](const engine::State& s) {
       motion.times.push_back(s.t);
-      motion.X_GB.push_back(X_GB);
-    }
-  };
-
-  engine::SimulationOptions run;
-  run.duration = options.duration;
-  run.report_interval = options.report_interval;
-  const InterruptGuard interrupt;
-  run.stop = &interrupt.flag();
-  if (!options.quiet && isatty(fileno(stderr))) run.progress = ShowProgress;
-  const engine::SimulationResult result = engine::Simulate(*integrator, state, run, record);
-  if (run.progress) std::fprintf(stderr, "\n");
-  std::string partial;
-  if (!result.completed) {
-    partial = "stopped by " + interrupt.SignalName() + " at t = " + std::to_string(state.t) + " s";
+      motion.X_GB.emplace_back();
+      for (const engine::BodyState& body : s.bodies)
+        motion.X_GB.back().push_back(engine::PoseOf(body));
+    };
   }
-  states.Finish(partial);
-  bodies.Finish(partial);
-  forces.Finish(partial);
-  if (constraints) constraints->Finish(partial);
-  if (contacts) contacts->Finish(partial);
-  if (!result.completed) {
-    std::cerr << "sinew: " << partial << ": kept the " << states.rows() << " rows computed in "
-              << options.out
-              << "/states.sto, bodies.sto and forces.sto (their headers say status=partial)\n";
-    throw ExitRequest{128 + interrupt.Signal()};
-  }
+  RunWithProgress(*integrator, state, options.duration, options.report_interval, options.quiet,
+                  tables, options.out, record_motion);
   if (!options.export_file.empty()) {
     viz::ExportOptions export_options;
     export_options.visual.mode = viz::ParseVisType(options.vis);
@@ -239,7 +115,7 @@ void RunSimulate(const SimulateOptions& options) {
     std::cout << "simulated " << options.duration << " s of " << spec.name << ": " << stats.steps
               << " steps (" << stats.rejected << " rejected), " << stats.evaluations
               << " evaluations; wrote " << options.out << "/states.sto, bodies.sto, forces.sto"
-              << (contacts ? ", contacts.sto" : "") << (constraints ? " and constraints.sto\n" : "\n");
+              << (options.report_constraint_forces ? " and constraints.sto\n" : "\n");
   }
 }
 
@@ -270,8 +146,9 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--excitation", options->excitations,
                   "NAME=constant:V | NAME=ramp:START,SLOPE | NAME=sine:AMPLITUDE,FREQUENCY_HZ,PHASE"
                   " (repeatable; overrides the other sources for that actuator)");
-  cmd->add_option("--controls", options->controls,
-                  "OpenSim ControlSet file (e.g. *_controls.xml) driving the actuators it names");
+  cmd->add_option(
+      "--controls", options->controls,
+      "OpenSim ControlSet file (*_controls.xml, or a .sto table) driving the actuators it names");
   cmd->add_option("--external-loads", options->external_loads,
                   "OpenSim ExternalLoads file (.xml; its datafile is read relative to it) whose "
                   "ExternalForces are applied (repeatable)");

@@ -16,6 +16,8 @@ inline constexpr int kExitBadInput = 2;
 
 void AddInspectCommand(CLI::App& app);
 void AddSimulateCommand(CLI::App& app);
+/// `sinew forward`: an OpenSim ForwardTool setup file (cmd_forward.cc).
+void AddForwardCommand(CLI::App& app);
 /// `sinew export`: glTF (.glb) or HTML viewer of a model and its motion (cmd_export.cc).
 void AddExportCommand(CLI::App& app);
 /// `sinew render`: a still PNG from the software renderer (cmd_render.cc).

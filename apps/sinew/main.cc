@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   app.failure_message(UsageFailure);
   sinew::cli::AddInspectCommand(app);
   sinew::cli::AddSimulateCommand(app);
+  sinew::cli::AddForwardCommand(app);
   sinew::cli::AddExportCommand(app);
   sinew::cli::AddRenderCommand(app);
   sinew::cli::AddKinematicsCommand(app);

@@ -49,8 +49,8 @@ TEST_F(UsageTest, MistakesExitWithTwoAndTheUsage) {
                    "Usage: sinew render [OPTIONS] model");
   ExpectUsageError("", "A subcommand is required", "sinew", "Usage: sinew [OPTIONS] SUBCOMMAND");
   ExpectUsageError("frobnicate",
-                   "unknown command 'frobnicate' (the commands are inspect simulate export "
-                   "render kinematics analyze)",
+                   "unknown command 'frobnicate' (the commands are inspect simulate forward "
+                   "export render kinematics analyze)",
                    "sinew", "Usage: sinew [OPTIONS] SUBCOMMAND");
   ExpectUsageError("analyze " + kModel + " --out " + Path("out"), "--motion is required",
                    "sinew analyze", "Usage: sinew analyze [OPTIONS] model");

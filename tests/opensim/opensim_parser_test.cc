@@ -8,6 +8,7 @@
 #include <sinew/opensim/parser.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -82,6 +83,26 @@ TEST(OpenSimParserTest, ControlsFileDrivesItsActuator) {
   EXPECT_EQ(parser.GetReport().GetForce("grav")->excitation_source, "controls file");
   const double q = SimulateQ1(*system, parser, {1.0})[0];
   EXPECT_NEAR(q, kQ0 - 9.8 / (6 * kPinInertia), kAngleTolerance);
+}
+
+// OpenSim adds the controls of all the controllers of an actuator; Sinew takes the controls
+// file's and says so in the Report (an error with strict), never silently.
+TEST(OpenSimParserTest, ControlsFileReplacingAPrescribedControllerIsAWarning) {
+  const std::string controls = ::testing::TempDir() + "/sinew_lift_controls.xml";
+  std::ofstream(controls) << "<ControlSet><objects><ControlConstant name=\"lift_force\">"
+                             "<value>0.2</value></ControlConstant></objects></ControlSet>\n";
+  opensim::OpenSimParser parser;
+  parser.SetControlsFile(controls);
+  parser.Parse(std::string(SINEW_TEST_DATA_DIR) + "/sinew/sliders.osim");
+  EXPECT_EQ(parser.GetReport().GetForce("lift_force")->excitation_source, "controls file");
+  bool warned = false;
+  for (const Diagnostic& w : parser.GetReport().warnings()) {
+    warned |= w.message.find(
+                  "replaces the PrescribedController lift_controller of "
+                  "'lift_force' (OpenSim would add the two controls)") != std::string::npos;
+  }
+  EXPECT_TRUE(warned);
+  std::remove(controls.c_str());
 }
 
 // K(k), the complete elliptic integral of the first kind, by the arithmetic-geometric mean

@@ -33,9 +33,11 @@ double ControlLinear::Line(int a, int b, double t) const {
 double ControlLinear::Calc(double t) const {
   const int n = static_cast<int>(t_.size());
   const int i = FindNode(t);
+  // Steps are never extrapolated: they hold the end nodes' values (OpenSim's getControlValue).
+  const bool extrapolate = extrapolate_ && !use_steps_;
   if (n == 1) return v_[0];
-  if (i < 0) return extrapolate_ ? Line(0, 1, t) : v_[0];
-  if (i >= n - 1) return extrapolate_ ? Line(n - 2, n - 1, t) : v_[n - 1];
+  if (i < 0) return extrapolate ? Line(0, 1, t) : v_[0];
+  if (i >= n - 1) return extrapolate ? Line(n - 2, n - 1, t) : v_[n - 1];
   if (use_steps_) return t == t_[i] ? v_[i] : v_[i + 1];
   return Line(i, i + 1, t);
 }
@@ -45,9 +47,10 @@ double ControlLinear::CalcDerivative(double t, int order) const {
   if (order != 1) return 0.0;
   const int n = static_cast<int>(t_.size());
   const int i = FindNode(t);
+  const bool extrapolate = extrapolate_ && !use_steps_;
   if (n == 1) return 0.0;
-  if (i < 0) return extrapolate_ ? Slope(0, 1) : 0.0;
-  if (i >= n - 1) return extrapolate_ ? Slope(n - 2, n - 1) : 0.0;
+  if (i < 0) return extrapolate ? Slope(0, 1) : 0.0;
+  if (i >= n - 1) return extrapolate ? Slope(n - 2, n - 1) : 0.0;
   return use_steps_ ? 0.0 : Slope(i, i + 1);
 }
 

@@ -10,8 +10,8 @@ namespace sinew::functions {
 
 /// Control value of time through nodes (t_i, v_i), t strictly increasing.
 /// Between nodes: linear interpolation, or with `use_steps` the value of the next node
-/// (the one at or after t). Outside the nodes: with `extrapolate` the line through the two end
-/// nodes, else the end node's value.
+/// (the one at or after t). Outside the nodes: with `extrapolate` (and not `use_steps`) the line
+/// through the two end nodes, else the end node's value, as OpenSim's ControlLinear.
 class ControlLinear : public Function {
  public:
   ControlLinear(std::vector<double> times, std::vector<double> values, bool use_steps,

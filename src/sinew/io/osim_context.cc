@@ -7,7 +7,7 @@ namespace sinew::io::internal {
 void ReadContext::Warn(const pugi::xml_node& node, const std::string& component,
                        const std::string& message, const std::string& dedupe_key) {
   if (!dedupe_key.empty() && !warned_.insert(dedupe_key).second) return;
-  spec_.warnings.push_back(Diagnostic{doc_.Where(node), component, message});
+  spec_.warnings.push_back(Diagnostic{doc_->Where(node), component, message});
 }
 
 void ReadContext::AddBodyFrame(const std::string& path, int body, const pugi::xml_node& node) {
@@ -62,7 +62,7 @@ std::string ReadContext::ResolveFrame(const std::string& owner_path, std::string
                                       const pugi::xml_node& socket, const std::string& component,
                                       const FrameEntry** entry) {
   const std::string tag = socket.name();
-  if (path.empty()) doc_.Fail(socket, component, "<" + tag + "> is empty");
+  if (path.empty()) doc_->Fail(socket, component, "<" + tag + "> is empty");
   std::string absolute = JoinPath(owner_path, path);
   auto it = frames_.find(absolute);
   if (it == frames_.end() && path.find('/') == std::string_view::npos) {
@@ -76,13 +76,13 @@ std::string ReadContext::ResolveFrame(const std::string& owner_path, std::string
            "<" + tag + "> '" + std::string(path) + "' found by name at '" + match->first + "'");
       it = match;
     } else if (count > 1) {
-      doc_.Fail(socket, component,
+      doc_->Fail(socket, component,
                 "<" + tag + "> '" + std::string(path) + "' is ambiguous: " + std::to_string(count) +
                     " frames have that name");
     }
   }
   if (it == frames_.end()) {
-    doc_.Fail(socket, component,
+    doc_->Fail(socket, component,
               "<" + tag + "> '" + std::string(path) + "' does not exist" +
                   (absolute.empty() || absolute == path ? "" : " (looked for '" + absolute + "')"));
   }
@@ -94,14 +94,14 @@ std::string ReadContext::ResolveFrame(const std::string& owner_path, std::string
 FrameEntry& ReadContext::Resolve(const std::string& path, FrameEntry& entry) {
   if (entry.state == 2) return entry;
   if (entry.state == 1) {
-    doc_.Fail(entry.node, entry.component, "offset frames form a cycle through '" + path + "'");
+    doc_->Fail(entry.node, entry.component, "offset frames form a cycle through '" + path + "'");
   }
   entry.state = 1;
   // Each offset resolves its parent first: bound the chain so a hostile file cannot exhaust
   // the stack (real models chain two or three).
   constexpr int kMaxChain = 500;
   if (resolve_depth_ >= kMaxChain) {
-    doc_.Fail(entry.node, entry.component,
+    doc_->Fail(entry.node, entry.component,
               "offset frames chained deeper than " + std::to_string(kMaxChain) + " levels");
   }
   struct DepthGuard {
@@ -127,7 +127,7 @@ FrameEntry& ReadContext::Resolve(const std::string& path, FrameEntry& entry) {
   frame.X_PF = entry.X_PF;
   frame.body = entry.body;
   frame.X_BF = entry.X_BF;
-  frame.where = doc_.Where(entry.node);
+  frame.where = doc_->Where(entry.node);
   entry.spec_frame = static_cast<int>(spec_.frames.size());
   spec_.frames.push_back(std::move(frame));
   return entry;
@@ -140,15 +140,15 @@ std::pair<int, Vec3> ReadContext::ResolveStation(const std::string& owner,
   const std::string path = JoinPath(owner, text);
   auto it = stations_.find(path);
   if (it == stations_.end()) {
-    doc_.Fail(socket, component,
+    doc_->Fail(socket, component,
               "<" + std::string(socket.name()) + "> '" + std::string(text) + "' is not a Station");
   }
   const pugi::xml_node station = it->second;
   pugi::xml_node frame_socket = station.child("socket_parent_frame");
-  if (!frame_socket) doc_.Fail(station, path, "Station has no <socket_parent_frame>");
+  if (!frame_socket) doc_->Fail(station, path, "Station has no <socket_parent_frame>");
   const FrameEntry* frame = nullptr;
   ResolveFrame(path, XmlDocument::Text(frame_socket), frame_socket, path, &frame);
-  const Vec3 location = ReadVec3Or(doc_, station, "location", path, Vec3::Zero());
+  const Vec3 location = ReadVec3Or(*doc_, station, "location", path, Vec3::Zero());
   return {frame->body, frame->X_BF * location};
 }
 
@@ -164,10 +164,10 @@ void ReadContext::ResolveStationDefined(const std::string& path, FrameEntry& ent
   for (int i = 0; i < 4; ++i) {
     pugi::xml_node socket = node.child(sockets[i]);
     if (!socket)
-      doc_.Fail(node, path, std::string("StationDefinedFrame has no <") + sockets[i] + ">");
+      doc_->Fail(node, path, std::string("StationDefinedFrame has no <") + sockets[i] + ">");
     auto [station_body, p_BS] = ResolveStation(path, socket, path);
     if (body != model::kNone && station_body != body) {
-      doc_.Fail(socket, path, "the stations of a StationDefinedFrame are on different bodies");
+      doc_->Fail(socket, path, "the stations of a StationDefinedFrame are on different bodies");
     }
     body = station_body;
     p[i] = p_BS;
@@ -181,7 +181,7 @@ void ReadContext::ResolveStationDefined(const std::string& path, FrameEntry& ent
       text = text.substr(1);
     }
     if (text != "x" && text != "y" && text != "z") {
-      doc_.Fail(node.child(tag), path,
+      doc_->Fail(node.child(tag), path,
                 "<" + std::string(tag) + "> must be one of x, y, z, -x, ...");
     }
     *index = text[0] - 'x';
@@ -190,11 +190,11 @@ void ReadContext::ResolveStationDefined(const std::string& path, FrameEntry& ent
   double s_ab, s_n;
   axis_of("ab_axis", "+x", &i_ab, &s_ab);
   axis_of("ab_x_ac_axis", "+y", &i_n, &s_n);
-  if (i_ab == i_n) doc_.Fail(node, path, "ab_axis and ab_x_ac_axis are the same axis");
+  if (i_ab == i_n) doc_->Fail(node, path, "ab_axis and ab_x_ac_axis are the same axis");
   const Vec3 ab = p[1] - p[0];
   const Vec3 normal = ab.cross(p[2] - p[0]);
   if (ab.norm() < 1e-12 || normal.norm() < 1e-12 * (1 + ab.norm())) {
-    doc_.Fail(node, path, "the stations of a StationDefinedFrame are collinear or coincident");
+    doc_->Fail(node, path, "the stations of a StationDefinedFrame are collinear or coincident");
   }
   Mat3 R;
   R.col(i_ab) = s_ab * ab.normalized();
@@ -212,7 +212,7 @@ void ReadContext::ResolveStationDefined(const std::string& path, FrameEntry& ent
   frame.X_PF = entry.X_BF;
   frame.body = body;
   frame.X_BF = entry.X_BF;
-  frame.where = doc_.Where(node);
+  frame.where = doc_->Where(node);
   entry.spec_frame = static_cast<int>(spec_.frames.size());
   spec_.frames.push_back(std::move(frame));
 }

@@ -172,8 +172,12 @@ pugi::xml_node FindPathOwner(const pugi::xml_node& force) {
 }  // namespace
 
 void ReadForces(ReadContext& ctx, const pugi::xml_node& model) {
+  ReadForceSet(ctx, model.child("ForceSet"));
+}
+
+void ReadForceSet(ReadContext& ctx, const pugi::xml_node& force_set) {
   const XmlDocument& doc = ctx.doc();
-  for (pugi::xml_node node : ObjectsOf(model.child("ForceSet"))) {
+  for (pugi::xml_node node : ObjectsOf(force_set)) {
     model::ForceSpec force;
     force.name = NameOf(node);
     force.type = node.name();

@@ -33,7 +33,41 @@ int ReadVersion(const internal::XmlDocument& doc, const pugi::xml_node& root,
   return version;
 }
 
-model::ModelSpec ReadDocument(const internal::XmlDocument& doc) {
+// The <ForceSet> of a ForceSet file, with its <defaults> given to the objects that lack them
+// (OpenSim makes each object as a copy of its class's default object, then reads it).
+pugi::xml_node FindForceSet(const internal::XmlDocument& doc) {
+  pugi::xml_node set = doc.root();
+  if (std::string_view(set.name()) == "OpenSimDocument") set = set.child("ForceSet");
+  if (!set || std::string_view(set.name()) != "ForceSet") {
+    doc.Fail(doc.root(), "",
+             "not a ForceSet file (root element <" + std::string(doc.root().name()) + ">)");
+  }
+  const pugi::xml_node defaults = set.child("defaults");
+  for (pugi::xml_node object : internal::ObjectsOf(set)) {
+    const pugi::xml_node fallback = defaults.child(object.name());
+    for (const pugi::xml_node& property : fallback.children()) {
+      if (property.type() == pugi::node_element && !object.child(property.name())) {
+        object.append_copy(property);
+      }
+    }
+  }
+  return set;
+}
+
+// Appends (or, with `replace`, substitutes) the forces of the ForceSet files.
+void ReadForceSetFiles(internal::ReadContext& ctx, const ForceSetFiles& force_sets) {
+  if (force_sets.replace) ctx.spec().forces.clear();
+  const internal::XmlDocument& model_doc = ctx.doc();
+  for (const std::string& file : force_sets.files) {
+    const internal::XmlDocument doc = internal::XmlDocument::Load(file);
+    ctx.SwitchDocument(doc);
+    internal::ReadForceSet(ctx, FindForceSet(doc));
+    ctx.SwitchDocument(model_doc);
+  }
+}
+
+model::ModelSpec ReadDocument(const internal::XmlDocument& doc,
+                              const ForceSetFiles& force_sets = {}) {
   model::ModelSpec spec;
   spec.file = doc.file();
   pugi::xml_node root = doc.root();
@@ -57,6 +91,7 @@ model::ModelSpec ReadDocument(const internal::XmlDocument& doc) {
   internal::ReadJoints(ctx, model);
   ctx.ResolveAllFrames();
   internal::ReadForces(ctx, model);
+  ReadForceSetFiles(ctx, force_sets);
   internal::ReadOtherComponents(ctx, model);
   internal::ValidateSpec(ctx, model);
   return spec;
@@ -66,6 +101,10 @@ model::ModelSpec ReadDocument(const internal::XmlDocument& doc) {
 
 model::ModelSpec ReadOsim(const std::string& file) {
   return ReadDocument(internal::XmlDocument::Load(file));
+}
+
+model::ModelSpec ReadOsim(const std::string& file, const ForceSetFiles& force_sets) {
+  return ReadDocument(internal::XmlDocument::Load(file), force_sets);
 }
 
 model::ModelSpec ReadOsimString(std::string text, const std::string& file) {

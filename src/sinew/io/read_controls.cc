@@ -1,6 +1,8 @@
+#include <sinew/functions/constant.h>
 #include <sinew/functions/control_linear.h>
 #include <sinew/io/internal/xml_document.h>
 #include <sinew/io/read_controls.h>
+#include <sinew/io/storage.h>
 
 #include <memory>
 #include <utility>
@@ -49,6 +51,14 @@ functions::FunctionPtr ReadControlLinear(const internal::XmlDocument& doc,
       ReadOptionalBool(doc, control, "extrapolate", component, true));
 }
 
+// A ControlConstant: its `value` at every time (0 when absent, as in OpenSim).
+functions::FunctionPtr ReadControlConstant(const internal::XmlDocument& doc,
+                                           const pugi::xml_node& control,
+                                           const std::string& component) {
+  const pugi::xml_node value = control.child("value");
+  return std::make_shared<functions::Constant>(value ? doc.ReadDouble(value, component) : 0.0);
+}
+
 // The controls of a parsed ControlSet document.
 std::map<std::string, functions::FunctionPtr> ReadControls(const internal::XmlDocument& doc) {
   pugi::xml_node set = doc.root();
@@ -62,13 +72,44 @@ std::map<std::string, functions::FunctionPtr> ReadControls(const internal::XmlDo
     if (control.type() != pugi::node_element) continue;
     const std::string name = control.attribute("name").value();
     const std::string component = "/controlset/" + name;
-    if (std::string_view(control.name()) != "ControlLinear") {
+    const std::string_view type = control.name();
+    if (type != "ControlLinear" && type != "ControlConstant") {
       doc.Fail(control, component,
-               "control type <" + std::string(control.name()) + "> is not supported");
+               "control type <" + std::string(type) +
+                   "> is not supported (ControlLinear and ControlConstant are)");
     }
     const std::string actuator = ActuatorOfControl(name);
-    if (!controls.emplace(actuator, ReadControlLinear(doc, control, component)).second) {
+    functions::FunctionPtr function = type == "ControlLinear"
+                                          ? ReadControlLinear(doc, control, component)
+                                          : ReadControlConstant(doc, control, component);
+    if (!controls.emplace(actuator, std::move(function)).second) {
       doc.Fail(control, component, "a second control for actuator '" + actuator + "'");
+    }
+  }
+  return controls;
+}
+
+// A storage table of controls (OpenSim's ControlSet(Storage)): each column a ControlLinear
+// through its value at every row, named by its label.
+std::map<std::string, functions::FunctionPtr> ReadControlTable(const std::string& file) {
+  const Storage table = ReadStorage(file);
+  for (int row = 1; row < table.NumRows(); ++row) {
+    if (!(table.time[row] > table.time[row - 1])) {
+      throw Error({file, 0}, "",
+                  "the controls table's times must increase (row " + std::to_string(row + 1) + ")");
+    }
+  }
+  if (table.NumRows() == 0) throw Error({file, 0}, "", "the controls table has no rows");
+  std::map<std::string, functions::FunctionPtr> controls;
+  for (int column = 0; column < table.NumColumns(); ++column) {
+    std::vector<double> values(table.NumRows());
+    for (int row = 0; row < table.NumRows(); ++row) values[row] = table.Value(row, column);
+    const std::string actuator = ActuatorOfControl(table.labels[column]);
+    auto control =
+        std::make_shared<functions::ControlLinear>(table.time, std::move(values), false, true);
+    if (!controls.emplace(actuator, std::move(control)).second) {
+      throw Error({file, 0}, table.labels[column],
+                  "a second control for actuator '" + actuator + "'");
     }
   }
   return controls;
@@ -77,6 +118,8 @@ std::map<std::string, functions::FunctionPtr> ReadControls(const internal::XmlDo
 }  // namespace
 
 std::map<std::string, functions::FunctionPtr> ReadControlSet(const std::string& file) {
+  // OpenSim reads a name containing ".sto" as a storage table (ControlSetController).
+  if (file.rfind(".sto") != std::string::npos) return ReadControlTable(file);
   return ReadControls(internal::XmlDocument::Load(file));
 }
 

@@ -9,7 +9,10 @@
 namespace sinew::io {
 
 /// The controls of a ControlSet file, by actuator name: a control named "X.excitation" (or
-/// "X") drives actuator X. ControlLinear controls become ControlLinear functions.
+/// "X") drives actuator X. ControlLinear controls become ControlLinear functions (use_steps
+/// and extrapolate honoured), ControlConstant controls Constant functions of their `value`.
+/// A file whose name contains ".sto" is read as OpenSim reads it, as a storage table: each
+/// column a ControlLinear (linear, extrapolated) through its value at every row.
 /// Throws sinew::Error (file, line, control) for malformed files or unsupported control types.
 std::map<std::string, functions::FunctionPtr> ReadControlSet(const std::string& file);
 

@@ -223,6 +223,12 @@ void OpenSimParser::AssignExcitations() {
                                 "', which is not a simulated actuator: ignored"});
         continue;
       }
+      if (info->excitation_source.starts_with("PrescribedController")) {
+        // OpenSim adds the controls of every controller of an actuator; Sinew takes one.
+        report_.AddWarning({SourceLocation{controls_file_, 0}, name,
+                            "the controls file replaces the " + info->excitation_source + " of '" +
+                                name + "' (OpenSim would add the two controls)"});
+      }
       controller->Set(info->input, function);
       info->excitation_source = "controls file";
     }

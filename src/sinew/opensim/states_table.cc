@@ -25,4 +25,20 @@ void StatesRow(const engine::System& system, const engine::State& state, std::ve
   for (int k = 0; k < state.z.size(); ++k) row[i++] = state.z[k];
 }
 
+std::vector<std::string> ControlsLabels(const engine::System& system) {
+  std::vector<std::string> labels;
+  for (int k = 0; k < static_cast<int>(system.force_elements().size()); ++k) {
+    const int n = system.NumInputs(k);
+    for (int i = 0; i < n; ++i) {
+      labels.push_back(n == 1 ? system.force_elements()[k]->name()
+                              : system.input_names()[system.InputBegin(k) + i]);
+    }
+  }
+  return labels;
+}
+
+void ControlsRow(const engine::State& state, std::vector<double>& row) {
+  row.assign(state.inputs.data(), state.inputs.data() + state.inputs.size());
+}
+
 }  // namespace sinew::opensim

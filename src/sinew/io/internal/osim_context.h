@@ -34,9 +34,12 @@ struct FrameEntry {
 /// Everything the reader's parts share while reading one document.
 class ReadContext {
  public:
-  ReadContext(const XmlDocument& doc, model::ModelSpec& spec) : doc_(doc), spec_(spec) {}
+  ReadContext(const XmlDocument& doc, model::ModelSpec& spec) : doc_(&doc), spec_(spec) {}
 
-  const XmlDocument& doc() const { return doc_; }
+  const XmlDocument& doc() const { return *doc_; }
+  /// Reads from `doc` from now on (a ForceSet file a tool adds to the model), with the frames
+  /// and names of the model already read; `doc` must outlive its use.
+  void SwitchDocument(const XmlDocument& doc) { doc_ = &doc; }
   model::ModelSpec& spec() { return spec_; }
 
   /// Adds a warning at `node`; the same (component kind, message) pair is kept once per file
@@ -105,7 +108,7 @@ class ReadContext {
   std::pair<int, Vec3> ResolveStation(const std::string& owner, const pugi::xml_node& socket,
                                       const std::string& component);
 
-  const XmlDocument& doc_;
+  const XmlDocument* doc_;
   model::ModelSpec& spec_;
   std::unordered_map<std::string, FrameEntry> frames_;
   std::unordered_map<std::string, pugi::xml_node> stations_;
@@ -175,6 +178,8 @@ void ReadVisibleObject(ReadContext& ctx, const pugi::xml_node& visible, int body
 void ReadJoints(ReadContext& ctx, const pugi::xml_node& model);
 /// Forces (muscles included) and their geometry paths.
 void ReadForces(ReadContext& ctx, const pugi::xml_node& model);
+/// The forces of one <ForceSet> element (the model's, or a ForceSet file's) appended to the spec.
+void ReadForceSet(ReadContext& ctx, const pugi::xml_node& force_set);
 /// The frames a force's sockets name and the function-valued properties its builder needs
 /// (ForceSpec::frames, ForceSpec::functions).
 void ReadForceAttachments(ReadContext& ctx, const pugi::xml_node& node, model::ForceSpec& force);

@@ -1,0 +1,136 @@
+// `sinew forward SETUP.xml [--model F.osim] [--out DIR] [--report-interval DT] [--strict]
+//  [--quiet]`: runs an OpenSim ForwardTool setup file (io::ReadForwardSetup; docs/forward.md):
+// the model with the setup's force set files, initial states, controls and external loads,
+// integrated from initial_time to final_time at the setup's accuracy. Writes <name>_states.sto,
+// <name>_states_degrees.mot, <name>_controls.sto and <name>_forces.sto in OpenSim's layout into
+// the setup's results_directory (or --out), streamed as rows are computed, with `simulate`'s
+// progress bar and clean stop on SIGINT/SIGTERM.
+#include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/io/forward_setup.h>
+#include <sinew/io/osim_reader.h>
+
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "apps/sinew/commands.h"
+#include "apps/sinew/initial_states.h"
+#include "apps/sinew/notices.h"
+#include "apps/sinew/option_checks.h"
+#include "apps/sinew/output_files.h"
+#include "apps/sinew/run_simulation.h"
+
+namespace sinew::cli {
+namespace {
+
+struct ForwardOptions {
+  std::string setup;
+  std::string model;
+  std::string out;
+  double report_interval = 0.01;
+  bool strict = false;
+  bool quiet = false;
+};
+
+void RunForward(const ForwardOptions& options) {
+  const io::ForwardSetup setup = io::ReadForwardSetup(options.setup);
+  for (const Diagnostic& note : setup.notes) {
+    std::cerr << "sinew: note: " << note.Format() << "\n";
+  }
+  for (const Diagnostic& warning : setup.warnings) {
+    if (options.strict)
+      throw Error(warning.where, warning.component, warning.message + " (--strict)");
+    std::cerr << "sinew: warning: " << warning.Format() << "\n";
+  }
+  const std::string model_path = options.model.empty() ? setup.model_file : options.model;
+  if (model_path.empty()) {
+    throw Error({options.setup, 0}, "/" + setup.name,
+                "the setup names no model (<model_file> is empty): give one with --model");
+  }
+  const std::string out = options.out.empty() ? setup.results_directory : options.out;
+  PrepareOutputFolder(out, options.out.empty() ? "<results_directory>" : "--out");
+
+  model::ModelSpec spec =
+      io::ReadOsim(model_path, io::ForceSetFiles{setup.force_set_files, setup.replace_force_set});
+  std::optional<InitialStates> initial;
+  if (!setup.states_file.empty()) {
+    initial = ApplyInitialStates(setup.states_file, options.strict, spec, setup.initial_time);
+  }
+  const double t0 = initial ? initial->time() : setup.initial_time;
+  if (!(setup.final_time > t0)) {
+    throw Error({options.setup, 0}, "/" + setup.name,
+                "the run would start at " + ShowNumber(t0) +
+                    " s (the states file's row), not before final_time " +
+                    ShowNumber(setup.final_time));
+  }
+  const double duration = setup.final_time - t0;
+  CheckSimulationSize(duration, options.report_interval, 0.0);
+
+  ModelOptions model_options;
+  model_options.model_path = model_path;
+  model_options.strict = options.strict;
+  model_options.quiet = options.quiet;
+  model_options.controls = setup.controls_file;
+  if (!setup.external_loads_file.empty()) {
+    model_options.external_loads.push_back(setup.external_loads_file);
+  }
+  BuiltModel built = BuildModel(spec, model_options);
+  const engine::System& system = *built.system;
+  engine::State state = MakeInitialState(system, t0, model_path);
+  if (initial) ApplyInitialStateVariables(*initial, system, state);
+  // As OpenSim: the states file's values first, then equilibrium of the auxiliary states.
+  if (setup.solve_for_equilibrium_for_auxiliary_states) {
+    engine::InitializeStateVariables(system, state);
+  }
+
+  engine::IntegratorSettings settings;
+  settings.accuracy = setup.integrator_error_tolerance;
+  settings.step = setup.maximum_integrator_step_size;
+  settings.min_step = setup.minimum_integrator_step_size;
+  const auto integrator = engine::MakeIntegrator("rk45", system, settings);
+  integrator->SetController(built.parser.GetController());
+
+  const std::string base = out + "/" + setup.name;
+  TableFiles files;
+  files.states = base + "_states.sto";
+  files.states_degrees = base + "_states_degrees.mot";
+  files.controls = base + "_controls.sto";
+  files.forces = base + "_forces.sto";
+  RunTables tables(system, spec, files);
+  RunWithProgress(*integrator, state, duration, options.report_interval, options.quiet, tables,
+                  out);
+  if (!options.quiet) {
+    const auto& stats = integrator->stats();
+    std::cout << "simulated " << ShowNumber(t0) << " to " << ShowNumber(setup.final_time)
+              << " s of " << spec.name << ": " << stats.steps << " steps (" << stats.rejected
+              << " rejected), " << stats.evaluations << " evaluations; wrote " << base
+              << "_states.sto, _states_degrees.mot, _controls.sto and _forces.sto\n";
+  }
+}
+
+}  // namespace
+
+void AddForwardCommand(CLI::App& app) {
+  auto options = std::make_shared<ForwardOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("forward", "Run an OpenSim Forward tool setup file (*_Setup_Forward.xml)");
+  cmd->add_option("setup", options->setup, "The ForwardTool setup file")->required();
+  cmd->add_option("--model", options->model,
+                  "The .osim file (instead of the setup's model_file, e.g. when it is empty)");
+  cmd->add_option("--out", options->out, "Output folder (default: the setup's results_directory)");
+  cmd->add_option("--report-interval", options->report_interval,
+                  "Time between output rows (s, default 0.01)")
+      ->check(FiniteNumber(0.0, true));
+  cmd->add_flag("--strict", options->strict,
+                "Fail (exit code 2) if anything in the setup, the model or the states file is "
+                "approximated, not simulated or not used");
+  cmd->add_flag("--quiet", options->quiet,
+                "No progress bar or summary (warnings are still printed)");
+  cmd->callback([options]() { RunForward(*options); });
+}
+
+}  // namespace sinew::cli

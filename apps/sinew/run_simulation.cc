@@ -1,0 +1,171 @@
+#include "apps/sinew/run_simulation.h"
+
+#include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/pose.h>
+#include <sinew/kinematics/body_kinematics.h>
+#include <sinew/opensim/constraint_forces_table.h>
+#include <sinew/opensim/states_table.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <numbers>
+
+#include "apps/sinew/excitation_option.h"
+#include "apps/sinew/interrupt_guard.h"
+#include "apps/sinew/notices.h"
+
+namespace sinew::cli {
+namespace {
+
+void ShowProgress(double fraction, double t) {
+  const int width = 40;
+  const int filled = static_cast<int>(fraction * width);
+  std::fprintf(stderr, "\r[%s%s] %3d%%  t = %.3f s", std::string(filled, '#').c_str(),
+               std::string(width - filled, ' ').c_str(), static_cast<int>(100 * fraction), t);
+  std::fflush(stderr);
+}
+
+// A writer for `file` with `name` and `labels` in its header, or none when `file` is empty.
+void OpenTable(std::optional<io::StorageWriter>& writer, const std::string& file,
+               const std::string& name, std::vector<std::string> labels, bool in_degrees = false) {
+  if (file.empty()) return;
+  io::Storage header;
+  header.name = name;
+  header.labels = std::move(labels);
+  header.in_degrees = in_degrees;
+  writer.emplace(file, header);
+}
+
+}  // namespace
+
+BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options) {
+  WarnNotSimulated(spec, options.model_path, options.strict, options.disabled_forces);
+  BuiltModel built;
+  opensim::OpenSimParser& parser = built.parser;
+  parser.ActivateActuators(options.activate_actuators);
+  parser.SetControlsFile(options.controls);
+  parser.SetStrict(options.strict);
+  for (const std::string& file : options.external_loads) parser.AddExternalLoads(file);
+  for (const std::string& name : options.disabled_forces) parser.DisableForce(name);
+  built.system = std::make_unique<engine::System>();
+  parser.ParseSpec(*built.system, spec);
+  built.system->Finalize();
+  for (const std::string& option : options.excitations) {
+    auto [name, function] = ParseExcitationOption(option);
+    parser.SetExcitationFunction(name, std::move(function));
+  }
+  const opensim::Report& report = parser.GetReport();
+  if (!options.quiet && !report.warnings().empty()) {
+    std::cerr << "sinew: note: " << report.warnings().size()
+              << " warning(s) from reading and building the model; `sinew inspect "
+              << options.model_path << "` lists them\n";
+  }
+  return built;
+}
+
+engine::State MakeInitialState(const engine::System& system, double t,
+                               const std::string& model_path) {
+  try {
+    return engine::MakeDefaultState(system, t);
+  } catch (const Error& error) {  // e.g. constraints that cannot be assembled: name the model
+    if (!error.where().file.empty()) throw;
+    throw Error({model_path, 0}, error.component(), error.message());
+  }
+}
+
+RunTables::RunTables(const engine::System& system, const model::ModelSpec& spec,
+                     const TableFiles& files)
+    : system_(system), spec_(spec), force_reporter_(system), data_(system) {
+  OpenTable(states_, files.states, "states", opensim::StatesLabels(system));
+  // OpenSim's Forward tool also writes the states with rotational coordinates' values and
+  // speeds in degrees (SimbodyEngine::convertRadiansToDegrees); other columns are unchanged.
+  OpenTable(states_degrees_, files.states_degrees, "states_degrees", opensim::StatesLabels(system),
+            true);
+  degrees_per_unit_.assign(opensim::StatesLabels(system).size(), 1.0);
+  for (int c = 0; c < system.num_coordinates(); ++c) {
+    for (const model::CoordinateSpec& coordinate : spec.coordinates) {
+      if (coordinate.name == system.coordinates()[c].name &&
+          coordinate.motion_type == model::MotionType::kRotational) {
+        degrees_per_unit_[2 * c] = degrees_per_unit_[2 * c + 1] = 180.0 / std::numbers::pi;
+      }
+    }
+  }
+  // OpenSim BodyKinematics positions; the angles are degrees, and the header says so.
+  OpenTable(bodies_, files.bodies, "Positions", kinematics::BodyKinematicsLabels(spec), true);
+  // forces with appliesForce false are left out, as OpenSim's ForceReporter leaves them out.
+  OpenTable(forces_, files.forces, "ForceReporter", force_reporter_.labels());
+  OpenTable(controls_, files.controls, "controls", opensim::ControlsLabels(system));
+  OpenTable(constraints_, files.constraints, "ConstraintForces",
+            opensim::ConstraintForcesLabels(system));
+  X_GB_.resize(system.num_bodies());
+}
+
+void RunTables::Record(const engine::State& s) {
+  if (states_) {
+    opensim::StatesRow(system_, s, row_);
+    states_->AppendRow(s.t, row_);
+  }
+  if (states_degrees_) {
+    opensim::StatesRow(system_, s, row_);
+    for (size_t i = 0; i < row_.size(); ++i) row_[i] *= degrees_per_unit_[i];
+    states_degrees_->AppendRow(s.t, row_);
+  }
+  if (bodies_) {
+    // A fresh system holds the spec's bodies in spec order (stand-ins add none).
+    for (int b = 0; b < system_.num_bodies(); ++b) X_GB_[b] = engine::PoseOf(s.bodies[b]);
+    bodies_->AppendRow(s.t, kinematics::CalcBodyKinematicsRow(spec_, X_GB_));
+  }
+  if (forces_) {
+    force_reporter_.CalcRow(s, row_);
+    forces_->AppendRow(s.t, row_);
+  }
+  if (controls_) {
+    opensim::ControlsRow(s, row_);
+    controls_->AppendRow(s.t, row_);
+  }
+  if (constraints_) {
+    // External loads are force elements of the system, so no loads are passed besides them.
+    opensim::ConstraintForcesRow(system_, s, nullptr, data_, row_);
+    constraints_->AppendRow(s.t, row_);
+  }
+}
+
+void RunTables::Finish(const std::string& partial_reason) {
+  for (std::optional<io::StorageWriter>* table :
+       {&states_, &states_degrees_, &bodies_, &forces_, &controls_, &constraints_}) {
+    if (*table) (*table)->Finish(partial_reason);
+  }
+}
+
+long RunTables::rows() const { return states_ ? states_->rows() : 0; }
+
+void RunWithProgress(engine::Integrator& integrator, engine::State& state, double duration,
+                     double report_interval, bool quiet, RunTables& tables, const std::string& out,
+                     const std::function<void(const engine::State&)>& also_record) {
+  engine::SimulationOptions run;
+  run.duration = duration;
+  run.report_interval = report_interval;
+  const InterruptGuard interrupt;
+  run.stop = &interrupt.flag();
+  if (!quiet && isatty(fileno(stderr))) run.progress = ShowProgress;
+  const engine::SimulationResult result =
+      engine::Simulate(integrator, state, run, [&](const engine::State& s) {
+        tables.Record(s);
+        if (also_record) also_record(s);
+      });
+  if (run.progress) std::fprintf(stderr, "\n");
+  if (result.completed) {
+    tables.Finish("");
+    return;
+  }
+  const std::string partial =
+      "stopped by " + interrupt.SignalName() + " at t = " + std::to_string(state.t) + " s";
+  tables.Finish(partial);
+  std::cerr << "sinew: " << partial << ": kept the " << tables.rows() << " rows computed in " << out
+            << " (the headers of its tables say status=partial)\n";
+  throw ExitRequest{128 + interrupt.Signal()};
+}
+
+}  // namespace sinew::cli
