@@ -1,13 +1,16 @@
-// `sinew render MODEL.osim [--motion FILE | --states FILE] [--time T] [--verbose]
+// `sinew render MODEL.osim [--motion FILE | --states FILE] [--time T] [--no-paths] [--verbose]
 //  --out FILE.png`: a still picture made by the built-in software renderer (no display or GPU
 // needed).
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
 #include <sinew/viz/gltf_writer.h>
 #include <sinew/viz/motion_poses.h>
+#include <sinew/viz/path_lines.h>
 #include <sinew/viz/rasterizer.h>
 
+#include <algorithm>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,8 +37,22 @@ struct RenderArgs {
   std::string out;
   std::vector<std::string> geometry_dirs;
   bool no_floor = false;
+  bool no_paths = false;
   bool verbose = false;
 };
+
+// The bounds of the posed bodies and the lines (the lines' alone when no body has geometry).
+std::pair<Vec3, Vec3> SceneAndLineBounds(const viz::VisualScene& scene,
+                                         const std::vector<Transform>& X_GB,
+                                         const std::vector<std::vector<Vec3>>& lines) {
+  const bool has_parts = std::any_of(scene.bodies.begin(), scene.bodies.end(),
+                                     [](const viz::VisualBody& b) { return !b.parts.empty(); });
+  const bool has_lines = std::any_of(lines.begin(), lines.end(),
+                                     [](const std::vector<Vec3>& l) { return !l.empty(); });
+  if (has_parts || !has_lines) return viz::GrowBounds(viz::SceneBounds(scene, X_GB), lines);
+  const Vec3 inf = Vec3::Constant(std::numeric_limits<double>::infinity());
+  return viz::GrowBounds({inf, -inf}, lines);
+}
 
 void RunRender(const RenderArgs& args) {
   RequireExtension(args.out, ".png", "PNG");
@@ -46,28 +63,35 @@ void RunRender(const RenderArgs& args) {
   viz::VisualOptions visual;
   visual.mode = viz::ParseVisType(args.vis);
   visual.geometry_dirs = args.geometry_dirs;
-  std::vector<Transform> X_GB;
+  viz::BodyMotion frame;
   const std::string& table_file = args.motion.empty() ? args.states : args.motion;
   if (table_file.empty()) {
     if (args.has_time) throw Error("--time needs --states or --motion");
-    X_GB = viz::DefaultPoseMotion(spec).X_GB[0];
+    frame = viz::DefaultPoseMotion(spec);
   } else {
     const io::Storage table = ReadTableFor(table_file, spec);
     const double t = args.has_time || table.time.empty() ? args.time : table.time.front();
     Diagnostics notes;
-    X_GB = viz::PosesAtTime(spec, table, t, &notes);
+    frame = viz::MotionAtTime(spec, table, t, &notes);
     PrintTableNotes(notes);
   }
-  const viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
+  const std::vector<Transform>& X_GB = frame.X_GB[0];
+  viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
+  std::vector<std::vector<Vec3>> lines;
+  if (!args.no_paths) {
+    viz::PathLines paths = viz::CalcPathLines(spec, frame, &scene.warnings);
+    if (!paths.vertices.empty()) lines = std::move(paths.vertices[0]);
+  }
   PrintSceneWarnings(scene, args.verbose);
   viz::RenderOptions options;
   options.width = args.width;
   options.height = args.height;
   options.floor = !args.no_floor;
   const viz::Camera camera =
-      viz::FrameCamera(viz::SceneBounds(scene, X_GB), viz::ParseViewDirection(args.view),
+      viz::FrameCamera(SceneAndLineBounds(scene, X_GB, lines), viz::ParseViewDirection(args.view),
                        static_cast<double>(args.width) / args.height);
-  viz::WriteFileBytes(args.out, viz::EncodePng(viz::RenderScene(scene, X_GB, camera, options)));
+  viz::WriteFileBytes(args.out,
+                      viz::EncodePng(viz::RenderScene(scene, X_GB, camera, options, lines)));
   std::cout << "wrote " << args.out << " (" << args.width << "x" << args.height << ")\n";
 }
 
@@ -95,6 +119,8 @@ void AddRenderCommand(CLI::App& app) {
   cmd->add_option("--geometry-dir", args->geometry_dirs,
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
   cmd->add_flag("--no-floor", args->no_floor, "Leave out the floor and the model's shadow");
+  cmd->add_flag("--no-paths", args->no_paths,
+                "Leave out the muscle, spring and ligament paths (drawn as red lines)");
   cmd->add_flag(
       "--verbose", args->verbose,
       "List every missing mesh file, not just how many, and where each mesh was read from");

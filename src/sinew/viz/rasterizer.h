@@ -29,6 +29,8 @@ struct RenderOptions {
   Vec3 background = Vec3(0.96, 0.96, 0.96);  ///< RGB in [0, 1].
   /// A floor under the model (at its lowest point) with the model's shadow from the key light.
   bool floor = false;
+  Vec3 line_color = Vec3(0.8, 0.1, 0.1);  ///< RGB of the lines (muscle paths).
+  double line_width = 2.0;                ///< Line width (pixels).
 };
 
 /// Parses a view name: "front" (from +x), "back", "right" (from +z), "left", "top" or "iso".
@@ -55,9 +57,15 @@ size_t RenderBytes(int width, int height);
 /// RenderBytes(width, height) <= kMaxRenderBytes; the message gives both figures.
 void CheckRenderSize(int width, int height);
 
-/// Renders the scene with bodies posed at X_GB (one transform per spec body). Throws
-/// sinew::Error when CheckRenderSize refuses the size in `options`.
+/// Renders the scene with bodies posed at X_GB (one transform per spec body), and over it the
+/// polylines `lines` (points in ground, m; e.g. PathLines::vertices of one frame), depth-tested
+/// against the bodies. Throws sinew::Error when CheckRenderSize refuses the size in `options`.
 Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
-                  const Camera& camera, const RenderOptions& options);
+                  const Camera& camera, const RenderOptions& options,
+                  const std::vector<std::vector<Vec3>>& lines = {});
+
+/// `bounds` grown to hold every point of `lines`.
+std::pair<Vec3, Vec3> GrowBounds(std::pair<Vec3, Vec3> bounds,
+                                 const std::vector<std::vector<Vec3>>& lines);
 
 }  // namespace sinew::viz
