@@ -10,7 +10,7 @@ int AddIndices(BinaryBuilder& bin, const std::vector<uint32_t>& indices) {
   if (std::any_of(indices.begin(), indices.end(), [](uint32_t i) { return i > 0xFFFF; })) {
     return bin.AddIndices(indices);
   }
-  return bin.AddShortIndices(std::vector<uint16_t>(indices.begin(), indices.end()));
+  return bin.AddIndices(std::vector<uint16_t>(indices.begin(), indices.end()));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <type_traits>
 #include <vector>
 
 namespace sinew::viz::internal {
@@ -47,24 +48,17 @@ class BinaryBuilder {
     return static_cast<int>(doc_["accessors"].size() - 1);
   }
 
-  int AddIndices(const std::vector<uint32_t>& indices) {
-    const int view =
-        AddView(indices.data(), indices.size() * sizeof(uint32_t), kElementArrayBuffer);
-    doc_["accessors"].push_back({{"bufferView", view},
-                                 {"componentType", kUnsignedInt},
-                                 {"count", indices.size()},
-                                 {"type", "SCALAR"}});
-    return static_cast<int>(doc_["accessors"].size() - 1);
-  }
-
-  // Indices of fewer than 65536 vertices as unsigned shorts (half the bytes).
-  int AddShortIndices(const std::vector<uint16_t>& indices) {
-    const int view =
-        AddView(indices.data(), indices.size() * sizeof(uint16_t), kElementArrayBuffer);
-    doc_["accessors"].push_back({{"bufferView", view},
-                                 {"componentType", kUnsignedShort},
-                                 {"count", indices.size()},
-                                 {"type", "SCALAR"}});
+  // Vertex indices as unsigned ints, or as unsigned shorts (half the bytes; fewer than 65536
+  // vertices).
+  template <typename Index>
+  int AddIndices(const std::vector<Index>& indices) {
+    static_assert(std::is_same_v<Index, uint32_t> || std::is_same_v<Index, uint16_t>);
+    const int view = AddView(indices.data(), indices.size() * sizeof(Index), kElementArrayBuffer);
+    doc_["accessors"].push_back(
+        {{"bufferView", view},
+         {"componentType", std::is_same_v<Index, uint32_t> ? kUnsignedInt : kUnsignedShort},
+         {"count", indices.size()},
+         {"type", "SCALAR"}});
     return static_cast<int>(doc_["accessors"].size() - 1);
   }
 
