@@ -43,6 +43,7 @@
 #include "apps/sinew/notices.h"
 #include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
+#include "apps/sinew/simulated_coordinates.h"
 #include "apps/sinew/tables.h"
 
 namespace sinew::cli {
@@ -186,6 +187,9 @@ void RunSimulate(const SimulateOptions& options) {
   std::vector<Transform> X_GB(system->num_bodies());
   std::vector<double> row;
   viz::BodyMotion motion;
+  // The coordinates too, so that the export draws the muscle paths.
+  std::optional<SimulatedCoordinates> coordinates;
+  if (!options.export_file.empty()) coordinates.emplace(spec, *system, state);
   auto record = [&](const engine::State& s) {
     opensim::StatesRow(*system, s, row);
     states.AppendRow(s.t, row);
@@ -201,6 +205,7 @@ void RunSimulate(const SimulateOptions& options) {
     if (!options.export_file.empty()) {
       motion.times.push_back(s.t);
       motion.X_GB.push_back(X_GB);
+      motion.q.push_back(coordinates->Read(s));
     }
   };
 
