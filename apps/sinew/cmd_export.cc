@@ -43,13 +43,16 @@ void RunExport(const ExportArgs& args) {
   options.max_fps = args.fps;
   options.paths = !args.no_paths;
   viz::BodyMotion motion;
+  io::Storage table;
   const std::string& table_file = args.motion.empty() ? args.states : args.motion;
   if (table_file.empty()) {
     motion = viz::DefaultPoseMotion(spec);
   } else {
     Diagnostics notes;
-    motion = viz::MotionFromTable(spec, ReadTableFor(table_file, spec), &notes);
+    table = ReadTableFor(table_file, spec);
+    motion = viz::MotionFromTable(spec, table, &notes);
     PrintTableNotes(notes);
+    options.activations = &table;  // a states file's activations shade the muscles
   }
   PrintSceneWarnings(viz::ExportAnimation(spec, motion, args.out, options), args.verbose);
   std::cout << "wrote " << args.out << " (" << spec.bodies.size() << " bodies, "

@@ -9,6 +9,7 @@
 #include <sinew/viz/rasterizer.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -64,12 +65,13 @@ void RunRender(const RenderArgs& args) {
   visual.mode = viz::ParseVisType(args.vis);
   visual.geometry_dirs = args.geometry_dirs;
   viz::BodyMotion frame;
+  io::Storage table;
   const std::string& table_file = args.motion.empty() ? args.states : args.motion;
   if (table_file.empty()) {
     if (args.has_time) throw Error("--time needs --states or --motion");
     frame = viz::DefaultPoseMotion(spec);
   } else {
-    const io::Storage table = ReadTableFor(table_file, spec);
+    table = ReadTableFor(table_file, spec);
     const double t = args.has_time || table.time.empty() ? args.time : table.time.front();
     Diagnostics notes;
     frame = viz::MotionAtTime(spec, table, t, &notes);
@@ -78,9 +80,18 @@ void RunRender(const RenderArgs& args) {
   const std::vector<Transform>& X_GB = frame.X_GB[0];
   viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
   std::vector<std::vector<Vec3>> lines;
+  std::vector<Vec3> line_colors;
   if (!args.no_paths) {
     viz::PathLines paths = viz::CalcPathLines(spec, frame, &scene.warnings);
-    if (!paths.vertices.empty()) lines = std::move(paths.vertices[0]);
+    // A states file's activations shade the muscles.
+    if (!paths.vertices.empty()) {
+      viz::ShadeByActivation(table, frame.times, paths);
+      for (size_t i = 0; i < paths.names.size(); ++i) {
+        line_colors.push_back(viz::PathColor(
+            paths, paths.activation.empty() ? std::nan("") : paths.activation[0][i]));
+      }
+      lines = std::move(paths.vertices[0]);
+    }
   }
   PrintSceneWarnings(scene, args.verbose);
   viz::RenderOptions options;
@@ -90,8 +101,8 @@ void RunRender(const RenderArgs& args) {
   const viz::Camera camera =
       viz::FrameCamera(SceneAndLineBounds(scene, X_GB, lines), viz::ParseViewDirection(args.view),
                        static_cast<double>(args.width) / args.height);
-  viz::WriteFileBytes(args.out,
-                      viz::EncodePng(viz::RenderScene(scene, X_GB, camera, options, lines)));
+  viz::WriteFileBytes(
+      args.out, viz::EncodePng(viz::RenderScene(scene, X_GB, camera, options, lines, line_colors)));
   std::cout << "wrote " << args.out << " (" << args.width << "x" << args.height << ")\n";
 }
 

@@ -1,5 +1,6 @@
-// `sinew simulate --export` draws the muscle paths too: the lines of a frame are the paths that
-// paths::GeometryPath::CalcState gives at the coordinates simulate wrote to states.sto.
+// Muscle paths through the commands: `sinew simulate --export` draws them at the coordinates
+// simulate wrote to states.sto (checked with paths::GeometryPath::CalcState), and `sinew
+// render --states` shades them by the file's activations.
 #include <gtest/gtest.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
@@ -7,6 +8,7 @@
 #include <sinew/viz/image.h>
 #include <sinew/viz/motion_poses.h>
 
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -65,6 +67,47 @@ TEST_F(SimulateExportPathsTest, LinesAreThePathsAtTheSimulatedCoordinates) {
     }
     EXPECT_EQ(positions.size(), 3 * v);
   }
+}
+
+// Pixels whose colour is mostly red / mostly blue.
+std::pair<int, int> RedAndBluePixels(const viz::Image& image) {
+  int red = 0, blue = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const uint8_t* p = image.At(x, y);
+      if (p[0] > 120 && p[0] > p[1] + 60 && p[0] > p[2] + 60) ++red;
+      if (p[2] > 120 && p[2] > p[0] + 60 && p[2] > p[1] + 60) ++blue;
+    }
+  }
+  return {red, blue};
+}
+
+TEST_F(SimulateExportPathsTest, RenderShadesMusclesByTheStatesActivations) {
+  // Every arm26 muscle at activation 0 (blue) or 1 (red), in OpenSim 4 labels.
+  auto render = [&](const std::string& activation) {
+    const std::vector<std::string> muscles = {"TRIlong", "TRIlat",   "TRImed",
+                                              "BIClong", "BICshort", "BRA"};
+    std::string header =
+        "states\nversion=1\nnRows=1\nnColumns=" + std::to_string(muscles.size() + 2) +
+        "\ninDegrees=no\nendheader\ntime\t/jointset/r_elbow/r_elbow_flex/value";
+    std::string row = "0\t1.2";
+    for (const std::string& m : muscles) {
+      header += "\t/forceset/" + m + "/activation";
+      row += "\t" + activation;
+    }
+    std::ofstream(Path("states.sto")) << header << "\n" << row << "\n";
+    const testing::CliRun run =
+        Run("render " + kArm26 + " --vis none --states " + Path("states.sto") +
+            " --width 120 --height 160 --out " + Path("shaded.png"));
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return RedAndBluePixels(viz::DecodePng(viz::ReadFileBytes(Path("shaded.png")), "shaded.png"));
+  };
+  const auto [red_inactive, blue_inactive] = render("0");
+  EXPECT_EQ(red_inactive, 0);
+  EXPECT_GT(blue_inactive, 200);
+  const auto [red_active, blue_active] = render("1");
+  EXPECT_GT(red_active, 200);
+  EXPECT_EQ(blue_active, 0);
 }
 
 }  // namespace

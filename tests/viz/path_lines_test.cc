@@ -12,6 +12,8 @@
 #include <sinew/viz/motion_poses.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -187,6 +189,79 @@ TEST(PathLinesTest, StaticPoseHasOneFrameOfLinesAndNoPathsLeavesThemOut) {
   const testing::ParsedGlb without = Export(spec, DefaultPoseMotion(spec), false, "n.glb");
   EXPECT_EQ(NodeNamed(without.doc, "paths"), -1);
   EXPECT_EQ(NodeNamed(without.doc, "paths@0"), -1);
+}
+
+}  // namespace
+}  // namespace sinew::viz
+
+namespace sinew::viz {
+namespace {
+
+// The colour PathColor should give: blue (0.15, 0.2, 0.75) at activation 0, muscle red
+// (0.8, 0.1, 0.1) at 1, linear between.
+Vec3 Shade(double a) { return (1 - a) * Vec3(0.15, 0.2, 0.75) + a * Vec3(0.8, 0.1, 0.1); }
+
+TEST(PathLinesTest, ActivationsShadeTheLinesPerVertex) {
+  const model::ModelSpec spec = io::ReadOsim(kArm26);
+  // Coordinates and activations in one states table: BIClong in OpenSim 4's label, TRIlong in
+  // the older one; the other muscles have none and stay red.
+  io::Storage table;
+  table.labels = {"/jointset/r_elbow/r_elbow_flex/value", "/forceset/BIClong/activation",
+                  "TRIlong.activation"};
+  table.time = {0.0, 1.0, 2.0};
+  table.values = {0.2, 0.0, 1.0,  //
+                  1.0, 0.5, 0.4,  //
+                  1.5, 1.0, 0.0};
+  const BodyMotion motion = MotionFromTable(spec, table, nullptr);
+  PathLines lines = CalcPathLines(spec, motion, nullptr);
+  // Frames at the rows' times, and one between rows: interpolated.
+  EXPECT_EQ(ShadeByActivation(table, {0.0, 1.0, 2.0}, lines), 2);
+  ASSERT_EQ(lines.activation.size(), 3u);
+  const auto index = [&](const std::string& name) {
+    return std::find(lines.names.begin(), lines.names.end(), name) - lines.names.begin();
+  };
+  const size_t bic = index("/forceset/BIClong"), tri = index("/forceset/TRIlong");
+  const size_t bra = index("/forceset/BRA");
+  ASSERT_LT(bra, lines.names.size());
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_DOUBLE_EQ(lines.activation[k][bic], table.Value(k, 1));
+    EXPECT_DOUBLE_EQ(lines.activation[k][tri], table.Value(k, 2));
+    EXPECT_TRUE(std::isnan(lines.activation[k][bra]));
+  }
+  PathLines between = lines;
+  ShadeByActivation(table, {0.5, 1.75, 2.0}, between);
+  EXPECT_DOUBLE_EQ(between.activation[0][bic], 0.25);
+  EXPECT_DOUBLE_EQ(between.activation[1][tri], 0.1);
+  // In the .glb: every vertex of a path has its colour at that frame (COLOR_0, white material).
+  VisualOptions none;
+  none.mode = VisType::kNone;
+  const testing::ParsedGlb glb =
+      testing::ParseGlb(WriteGlb(BuildVisualScene(spec, none), motion, "shaded", &lines));
+  const int paths_node = NodeNamed(glb.doc, "paths");
+  ASSERT_GE(paths_node, 0);
+  for (int k = 0; k < 3; ++k) {
+    const int node = glb.doc["nodes"][paths_node]["children"][k].get<int>();
+    const auto& mesh = glb.doc["meshes"][glb.doc["nodes"][node]["mesh"].get<int>()];
+    const auto& primitive = mesh["primitives"][0];
+    const auto& material = glb.doc["materials"][primitive["material"].get<int>()];
+    EXPECT_EQ(material["pbrMetallicRoughness"]["baseColorFactor"],
+              nlohmann::json({1.0, 1.0, 1.0, 1.0}));
+    const std::vector<float> colors =
+        testing::ReadFloatAccessor(glb, primitive["attributes"]["COLOR_0"].get<int>());
+    const auto counts = mesh["extras"]["vertex_counts"].get<std::vector<size_t>>();
+    size_t v = 0;
+    for (size_t i = 0; i < counts.size(); ++i) {
+      const Vec3 expected = i == bic   ? Shade(table.Value(k, 1))
+                            : i == tri ? Shade(table.Value(k, 2))
+                                       : Vec3(0.8, 0.1, 0.1);
+      for (size_t j = 0; j < counts[i]; ++j, ++v) {
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(colors[3 * v + c], expected[c], 1e-6) << lines.names[i] << " frame " << k;
+        }
+      }
+    }
+    EXPECT_EQ(colors.size(), 3 * v);
+  }
 }
 
 }  // namespace

@@ -58,6 +58,9 @@ VisualScene ExportAnimation(const model::ModelSpec& spec, const BodyMotion& moti
   const BodyMotion kept = ThinMotion(motion, options.max_fps);
   PathLines lines;
   if (options.paths) lines = CalcPathLines(spec, kept, &scene.warnings);
+  if (options.activations && !lines.names.empty()) {
+    ShadeByActivation(*options.activations, kept.times, lines);
+  }
   std::vector<uint8_t> glb = WriteGlb(scene, kept, title, &lines);
   if (html) {
     const std::string page = MakeViewerHtml(glb, title);

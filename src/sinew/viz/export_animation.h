@@ -3,6 +3,7 @@
 #pragma once
 
 #include <sinew/common/error.h>
+#include <sinew/io/storage.h>
 #include <sinew/model/model_spec.h>
 #include <sinew/viz/body_motion.h>
 #include <sinew/viz/visual_scene.h>
@@ -20,6 +21,9 @@ struct ExportOptions {
   double max_fps = 0;
   /// Draw the model's paths (muscles, springs, ligaments) when the motion has coordinates.
   bool paths = true;
+  /// A table (the states the motion came from) whose activation columns shade the paths
+  /// (ShadeByActivation); null or without such columns: every path muscle red.
+  const io::Storage* activations = nullptr;
 };
 
 /// The two export formats, told by the file name's extension.

@@ -17,29 +17,37 @@ int AddIndices(BinaryBuilder& bin, const std::vector<uint32_t>& indices) {
 
 int AddPathNodes(json& doc, BinaryBuilder& bin, const PathLines& lines,
                  std::vector<int>& frame_nodes) {
-  doc["materials"].push_back(
-      {{"name", "paths"},
-       {"pbrMetallicRoughness",
-        {{"baseColorFactor", {lines.color.x(), lines.color.y(), lines.color.z(), 1.0}},
-         {"metallicFactor", 0.0},
-         {"roughnessFactor", 1.0}}}});
+  // Shaded by activation: the colours are per vertex (COLOR_0), the material white.
+  const bool shaded = !lines.activation.empty();
+  const Vec3 base = shaded ? Vec3::Ones() : lines.color;
+  doc["materials"].push_back({{"name", "paths"},
+                              {"pbrMetallicRoughness",
+                               {{"baseColorFactor", {base.x(), base.y(), base.z(), 1.0}},
+                                {"metallicFactor", 0.0},
+                                {"roughnessFactor", 1.0}}}});
   const size_t material = doc["materials"].size() - 1;
   json children = json::array();
   frame_nodes.clear();
-  std::vector<float> positions;
+  std::vector<float> positions, colors;
   std::vector<uint32_t> indices;
   for (size_t k = 0; k < lines.vertices.size(); ++k) {
     positions.clear();
+    colors.clear();
     indices.clear();
     std::vector<uint32_t> counts;
     counts.reserve(lines.vertices[k].size());
     for (size_t i = 0; i < lines.vertices[k].size(); ++i) {
       const std::vector<Vec3>& line = lines.vertices[k][i];
       const uint32_t first = static_cast<uint32_t>(positions.size() / 3);
+      const Vec3 color = shaded ? PathColor(lines, lines.activation[k][i]) : lines.color;
       for (size_t j = 0; j < line.size(); ++j) {
         const Vec3& p = line[j];
         positions.insert(positions.end(), {static_cast<float>(p.x()), static_cast<float>(p.y()),
                                            static_cast<float>(p.z())});
+        if (shaded) {
+          colors.insert(colors.end(), {static_cast<float>(color.x()), static_cast<float>(color.y()),
+                                       static_cast<float>(color.z())});
+        }
         // LINES: one index pair per segment of the polyline.
         if (j > 0)
           indices.insert(indices.end(),
@@ -55,6 +63,9 @@ int AddPathNodes(json& doc, BinaryBuilder& bin, const PathLines& lines,
           {"indices", AddIndices(bin, indices)},
           {"material", material},
           {"mode", 1}};
+      if (shaded) {
+        primitive["attributes"]["COLOR_0"] = bin.AddFloats(colors, "VEC3", 3, kArrayBuffer, false);
+      }
       doc["meshes"].push_back({{"name", node["name"]},
                                {"primitives", json::array({primitive})},
                                {"extras", {{"vertex_counts", counts}}}});

@@ -246,7 +246,8 @@ std::pair<Vec3, Vec3> GrowBounds(std::pair<Vec3, Vec3> bounds,
 
 Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
                   const Camera& camera, const RenderOptions& options,
-                  const std::vector<std::vector<Vec3>>& lines) {
+                  const std::vector<std::vector<Vec3>>& lines,
+                  const std::vector<Vec3>& line_colors) {
   CheckRenderSize(options.width, options.height);
   Canvas canvas(camera, options.width * kSupersample, options.height * kSupersample,
                 options.background);
@@ -297,10 +298,11 @@ Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
       canvas.DrawTriangle(p, n, parts[i]->color, parts[i]->opacity, true, key);
     }
   }
-  for (const std::vector<Vec3>& line : lines) {
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const std::vector<Vec3>& line = lines[i];
+    const Vec3& color = i < line_colors.size() ? line_colors[i] : options.line_color;
     for (size_t j = 1; j < line.size(); ++j) {
-      canvas.DrawSegment(line[j - 1], line[j], options.line_color,
-                         options.line_width * kSupersample);
+      canvas.DrawSegment(line[j - 1], line[j], color, options.line_width * kSupersample);
     }
   }
   return canvas.Resolve(options.width, options.height, kSupersample);

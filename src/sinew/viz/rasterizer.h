@@ -59,10 +59,12 @@ void CheckRenderSize(int width, int height);
 
 /// Renders the scene with bodies posed at X_GB (one transform per spec body), and over it the
 /// polylines `lines` (points in ground, m; e.g. PathLines::vertices of one frame), depth-tested
-/// against the bodies. Throws sinew::Error when CheckRenderSize refuses the size in `options`.
+/// against the bodies, line i in line_colors[i] when given, else in options.line_color. Throws
+/// sinew::Error when CheckRenderSize refuses the size in `options`.
 Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
                   const Camera& camera, const RenderOptions& options,
-                  const std::vector<std::vector<Vec3>>& lines = {});
+                  const std::vector<std::vector<Vec3>>& lines = {},
+                  const std::vector<Vec3>& line_colors = {});
 
 /// `bounds` grown to hold every point of `lines`.
 std::pair<Vec3, Vec3> GrowBounds(std::pair<Vec3, Vec3> bounds,
