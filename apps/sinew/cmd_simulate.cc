@@ -29,6 +29,7 @@
 #include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/run_simulation.h"
+#include "apps/sinew/simulated_coordinates.h"
 
 namespace sinew::cli {
 namespace {
@@ -95,12 +96,16 @@ void RunSimulate(const SimulateOptions& options) {
   RunTables tables(system, spec, files);
   viz::BodyMotion motion;
   std::function<void(const engine::State&)> record_motion;
+  // The coordinates too, so that the export draws the muscle paths.
+  std::optional<SimulatedCoordinates> coordinates;
   if (!options.export_file.empty()) {
+    coordinates.emplace(spec, system, state);
     record_motion = [&](const engine::State& s) {
       motion.times.push_back(s.t);
       motion.X_GB.emplace_back();
       for (const engine::BodyState& body : s.bodies)
         motion.X_GB.back().push_back(engine::PoseOf(body));
+      motion.q.push_back(coordinates->Read(s));
     };
   }
   RunWithProgress(*integrator, state, options.duration, options.report_interval, options.quiet,

@@ -57,6 +57,20 @@ class CliTest : public ::testing::Test {
   /// `name` inside the test's folder, as a string for command lines.
   std::string Path(const std::string& name) const { return (dir_ / name).string(); }
 
+  /// A copy of `model` in the test's folder in which every WrapEllipsoid is a WrapTorus (a wrap
+  /// type Sinew does not wrap over), for tests of what is said about unsupported wrap objects.
+  std::string CopyWithTorusWraps(const std::string& model) const {
+    std::string text = ReadText(model);
+    const std::string from = "WrapEllipsoid", to = "WrapTorus";
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at)) {
+      text.replace(at, from.size(), to);
+      at += to.size();
+    }
+    const std::string copy = Path("with_tori.osim");
+    std::ofstream(copy) << text;
+    return copy;
+  }
+
   /// Runs `sinew ARGS` with no mesh folders from the environment ($SINEW_GEOMETRY_PATH unset),
   /// capturing stdout and stderr in the test's folder.
   CliRun Run(const std::string& args) const {

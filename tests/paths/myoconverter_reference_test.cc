@@ -1,7 +1,7 @@
 // Moment arms and musculotendon lengths against OpenSim's, as stored with MyoConverter's
 // validation data: each muscle swept about one coordinate (others at default), and lengths at
-// several poses. Paths that wrap are excluded until wrapping surfaces are connected; the test
-// reports how far they are off.
+// several poses. Paths with a wrap object of a type Sinew does not wrap over are excluded; the
+// test reports how far they are off.
 #include <gtest/gtest.h>
 #include <sinew/paths/path_analysis.h>
 
@@ -40,8 +40,22 @@ std::vector<std::vector<std::string>> ReadCsv(const std::string& file) {
   return rows;
 }
 
-// True when path p has a wrap object (it cannot match OpenSim until wrapping is connected).
-bool Wraps(const PathModel& m, int p) { return !m.paths.paths()[p].wraps().empty(); }
+// True when path p has a wrap object of a type Sinew does not wrap over (it goes straight past
+// it, so it cannot match OpenSim).
+bool Wraps(const PathModel& m, int p) {
+  for (const PathWrap& wrap : m.paths.paths()[p].wraps()) {
+    if (!wrap.surface) return true;
+  }
+  return false;
+}
+
+// True when path p has two or more wrap objects. OpenSim's lengths of such paths are
+// reproduced (its cached tangent-point locations included, docs/paths.md), its moment arms not
+// yet: arm26's TRIlong is off by up to 8e-3 m where a tangent point is stale, and by 1e-6 to
+// 4e-6 m at elbow flexions where only the elbow cylinder wraps (refined, as with several wrap
+// objects) while the lengths there agree to 5e-8 m: OpenSim's refined tangent points differ
+// from Sinew's along the cylinder by a few 1e-5 m, for a reason not found yet. Reported apart.
+bool SeveralWraps(const PathModel& m, int p) { return m.paths.paths()[p].wraps().size() >= 2; }
 
 // The sweeps' values are printed with 5 digits, so a sweep's first or last value can lie just
 // outside its coordinate's range (leg6dof9musc's knee: -2.0944 < -2.0943951). Every coordinate
@@ -96,8 +110,9 @@ Agreement CompareMomentArms(const PathModel& m, const std::string& csv) {
     PathAnalysis analysis(m.spec, m.tree, m.couplers, m.paths, {c});
     analysis.Calc(q, u);
     const double error = std::abs(analysis.moment_arm(0, p) - std::stod(row[3]));
-    out.Add(Wraps(m, p), outside, error);
-    if (!Wraps(m, p) && !outside) {
+    const bool apart = Wraps(m, p) || SeveralWraps(m, p);
+    out.Add(apart, outside, error);
+    if (!apart && !outside) {
       EXPECT_LT(error, 1e-6) << row[0] << " about " << row[1] << " = " << row[2];
     }
   }
@@ -151,7 +166,8 @@ void CompareModel(const std::string& root, const std::string& model, const std::
   for (const auto& [what, a] : {std::pair{"moment arms", arms}, std::pair{"lengths", lengths}}) {
     std::cout << model << " " << what << ": " << a.compared << " compared, worst " << a.worst
               << " m; " << a.outside << " just outside a range (off by up to " << a.worst_outside
-              << " m); " << a.excluded << " of paths with wrap objects, excluded (off by up to "
+              << " m); " << a.excluded
+              << " of paths with unsupported or (moment arms) several wrap objects, apart (off by up to "
               << a.worst_excluded << " m)\n";
   }
 }
@@ -164,8 +180,8 @@ TEST(MyoConverterReferenceTest, TugOfWarMatchesOpenSim) {
   CompareModel(testing::kDataDir, "TugOfWar", "tugofwar.osim", 0);
 }
 
-TEST(MyoConverterReferenceTest, Arm26MatchesOpenSimWhereNoWrapObject) {
-  CompareModel(testing::kDataDir, "Arm26", "arm26.osim", 175);
+TEST(MyoConverterReferenceTest, Arm26MatchesOpenSimWhereItsWrapsAreSupported) {
+  CompareModel(testing::kDataDir, "Arm26", "arm26.osim", 50);
 }
 
 TEST(MyoConverterReferenceTest, Gait10dof18muscMatchesOpenSim) {

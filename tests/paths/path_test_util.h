@@ -43,6 +43,40 @@ struct PathModel {
     return state;
   }
   double CalcLength(int p, std::span<const double> q) const { return CalcState(p, q).length; }
+
+  /// Length of path p at q through the points of `at` (its state at another pose): the same
+  /// points, each wrap's tangent points kept fixed on the wrap's body, the same arc lengths.
+  /// Its derivative at the pose of `at` is what the analytic moment arms and lengthening speeds
+  /// are (wrap_surface.h); it equals the derivative of the length wrapped afresh where the
+  /// wrapped path is the shortest over the surface (the envelope argument).
+  double CalcLengthThrough(int p, std::span<const double> q, const PathState& at) const {
+    std::vector<Transform> X_GB(static_cast<size_t>(tree.num_bodies()));
+    kinematics::CalcBodyPoses(tree, q, X_GB);
+    const GeometryPath& path = paths.paths()[static_cast<size_t>(p)];
+    double length = 0.0;
+    Vec3 p_G_previous = Vec3::Zero();
+    for (size_t i = 0; i < at.points.size(); ++i) {
+      const PathPointState& s = at.points[i];
+      const Vec3 p_BP = s.point >= 0
+                            ? path.points()[static_cast<size_t>(s.point)].CalcLocationInBody(q)
+                            : s.p_BP;
+      const Vec3 p_G = X_GB[static_cast<size_t>(s.body)] * p_BP;
+      if (i > 0) {
+        const double arc = at.points[i - 1].arc_length_to_next;
+        length += arc >= 0.0 ? arc : (p_G - p_G_previous).norm();
+      }
+      p_G_previous = p_G;
+    }
+    return length;
+  }
+
+  /// Whether path p is wrapped over a surface in `state` (it has tangent points).
+  static bool IsWrapped(const PathState& state) {
+    for (const PathPointState& s : state.points) {
+      if (s.wrap >= 0) return true;
+    }
+    return false;
+  }
 };
 
 }  // namespace sinew::paths::testing

@@ -23,8 +23,9 @@ using testing::PathLength;
 // behaviour depends on the absolute size (docs/wrapping.md). Test points are given in radii.
 constexpr double kRadius = 0.02;
 constexpr double kLongCylinder = 100.0;  // long enough that the length rule never drops a wrap
-const WrapOptions kSingle;
-const WrapOptions kMultiple{WrapOptions::Method::kHybrid, false};
+// Arc points asked for, so the drawn arc is checked too.
+const WrapOptions kSingle{WrapOptions::Method::kHybrid, true, true};
+const WrapOptions kMultiple{WrapOptions::Method::kHybrid, false, true};
 
 Vec3 Radial(const Vec3& p) { return {p.x(), p.y(), 0.0}; }
 // A point given in radii.

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sinew/common/error.h>
 #include <sinew/paths/wrap_cylinder.h>
+#include <sinew/paths/wrap_ellipsoid.h>
 #include <sinew/paths/wrap_sphere.h>
 #include <sinew/paths/wrap_surface_factory.h>
 
@@ -46,7 +47,12 @@ TEST(WrapSurfaceFactoryTest, BuildsSpheresAndCylindersWithTheirDimensions) {
   ASSERT_NE(as_cylinder, nullptr);
   EXPECT_EQ(as_cylinder->radius(), 0.016);
   EXPECT_EQ(as_cylinder->length(), 0.05);
-  EXPECT_EQ(SupportedWrapSurfaceTypes(), (std::vector<std::string>{"WrapCylinder", "WrapSphere"}));
+  const auto ellipsoid =
+      MakeWrapSurface(Spec("WrapEllipsoid", {{"dimensions", {0.035, 0.02, 0.02}}}, "z"));
+  ASSERT_NE(dynamic_cast<const WrapEllipsoid*>(ellipsoid.get()), nullptr);
+  EXPECT_EQ(dynamic_cast<const WrapEllipsoid&>(*ellipsoid).radii(), Vec3(0.035, 0.02, 0.02));
+  EXPECT_EQ(SupportedWrapSurfaceTypes(),
+            (std::vector<std::string>{"WrapCylinder", "WrapEllipsoid", "WrapSphere"}));
 }
 
 TEST(WrapSurfaceFactoryTest, MissingDimensionsTakeOpenSimsDefaults) {
@@ -55,6 +61,8 @@ TEST(WrapSurfaceFactoryTest, MissingDimensionsTakeOpenSimsDefaults) {
   const auto cylinder = MakeWrapSurface(Spec("WrapCylinder", {}));
   EXPECT_EQ(dynamic_cast<const WrapCylinder&>(*cylinder).radius(), 1.0);
   EXPECT_EQ(dynamic_cast<const WrapCylinder&>(*cylinder).length(), 1.0);
+  const auto ellipsoid = MakeWrapSurface(Spec("WrapEllipsoid", {}));
+  EXPECT_EQ(dynamic_cast<const WrapEllipsoid&>(*ellipsoid).radii(), Vec3(0.05, 0.05, 0.05));
 }
 
 TEST(WrapSurfaceFactoryTest, BadInputIsAnErrorNamingTheObject) {
@@ -68,6 +76,8 @@ TEST(WrapSurfaceFactoryTest, BadInputIsAnErrorNamingTheObject) {
              "length must be positive");
   fails_with(Spec("WrapCylinder", {{"radius", {0.01, 0.02}}}), "radius must be one number");
   fails_with(Spec("WrapCylinder", {{"radius", {0.01}}}, "+w"), "unknown quadrant '+w'");
+  fails_with(Spec("WrapEllipsoid", {{"dimensions", {0.01, 0.02}}}), "must be three numbers");
+  fails_with(Spec("WrapEllipsoid", {{"dimensions", {0.01, 0.0, 0.02}}}), "must be positive");
   fails_with(Spec("WrapCylinderObst", {}), "WrapCylinderObst is not a wrap surface");
 }
 

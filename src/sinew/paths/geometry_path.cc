@@ -1,8 +1,11 @@
 #include <sinew/common/error.h>
 #include <sinew/paths/geometry_path.h>
+#include <sinew/paths/wrap_surface_factory.h>
 
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace sinew::paths {
 namespace {
@@ -61,6 +64,9 @@ GeometryPath::GeometryPath(const model::ModelSpec& spec, const model::ForceSpec&
                       " " + std::to_string(w.range[1]) + " but the path has " +
                       std::to_string(num_points) + " points");
     }
+    // Every shape Sinew wraps over is connected here, so every user of the path gets it; the
+    // others stay unconnected and PathSet::ListOmissions names them.
+    if (IsWrapSurfaceSupported(object->type)) wrap.surface = MakeWrapSurface(*object);
     wraps_.push_back(std::move(wrap));
   }
 }
@@ -70,8 +76,10 @@ void GeometryPath::ConnectWrapSurface(int wrap, std::shared_ptr<const WrapSurfac
 }
 
 void GeometryPath::CalcState(std::span<const double> q, std::span<const Transform> X_GB,
-                             PathState& state) const {
+                             PathState& state, bool with_arc_points) const {
   state.points.clear();
+  state.arc_G.resize(with_arc_points ? wraps_.size() : 0);
+  for (std::vector<Vec3>& arc : state.arc_G) arc.clear();
   for (size_t i = 0; i < points_.size(); ++i) {
     const PathPoint& point = points_[i];
     if (!point.IsActive(q)) continue;
@@ -91,9 +99,7 @@ void GeometryPath::CalcState(std::span<const double> q, std::span<const Transfor
                 "only " + std::to_string(state.points.size()) +
                     " of the path's points are active at this pose; a path needs two");
   }
-  for (size_t w = 0; w < wraps_.size(); ++w) {
-    if (wraps_[w].surface && wraps_[w].active) ApplyWrap(static_cast<int>(w), q, X_GB, state);
-  }
+  ApplyWraps(q, X_GB, state, with_arc_points);
   CalcSegments(state);
 }
 
@@ -119,13 +125,20 @@ void GeometryPath::CalcSegments(PathState& state) {
   }
 }
 
-// OpenSim's GeometryPath::applyWrapObjects for one wrap object: among the straight segments
-// between the first and last active points of the wrap's range, the one whose wrapping adds
-// the least length is replaced by P-T1, the arc, T2-S. (OpenSim iterates over several wrap
-// objects up to 8 times until the length settles; this is one pass, in the listed order.)
-void GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const Transform> X_GB,
-                             PathState& state) const {
+// OpenSim's GeometryPath::applyWrapObjects for one wrap object in one pass: its tangent points
+// from a previous pass are removed; then, among the segments between the first and last active
+// points of its range (tangent points of other objects included, the arcs over them excluded),
+// the first that it must wrap (a mandatory wrap) or else the one whose wrapping adds the least
+// length is replaced by P-T1, the arc, T2-S. Returns false when the range has no active point
+// (OpenSim then abandons wrapping for the whole path).
+bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const Transform> X_GB,
+                             PathState& state, WrapOutcome& outcome, TangentPointReads& reads,
+                             bool with_arc_points) const {
+  RemoveTangentPoints(w, state);
+  if (with_arc_points) state.arc_G[static_cast<size_t>(w)].clear();
+  outcome = WrapOutcome::kNoWrap;
   const PathWrap& wrap = wraps_[static_cast<size_t>(w)];
+  if (!wrap.active || !wrap.surface) return true;
   int first = -1, last = -1;
   for (int p = wrap.first_point; p <= wrap.last_point && first < 0; ++p) {
     if (points_[static_cast<size_t>(p)].IsActive(q)) first = p;
@@ -138,28 +151,44 @@ void GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
     if (state.points[k].point == first) start = static_cast<int>(k);
     if (state.points[k].point == last) end = static_cast<int>(k);
   }
-  if (start < 0 || end < 0) return;
+  if (start < 0 || end < 0) return false;
   const Transform X_GW = X_GB[wrap.body] * wrap.X_BW;
   const Transform X_WG = X_GW.Inverse();
+  WrapOptions options = wrap.options;
+  options.single_wrap = wraps_.size() == 1;
+  options.with_arc_points = with_arc_points;
   double best_change = std::numeric_limits<double>::infinity();
   int best_segment = -1;
   WrapResult best;
   for (int k = start; k < end; ++k) {
     const PathPointState& a = state.points[static_cast<size_t>(k)];
     const PathPointState& b = state.points[static_cast<size_t>(k) + 1];
-    if (a.arc_length_to_next >= 0.0) continue;  // already over another surface
-    const Vec3 p_WP = X_WG * a.p_GP, p_WS = X_WG * b.p_GP;
-    WrapResult result = wrap.surface->Wrap(p_WP, p_WS, wrap.options);
+    if (a.arc_length_to_next >= 0.0) continue;  // the arc over another surface
+    // The surface sees the points where they are now.
+    const Vec3 p_WP = X_WG * reads.CurrentLocation(a), p_WS = X_WG * reads.CurrentLocation(b);
+    WrapResult result = wrap.surface->Wrap(p_WP, p_WS, options);
+    // As OpenSim, the outcome reported is the last segment's (or the mandatory one's).
+    outcome = result.wrapped        ? WrapOutcome::kWrapped
+              : result.point_inside ? WrapOutcome::kPointInside
+                                    : WrapOutcome::kNoWrap;
     if (!result.wrapped) continue;
-    const double change = (result.p_WT1 - p_WP).norm() + result.arc_length +
-                          (p_WS - result.p_WT2).norm() - (p_WS - p_WP).norm();
+    if (result.mandatory) {
+      best_segment = k;
+      best = std::move(result);
+      break;
+    }
+    // OpenSim measures the change with the ground locations it has read (and now reads).
+    reads.Read(state.points[static_cast<size_t>(k)]);
+    reads.Read(state.points[static_cast<size_t>(k) + 1]);
+    const double change = (X_GW * result.p_WT1 - a.p_GP).norm() + result.arc_length +
+                          (b.p_GP - X_GW * result.p_WT2).norm() - (b.p_GP - a.p_GP).norm();
     if (change < best_change) {
       best_change = change;
       best_segment = k;
       best = std::move(result);
     }
   }
-  if (best_segment < 0) return;
+  if (best_segment < 0) return true;
   PathPointState t1, t2;
   t1.wrap = t2.wrap = w;
   t1.body = t2.body = wrap.body;
@@ -168,8 +197,101 @@ void GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
   t1.p_GP = X_GW * best.p_WT1;
   t2.p_GP = X_GW * best.p_WT2;
   t1.arc_length_to_next = best.arc_length;
+  reads.Place(t1);
+  reads.Place(t2);
+  if (with_arc_points) {
+    std::vector<Vec3>& arc = state.arc_G[static_cast<size_t>(w)];
+    for (const Vec3& p_WA : best.arc_points) arc.push_back(X_GW * p_WA);
+  }
   const auto at = state.points.begin() + best_segment + 1;
   state.points.insert(state.points.insert(at, t1) + 1, t2);
+  return true;
+}
+
+GeometryPath::TangentPointReads::TangentPointReads(int num_wraps)
+    : read(static_cast<size_t>(num_wraps)),
+      p_BP_read(static_cast<size_t>(num_wraps)),
+      p_GP_read(static_cast<size_t>(num_wraps)),
+      p_GP_current(static_cast<size_t>(num_wraps)) {}
+
+void GeometryPath::TangentPointReads::Read(PathPointState& point) {
+  if (point.wrap < 0) return;
+  const size_t w = static_cast<size_t>(point.wrap);
+  const size_t which = point.arc_length_to_next >= 0.0 ? 0 : 1;
+  if (!read[w][which]) {
+    read[w][which] = true;
+    p_BP_read[w][which] = point.p_BP;
+    p_GP_read[w][which] = point.p_GP;
+  }
+  point.p_BP = p_BP_read[w][which];
+  point.p_GP = p_GP_read[w][which];
+}
+
+void GeometryPath::TangentPointReads::Place(PathPointState& point) {
+  const size_t w = static_cast<size_t>(point.wrap);
+  const size_t which = point.arc_length_to_next >= 0.0 ? 0 : 1;
+  p_GP_current[w][which] = point.p_GP;
+  if (read[w][which]) {
+    point.p_BP = p_BP_read[w][which];
+    point.p_GP = p_GP_read[w][which];
+  }
+}
+
+Vec3 GeometryPath::TangentPointReads::CurrentLocation(const PathPointState& point) const {
+  if (point.wrap < 0) return point.p_GP;
+  const size_t which = point.arc_length_to_next >= 0.0 ? 0 : 1;
+  return p_GP_current[static_cast<size_t>(point.wrap)][which];
+}
+
+void GeometryPath::RemoveTangentPoints(int w, PathState& state) {
+  for (size_t k = 0; k + 1 < state.points.size(); ++k) {
+    if (state.points[k].wrap == w) {
+      state.points.erase(state.points.begin() + static_cast<std::ptrdiff_t>(k),
+                         state.points.begin() + static_cast<std::ptrdiff_t>(k) + 2);
+      return;
+    }
+  }
+}
+
+// OpenSim's GeometryPath::applyWrapObjects: the wrap objects in the listed order, once for a
+// path with one of them; with several, the passes repeat (at most 8) until the length changes
+// by less than 0.5 mm, each object rewrapping the path the others left. After the first pass,
+// when the first object does not wrap and the second has a point inside it, the two swap.
+void GeometryPath::ApplyWraps(std::span<const double> q, std::span<const Transform> X_GB,
+                              PathState& state, bool with_arc_points) const {
+  state.stale_tangent_points = 0;
+  const int num_wraps = static_cast<int>(wraps_.size());
+  if (num_wraps == 0) return;
+  std::vector<int> order(static_cast<size_t>(num_wraps));
+  for (int i = 0; i < num_wraps; ++i) order[static_cast<size_t>(i)] = i;
+  std::vector<WrapOutcome> outcomes(static_cast<size_t>(num_wraps), WrapOutcome::kNoWrap);
+  TangentPointReads reads(num_wraps);
+  const int max_passes = num_wraps < 2 ? 1 : kMaxWrapPasses;
+  double last_length = std::numeric_limits<double>::infinity();
+  for (int pass = 0; pass < max_passes; ++pass) {
+    for (int i = 0; i < num_wraps; ++i) {
+      if (!ApplyWrap(order[static_cast<size_t>(i)], q, X_GB, state,
+                     outcomes[static_cast<size_t>(i)], reads, with_arc_points)) {
+        return;
+      }
+    }
+    for (PathPointState& point : state.points) reads.Read(point);
+    CalcSegments(state);
+    state.stale_tangent_points = 0;
+    for (const PathPointState& point : state.points) {
+      if (point.wrap >= 0 && reads.CurrentLocation(point) != point.p_GP) {
+        ++state.stale_tangent_points;
+      }
+    }
+    if (std::abs(state.length - last_length) < kWrapPassTolerance) break;
+    last_length = state.length;
+    if (pass == 0 && num_wraps > 1 && outcomes[0] == WrapOutcome::kNoWrap &&
+        outcomes[1] == WrapOutcome::kPointInside) {
+      std::swap(order[0], order[1]);
+      RemoveTangentPoints(0, state);
+      if (with_arc_points) state.arc_G[0].clear();
+    }
+  }
 }
 
 }  // namespace sinew::paths

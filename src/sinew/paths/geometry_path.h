@@ -55,14 +55,30 @@ struct PathState {
   /// Per segment: its length (m); the arc length for a segment over a wrap surface.
   std::vector<double> segment_length;
   double length = 0.0;  ///< Sum of segment lengths (m).
+  /// Filled only when CalcState is asked for arc points: per wrap (index into
+  /// GeometryPath::wraps()), the points along its arc over the surface from T1 to T2 inclusive,
+  /// in ground (m), for drawing; empty for a wrap that does not wrap at this pose.
+  std::vector<std::vector<Vec3>> arc_G;
+  /// Tangent points that stand where an earlier wrapping pass put them, not where the last
+  /// pass did: OpenSim's length keeps a point's first location in ground (docs/paths.md), and
+  /// Sinew reproduces it. Zero for a path with one wrap object.
+  int stale_tangent_points = 0;
 };
+
+/// With several wrap objects, OpenSim repeats its wrapping passes at most this many times...
+inline constexpr int kMaxWrapPasses = 8;
+/// ... until the path length changes by less than this between passes (m).
+inline constexpr double kWrapPassTolerance = 0.0005;
 
 /// A GeometryPath. Immutable once built, apart from connecting wrap surfaces before use.
 class GeometryPath {
  public:
-  /// Compiles the path of `owner` (a force with a geometry_path). Throws sinew::Error (file,
-  /// line, component) for a path with fewer than two points or a PathWrap whose range names
-  /// points the path does not have.
+  /// Compiles the path of `owner` (a force with a geometry_path) and connects the wrap surface
+  /// of every PathWrap whose wrap object is of a type MakeWrapSurface builds (the others stay
+  /// unconnected: the path goes straight past them, and PathSet::ListOmissions names them).
+  /// Throws sinew::Error (file, line, component) for a path with fewer than two points, a
+  /// PathWrap whose range names points the path does not have, or a supported wrap object with
+  /// bad dimensions.
   GeometryPath(const model::ModelSpec& spec, const model::ForceSpec& owner);
 
   /// The owner's name (the muscle, spring or ligament), used as the label in tables.
@@ -73,18 +89,43 @@ class GeometryPath {
   const std::vector<PathPoint>& points() const { return points_; }
   const std::vector<PathWrap>& wraps() const { return wraps_; }
 
-  /// Connects the surface that implements wrap `wrap` (index into wraps()).
+  /// Connects (or, with nullptr, disconnects) the surface that implements wrap `wrap` (index
+  /// into wraps()), replacing the one the constructor connected.
   void ConnectWrapSurface(int wrap, std::shared_ptr<const WrapSurface> surface);
 
   /// The path at coordinates q (ModelSpec::coordinates order) with body poses X_GB (from
-  /// kinematics::CalcBodyPoses at the same q). Reuses `state`'s buffers. Throws sinew::Error
-  /// naming the path when fewer than two of its points are active.
-  void CalcState(std::span<const double> q, std::span<const Transform> X_GB,
-                 PathState& state) const;
+  /// kinematics::CalcBodyPoses at the same q), wrapped over its connected surfaces as OpenSim's
+  /// GeometryPath::applyWrapObjects does (docs/paths.md). Reuses `state`'s buffers. Throws
+  /// sinew::Error naming the path when fewer than two of its points are active. With
+  /// `with_arc_points`, also fills PathState::arc_G (sampling arcs costs more than wrapping).
+  void CalcState(std::span<const double> q, std::span<const Transform> X_GB, PathState& state,
+                 bool with_arc_points = false) const;
 
  private:
-  void ApplyWrap(int wrap, std::span<const double> q, std::span<const Transform> X_GB,
-                 PathState& state) const;
+  // What wrapping one object over its range gave (OpenSim's WrapAction, for its reordering).
+  enum class WrapOutcome { kNoWrap, kPointInside, kWrapped };
+  // OpenSim caches a point's location in ground the first time it is read in an evaluation;
+  // moving a tangent point in a later pass does not refresh that cache, so the path's
+  // straight segments (its length) keep the location first read, while the surfaces wrap the
+  // point where it is now (docs/paths.md). Per wrap, for T1 and T2: whether read, the location
+  // read (in the body and in ground), and where the point is now.
+  struct TangentPointReads {
+    explicit TangentPointReads(int num_wraps);
+    // Reads `point`: the first read of a tangent point keeps its location, later reads give it.
+    void Read(PathPointState& point);
+    // A tangent point just placed: remembers where it is, and takes the location read, if any.
+    void Place(PathPointState& point);
+    // Where a path point is now (for the surfaces), in ground.
+    Vec3 CurrentLocation(const PathPointState& point) const;
+    std::vector<std::array<bool, 2>> read;
+    std::vector<std::array<Vec3, 2>> p_BP_read, p_GP_read, p_GP_current;
+  };
+  void ApplyWraps(std::span<const double> q, std::span<const Transform> X_GB, PathState& state,
+                  bool with_arc_points) const;
+  bool ApplyWrap(int wrap, std::span<const double> q, std::span<const Transform> X_GB,
+                 PathState& state, WrapOutcome& outcome, TangentPointReads& reads,
+                 bool with_arc_points) const;
+  static void RemoveTangentPoints(int wrap, PathState& state);
   static void CalcSegments(PathState& state);
 
   std::string name_, component_;

@@ -16,6 +16,7 @@ PathAnalysis::PathAnalysis(const model::ModelSpec& spec, const kinematics::Kinem
       V_GB_(static_cast<size_t>(tree.num_bodies())),
       dL_du_(static_cast<size_t>(tree.num_coordinates())),
       couplings_(coordinates_.size()),
+      coupled_(coordinates_.size()),
       lengths_(paths.paths().size()),
       speeds_(paths.paths().size()),
       moment_arms_(coordinates_.size() * paths.paths().size()) {}
@@ -28,6 +29,11 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
     CalcSpeedColumns(tree_, q, X_GB_, columns_);
     for (size_t k = 0; k < coordinates_.size(); ++k) {
       couplings_[k] = CalcCouplingVector(spec_, couplers_, q, coordinates_[k]);
+      // Only the coordinates that move along (one, or a few with couplers) enter the sums.
+      coupled_[k].clear();
+      for (size_t c = 0; c < couplings_[k].size(); ++c) {
+        if (couplings_[k][c] != 0.0) coupled_[k].emplace_back(c, couplings_[k][c]);
+      }
     }
   }
   const size_t num_paths = paths_.paths().size();
@@ -39,9 +45,7 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
     CalcLengthGradient(state_, X_GB_, columns_, loads_, dL_du_);
     for (size_t k = 0; k < coordinates_.size(); ++k) {
       double r = 0.0;
-      for (size_t c = 0; c < dL_du_.size(); ++c) {
-        if (couplings_[k][c] != 0.0) r -= couplings_[k][c] * dL_du_[c];
-      }
+      for (const auto& [c, coupling] : coupled_[k]) r -= coupling * dL_du_[c];
       moment_arms_[k * num_paths + p] = r;
     }
   }

@@ -10,6 +10,7 @@
 #include <sinew/paths/speed_columns.h>
 
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace sinew::paths {
@@ -49,6 +50,8 @@ class PathAnalysis {
   PathLoads loads_;
   std::vector<double> dL_du_;
   std::vector<std::vector<double>> couplings_;
+  // Per moment-arm coordinate: the nonzero entries of its coupling vector (index, value).
+  std::vector<std::vector<std::pair<size_t, double>>> coupled_;
   std::vector<double> lengths_, speeds_, moment_arms_;
 };
 

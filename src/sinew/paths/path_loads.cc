@@ -1,6 +1,7 @@
 #include <sinew/paths/path_loads.h>
 
 #include <algorithm>
+#include <vector>
 
 namespace sinew::paths {
 namespace {
@@ -38,12 +39,32 @@ void CalcPathLoads(const PathState& state, std::span<const Transform> X_GB, doub
 
 void AddGeneralizedForces(const PathLoads& loads, std::span<const Transform> X_GB,
                           const SpeedColumns& columns, std::span<double> Q) {
+  // The point forces gathered into one wrench per body (moment about the body origin, in G):
+  // f . (v + w x r) = f . v + w . (r x f), so each coordinate costs a product per body, not
+  // per point.
+  struct BodyWrench {
+    int body;
+    Vec3 moment_G, force_G;
+  };
+  std::vector<BodyWrench> wrenches;
+  wrenches.reserve(loads.point_forces.size());
+  for (const PointForce& f : loads.point_forces) {
+    if (f.body == model::kGroundIndex) continue;
+    const Vec3 moment_G = (X_GB[f.body].R * f.p_BP).cross(f.f_G);
+    auto same = std::find_if(wrenches.begin(), wrenches.end(),
+                             [&](const BodyWrench& w) { return w.body == f.body; });
+    if (same == wrenches.end()) {
+      wrenches.push_back({f.body, moment_G, f.f_G});
+    } else {
+      same->moment_G += moment_G;
+      same->force_G += f.f_G;
+    }
+  }
   for (int k = 0; k < columns.num_coordinates; ++k) {
     const std::span<const SpatialVec> V_GB = columns.Column(k);
     double sum = 0.0;
-    for (const PointForce& f : loads.point_forces) {
-      if (f.body == model::kGroundIndex) continue;
-      sum += f.f_G.dot(StationVelocity(X_GB[f.body], V_GB[f.body], f.p_BP));
+    for (const BodyWrench& w : wrenches) {
+      sum += w.moment_G.dot(V_GB[w.body].head<3>()) + w.force_G.dot(V_GB[w.body].tail<3>());
     }
     Q[k] += sum;
   }

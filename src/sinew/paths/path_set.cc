@@ -31,7 +31,8 @@ Diagnostics PathSet::ListOmissions(const model::ModelSpec& spec) const {
       if (wrap.surface || !wrap.active) continue;
       out.push_back({path.where(), path.component(),
                      "wrap object '" + wrap.wrap_object + "' (" + wrap.type +
-                         ") is not applied yet: the path is computed straight past it"});
+                         ") is not applied yet (Sinew does not wrap over this type): the path "
+                         "is computed straight past it"});
     }
   }
   return out;

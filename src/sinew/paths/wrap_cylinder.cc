@@ -115,8 +115,10 @@ struct Helix {
   double turn;
   double rise;
   double Length(double radius) const { return std::hypot(radius * turn, rise); }
+  // T1 turned by s turn about z and raised by s rise.
   Vec3 PointAt(const Vec3& p_WT1, double s) const {
-    return Eigen::AngleAxisd(s * turn, Vec3::UnitZ()) * p_WT1 + s * rise * Vec3::UnitZ();
+    const double c = std::cos(s * turn), n = std::sin(s * turn);
+    return {c * p_WT1.x() - n * p_WT1.y(), n * p_WT1.x() + c * p_WT1.y(), p_WT1.z() + s * rise};
   }
 };
 
@@ -157,7 +159,10 @@ WrapCylinder::WrapCylinder(double radius, double length, WrapQuadrant quadrant)
 WrapResult WrapCylinder::Wrap(const Vec3& p_WP, const Vec3& p_WS,
                               const WrapOptions& options) const {
   WrapResult result;
-  if (Radial(p_WP).norm() < radius_ || Radial(p_WS).norm() < radius_) return result;
+  if (Radial(p_WP).norm() < radius_ || Radial(p_WS).norm() < radius_) {
+    result.point_inside = true;
+    return result;
+  }
 
   // Whether the segment crosses the (infinite) cylinder: its closest approach to the axis lies
   // between P and S and within the radius.
@@ -212,6 +217,7 @@ WrapResult WrapCylinder::Wrap(const Vec3& p_WP, const Vec3& p_WS,
   result.p_WT1 = pair.t1;
   result.p_WT2 = pair.t2;
   result.arc_length = helix.Length(radius_);
+  if (!options.with_arc_points) return result;
   const int segments = std::clamp(
       static_cast<int>(std::ceil(result.arc_length / kHelixSampleSpacing)), 1, kMaxArcSegments);
   result.arc_points.reserve(segments + 1);

@@ -92,10 +92,13 @@ WrapSphere::WrapSphere(double radius, WrapQuadrant quadrant)
   }
 }
 
-WrapResult WrapSphere::Wrap(const Vec3& p_WP, const Vec3& p_WS, const WrapOptions&) const {
+WrapResult WrapSphere::Wrap(const Vec3& p_WP, const Vec3& p_WS, const WrapOptions& options) const {
   WrapResult result;
   // A point inside the sphere, or a segment that does not enter it: the path stays straight.
-  if (p_WP.norm() < radius_ || p_WS.norm() < radius_) return result;
+  if (p_WP.norm() < radius_ || p_WS.norm() < radius_) {
+    result.point_inside = true;
+    return result;
+  }
   if (!SegmentCrossesSphere(p_WP, p_WS, radius_)) return result;
 
   const Vec3 n = WrapPlaneNormal(p_WP, p_WS, quadrant_);
@@ -132,7 +135,7 @@ WrapResult WrapSphere::Wrap(const Vec3& p_WP, const Vec3& p_WS, const WrapOption
   result.p_WT1 = pair.t1;
   result.p_WT2 = pair.t2;
   result.arc_length = radius_ * std::abs(angle);
-  result.arc_points = SampleArc(pair.t1, n, angle, result.arc_length);
+  if (options.with_arc_points) result.arc_points = SampleArc(pair.t1, n, angle, result.arc_length);
   return result;
 }
 

@@ -30,6 +30,9 @@ struct WrapOptions {
   /// objects, so the same segment gives slightly different lengths in the two cases; the path
   /// must say which applies to reproduce OpenSim's lengths.
   bool single_wrap = true;
+  /// Whether to fill WrapResult::arc_points (for drawing). Off by default: sampling the arc
+  /// costs more than the wrap itself, and lengths and derivatives do not need it.
+  bool with_arc_points = false;
 };
 
 /// What wrapping the segment from P to S over a surface gives, all in the surface frame W.
@@ -43,10 +46,15 @@ struct WrapResult {
   /// quadrant that pulls the path around) competes with the range's other wrapped segments, and
   /// the path keeps the one that lengthens the path least. Needed only to choose the segment.
   bool mandatory = false;
+  /// P or S lies inside the surface (OpenSim's "insideRadius"): no wrap. The path code needs it
+  /// for OpenSim's one reordering rule (a path with several wrap objects tries the second one
+  /// first when the first does not wrap and the second has a point inside it).
+  bool point_inside = false;
   Vec3 p_WT1 = Vec3::Zero();  ///< first tangent point (where the path leaves the line from P)
   Vec3 p_WT2 = Vec3::Zero();  ///< second tangent point (where it leaves the surface toward S)
   double arc_length = 0.0;    ///< length of the path on the surface, from T1 to T2 (m)
-  /// Points along the path on the surface, from T1 to T2 inclusive, for drawing (may be empty).
+  /// Points along the path on the surface, from T1 to T2 inclusive, for drawing; filled only
+  /// when WrapOptions::with_arc_points is set.
   std::vector<Vec3> arc_points;
 };
 

@@ -1,5 +1,6 @@
 #include <sinew/common/error.h>
 #include <sinew/paths/wrap_cylinder.h>
+#include <sinew/paths/wrap_ellipsoid.h>
 #include <sinew/paths/wrap_quadrant.h>
 #include <sinew/paths/wrap_sphere.h>
 #include <sinew/paths/wrap_surface_factory.h>
@@ -33,6 +34,21 @@ double PositiveLength(const model::WrapObjectSpec& spec, const std::string& key,
   return value;
 }
 
+// Three positive, finite lengths (m) named `key`, or `default_value` when the file has none.
+Vec3 PositiveLengths(const model::WrapObjectSpec& spec, const std::string& key,
+                     const Vec3& default_value) {
+  const auto found = spec.dimensions.find(key);
+  if (found == spec.dimensions.end()) return default_value;
+  if (found->second.size() != 3) Fail(spec, key + " must be three numbers");
+  const Vec3 value(found->second[0], found->second[1], found->second[2]);
+  if (!(value.minCoeff() > 0.0) || !value.allFinite()) {
+    std::ostringstream text;
+    text << key << " must be positive and finite (got " << value.transpose() << ")";
+    Fail(spec, text.str());
+  }
+  return value;
+}
+
 // The object's quadrant; an unknown one is reported with the object's file and line.
 WrapQuadrant Quadrant(const model::WrapObjectSpec& spec) {
   try {
@@ -53,6 +69,11 @@ const std::map<std::string, Builder>& Registry() {
          return std::make_unique<WrapCylinder>(PositiveLength(spec, "radius", 1.0),
                                                PositiveLength(spec, "length", 1.0), Quadrant(spec));
        }},
+      {"WrapEllipsoid",
+       [](const model::WrapObjectSpec& spec) -> std::unique_ptr<WrapSurface> {
+         return std::make_unique<WrapEllipsoid>(
+             PositiveLengths(spec, "dimensions", Vec3(0.05, 0.05, 0.05)), Quadrant(spec));
+       }},
   };
   return registry;
 }
@@ -64,6 +85,8 @@ std::unique_ptr<WrapSurface> MakeWrapSurface(const model::WrapObjectSpec& spec) 
   if (builder == Registry().end()) Fail(spec, "is not a wrap surface Sinew supports");
   return builder->second(spec);
 }
+
+bool IsWrapSurfaceSupported(const std::string& type) { return Registry().contains(type); }
 
 std::vector<std::string> SupportedWrapSurfaceTypes() {
   std::vector<std::string> types;

@@ -17,6 +17,9 @@ namespace sinew::paths {
 /// unknown quadrant. `spec.active` is not looked at: the path skips inactive objects.
 std::unique_ptr<WrapSurface> MakeWrapSurface(const model::WrapObjectSpec& spec);
 
+/// Whether MakeWrapSurface builds objects of OpenSim type `type` (e.g. "WrapCylinder").
+bool IsWrapSurfaceSupported(const std::string& type);
+
 /// The OpenSim wrap object types MakeWrapSurface builds, sorted.
 std::vector<std::string> SupportedWrapSurfaceTypes();
 
