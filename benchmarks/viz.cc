@@ -7,6 +7,7 @@
 #include <sinew/viz/gltf_writer.h>
 #include <sinew/viz/html_viewer.h>
 #include <sinew/viz/motion_poses.h>
+#include <sinew/viz/path_lines.h>
 #include <sinew/viz/rasterizer.h>
 
 namespace sinew::viz {
@@ -76,6 +77,55 @@ void BM_RenderScene(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(RenderScene(scene, X_GB, camera, options));
 }
 BENCHMARK(BM_RenderScene)->Unit(benchmark::kMillisecond);
+
+// Every one of the 80 paths at every motion row, wrapped, with the points along the arcs.
+void BM_CalcPathLines(benchmark::State& state) {
+  const model::ModelSpec spec = io::ReadOsim(kModel);
+  const BodyMotion motion = MotionFromTable(spec, io::ReadStorage(kMotion), nullptr);
+  size_t vertices = 0;
+  for (auto _ : state) {
+    const PathLines lines = CalcPathLines(spec, motion, nullptr);
+    vertices = 0;
+    for (const auto& frame : lines.vertices) {
+      for (const auto& line : frame) vertices += line.size();
+    }
+    benchmark::DoNotOptimize(lines);
+  }
+  state.counters["vertices"] = static_cast<double>(vertices);
+}
+BENCHMARK(BM_CalcPathLines)->Unit(benchmark::kMillisecond);
+
+// The .glb of BM_WriteGlb with the paths: one line mesh per frame.
+void BM_WriteGlbWithPaths(benchmark::State& state) {
+  const model::ModelSpec spec = io::ReadOsim(kModel);
+  const VisualScene scene = MeshScene(spec);
+  const BodyMotion motion = MotionFromTable(spec, io::ReadStorage(kMotion), nullptr);
+  const PathLines lines = CalcPathLines(spec, motion, nullptr);
+  size_t bytes = 0;
+  for (auto _ : state) {
+    std::vector<uint8_t> glb = WriteGlb(scene, motion, spec.name, &lines);
+    bytes = glb.size();
+    benchmark::DoNotOptimize(glb);
+  }
+  state.counters["MB"] = bytes / 1e6;
+}
+BENCHMARK(BM_WriteGlbWithPaths)->Unit(benchmark::kMillisecond);
+
+// The HTML page around that .glb.
+void BM_MakeViewerHtmlWithPaths(benchmark::State& state) {
+  const model::ModelSpec spec = io::ReadOsim(kModel);
+  const BodyMotion motion = MotionFromTable(spec, io::ReadStorage(kMotion), nullptr);
+  const PathLines lines = CalcPathLines(spec, motion, nullptr);
+  const std::vector<uint8_t> glb = WriteGlb(MeshScene(spec), motion, spec.name, &lines);
+  size_t bytes = 0;
+  for (auto _ : state) {
+    const std::string page = MakeViewerHtml(glb, spec.name);
+    bytes = page.size();
+    benchmark::DoNotOptimize(page);
+  }
+  state.counters["MB"] = bytes / 1e6;
+}
+BENCHMARK(BM_MakeViewerHtmlWithPaths)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace sinew::viz

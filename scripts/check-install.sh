@@ -31,3 +31,17 @@ cmake --build "$build/install-check/consumer" >/dev/null
 "$build/install-check/consumer/consumer" \
   "$root/tests/data/projectchrono/chrono/data/opensim/double_pendulum.osim" >/dev/null
 echo "install check: find_package(sinew) consumer built and ran"
+
+# The Python module, when built: installed into site-packages under the prefix, importable from
+# there alone, and it simulates.
+site=$(sed -n 's/^SINEW_PYTHON_INSTALL_DIR:STRING=//p' "$build/CMakeCache.txt")
+python=$(sed -n 's/^Python3_EXECUTABLE:FILEPATH=//p' "$build/CMakeCache.txt")
+if grep -q '^SINEW_BUILD_PYTHON:BOOL=ON' "$build/CMakeCache.txt"; then
+  (cd "$build/install-check" && PYTHONPATH="$prefix/$site" "$python" -c "
+import sinew, sys
+assert sinew.__file__.startswith('$prefix'), sinew.__file__
+model = sinew.load(sys.argv[1])
+assert len(model.simulate(0.1).time) == 11
+" "$root/tests/data/projectchrono/chrono/data/opensim/double_pendulum.osim")
+  echo "install check: the Python module imports from $prefix/$site and simulates"
+fi

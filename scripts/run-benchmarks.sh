@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Runs every Google Benchmark program (bench_*) of a build. Usage:
+# Runs every Google Benchmark program (bench_*) of a build, and benchmarks/python_step.py when
+# the Python module was built. Usage:
 #   scripts/run-benchmarks.sh BUILD_DIR [--quick] [extra benchmark flags...]
 # With --quick each benchmark runs once with minimal time (--benchmark_min_time=0.001,
 # --benchmark_repetitions=1; benchmarks with their own MinTime keep it), which proves in a few
@@ -16,7 +17,9 @@ fi
 build=$(cd "$1" && pwd)
 shift
 flags=()
+quick=()
 if [ "${1:-}" = "--quick" ]; then
+  quick=(--quick)
   flags+=(--benchmark_min_time=0.001 --benchmark_repetitions=1)
   shift
 fi
@@ -52,6 +55,13 @@ for source in "${sources[@]}"; do
     failed+=("$name")
   fi
 done
+# The Python module's benchmarks (benchmarks/python_step.py), when the module was built.
+python=$(sed -n 's/^Python3_EXECUTABLE:FILEPATH=//p' "$build/CMakeCache.txt")
+if grep -q '^SINEW_BUILD_PYTHON:BOOL=ON' "$build/CMakeCache.txt"; then
+  echo "== python_step.py"
+  PYTHONPATH="$build/python" "$python" "$root/benchmarks/python_step.py" "${quick[@]}" ||
+    failed+=(python_step.py)
+fi
 if [ ${#failed[@]} -gt 0 ]; then
   echo "run-benchmarks: FAILED: ${failed[*]}" >&2
   exit 1

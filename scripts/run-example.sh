@@ -3,7 +3,8 @@
 #   1. inspect Rajagopal2016 (what the file says and what the parser builds),
 #   2. simulate OpenSim's 3-D double pendulum from its initial states, with a browser viewer,
 #   3. export Rajagopal2016 playing the Hamner running motion as a browser viewer,
-#   4. render a still picture of it.
+#   4. render a still picture of it,
+#   5. the same double pendulum from Python (examples/python/simulate_and_plot.py).
 # Everything is written to out/ (open out/*.html in a browser; they work offline).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -34,5 +35,10 @@ echo "== 3. sinew export Rajagopal2016 running (Hamner IK motion)"
 echo "== 4. sinew render a frame of it"
 "$sinew" render "$rajagopal" --motion "$running" --time 0.4 --vis mesh \
   --geometry-dir "$geometry" --out "$out/rajagopal_running.png"
+
+echo "== 5. Python: sinew.load(...).simulate(...), compared with OpenSim's states, plotted"
+python=$(sed -n 's/^Python3_EXECUTABLE:FILEPATH=//p' "$root/build/release/CMakeCache.txt")
+PYTHONPATH="$root/build/release/python" MPLBACKEND=Agg "${python:-python3}" \
+  "$root/examples/python/simulate_and_plot.py" "$out/python"
 
 echo "Done. Open $out/rajagopal_running.html or $out/double_pendulum.html in a browser."

@@ -1,5 +1,6 @@
-// `sinew export MODEL.osim [--motion FILE | --states FILE] --vis primitives|mesh [--verbose]
-//  --out FILE.glb|FILE.html`: the model (and its motion) for a glTF viewer or a browser.
+// `sinew export MODEL.osim [--motion FILE | --states FILE] --vis primitives|mesh [--no-paths]
+//  [--verbose] --out FILE.glb|FILE.html`: the model (and its motion) for a glTF viewer or a
+//  browser.
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
 #include <sinew/viz/export_animation.h>
@@ -27,6 +28,7 @@ struct ExportArgs {
   std::string out;
   std::vector<std::string> geometry_dirs;
   double fps = 0;
+  bool no_paths = false;
   bool verbose = false;
 };
 
@@ -39,14 +41,18 @@ void RunExport(const ExportArgs& args) {
   options.visual.mode = viz::ParseVisType(args.vis);
   options.visual.geometry_dirs = args.geometry_dirs;
   options.max_fps = args.fps;
+  options.paths = !args.no_paths;
   viz::BodyMotion motion;
+  io::Storage table;
   const std::string& table_file = args.motion.empty() ? args.states : args.motion;
   if (table_file.empty()) {
     motion = viz::DefaultPoseMotion(spec);
   } else {
     Diagnostics notes;
-    motion = viz::MotionFromTable(spec, ReadTableFor(table_file, spec), &notes);
+    table = ReadTableFor(table_file, spec);
+    motion = viz::MotionFromTable(spec, table, &notes);
     PrintTableNotes(notes);
+    options.activations = &table;  // a states file's activations shade the muscles
   }
   PrintSceneWarnings(viz::ExportAnimation(spec, motion, args.out, options), args.verbose);
   std::cout << "wrote " << args.out << " (" << spec.bodies.size() << " bodies, "
@@ -70,6 +76,8 @@ void AddExportCommand(CLI::App& app) {
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
   cmd->add_option("--fps", args->fps, "Keep at most this many frames per second (default: all)")
       ->check(FiniteNumber(0.0));
+  cmd->add_flag("--no-paths", args->no_paths,
+                "Leave out the muscle, spring and ligament paths (drawn as red lines)");
   cmd->add_flag(
       "--verbose", args->verbose,
       "List every missing mesh file, not just how many, and where each mesh was read from");

@@ -1,12 +1,15 @@
-// `sinew render MODEL.osim [--motion FILE | --states FILE] [--time T] [--verbose]
+// `sinew render MODEL.osim [--motion FILE | --states FILE] [--time T] [--no-paths] [--verbose]
 //  --out FILE.png`: a still picture made by the built-in software renderer (no display or GPU
 // needed).
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
 #include <sinew/viz/gltf_writer.h>
 #include <sinew/viz/motion_poses.h>
+#include <sinew/viz/path_lines.h>
 #include <sinew/viz/rasterizer.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -34,6 +37,7 @@ struct RenderArgs {
   std::string out;
   std::vector<std::string> geometry_dirs;
   bool no_floor = false;
+  bool no_paths = false;
   bool verbose = false;
 };
 
@@ -46,28 +50,43 @@ void RunRender(const RenderArgs& args) {
   viz::VisualOptions visual;
   visual.mode = viz::ParseVisType(args.vis);
   visual.geometry_dirs = args.geometry_dirs;
-  std::vector<Transform> X_GB;
+  viz::BodyMotion frame;
+  io::Storage table;
   const std::string& table_file = args.motion.empty() ? args.states : args.motion;
   if (table_file.empty()) {
     if (args.has_time) throw Error("--time needs --states or --motion");
-    X_GB = viz::DefaultPoseMotion(spec).X_GB[0];
+    frame = viz::DefaultPoseMotion(spec);
   } else {
-    const io::Storage table = ReadTableFor(table_file, spec);
+    table = ReadTableFor(table_file, spec);
     const double t = args.has_time || table.time.empty() ? args.time : table.time.front();
     Diagnostics notes;
-    X_GB = viz::PosesAtTime(spec, table, t, &notes);
+    frame = viz::MotionAtTime(spec, table, t, &notes);
     PrintTableNotes(notes);
   }
-  const viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
+  const std::vector<Transform>& X_GB = frame.X_GB[0];
+  viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
+  std::vector<std::vector<Vec3>> lines;
+  std::vector<Vec3> line_colors;
+  if (!args.no_paths) {
+    viz::PathLines paths = viz::CalcPathLines(spec, frame, &scene.warnings);
+    // A states file's activations shade the muscles.
+    if (!paths.vertices.empty()) {
+      viz::ShadeByActivation(table, frame.times, paths);
+      for (size_t i = 0; i < paths.names.size(); ++i) {
+        line_colors.push_back(viz::PathColor(
+            paths, paths.activation.empty() ? std::nan("") : paths.activation[0][i]));
+      }
+      lines = std::move(paths.vertices[0]);
+    }
+  }
   PrintSceneWarnings(scene, args.verbose);
   viz::RenderOptions options;
   options.width = args.width;
   options.height = args.height;
   options.floor = !args.no_floor;
-  const viz::Camera camera =
-      viz::FrameCamera(viz::SceneBounds(scene, X_GB), viz::ParseViewDirection(args.view),
-                       static_cast<double>(args.width) / args.height);
-  viz::WriteFileBytes(args.out, viz::EncodePng(viz::RenderScene(scene, X_GB, camera, options)));
+  options.view_direction = viz::ParseViewDirection(args.view);
+  viz::WriteFileBytes(args.out,
+                      viz::EncodePng(viz::RenderFramed(scene, X_GB, options, lines, line_colors)));
   std::cout << "wrote " << args.out << " (" << args.width << "x" << args.height << ")\n";
 }
 
@@ -95,6 +114,8 @@ void AddRenderCommand(CLI::App& app) {
   cmd->add_option("--geometry-dir", args->geometry_dirs,
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
   cmd->add_flag("--no-floor", args->no_floor, "Leave out the floor and the model's shadow");
+  cmd->add_flag("--no-paths", args->no_paths,
+                "Leave out the muscle, spring and ligament paths (drawn as red lines)");
   cmd->add_flag(
       "--verbose", args->verbose,
       "List every missing mesh file, not just how many, and where each mesh was read from");

@@ -8,8 +8,9 @@
 // builds (skeleton, forces, constraints, external loads, actuators and their excitations).
 // Writes DIR/states.sto (every coordinate's value and speed, OpenSim 4 labels, radians and
 // metres), DIR/bodies.sto (OpenSim BodyKinematics positions), DIR/forces.sto (every force's
-// columns, OpenSim's ForceReporter layout) and, when asked, DIR/constraints.sto (the forces of
-// the model's constraints, OpenSim's record labels), all streamed as rows are computed. SIGINT
+// columns, OpenSim's ForceReporter layout), DIR/contacts.sto when the model has contact forces
+// (each one's force and torque per body and its active contacts) and, when asked,
+// DIR/constraints.sto (the forces of the model's constraints, OpenSim's record labels), all streamed as rows are computed. SIGINT
 // or SIGTERM stops the run cleanly: the rows so far are kept, in files whose header says
 // status=partial, and the exit code is 128 + the signal.
 #include <sinew/engine/integrator.h>
@@ -30,6 +31,7 @@
 #include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/run_simulation.h"
+#include "apps/sinew/simulated_coordinates.h"
 
 namespace sinew::cli {
 namespace {
@@ -97,15 +99,20 @@ void RunSimulate(const SimulateOptions& options) {
   files.bodies = options.out + "/bodies.sto";
   files.forces = options.out + "/forces.sto";
   if (options.report_constraint_forces) files.constraints = options.out + "/constraints.sto";
+  files.contacts = options.out + "/contacts.sto";
   RunTables tables(system, spec, files);
   viz::BodyMotion motion;
   std::function<void(const engine::State&)> record_motion;
+  // The coordinates too, so that the export draws the muscle paths.
+  std::optional<SimulatedCoordinates> coordinates;
   if (!options.export_file.empty()) {
+    coordinates.emplace(spec, system, state);
     record_motion = [&](const engine::State& s) {
       motion.times.push_back(s.t);
       motion.X_GB.emplace_back();
       for (const engine::BodyState& body : s.bodies)
         motion.X_GB.back().push_back(engine::PoseOf(body));
+      motion.q.push_back(coordinates->Read(s));
     };
   }
   RunWithProgress(*integrator, state, options.duration, options.report_interval, options.quiet,
@@ -122,6 +129,7 @@ void RunSimulate(const SimulateOptions& options) {
     std::cout << "simulated " << options.duration << " s of " << spec.name << ": " << stats.steps
               << " steps (" << stats.rejected << " rejected), " << stats.evaluations
               << " evaluations; wrote " << options.out << "/states.sto, bodies.sto, forces.sto"
+              << (tables.writes_contacts() ? ", contacts.sto" : "")
               << (options.report_constraint_forces ? " and constraints.sto\n" : "\n");
   }
 }

@@ -1,10 +1,11 @@
 #include "apps/sinew/initial_states.h"
 
 #include <sinew/common/error.h>
-#include <sinew/io/storage_labels.h>
+#include <sinew/opensim/initial_states.h>
 #include <sinew/opensim/states_table.h>
 #include <sinew/opensim/support.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string_view>
@@ -60,43 +61,28 @@ InitialStates ApplyInitialStates(const std::string& path, bool strict, model::Mo
     states.row = RowAtOrBefore(states.table, *start_time);
     NoteStartRow(states, *start_time);
   }
-  std::vector<std::string> rotational, simulated, simulated_forces;
-  for (const model::CoordinateSpec& c : spec.coordinates) {
-    if (c.joint == model::kNone || !opensim::IsJointSimulated(spec.joints[c.joint])) continue;
-    simulated.push_back(c.name);
-    if (c.motion_type == model::MotionType::kRotational) rotational.push_back(c.name);
-  }
+  const opensim::InitialStates taken =
+      opensim::ApplyInitialStates(states.table, path, spec, states.row);
+  // Columns of the state variables of simulated forces (muscle activations, fiber lengths) are
+  // used too, by ApplyInitialStateVariables once the System exists.
+  std::vector<std::string> simulated_forces;
   for (const model::ForceSpec& force : spec.forces) {
     if (opensim::IsForceSimulated(force)) simulated_forces.push_back(force.name);
   }
   std::vector<std::string> unused;
-  for (const std::string& label : states.table.labels) {
+  for (const std::string& label : taken.unused_labels) {
     const std::string force = ForceOfStateColumn(label);
     const bool of_simulated_force =
         !force.empty() && std::find(simulated_forces.begin(), simulated_forces.end(), force) !=
                               simulated_forces.end();
-    if (!io::ParseColumnLabel(label, simulated) && !of_simulated_force) unused.push_back(label);
+    if (!of_simulated_force) unused.push_back(label);
   }
   WarnUnusedColumns(unused, path,
                     "they name no coordinate value or speed or state variable that is simulated",
                     strict);
-  io::ConvertDegreesToRadians(states.table, rotational);
-  std::vector<std::string> missing;
-  for (model::CoordinateSpec& c : spec.coordinates) {
-    const int value =
-        io::FindCoordinateColumn(states.table, c.name, io::CoordinateColumnKind::kValue);
-    const int speed =
-        io::FindCoordinateColumn(states.table, c.name, io::CoordinateColumnKind::kSpeed);
-    if (value >= 0) c.default_value = states.table.Value(states.row, value);
-    if (speed >= 0) c.default_speed_value = states.table.Value(states.row, speed);
-    const bool is_simulated =
-        std::find(simulated.begin(), simulated.end(), c.name) != simulated.end();
-    if (is_simulated && value < 0) missing.push_back(c.name + " (value)");
-    if (is_simulated && speed < 0) missing.push_back(c.name + " (speed)");
-  }
-  if (!missing.empty()) {
-    std::cerr << "sinew: warning: " << path << ": " << missing.size()
-              << " coordinate values or speeds are not in the file (" << FirstFew(missing)
+  if (!taken.missing.empty()) {
+    std::cerr << "sinew: warning: " << path << ": " << taken.missing.size()
+              << " coordinate values or speeds are not in the file (" << FirstFew(taken.missing)
               << "): they keep the model's defaults\n";
   }
   return states;

@@ -4,6 +4,7 @@
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/pose.h>
 #include <sinew/kinematics/body_kinematics.h>
+#include <sinew/contact/contact_table.h>
 #include <sinew/muscles/path_actuator.h>
 #include <sinew/opensim/constraint_forces_table.h>
 #include <sinew/opensim/states_table.h>
@@ -137,6 +138,10 @@ RunTables::RunTables(const engine::System& system, const model::ModelSpec& spec,
   OpenTable(controls_, files.controls, "controls", opensim::ControlsLabels(system));
   OpenTable(constraints_, files.constraints, "ConstraintForces",
             opensim::ConstraintForcesLabels(system));
+  // Each contact force's force and torque per body and its active contacts, when there are any.
+  if (std::vector<std::string> labels = contact::ContactTableLabels(system); !labels.empty()) {
+    OpenTable(contacts_, files.contacts, "Contacts", std::move(labels));
+  }
   X_GB_.resize(system.num_bodies());
 }
 
@@ -168,11 +173,16 @@ void RunTables::Record(const engine::State& s) {
     opensim::ConstraintForcesRow(system_, s, nullptr, data_, row_);
     constraints_->AppendRow(s.t, row_);
   }
+  if (contacts_) {
+    contact::ContactTableRow(system_, s, row_);
+    contacts_->AppendRow(s.t, row_);
+  }
 }
 
 void RunTables::Finish(const std::string& partial_reason) {
   for (std::optional<io::StorageWriter>* table :
-       {&states_, &states_degrees_, &bodies_, &forces_, &controls_, &constraints_}) {
+       {&states_, &states_degrees_, &bodies_, &forces_, &controls_, &constraints_,
+        &contacts_}) {
     if (*table) (*table)->Finish(partial_reason);
   }
 }

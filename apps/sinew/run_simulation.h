@@ -67,6 +67,7 @@ struct TableFiles {
   std::string forces;          ///< ForceReporter
   std::string controls;        ///< each actuator's control (OpenSim's controls table)
   std::string constraints;     ///< constraint forces
+  std::string contacts;        ///< contact forces per body; written only when the model has some
 };
 
 /// The tables of a run, streamed to disk row by row (bounded memory) and committed by Finish.
@@ -80,6 +81,8 @@ class RunTables {
   void Finish(const std::string& partial_reason);
   /// Rows written so far.
   long rows() const;
+  /// True when a contacts table is written (TableFiles::contacts named and contact forces exist).
+  bool writes_contacts() const { return contacts_.has_value(); }
 
  private:
   const engine::System& system_;
@@ -87,7 +90,7 @@ class RunTables {
   engine::ForceReporter force_reporter_;
   engine::Data data_;
   std::optional<io::StorageWriter> states_, states_degrees_, bodies_, forces_, controls_,
-      constraints_;
+      constraints_, contacts_;
   std::vector<double> degrees_per_unit_;  // per states column: 180/pi (rotational) or 1
   std::vector<double> row_;
   std::vector<Transform> X_GB_;

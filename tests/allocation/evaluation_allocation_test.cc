@@ -111,6 +111,20 @@ TEST(EvaluationAllocationTest, MusclesOnPathsEvaluateWithoutHeapUse) {
   EXPECT_EQ(g_allocations.load(), 0);
 }
 
+TEST(EvaluationAllocationTest, ContactForcesEvaluateWithoutHeapUse) {
+  // OpenSim's three bouncing balls resting in contact: Hunt-Crossley, elastic foundation on a
+  // 720-face mesh, smoothed sphere/half-space.
+  for (const char* file : {"BouncingBall_HuntCrossley.osim", "BouncingBallModelEF.osim",
+                           "BouncingBall_SmoothSphereHalfSpace.osim"}) {
+    opensim::OpenSimParser parser;
+    const auto system = parser.Parse(std::string(SINEW_TEST_DATA_DIR) +
+                                     "/opensim-org/opensim-core/OpenSim/Simulation/Test/" + file);
+    State state = MakeDefaultState(*system);
+    SetCoordinateValue(*system, state, "ball_ty", 0.4995);
+    EXPECT_EQ(AllocationsPerEvaluations(*system, state, 10), 0) << file;
+  }
+}
+
 TEST(EvaluationAllocationTest, TheCounterCounts) {
   // The counting operator new is really the one in use (so the zeros above mean something).
   g_allocations = 0;

@@ -78,13 +78,25 @@ TEST_F(ExportTest, RajagopalGlbHasEveryMeshAndTheMotion) {
   const int n_bodies = CountOccurrences(model_text_, "<Body ") + 1;
   EXPECT_EQ(n_meshes, 81);
   EXPECT_EQ(n_bodies, 23);
-  EXPECT_EQ(static_cast<int>(doc["meshes"].size()), n_meshes);
-  EXPECT_EQ(static_cast<int>(doc["nodes"].size()), 1 + n_bodies + n_meshes);
+  // Besides: a node "paths" naming every <GeometryPath> of the ForceSet (80; the <defaults>
+  // hold one more), with one child and one line
+  // mesh per motion row (docs: one line mesh per frame, shown in turn).
+  const int n_paths =
+      CountOccurrences(model_text_.substr(model_text_.find("<ForceSet")), "<GeometryPath");
+  EXPECT_EQ(n_paths, 80);
+  const int n_rows = io::ReadStorage(kMotion).NumRows();
+  EXPECT_EQ(static_cast<int>(doc["meshes"].size()), n_meshes + n_rows);
+  EXPECT_EQ(static_cast<int>(doc["nodes"].size()), 1 + n_bodies + n_meshes + 1 + n_rows);
+  for (const auto& node : doc["nodes"]) {
+    if (node["name"] == "paths") {
+      EXPECT_EQ(static_cast<int>(node["extras"]["paths"].size()), n_paths);
+    }
+  }
   // Every mesh node names the .vtp it came from, and the triangles match that file's.
   const std::vector<std::string> dirs = io::MeshSearchDirs(kModel, {kGeometry});
   int mesh_nodes = 0;
   for (const auto& node : doc["nodes"]) {
-    if (!node.contains("mesh")) continue;
+    if (!node.contains("mesh") || node["name"].get<std::string>().starts_with("paths@")) continue;
     ++mesh_nodes;
     const std::string source = node["extras"]["source"];
     ASSERT_EQ(fs::path(source).extension(), ".vtp") << source;
@@ -99,7 +111,7 @@ TEST_F(ExportTest, RajagopalGlbHasEveryMeshAndTheMotion) {
   const io::Storage motion = io::ReadStorage(kMotion);
   ASSERT_EQ(doc["animations"].size(), 1u);
   const auto& anim = doc["animations"][0];
-  EXPECT_EQ(static_cast<int>(anim["channels"].size()), 2 * n_bodies);
+  EXPECT_EQ(static_cast<int>(anim["channels"].size()), 2 * n_bodies + n_rows);
   // The pelvis hangs from ground by a CustomJoint with identity offsets: its translation is
   // (pelvis_tx, ty, tz) and its rotation Rz(tilt) Rx(list) Ry(rotation), angles in degrees.
   int pelvis_node = -1;
@@ -329,6 +341,46 @@ TEST_F(ExportTest, RenderCreatesItsFolderAndWritesOnlyPng) {
   run = Run("export " + kModel + " --vis primitives --out " + glb.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(fs::exists(glb));
+}
+
+// Pixels of muscle red (0.8, 0.1, 0.1), allowing for the edges blended with the background.
+int RedPixels(const viz::Image& image) {
+  int red = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const uint8_t* px = image.At(x, y);
+      if (px[0] > 150 && px[1] < 120 && px[2] < 120 && px[0] > px[1] + 60) ++red;
+    }
+  }
+  return red;
+}
+
+TEST_F(ExportTest, RenderDrawsArm26MusclesInRed) {
+  const std::string arm26 = kData + "/opensim-org/opensim-models/Models/Arm26/arm26.osim";
+  auto render = [&](const std::string& options) {
+    const fs::path png = dir() / "arm26.png";
+    const CliRun run =
+        Run("render " + arm26 + " --width 120 --height 160 " + options + " --out " + png.string());
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return viz::DecodePng(viz::ReadFileBytes(png.string()), png.string());
+  };
+  // With no body geometry the picture is the muscles alone: red lines on the background.
+  const viz::Image lines = render("--vis none");
+  const uint8_t* background = lines.At(0, 0);
+  int red = 0, other = 0;
+  for (int y = 0; y < lines.height; ++y) {
+    for (int x = 0; x < lines.width; ++x) {
+      const uint8_t* px = lines.At(x, y);
+      if (std::equal(px, px + 3, background)) continue;
+      (px[0] > px[1] && px[0] > px[2] ? red : other)++;
+    }
+  }
+  EXPECT_GT(red, 200);
+  EXPECT_EQ(other, 0);
+  EXPECT_EQ(RedPixels(render("--vis none --no-paths")), 0);
+  // Over the bones, the muscles add red pixels.
+  EXPECT_GT(RedPixels(render("--vis primitives")),
+            RedPixels(render("--vis primitives --no-paths")) + 100);
 }
 
 TEST_F(ExportTest, BadInputExitsWithCodeTwo) {

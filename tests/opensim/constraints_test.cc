@@ -185,8 +185,8 @@ TEST(ConstraintsTest, ConstraintsHoldAndTransmitTheirClosedFormLoadsAlongTheMoti
 // Real models, passive, with every coordinate given the speed sin(c + 1) (projected onto the
 // constraints) so that all joints move: their constraints hold along 0.5 s at accuracy 1e-6.
 // Rajagopal2016 and leg6dof9musc couple their patellae to the knees; bouncing_block holds its
-// block and foot on ground's y axis with two PointOnLineConstraints (its hip BushingForce acts;
-// its Hunt-Crossley contact is not simulated yet: it runs without it); the Hamner full-body
+// block and foot on ground's y axis with two PointOnLineConstraints (its hip BushingForce and
+// its Hunt-Crossley heel contact act); the Hamner full-body
 // model (subject02) has no constraints in its file: its joints alone.
 TEST(ConstraintsTest, RealModelsSimulatePassivelyWithTheirConstraintsHeld) {
   const std::vector<std::pair<std::string, int>> models = {

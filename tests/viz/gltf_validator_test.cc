@@ -6,6 +6,7 @@
 #include <sinew/io/storage.h>
 #include <sinew/viz/gltf_writer.h>
 #include <sinew/viz/motion_poses.h>
+#include <sinew/viz/path_lines.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -45,7 +46,27 @@ TEST(GltfValidatorTest, KhronosValidatorFindsNoIssues) {
       io::ReadStorage(testing::kDataDir + "/opensim-org/opensim-models/Pipelines/Hamner/"
                                           "outputReference/ResultsIK/subject02_running_ik.mot"),
       nullptr);
+  // arm26's muscles as lines over its wrap surfaces, one line mesh per frame.
+  const model::ModelSpec arm26 =
+      io::ReadOsim(testing::kDataDir + "/opensim-org/opensim-models/Models/Arm26/arm26.osim");
+  io::Storage elbow;
+  elbow.labels = {"r_elbow_flex"};
+  elbow.time = {0.0, 0.5, 1.0};
+  elbow.values = {0.0, 1.2, 2.2};
+  const BodyMotion flexing = MotionFromTable(arm26, elbow, nullptr);
+  const PathLines arm26_lines = CalcPathLines(arm26, flexing, nullptr);
+  PathLines shaded_lines = arm26_lines;  // with per-vertex colours (COLOR_0)
+  io::Storage activation;
+  activation.labels = {"/forceset/BIClong/activation"};
+  activation.time = {0.0, 1.0};
+  activation.values = {0.1, 0.9};
+  ShadeByActivation(activation, flexing.times, shaded_lines);
+  const BodyMotion still = DefaultPoseMotion(arm26);
+  const PathLines still_lines = CalcPathLines(arm26, still, nullptr);
   const std::vector<std::pair<std::string, std::vector<uint8_t>>> files = {
+      {"arm26_paths.glb", WriteGlb(BuildVisualScene(arm26, none), flexing, "p", &arm26_lines)},
+      {"arm26_shaded.glb", WriteGlb(BuildVisualScene(arm26, none), flexing, "h", &shaded_lines)},
+      {"arm26_still.glb", WriteGlb(BuildVisualScene(arm26, none), still, "q", &still_lines)},
       {"animated.glb",
        WriteGlb(BuildVisualScene(two_link, mesh), testing::SwingMotion(5, 0, 0.1, 0.3), "a")},
       {"static.glb", WriteGlb(BuildVisualScene(two_link, mesh), {}, "s")},

@@ -1,9 +1,12 @@
 // The HTML viewer in headless Chromium (software WebGL through SwiftShader): the page must show
 // the model (not a blank canvas) and the picture must change as the animation plays.
 #include <gtest/gtest.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
 #include <sinew/viz/export_animation.h>
 #include <sinew/viz/html_viewer.h>
 #include <sinew/viz/image.h>
+#include <sinew/viz/motion_poses.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -93,6 +96,51 @@ TEST(HtmlViewerTest, ShowsTheModelAndAnimatesInHeadlessChromium) {
   EXPECT_GT(ForegroundFraction(later), 0.01) << "blank scene: see " << dir;
   // The link has swung by about 0.9 rad: many pixels changed.
   EXPECT_GT(DifferentFraction(start, later), 0.005) << "no motion: see " << dir;
+  if (!HasFailure()) fs::remove_all(dir);
+}
+
+// Pixels of the 3D view in muscle red.
+int RedPixels(const Image& image) {
+  int count = 0;
+  for (int y = 40; y < image.height - 50; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const uint8_t* p = image.At(x, y);
+      if (p[0] > 120 && p[0] > p[1] + 60 && p[0] > p[2] + 60) ++count;
+    }
+  }
+  return count;
+}
+
+TEST(HtmlViewerTest, ShowsArm26MusclesMovingAsRedLines) {
+  const std::string chromium = FindChromium();
+  if (chromium.empty()) {
+    GTEST_SKIP() << "chromium is not installed (scripts/setup.sh installs it); viewer not tested";
+  }
+  const fs::path dir =
+      fs::temp_directory_path() / ("sinew_viewer_paths_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const model::ModelSpec arm26 =
+      io::ReadOsim(testing::kDataDir + "/opensim-org/opensim-models/Models/Arm26/arm26.osim");
+  io::Storage elbow;  // the elbow flexes from straight to 2.2 rad in 1 s
+  elbow.labels = {"r_elbow_flex"};
+  elbow.time = {0.0, 0.25, 0.5, 0.75, 1.0};
+  elbow.values = {0.0, 0.55, 1.1, 1.65, 2.2};
+  ExportOptions options;
+  options.visual.mode = VisType::kNone;  // the muscles alone
+  const BodyMotion motion = MotionFromTable(arm26, elbow, nullptr);
+  ExportAnimation(arm26, motion, (dir / "paths.html").string(), options);
+  options.paths = false;
+  ExportAnimation(arm26, motion, (dir / "none.html").string(), options);
+  const std::string url = "file://" + (dir / "paths.html").string();
+  const Image straight = Screenshot(chromium, url + "#t=0&pause", dir / "straight.png", 2500);
+  const Image flexed = Screenshot(chromium, url + "#t=0.9&pause", dir / "flexed.png", 2500);
+  const Image none = Screenshot(chromium, "file://" + (dir / "none.html").string() + "#t=0&pause",
+                                dir / "none.png", 2500);
+  EXPECT_GT(RedPixels(straight), 100) << "no muscle lines: see " << dir;
+  EXPECT_GT(RedPixels(flexed), 100) << "no muscle lines: see " << dir;
+  EXPECT_EQ(RedPixels(none), 0) << "see " << dir;
+  // At 0.9 s (frame 0.75 s: 1.65 rad) the forearm's muscles have followed the elbow.
+  EXPECT_GT(DifferentFraction(straight, flexed), 0.002) << "the lines did not move: see " << dir;
   if (!HasFailure()) fs::remove_all(dir);
 }
 

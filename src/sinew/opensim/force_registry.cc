@@ -121,6 +121,9 @@ const ForceType* FindForceType(const std::string& opensim_class) {
       {"Thelen2003Muscle_Deprecated", {&BuildThelen2003MuscleDeprecated, true}},
       {"Millard2012EquilibriumMuscle", {&BuildMillard2012EquilibriumMuscle, true}},
       {"DeGrooteFregly2016Muscle", {&BuildDeGrooteFregly2016Muscle, true}},
+      {"HuntCrossleyForce", {&BuildHuntCrossleyForce, false}},
+      {"ElasticFoundationForce", {&BuildElasticFoundationForce, false}},
+      {"SmoothSphereHalfSpaceForce", {&BuildSmoothSphereHalfSpaceForce, false}},
   };
   const auto it = registry.find(opensim_class);
   return it == registry.end() ? nullptr : &it->second;

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <array>
+#include <sstream>
+#include <string>
 
 namespace sinew::opensim {
 
@@ -21,7 +23,31 @@ bool IsConstraintSimulated(const model::ConstraintSpec& constraint) {
 bool IsControllerSimulated(const model::ControllerSpec& controller) {
   return controller.type == "PrescribedController";
 }
-bool IsContactGeometrySimulated(const model::ContactGeometrySpec& /*contact*/) { return false; }
+namespace {
+// True when `element` or one of its descendants names geometry `name` (a `geometry` list of
+// contact parameters, or a socket path such as socket_sphere).
+bool NamesGeometry(const model::Element& element, const std::string& name) {
+  if (element.tag == "geometry" || element.tag.starts_with("socket_")) {
+    std::istringstream names(element.text);
+    for (std::string n; names >> n;) {
+      const size_t slash = n.find_last_of('/');
+      if ((slash == std::string::npos ? n : n.substr(slash + 1)) == name) return true;
+    }
+  }
+  for (const model::Element& child : element.children) {
+    if (NamesGeometry(child, name)) return true;
+  }
+  return false;
+}
+}  // namespace
+
+bool IsContactGeometrySimulated(const model::ModelSpec& spec,
+                                const model::ContactGeometrySpec& contact) {
+  for (const model::ForceSpec& f : spec.forces) {
+    if (IsForceSimulated(f) && NamesGeometry(f.element, contact.name)) return true;
+  }
+  return false;
+}
 bool IsWrapObjectSimulated(const model::WrapObjectSpec& wrap) {
   return paths::IsWrapSurfaceSupported(wrap.type);
 }
@@ -50,7 +76,7 @@ std::vector<NotSimulatedElement> FindNotSimulated(const model::ModelSpec& spec,
     }
   }
   for (const model::ContactGeometrySpec& c : spec.contact_geometry) {
-    if (!IsContactGeometrySimulated(c)) {
+    if (!IsContactGeometrySimulated(spec, c)) {
       out.push_back({ElementKind::kContactGeometry, "/contactgeometryset/" + c.name, c.type});
     }
   }

@@ -20,8 +20,10 @@ bool IsForceSimulated(const model::ForceSpec& force);
 bool IsConstraintSimulated(const model::ConstraintSpec& constraint);
 /// True if the engine runs controllers of this OpenSim class (PrescribedController).
 bool IsControllerSimulated(const model::ControllerSpec& controller);
-/// True if the engine uses contact geometry of this OpenSim class (none yet).
-bool IsContactGeometrySimulated(const model::ContactGeometrySpec& contact);
+/// True if a simulated contact force of `spec` (HuntCrossleyForce, ElasticFoundationForce,
+/// SmoothSphereHalfSpaceForce) names this contact geometry.
+bool IsContactGeometrySimulated(const model::ModelSpec& spec,
+                                const model::ContactGeometrySpec& contact);
 /// True if paths wrap over wrap objects of this class (paths::IsWrapSurfaceSupported:
 /// WrapCylinder, WrapSphere, WrapEllipsoid).
 bool IsWrapObjectSimulated(const model::WrapObjectSpec& wrap);

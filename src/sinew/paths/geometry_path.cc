@@ -76,8 +76,10 @@ void GeometryPath::ConnectWrapSurface(int wrap, std::shared_ptr<const WrapSurfac
 }
 
 void GeometryPath::CalcState(std::span<const double> q, std::span<const Transform> X_GB,
-                             PathState& state) const {
+                             PathState& state, bool with_arc_points) const {
   state.points.clear();
+  state.arc_G.resize(with_arc_points ? wraps_.size() : 0);
+  for (std::vector<Vec3>& arc : state.arc_G) arc.clear();
   for (size_t i = 0; i < points_.size(); ++i) {
     const PathPoint& point = points_[i];
     if (!point.IsActive(q)) continue;
@@ -97,7 +99,7 @@ void GeometryPath::CalcState(std::span<const double> q, std::span<const Transfor
                 "only " + std::to_string(state.points.size()) +
                     " of the path's points are active at this pose; a path needs two");
   }
-  ApplyWraps(q, X_GB, state);
+  ApplyWraps(q, X_GB, state, with_arc_points);
   CalcSegments(state);
 }
 
@@ -130,9 +132,10 @@ void GeometryPath::CalcSegments(PathState& state) {
 // length is replaced by P-T1, the arc, T2-S. Returns false when the range has no active point
 // (OpenSim then abandons wrapping for the whole path).
 bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const Transform> X_GB,
-                             PathState& state, WrapOutcome& outcome,
-                             TangentPointReads& reads) const {
+                             PathState& state, WrapOutcome& outcome, TangentPointReads& reads,
+                             bool with_arc_points) const {
   RemoveTangentPoints(w, state);
+  if (with_arc_points) state.arc_G[static_cast<size_t>(w)].clear();
   outcome = WrapOutcome::kNoWrap;
   const PathWrap& wrap = wraps_[static_cast<size_t>(w)];
   if (!wrap.active || !wrap.surface) return true;
@@ -153,6 +156,7 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
   const Transform X_WG = X_GW.Inverse();
   WrapOptions options = wrap.options;
   options.single_wrap = wraps_.size() == 1;
+  options.with_arc_points = with_arc_points;
   double best_change = std::numeric_limits<double>::infinity();
   int best_segment = -1;
   WrapResult best;
@@ -164,7 +168,7 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
     const Vec3 p_WP = X_WG * reads.CurrentLocation(a), p_WS = X_WG * reads.CurrentLocation(b);
     WrapResult result = wrap.surface->Wrap(p_WP, p_WS, options);
     // As OpenSim, the outcome reported is the last segment's (or the mandatory one's).
-    outcome = result.wrapped   ? WrapOutcome::kWrapped
+    outcome = result.wrapped        ? WrapOutcome::kWrapped
               : result.point_inside ? WrapOutcome::kPointInside
                                     : WrapOutcome::kNoWrap;
     if (!result.wrapped) continue;
@@ -195,6 +199,10 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
   t1.arc_length_to_next = best.arc_length;
   reads.Place(t1);
   reads.Place(t2);
+  if (with_arc_points) {
+    std::vector<Vec3>& arc = state.arc_G[static_cast<size_t>(w)];
+    for (const Vec3& p_WA : best.arc_points) arc.push_back(X_GW * p_WA);
+  }
   const auto at = state.points.begin() + best_segment + 1;
   state.points.insert(state.points.insert(at, t1) + 1, t2);
   return true;
@@ -250,7 +258,7 @@ void GeometryPath::RemoveTangentPoints(int w, PathState& state) {
 // by less than 0.5 mm, each object rewrapping the path the others left. After the first pass,
 // when the first object does not wrap and the second has a point inside it, the two swap.
 void GeometryPath::ApplyWraps(std::span<const double> q, std::span<const Transform> X_GB,
-                              PathState& state) const {
+                              PathState& state, bool with_arc_points) const {
   state.stale_tangent_points = 0;
   const int num_wraps = static_cast<int>(wraps_.size());
   if (num_wraps == 0) return;
@@ -263,7 +271,7 @@ void GeometryPath::ApplyWraps(std::span<const double> q, std::span<const Transfo
   for (int pass = 0; pass < max_passes; ++pass) {
     for (int i = 0; i < num_wraps; ++i) {
       if (!ApplyWrap(order[static_cast<size_t>(i)], q, X_GB, state,
-                     outcomes[static_cast<size_t>(i)], reads)) {
+                     outcomes[static_cast<size_t>(i)], reads, with_arc_points)) {
         return;
       }
     }
@@ -281,6 +289,7 @@ void GeometryPath::ApplyWraps(std::span<const double> q, std::span<const Transfo
         outcomes[1] == WrapOutcome::kPointInside) {
       std::swap(order[0], order[1]);
       RemoveTangentPoints(0, state);
+      if (with_arc_points) state.arc_G[0].clear();
     }
   }
 }

@@ -55,6 +55,10 @@ struct PathState {
   /// Per segment: its length (m); the arc length for a segment over a wrap surface.
   std::vector<double> segment_length;
   double length = 0.0;  ///< Sum of segment lengths (m).
+  /// Filled only when CalcState is asked for arc points: per wrap (index into
+  /// GeometryPath::wraps()), the points along its arc over the surface from T1 to T2 inclusive,
+  /// in ground (m), for drawing; empty for a wrap that does not wrap at this pose.
+  std::vector<std::vector<Vec3>> arc_G;
   /// Tangent points that stand where an earlier wrapping pass put them, not where the last
   /// pass did: OpenSim's length keeps a point's first location in ground (docs/paths.md), and
   /// Sinew reproduces it. Zero for a path with one wrap object.
@@ -92,9 +96,10 @@ class GeometryPath {
   /// The path at coordinates q (ModelSpec::coordinates order) with body poses X_GB (from
   /// kinematics::CalcBodyPoses at the same q), wrapped over its connected surfaces as OpenSim's
   /// GeometryPath::applyWrapObjects does (docs/paths.md). Reuses `state`'s buffers. Throws
-  /// sinew::Error naming the path when fewer than two of its points are active.
-  void CalcState(std::span<const double> q, std::span<const Transform> X_GB,
-                 PathState& state) const;
+  /// sinew::Error naming the path when fewer than two of its points are active. With
+  /// `with_arc_points`, also fills PathState::arc_G (sampling arcs costs more than wrapping).
+  void CalcState(std::span<const double> q, std::span<const Transform> X_GB, PathState& state,
+                 bool with_arc_points = false) const;
 
  private:
   // What wrapping one object over its range gave (OpenSim's WrapAction, for its reordering).
@@ -115,10 +120,11 @@ class GeometryPath {
     std::vector<std::array<bool, 2>> read;
     std::vector<std::array<Vec3, 2>> p_BP_read, p_GP_read, p_GP_current;
   };
-  void ApplyWraps(std::span<const double> q, std::span<const Transform> X_GB,
-                  PathState& state) const;
+  void ApplyWraps(std::span<const double> q, std::span<const Transform> X_GB, PathState& state,
+                  bool with_arc_points) const;
   bool ApplyWrap(int wrap, std::span<const double> q, std::span<const Transform> X_GB,
-                 PathState& state, WrapOutcome& outcome, TangentPointReads& reads) const;
+                 PathState& state, WrapOutcome& outcome, TangentPointReads& reads,
+                 bool with_arc_points) const;
   static void RemoveTangentPoints(int wrap, PathState& state);
   static void CalcSegments(PathState& state);
 

@@ -12,6 +12,9 @@ namespace sinew::viz {
 struct BodyMotion {
   std::vector<double> times;
   std::vector<std::vector<Transform>> X_GB;
+  /// The coordinates (ModelSpec::coordinates order) the poses come from, one vector per frame,
+  /// when known (motion tables and the default pose); empty otherwise. Muscle paths need them.
+  std::vector<std::vector<double>> q;
 };
 
 }  // namespace sinew::viz

@@ -1,6 +1,7 @@
 #include <sinew/viz/export_animation.h>
 #include <sinew/viz/gltf_writer.h>
 #include <sinew/viz/html_viewer.h>
+#include <sinew/viz/path_lines.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -20,6 +21,7 @@ BodyMotion ThinMotion(const BodyMotion& motion, double max_fps) {
     if (!keep) continue;
     out.times.push_back(motion.times[k]);
     out.X_GB.push_back(motion.X_GB[k]);
+    if (k < motion.q.size()) out.q.push_back(motion.q[k]);
   }
   return out;
 }
@@ -53,7 +55,13 @@ VisualScene ExportAnimation(const model::ModelSpec& spec, const BodyMotion& moti
   }
   VisualScene scene = BuildVisualScene(spec, options.visual);
   const std::string title = options.title.empty() ? spec.name : options.title;
-  std::vector<uint8_t> glb = WriteGlb(scene, ThinMotion(motion, options.max_fps), title);
+  const BodyMotion kept = ThinMotion(motion, options.max_fps);
+  PathLines lines;
+  if (options.paths) lines = CalcPathLines(spec, kept, &scene.warnings);
+  if (options.activations && !lines.names.empty()) {
+    ShadeByActivation(*options.activations, kept.times, lines);
+  }
+  std::vector<uint8_t> glb = WriteGlb(scene, kept, title, &lines);
   if (html) {
     const std::string page = MakeViewerHtml(glb, title);
     WriteFileBytes(path, std::vector<uint8_t>(page.begin(), page.end()));

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <sinew/common/error.h>
+#include <sinew/io/storage.h>
 #include <sinew/model/model_spec.h>
 #include <sinew/viz/body_motion.h>
 #include <sinew/viz/visual_scene.h>
@@ -18,6 +19,11 @@ struct ExportOptions {
   /// When > 0, frames closer than 1/max_fps s to the previously kept one are dropped (the
   /// first and last frames are always kept), so long fine-step simulations stay small.
   double max_fps = 0;
+  /// Draw the model's paths (muscles, springs, ligaments) when the motion has coordinates.
+  bool paths = true;
+  /// A table (the states the motion came from) whose activation columns shade the paths
+  /// (ShadeByActivation); null or without such columns: every path muscle red.
+  const io::Storage* activations = nullptr;
 };
 
 /// The two export formats, told by the file name's extension.
@@ -32,9 +38,10 @@ BodyMotion ThinMotion(const BodyMotion& motion, double max_fps);
 
 /// Writes `spec` moving along `motion` (body poses X_GB per frame; one frame for a still pose)
 /// to `path`: a binary glTF 2.0 file when it ends in .glb, a self-contained HTML viewer when it
-/// ends in .html/.htm. Returns the scene it drew: its `warnings` and `missing_meshes` say what
-/// could not be drawn as asked. Throws sinew::Error for another extension, a motion whose
-/// frames do not cover every body, or an unwritable file.
+/// ends in .html/.htm, with the model's paths as red lines (options.paths, motion.q needed;
+/// paths that cannot be drawn are named in the scene's warnings). Returns the scene it drew: its
+/// `warnings` and `missing_meshes` say what could not be drawn as asked. Throws sinew::Error for
+/// another extension, a motion whose frames do not cover every body, or an unwritable file.
 VisualScene ExportAnimation(const model::ModelSpec& spec, const BodyMotion& motion,
                             const std::string& path, const ExportOptions& options);
 

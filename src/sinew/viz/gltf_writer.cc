@@ -1,6 +1,8 @@
 #include <sinew/common/atomic_file.h>
 #include <sinew/common/error.h>
 #include <sinew/viz/gltf_writer.h>
+#include <sinew/viz/internal/glb_builder.h>
+#include <sinew/viz/internal/gltf_path_lines.h>
 
 #include <cstring>
 #include <map>
@@ -10,70 +12,9 @@
 namespace sinew::viz {
 namespace {
 
-using nlohmann::json;
-
-// glTF constants.
-constexpr int kFloat = 5126;
-constexpr int kUnsignedInt = 5125;
-constexpr int kArrayBuffer = 34962;
-constexpr int kElementArrayBuffer = 34963;
-
-// Accumulates the BIN chunk and the buffer views / accessors that point into it.
-class BinaryBuilder {
- public:
-  explicit BinaryBuilder(json& doc) : doc_(doc) {
-    doc_["bufferViews"] = json::array();
-    doc_["accessors"] = json::array();
-  }
-
-  // Appends floats as a buffer view + accessor; returns the accessor index.
-  int AddFloats(const std::vector<float>& values, const char* type, int components, int target,
-                bool with_min_max) {
-    const int view = AddView(values.data(), values.size() * sizeof(float), target);
-    json accessor = {{"bufferView", view},
-                     {"componentType", kFloat},
-                     {"count", values.size() / components},
-                     {"type", type}};
-    if (with_min_max) {
-      std::vector<float> lo(components, 0), hi(components, 0);
-      for (size_t i = 0; i < values.size(); ++i) {
-        const size_t c = i % components;
-        if (i < static_cast<size_t>(components) || values[i] < lo[c]) lo[c] = values[i];
-        if (i < static_cast<size_t>(components) || values[i] > hi[c]) hi[c] = values[i];
-      }
-      accessor["min"] = lo;
-      accessor["max"] = hi;
-    }
-    doc_["accessors"].push_back(accessor);
-    return static_cast<int>(doc_["accessors"].size() - 1);
-  }
-
-  int AddIndices(const std::vector<uint32_t>& indices) {
-    const int view =
-        AddView(indices.data(), indices.size() * sizeof(uint32_t), kElementArrayBuffer);
-    doc_["accessors"].push_back({{"bufferView", view},
-                                 {"componentType", kUnsignedInt},
-                                 {"count", indices.size()},
-                                 {"type", "SCALAR"}});
-    return static_cast<int>(doc_["accessors"].size() - 1);
-  }
-
-  std::vector<uint8_t>& bytes() { return bin_; }
-
- private:
-  int AddView(const void* data, size_t size, int target) {
-    while (bin_.size() % 4 != 0) bin_.push_back(0);  // accessors need 4-byte alignment
-    json view = {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", size}};
-    if (target != 0) view["target"] = target;
-    const uint8_t* p = static_cast<const uint8_t*>(data);
-    bin_.insert(bin_.end(), p, p + size);
-    doc_["bufferViews"].push_back(view);
-    return static_cast<int>(doc_["bufferViews"].size() - 1);
-  }
-
-  json& doc_;
-  std::vector<uint8_t> bin_;
-};
+using internal::BinaryBuilder;
+using internal::json;
+using internal::kArrayBuffer;
 
 std::vector<float> Flatten(const std::vector<io::Vec3f>& v) {
   std::vector<float> out;
@@ -98,7 +39,7 @@ void AppendUint32(std::vector<uint8_t>& out, uint32_t v) {
 }  // namespace
 
 std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion,
-                              const std::string& model_name) {
+                              const std::string& model_name, const PathLines* lines) {
   json doc;
   doc["asset"] = {{"version", "2.0"}, {"generator", "Sinew"}};
   doc["scene"] = 0;
@@ -169,6 +110,10 @@ std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion
     body_nodes.push_back(static_cast<int>(doc["nodes"].size() - 1));
     root_children.push_back(body_nodes.back());
   }
+  std::vector<int> path_frame_nodes;
+  if (lines && !lines->names.empty() && !lines->vertices.empty()) {
+    root_children.push_back(internal::AddPathNodes(doc, bin, *lines, path_frame_nodes));
+  }
   doc["nodes"].push_back({{"name", model_name}, {"children", root_children}});
   doc["scenes"] = json::array({{{"name", model_name}, {"nodes", {doc["nodes"].size() - 1}}}});
 
@@ -209,6 +154,7 @@ std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion
       channels.push_back({{"sampler", samplers.size() - 1},
                           {"target", {{"node", body_nodes[i]}, {"path", "rotation"}}}});
     }
+    internal::AddPathChannels(bin, times, path_frame_nodes, samplers, channels);
     doc["animations"] = json::array({{{"name", "motion"},
                                       {"samplers", samplers},
                                       {"channels", channels},

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <sinew/viz/body_motion.h>
+#include <sinew/viz/path_lines.h>
 #include <sinew/viz/visual_scene.h>
 
 #include <cstdint>
@@ -15,8 +16,13 @@ namespace sinew::viz {
 /// motion has two or more frames, one animation samples every body's translation and rotation
 /// (quaternion xyzw) at the motion's times, shifted to start at 0 (the first time is kept in
 /// the animation's extras as "start_time"). Units are metres, y up, as in OpenSim.
+/// With `lines` (one frame per motion frame), a node "paths" holds one LINES mesh per frame
+/// (all paths, in ground; the node's extras name the paths, the meshes' extras give their
+/// vertex counts), and the
+/// animation shows frame k's mesh (scale 1, STEP) from its time to the next frame's, hiding
+/// it (scale 0) otherwise: the simplest animation of lines whose point count changes.
 std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion,
-                              const std::string& model_name);
+                              const std::string& model_name, const PathLines* lines = nullptr);
 
 /// Writes bytes to a file, atomically (sinew::WriteFileAtomically); throws sinew::Error when the
 /// file cannot be written.

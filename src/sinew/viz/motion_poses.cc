@@ -68,6 +68,7 @@ BodyMotion DefaultPoseMotion(const model::ModelSpec& spec) {
   std::vector<double> q = tree.default_q();
   kinematics::CoordinateCouplers(spec).Apply(q);
   motion.X_GB = {Poses(tree, q)};
+  motion.q = {std::move(q)};
   return motion;
 }
 
@@ -83,13 +84,14 @@ BodyMotion MotionFromTable(const model::ModelSpec& spec, const io::Storage& tabl
       throw Error("motion table times must increase (row " + std::to_string(row + 1) + ")");
     }
     motion.times.push_back(table.time[row]);
-    motion.X_GB.push_back(Poses(tree, RowCoordinates(spec, tree, couplers, map, table, row)));
+    motion.q.push_back(RowCoordinates(spec, tree, couplers, map, table, row));
+    motion.X_GB.push_back(Poses(tree, motion.q.back()));
   }
   return motion;
 }
 
-std::vector<Transform> PosesAtTime(const model::ModelSpec& spec, const io::Storage& table, double t,
-                                   Diagnostics* notes) {
+BodyMotion MotionAtTime(const model::ModelSpec& spec, const io::Storage& table, double t,
+                        Diagnostics* notes) {
   kinematics::KinematicTree tree(spec);
   const kinematics::MotionColumnMap map = CheckedMap(spec, table);
   const kinematics::CoordinateCouplers couplers(spec);  // built once, applied to every row
@@ -107,7 +109,16 @@ std::vector<Transform> PosesAtTime(const model::ModelSpec& spec, const io::Stora
     const std::vector<double> q0 = RowCoordinates(spec, tree, couplers, map, table, lo);
     for (size_t i = 0; i < q.size(); ++i) q[i] = q0[i] + s * (q[i] - q0[i]);
   }
-  return Poses(tree, q);
+  BodyMotion motion;
+  motion.times = {t};
+  motion.X_GB = {Poses(tree, q)};
+  motion.q = {std::move(q)};
+  return motion;
+}
+
+std::vector<Transform> PosesAtTime(const model::ModelSpec& spec, const io::Storage& table, double t,
+                                   Diagnostics* notes) {
+  return MotionAtTime(spec, table, t, notes).X_GB[0];
 }
 
 }  // namespace sinew::viz

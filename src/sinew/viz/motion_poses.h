@@ -24,6 +24,10 @@ BodyMotion MotionFromTable(const model::ModelSpec& spec, const io::Storage& tabl
 /// Body poses at time `t` (s): coordinates interpolated linearly between the two rows
 /// around t. Unmatched columns and coordinates go to `notes` as in MotionFromTable. Throws
 /// sinew::Error when t is outside the table's time range.
+/// The one frame at time `t` (s), coordinates and body poses, as PosesAtTime.
+BodyMotion MotionAtTime(const model::ModelSpec& spec, const io::Storage& table, double t,
+                        Diagnostics* notes = nullptr);
+
 std::vector<Transform> PosesAtTime(const model::ModelSpec& spec, const io::Storage& table, double t,
                                    Diagnostics* notes = nullptr);
 

@@ -147,6 +147,39 @@ class Canvas {
     }
   }
 
+  // Draws the segment a-b (ground coordinates) `width` samples wide, depth-tested, pulled
+  // slightly towards the viewer so that a line lying on a surface shows. A segment reaching
+  // behind the camera is skipped.
+  void DrawSegment(const Vec3& a, const Vec3& b, const Vec3& color, double width) {
+    const Vec3 da = a - eye_, db = b - eye_;
+    const double za = -da.dot(cz_), zb = -db.dot(cz_);
+    if (!(za >= near_ && zb >= near_)) return;
+    const double ax = 0.5 * w_ + focal_ * da.dot(cx_) / za,
+                 ay = 0.5 * h_ - focal_ * da.dot(cy_) / za;
+    const double bx = 0.5 * w_ + focal_ * db.dot(cx_) / zb,
+                 by = 0.5 * h_ - focal_ * db.dot(cy_) / zb;
+    const double span = std::max(std::abs(bx - ax), std::abs(by - ay));
+    if (!std::isfinite(span) || span > 4.0 * (w_ + h_)) return;
+    const int steps = static_cast<int>(std::ceil(span)) + 1;
+    const int half = std::max(0, static_cast<int>(std::lround(0.5 * width)) - 1);
+    for (int s = 0; s <= steps; ++s) {
+      const double t = static_cast<double>(s) / steps;
+      // Depth is perspective-correct: 1/z is linear on screen.
+      const float z = static_cast<float>(0.995 / ((1 - t) / za + t / zb));
+      const int cx = static_cast<int>(std::floor(ax + t * (bx - ax)));
+      const int cy = static_cast<int>(std::floor(ay + t * (by - ay)));
+      for (int y = cy - half; y <= cy + half + 1; ++y) {
+        for (int x = cx - half; x <= cx + half + 1; ++x) {
+          if (x < 0 || y < 0 || x >= w_ || y >= h_) continue;
+          const size_t at = static_cast<size_t>(y) * w_ + x;
+          if (z >= depth_[at]) continue;
+          depth_[at] = z;
+          color_[at] = color;
+        }
+      }
+    }
+  }
+
   // Averages each block of supersample x supersample samples into one pixel.
   Image Resolve(int width, int height, int supersample) const {
     Image image(width, height);
@@ -200,8 +233,21 @@ void CheckRenderSize(int width, int height) {
   }
 }
 
+std::pair<Vec3, Vec3> GrowBounds(std::pair<Vec3, Vec3> bounds,
+                                 const std::vector<std::vector<Vec3>>& lines) {
+  for (const std::vector<Vec3>& line : lines) {
+    for (const Vec3& p : line) {
+      bounds.first = bounds.first.cwiseMin(p);
+      bounds.second = bounds.second.cwiseMax(p);
+    }
+  }
+  return bounds;
+}
+
 Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
-                  const Camera& camera, const RenderOptions& options) {
+                  const Camera& camera, const RenderOptions& options,
+                  const std::vector<std::vector<Vec3>>& lines,
+                  const std::vector<Vec3>& line_colors) {
   CheckRenderSize(options.width, options.height);
   Canvas canvas(camera, options.width * kSupersample, options.height * kSupersample,
                 options.background);
@@ -252,7 +298,30 @@ Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
       canvas.DrawTriangle(p, n, parts[i]->color, parts[i]->opacity, true, key);
     }
   }
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const std::vector<Vec3>& line = lines[i];
+    const Vec3& color = i < line_colors.size() ? line_colors[i] : options.line_color;
+    for (size_t j = 1; j < line.size(); ++j) {
+      canvas.DrawSegment(line[j - 1], line[j], color, options.line_width * kSupersample);
+    }
+  }
   return canvas.Resolve(options.width, options.height, kSupersample);
+}
+
+Image RenderFramed(const VisualScene& scene, const std::vector<Transform>& X_GB,
+                   const RenderOptions& options, const std::vector<std::vector<Vec3>>& lines,
+                   const std::vector<Vec3>& line_colors) {
+  CheckRenderSize(options.width, options.height);
+  const bool has_parts = std::any_of(scene.bodies.begin(), scene.bodies.end(),
+                                     [](const VisualBody& b) { return !b.parts.empty(); });
+  const bool has_lines = std::any_of(lines.begin(), lines.end(),
+                                     [](const std::vector<Vec3>& l) { return !l.empty(); });
+  const Vec3 inf = Vec3::Constant(std::numeric_limits<double>::infinity());
+  const std::pair<Vec3, Vec3> bounds = GrowBounds(
+      has_parts || !has_lines ? SceneBounds(scene, X_GB) : std::pair<Vec3, Vec3>{inf, -inf}, lines);
+  const Camera camera = FrameCamera(bounds, options.view_direction,
+                                    static_cast<double>(options.width) / options.height);
+  return RenderScene(scene, X_GB, camera, options, lines, line_colors);
 }
 
 }  // namespace sinew::viz

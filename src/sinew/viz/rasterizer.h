@@ -29,6 +29,8 @@ struct RenderOptions {
   Vec3 background = Vec3(0.96, 0.96, 0.96);  ///< RGB in [0, 1].
   /// A floor under the model (at its lowest point) with the model's shadow from the key light.
   bool floor = false;
+  Vec3 line_color = Vec3(0.8, 0.1, 0.1);  ///< RGB of the lines (muscle paths).
+  double line_width = 2.0;                ///< Line width (pixels).
 };
 
 /// Parses a view name: "front" (from +x), "back", "right" (from +z), "left", "top" or "iso".
@@ -55,9 +57,25 @@ size_t RenderBytes(int width, int height);
 /// RenderBytes(width, height) <= kMaxRenderBytes; the message gives both figures.
 void CheckRenderSize(int width, int height);
 
-/// Renders the scene with bodies posed at X_GB (one transform per spec body). Throws
+/// Renders the scene with bodies posed at X_GB (one transform per spec body), and over it the
+/// polylines `lines` (points in ground, m; e.g. PathLines::vertices of one frame), depth-tested
+/// against the bodies, line i in line_colors[i] when given, else in options.line_color. Throws
 /// sinew::Error when CheckRenderSize refuses the size in `options`.
 Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
-                  const Camera& camera, const RenderOptions& options);
+                  const Camera& camera, const RenderOptions& options,
+                  const std::vector<std::vector<Vec3>>& lines = {},
+                  const std::vector<Vec3>& line_colors = {});
+
+/// `bounds` grown to hold every point of `lines`.
+std::pair<Vec3, Vec3> GrowBounds(std::pair<Vec3, Vec3> bounds,
+                                 const std::vector<std::vector<Vec3>>& lines);
+
+/// Renders the scene posed at X_GB, with the polylines `lines` as RenderScene draws them, and the
+/// camera framed automatically: FrameCamera on the bounds of the posed bodies and the lines (the
+/// lines' alone when no body has geometry) from options.view_direction, at the aspect ratio of
+/// the image (what `sinew render` and Python's Model.render draw). Throws as RenderScene.
+Image RenderFramed(const VisualScene& scene, const std::vector<Transform>& X_GB,
+                   const RenderOptions& options, const std::vector<std::vector<Vec3>>& lines = {},
+                   const std::vector<Vec3>& line_colors = {});
 
 }  // namespace sinew::viz

@@ -95,6 +95,11 @@ class SceneBuilder {
         }
       }
       if (fallback) AddPrimitives(spec_, b, radius, DepthColor(depth[b], max_depth), body);
+      if (options_.mode != VisType::kNone) {
+        for (const model::ContactGeometrySpec& c : spec_.contact_geometry) {
+          if (c.body == b) AddContactGeometry(c, radius, body, scene);
+        }
+      }
       scene.bodies.push_back(std::move(body));
     }
     scene.read_meshes = read_;
@@ -161,6 +166,51 @@ class SceneBuilder {
     part.scale = part.scale.cwiseProduct(size);
     body.parts.push_back(std::move(part));
     return true;
+  }
+
+  // One ContactGeometry in kContactColor: a sphere, an ellipsoid, a mesh, or a half-space as a
+  // thin square slab just inside its solid (x > 0 in its frame), 40 skeleton radii wide.
+  void AddContactGeometry(const model::ContactGeometrySpec& c, double skeleton_radius,
+                          VisualBody& body, VisualScene& scene) {
+    auto warn = [&](const std::string& message) {
+      scene.warnings.push_back(
+          {SourceLocation{spec_.file, c.where.line}, "/contactgeometryset/" + c.name, message});
+    };
+    auto number = [&](const char* key, int i, double fallback) {
+      const auto it = c.dimensions.find(key);
+      return it != c.dimensions.end() && static_cast<int>(it->second.size()) > i ? it->second[i]
+                                                                                : fallback;
+    };
+    VisualPart part;
+    part.name = c.name;
+    part.X_BG = c.X_BC;
+    part.color = kContactColor;
+    part.source = c.type;
+    if (c.type == "ContactSphere") {
+      part.mesh = UnitSphere();
+      part.scale = Vec3::Constant(number("radius", 0, skeleton_radius));
+    } else if (c.type == "ContactEllipsoid") {
+      part.mesh = UnitSphere();
+      part.scale = Vec3(number("radii", 0, 1), number("radii", 1, 1), number("radii", 2, 1));
+    } else if (c.type == "ContactHalfSpace") {
+      const double half_width = std::max(1.0, 40.0 * skeleton_radius);
+      const double half_thickness = 0.005 * half_width;
+      part.mesh = UnitBox();
+      part.X_BG = c.X_BC * Transform::Translation(Vec3(half_thickness, 0, 0));
+      part.scale = Vec3(half_thickness, half_width, half_width);
+    } else if (c.type == "ContactMesh") {
+      part.mesh = LoadMesh(c.mesh_file, warn);
+      if (!part.mesh) {
+        if (not_found_.count(c.mesh_file) > 0)
+          scene.missing_meshes.push_back({c.mesh_file, scene.warnings.size() - 1});
+        return;
+      }
+      part.source = c.mesh_file;
+    } else {
+      warn("contact geometry type '" + c.type + "' is not drawn");
+      return;
+    }
+    body.parts.push_back(std::move(part));
   }
 
   // A Line (start_point to end_point) or an Arrow (from start_point along direction for

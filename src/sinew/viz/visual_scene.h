@@ -27,6 +27,11 @@ enum class VisType {
 /// Parses "none", "primitives" or "mesh"; throws sinew::Error otherwise.
 VisType ParseVisType(const std::string& text);
 
+/// The colour of contact geometry (OpenSim's ContactSphere, ContactHalfSpace, ContactMesh,
+/// ContactEllipsoid), drawn with the bodies in the primitives and mesh modes: orange, a colour
+/// no other part uses.
+inline const Vec3 kContactColor = Vec3(1.0, 0.5, 0.05);
+
 /// One drawable piece fixed to a body: vertex v of `mesh` is at X_BG * (scale .* v) in B.
 struct VisualPart {
   std::string name;

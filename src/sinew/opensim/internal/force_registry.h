@@ -92,6 +92,10 @@ std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInpu
 std::shared_ptr<engine::ForceElement> BuildThelen2003MuscleDeprecated(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildMillard2012EquilibriumMuscle(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildDeGrooteFregly2016Muscle(const ForceBuildInput& in);
+/// HuntCrossleyForce, ElasticFoundationForce, SmoothSphereHalfSpaceForce (contact_builders.cc).
+std::shared_ptr<engine::ForceElement> BuildHuntCrossleyForce(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildElasticFoundationForce(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildSmoothSphereHalfSpaceForce(const ForceBuildInput& in);
 
 /// The entry for OpenSim class `opensim_class`, or null when Sinew does not simulate it.
 const ForceType* FindForceType(const std::string& opensim_class);

@@ -1,0 +1,225 @@
+"""Type stubs of the compiled module sinew._sinew (re-exported by `sinew`)."""
+import os
+from typing import Callable, Dict, List, Mapping, Optional, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+from .result import Result
+
+PathLike = Union[str, "os.PathLike[str]"]
+ArrayLike = npt.ArrayLike
+
+
+class Error(Exception):
+    """Bad input or an impossible request: str(error) is 'file:line: component: message'."""
+    file: str
+    """The file the error is about ("" when none)."""
+    line: int
+    """The 1-based line in that file (0 when unknown)."""
+    component: str
+    """The model component's path or name ("" when none), e.g. /jointset/knee_r."""
+    message: str
+    """What is wrong."""
+
+
+class Function:
+    """A function of time u(t), used as an actuator's excitation."""
+    def __call__(self, t: float) -> float:
+        """The value at time t (s)."""
+
+
+class Constant(Function):
+    """u(t) = value."""
+    def __init__(self, value: float) -> None: ...
+    @property
+    def value(self) -> float: ...
+
+
+class Ramp(Function):
+    """u(t) = 0 before start, slope * (t - start) from start on (not clamped)."""
+    def __init__(self, start: float, slope: float) -> None: ...
+    @property
+    def start(self) -> float: ...
+    @property
+    def slope(self) -> float: ...
+
+
+class Sine(Function):
+    """u(t) = amplitude * sin(2 pi frequency_hz t + phase) + offset (phase in rad)."""
+    def __init__(self, amplitude: float, frequency_hz: float, phase: float = 0.0,
+                 offset: float = 0.0) -> None: ...
+    @property
+    def amplitude(self) -> float: ...
+    @property
+    def frequency_hz(self) -> float: ...
+    @property
+    def phase(self) -> float: ...
+    @property
+    def offset(self) -> float: ...
+
+
+Excitation = Union[float, Function, Callable[[float], float]]
+
+
+def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool = False,
+         contact: str = "nsc", strict: bool = False) -> "Model":
+    """Reads an OpenSim model (.osim, every version 1.9 to 4.6) and builds what Sinew simulates.
+
+    visualization: None/"none", "primitives" or "mesh" (visual assets of the bodies).
+    collision: make collision shapes. contact: "nsc" or "smc". strict: anything approximated,
+    substituted or not simulated is an Error. Raises sinew.Error with file, line, component.
+    """
+
+
+class Model:
+    """A parsed model. Immutable; States, Simulators and Batches share it."""
+    @property
+    def path(self) -> str:
+        """The .osim file it was read from."""
+    @property
+    def name(self) -> str:
+        """The model's name in the file."""
+    @property
+    def coordinates(self) -> List[str]:
+        """Coordinate names, the column order of q and u."""
+    @property
+    def bodies(self) -> List[str]:
+        """Body names, ground first."""
+    @property
+    def actuators(self) -> List[str]:
+        """Actuator names, the column order of controls and State.inputs."""
+    @property
+    def state_variables(self) -> List[str]:
+        """Auxiliary state variables (<element>/<variable>), the column order of z."""
+    @property
+    def report(self) -> Dict[str, list]:
+        """What the parser built, as data: bodies, joints (type, form, stand_in), forces
+        (type, simulated, actuator, excitation_source, disabled), constraints, stand_ins
+        (names of joints replaced by ball joints), warnings (file, line, component, message),
+        not_simulated."""
+    def default_state(self) -> "State":
+        """Every coordinate at its default value and speed, assembled onto the constraints."""
+    def simulate(self, duration: float, *, accuracy: float = 1e-6, integrator: str = "rk45",
+                 step: Optional[float] = None, report_interval: float = 0.01,
+                 initial_states: Union[None, "State", PathLike] = None,
+                 excitations: Optional[Mapping[str, Excitation]] = None,
+                 controls: Optional[PathLike] = None) -> Result:
+        """Forward simulation over `duration` s, what `sinew simulate` runs (same arrays bit for
+        bit, Result.to_sto writes its states.sto byte for byte).
+
+        integrator: "rk45" (error-controlled, accuracy), "euler" or "implicit-euler" (fixed
+        `step`); for rk45, step bounds the step. Reports at every multiple of report_interval
+        and at the end. initial_states: a State, or a states table (.sto) whose first row
+        gives the coordinates as OpenSim's Forward tool takes it. excitations: actuator name ->
+        number, Function, or Python function of time (called at every evaluation, slower),
+        over the model's controllers. controls: an OpenSim ControlSet file.
+        Ctrl-C raises KeyboardInterrupt between steps.
+        """
+    def kinematics(self, motion: Union[None, PathLike, Result] = None) -> Dict[str, object]:
+        """Body poses and marker positions in ground along `motion`: None (the default pose), a
+        motion or states table (.mot/.sto; coordinates by name or OpenSim 4 path, degrees
+        converted, coupler-driven coordinates following their drivers), or a Result.
+
+        Returns time [n], bodies (names), p_GB [n, bodies, 3] (body origins, m), R_GB
+        [n, bodies, 3, 3] (orientations), markers (names), marker_positions [n, markers, 3] (m).
+        Constraints are not enforced (as `sinew kinematics`).
+        """
+    def export(self, path: PathLike, motion: Union[None, PathLike, Result] = None, *,
+               visualization: str = "mesh", geometry_dirs: Sequence[str] = (),
+               fps: float = 0.0) -> None:
+        """Writes `motion` (as for kinematics) as a glTF file (.glb) or a self-contained HTML
+        viewer (.html), byte for byte what `sinew export` writes. fps > 0 drops frames closer
+        than 1/fps s. Missing meshes are a UserWarning."""
+    def render(self, path: PathLike, motion: Union[None, PathLike, Result] = None, *,
+               time: Optional[float] = None, visualization: str = "mesh",
+               geometry_dirs: Sequence[str] = (), width: int = 800, height: int = 800,
+               view: str = "iso", floor: bool = True) -> None:
+        """Writes a PNG picture of the model at `time` (s) of `motion` (default: its first row;
+        no motion: the default pose), byte for byte what `sinew render` writes. view: "iso",
+        "front", "back", "right", "left" or "top"."""
+    def simulator(self, step: float, *, integrator: str = "euler", accuracy: float = 1e-6,
+                  initial_states: Union[None, "State", PathLike] = None) -> "Simulator":
+        """A Simulator that advances this model by `step` s per call."""
+
+
+class State:
+    """A state of a model: a plain value (copy() is independent). Arrays are copies."""
+    t: float
+    """Time (s)."""
+    q: np.ndarray
+    """Coordinate values (rad or m), Model.coordinates order; setting places the bodies."""
+    u: np.ndarray
+    """Coordinate speeds (rad/s or m/s); setting places the bodies."""
+    z: np.ndarray
+    """Auxiliary state variables, Model.state_variables order."""
+    inputs: np.ndarray
+    """Actuator excitations, Model.actuators order."""
+    @property
+    def model(self) -> Model: ...
+    def value(self, coordinate: str) -> float:
+        """A coordinate's value (rad or m); sinew.Error for an unknown name."""
+    def speed(self, coordinate: str) -> float:
+        """A coordinate's speed (rad/s or m/s)."""
+    def set_value(self, coordinate: str, value: float) -> None:
+        """Sets a coordinate's value and places the bodies."""
+    def set_speed(self, coordinate: str, speed: float) -> None:
+        """Sets a coordinate's speed and places the bodies."""
+    def copy(self) -> "State":
+        """An independent copy."""
+
+
+class Simulator:
+    """One copy of a model stepped by fixed intervals, for control loops. Its inputs are the
+    controls given to step (the model's own controllers are not used)."""
+    def reset(self, state: Optional[State] = None) -> np.ndarray:
+        """Starts again from `state` (default: the initial state); returns [q, u]."""
+    def step(self, controls: Optional[ArrayLike] = None, repeat: int = 1) -> np.ndarray:
+        """Sets the inputs to `controls` (one per actuator; omitted: unchanged), advances
+        `repeat` steps (default 1, an action repeat) with them, returns the observation [q, u]
+        (a new array of 2 x coordinates)."""
+    @property
+    def t(self) -> float: ...
+    @property
+    def q(self) -> np.ndarray: ...
+    @property
+    def u(self) -> np.ndarray: ...
+    @property
+    def state(self) -> State:
+        """A copy of the current state."""
+    @property
+    def model(self) -> Model: ...
+
+
+class Batch:
+    """n independent copies of a model stepped together by fixed intervals, across `threads`
+    threads (default: every core) with the GIL released; one System shared read-only."""
+    def __init__(self, model: Model, n: int, *, step: float, integrator: str = "euler",
+                 threads: Optional[int] = None, accuracy: float = 1e-6) -> None: ...
+    def reset(self, states: Union[None, State, Sequence[State]] = None) -> None:
+        """Every copy from the default state (None), from one State, or copy i from states[i]."""
+    def step(self, controls: Optional[ArrayLike] = None) -> None:
+        """Advances every copy one step; controls: [n, actuators] (omit without actuators)."""
+    @property
+    def q(self) -> np.ndarray:
+        """[n, coordinates] values (a copy)."""
+    @property
+    def u(self) -> np.ndarray:
+        """[n, coordinates] speeds (a copy)."""
+    @property
+    def t(self) -> np.ndarray:
+        """[n] times (a copy)."""
+    def state(self, i: int) -> State:
+        """A copy of copy i's state."""
+    @property
+    def n(self) -> int: ...
+    @property
+    def threads(self) -> int: ...
+    @property
+    def model(self) -> Model: ...
+    def __len__(self) -> int: ...
+
+
+def write_table(path: PathLike, name: str, labels: Sequence[str], time: ArrayLike,
+                values: ArrayLike) -> None:
+    """Writes an OpenSim storage file (.sto) as `sinew simulate` writes its tables."""

@@ -1,0 +1,59 @@
+"""Result: what Model.simulate returns, plain NumPy arrays (it pickles, so Dask can gather it)."""
+from __future__ import annotations
+
+import os
+from typing import Any, Dict, List
+
+import numpy as np
+
+
+class Result:
+    """The states of a simulation at its report times.
+
+    time: [n] seconds. q, u: [n, coordinates] values (rad or m) and speeds, in the order of
+    `coordinates`. z: [n, state variables], in the order of `state_variables`. states: the
+    states table as `sinew simulate` writes it to states.sto, columns named by `labels`.
+    final_state: the sinew.State at the end. statistics: the integrator's steps, rejected steps
+    and evaluations.
+    """
+
+    def __init__(self, *, time: np.ndarray, q: np.ndarray, u: np.ndarray, z: np.ndarray,
+                 coordinates: List[str], state_variables: List[str], labels: List[str],
+                 states: np.ndarray, final_state: Any, statistics: Dict[str, int]) -> None:
+        self.time = time
+        self.q = q
+        self.u = u
+        self.z = z
+        self.coordinates = list(coordinates)
+        self.state_variables = list(state_variables)
+        self.labels = list(labels)
+        self.states = states
+        self.final_state = final_state
+        self.statistics = dict(statistics)
+
+    def __getstate__(self) -> Dict[str, Any]:
+        # A sinew.State holds its model and does not pickle: keep the arrays only.
+        state = dict(self.__dict__)
+        state["final_state"] = None
+        return state
+
+    def __len__(self) -> int:
+        return len(self.time)
+
+    def __repr__(self) -> str:
+        return (f"<sinew.Result {len(self.time)} times from {self.time[0]:g} to "
+                f"{self.time[-1]:g} s, {len(self.coordinates)} coordinates>")
+
+    def to_sto(self, path: "os.PathLike[str] | str") -> None:
+        """Writes the states table as `sinew simulate` writes states.sto (byte for byte)."""
+        from ._sinew import write_table
+        write_table(os.fspath(path), "states", self.labels, self.time, self.states)
+
+    def to_pandas(self) -> Any:
+        """The states table as a pandas DataFrame indexed by time (needs pandas)."""
+        try:
+            import pandas as pd
+        except ImportError as error:
+            raise ImportError("Result.to_pandas needs pandas (pip install pandas)") from error
+        return pd.DataFrame(self.states, index=pd.Index(self.time, name="time"),
+                            columns=self.labels)

@@ -1,0 +1,113 @@
+// sinew.load and sinew.Model: a parsed model, its names (coordinates, bodies, actuators, state
+// variables), the parser's Report as plain data, and its default state.
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+#include <sinew/engine/assemble.h>
+
+#include <filesystem>
+
+#include "bindings.h"
+#include "state_handle.h"
+
+namespace sinew::python {
+namespace {
+
+py::dict WarningToDict(const Diagnostic& d) {
+  py::dict out;
+  out["file"] = d.where.file;
+  out["line"] = d.where.line;
+  out["component"] = d.component;
+  out["message"] = d.message;
+  return out;
+}
+
+// The Report as dicts and lists: bodies, joints, forces, constraints, stand_ins (joint names),
+// warnings, not_simulated.
+py::dict ReportToDict(const opensim::Report& report) {
+  py::dict out;
+  py::list bodies, joints, forces, constraints, stand_ins, warnings;
+  for (const auto& [key, body] : report.bodies()) {
+    bodies.append(py::dict(py::arg("name") = key, py::arg("index") = body.body));
+  }
+  for (const auto& [key, joint] : report.joints()) {
+    joints.append(py::dict(py::arg("name") = key, py::arg("type") = joint.type,
+                           py::arg("form") = opensim::JointFormName(joint.form),
+                           py::arg("stand_in") = joint.standin));
+    if (joint.standin) stand_ins.append(key);
+  }
+  for (const auto& [key, force] : report.forces()) {
+    forces.append(py::dict(py::arg("name") = key, py::arg("type") = force.type,
+                           py::arg("simulated") = force.load != nullptr,
+                           py::arg("actuator") = force.actuator != nullptr,
+                           py::arg("excitation_source") = force.excitation_source,
+                           py::arg("disabled") = force.disabled));
+  }
+  for (const auto& [key, constraint] : report.constraints()) {
+    constraints.append(py::dict(py::arg("name") = key, py::arg("type") = constraint.type,
+                                py::arg("simulated") = constraint.constraint != nullptr));
+  }
+  for (const Diagnostic& d : report.warnings()) warnings.append(WarningToDict(d));
+  out["bodies"] = bodies;
+  out["joints"] = joints;
+  out["forces"] = forces;
+  out["constraints"] = constraints;
+  out["stand_ins"] = stand_ins;
+  out["warnings"] = warnings;
+  out["not_simulated"] = report.not_simulated();
+  return out;
+}
+
+}  // namespace
+
+void BindModel(py::module_& m) {
+  m.def(
+      "load",
+      [](const std::filesystem::path& path, const std::optional<std::string>& visualization,
+         bool collision, const std::string& contact, bool strict) {
+        LoadOptions options;
+        options.visualization = visualization.value_or("none");
+        options.collision = collision;
+        options.contact = contact;
+        options.strict = strict;
+        return ModelHandle::Load(path.string(), options);
+      },
+      py::arg("path"), py::kw_only(), py::arg("visualization") = py::none(),
+      py::arg("collision") = false, py::arg("contact") = "nsc", py::arg("strict") = false,
+      "Reads an OpenSim model (.osim) and builds what Sinew simulates of it.");
+
+  py::class_<ModelHandle, ModelPtr>(m, "Model", "A parsed OpenSim model (sinew.load makes one).")
+      .def_property_readonly("path", &ModelHandle::path, "The .osim file it was read from.")
+      .def_property_readonly("name", [](const ModelHandle& h) { return h.spec().name; })
+      .def_property_readonly("coordinates", &ModelHandle::CoordinateNames,
+                             "Coordinate names, in the column order of q and u.")
+      .def_property_readonly(
+          "bodies",
+          [](const ModelHandle& h) {
+            std::vector<std::string> names;
+            for (const auto& b : h.system().bodies()) names.push_back(b.name);
+            return names;
+          },
+          "Body names, ground first.")
+      .def_property_readonly("actuators", &ModelHandle::actuators,
+                             "Actuator names, in the column order of controls.")
+      .def_property_readonly(
+          "state_variables", [](const ModelHandle& h) { return h.system().state_variable_names(); },
+          "Auxiliary state variable names (<element>/<variable>), the column order of z.")
+      .def_property_readonly(
+          "report", [](const ModelHandle& h) { return ReportToDict(h.parser().GetReport()); },
+          "What the parser built: bodies, joints, forces, constraints, stand_ins, warnings, "
+          "not_simulated.")
+      .def(
+          "default_state",
+          [](const ModelPtr& h) {
+            return StateHandle{h, h->DefaultState()};
+          },
+          "The state with every coordinate at its default value and speed, assembled.")
+      .def("__repr__", [](const ModelHandle& h) {
+        return "<sinew.Model '" + h.spec().name + "' from " + h.path() + ": " +
+               std::to_string(h.system().num_coordinates()) + " coordinates, " +
+               std::to_string(h.system().num_inputs()) + " actuators>";
+      });
+}
+
+}  // namespace sinew::python

@@ -1,0 +1,151 @@
+// Model.kinematics, Model.export and Model.render: body poses and marker positions along a
+// motion, its glTF/HTML export and a PNG picture, through the library's viz::MotionFromTable and
+// viz::PosesAtTime (coordinates by name or OpenSim 4 state path, degrees converted,
+// coupler-driven coordinates following their drivers), kinematics::CalcMarkerLocationRow,
+// viz::ExportAnimation and viz::RenderFramed, on the spec the model's System was built from
+// (stand-ins included), as `sinew kinematics`, `export` and `render` use them.
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+#include <sinew/io/storage.h>
+#include <sinew/kinematics/body_kinematics.h>
+#include <sinew/viz/export_animation.h>
+#include <sinew/viz/gltf_writer.h>
+#include <sinew/viz/image.h>
+#include <sinew/viz/motion_poses.h>
+#include <sinew/viz/rasterizer.h>
+
+#include <filesystem>
+#include <optional>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "model_handle.h"
+
+namespace sinew::python {
+namespace {
+
+// Warns (Python's warnings) with the first of `notes` and how many there are.
+void WarnNotes(const Diagnostics& notes, const std::string& what) {
+  if (notes.empty()) return;
+  std::string message = what + ": " + notes.front().Format();
+  if (notes.size() > 1) message += " (and " + std::to_string(notes.size() - 1) + " more)";
+  if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
+}
+
+// The table of `motion`: the path of a motion or states table, or a sinew.Result (its states).
+io::Storage TableOf(const py::object& motion) {
+  if (!py::hasattr(motion, "states") || !py::hasattr(motion, "labels")) {
+    return io::ReadStorage(py::str(py::module_::import("os").attr("fspath")(motion)));
+  }
+  io::Storage table;
+  table.name = "states";
+  table.labels = motion.attr("labels").cast<std::vector<std::string>>();
+  const auto time = motion.attr("time").cast<DoubleArray>();
+  const auto states = motion.attr("states").cast<DoubleArray>();
+  table.time.assign(time.data(), time.data() + time.size());
+  table.values.assign(states.data(), states.data() + states.size());
+  return table;
+}
+
+// The body poses along `motion`: None (the default pose) or as TableOf.
+viz::BodyMotion MotionOf(const ModelHandle& model, const py::object& motion) {
+  if (motion.is_none()) return viz::DefaultPoseMotion(model.spec());
+  Diagnostics notes;
+  viz::BodyMotion poses = viz::MotionFromTable(model.spec(), TableOf(motion), &notes);
+  WarnNotes(notes, "motion");
+  return poses;
+}
+
+py::dict Kinematics(const ModelPtr& model, const py::object& motion) {
+  const viz::BodyMotion poses = MotionOf(*model, motion);
+  const model::ModelSpec& spec = model->spec();
+  const size_t n = poses.times.size(), nb = spec.bodies.size(), nm = spec.markers.size();
+  py::array_t<double> time(n), p_GB({n, nb, size_t{3}}), R_GB({n, nb, size_t{3}, size_t{3}}),
+      markers({n, nm, size_t{3}});
+  auto p = p_GB.mutable_unchecked<3>();
+  auto R = R_GB.mutable_unchecked<4>();
+  auto m = markers.mutable_unchecked<3>();
+  for (size_t i = 0; i < n; ++i) {
+    time.mutable_data()[i] = poses.times[i];
+    for (size_t b = 0; b < nb; ++b) {
+      const Transform& X = poses.X_GB[i][b];
+      for (int r = 0; r < 3; ++r) {
+        p(i, b, r) = X.p[r];
+        for (int c = 0; c < 3; ++c) R(i, b, r, c) = X.R(r, c);
+      }
+    }
+    const std::vector<double> row = kinematics::CalcMarkerLocationRow(spec, poses.X_GB[i]);
+    for (size_t k = 0; k < 3 * nm; ++k) m(i, k / 3, k % 3) = row[k];
+  }
+  std::vector<std::string> bodies, marker_names;
+  for (const auto& b : spec.bodies) bodies.push_back(b.name);
+  for (const auto& k : spec.markers) marker_names.push_back(k.name);
+  return py::dict(py::arg("time") = time, py::arg("bodies") = bodies, py::arg("p_GB") = p_GB,
+                  py::arg("R_GB") = R_GB, py::arg("markers") = marker_names,
+                  py::arg("marker_positions") = markers);
+}
+
+void Export(const ModelPtr& model, const std::filesystem::path& path, const py::object& motion,
+            const std::string& visualization, const std::vector<std::string>& geometry_dirs,
+            double fps) {
+  viz::ExportOptions options;
+  options.visual.mode = viz::ParseVisType(visualization);
+  options.visual.geometry_dirs = geometry_dirs;
+  options.max_fps = fps;
+  const viz::BodyMotion poses = MotionOf(*model, motion);
+  WarnNotes(viz::ExportAnimation(model->spec(), poses, path.string(), options).warnings, "export");
+}
+
+void Render(const ModelPtr& model, const std::filesystem::path& path, const py::object& motion,
+            std::optional<double> time, const std::string& visualization,
+            const std::vector<std::string>& geometry_dirs, int width, int height,
+            const std::string& view, bool floor) {
+  viz::RenderOptions options;
+  options.width = width;
+  options.height = height;
+  options.floor = floor;
+  options.view_direction = viz::ParseViewDirection(view);
+  viz::CheckRenderSize(width, height);
+  const model::ModelSpec& spec = model->spec();
+  std::vector<Transform> X_GB;
+  if (motion.is_none()) {
+    if (time) throw Error("render: a time needs a motion");
+    X_GB = viz::DefaultPoseMotion(spec).X_GB[0];
+  } else {
+    const io::Storage table = TableOf(motion);
+    Diagnostics notes;
+    X_GB = viz::PosesAtTime(spec, table, time.value_or(table.time.empty() ? 0.0 : table.time[0]),
+                            &notes);
+    WarnNotes(notes, "motion");
+  }
+  viz::VisualOptions visual;
+  visual.mode = viz::ParseVisType(visualization);
+  visual.geometry_dirs = geometry_dirs;
+  const viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
+  WarnNotes(scene.warnings, "render");
+  viz::WriteFileBytes(path.string(), viz::EncodePng(viz::RenderFramed(scene, X_GB, options)));
+}
+
+}  // namespace
+
+void BindMotion(py::module_& m) {
+  py::class_<ModelHandle, ModelPtr> model =
+      py::reinterpret_borrow<py::class_<ModelHandle, ModelPtr>>(m.attr("Model"));
+  model.def("kinematics", &Kinematics, py::arg("motion") = py::none(),
+            "Body poses and marker positions in ground along `motion` (None: the default pose; "
+            "a .mot/.sto path; a sinew.Result): a dict of time [n], bodies, p_GB [n, bodies, 3] "
+            "(m), R_GB [n, bodies, 3, 3], markers, marker_positions [n, markers, 3] (m).");
+  model.def("export", &Export, py::arg("path"), py::arg("motion") = py::none(), py::kw_only(),
+            py::arg("visualization") = "mesh",
+            py::arg("geometry_dirs") = std::vector<std::string>{}, py::arg("fps") = 0.0,
+            "Writes `motion` (as for kinematics) as a glTF (.glb) or a self-contained HTML "
+            "viewer (.html), as `sinew export` does.");
+  model.def("render", &Render, py::arg("path"), py::arg("motion") = py::none(), py::kw_only(),
+            py::arg("time") = py::none(), py::arg("visualization") = "mesh",
+            py::arg("geometry_dirs") = std::vector<std::string>{}, py::arg("width") = 800,
+            py::arg("height") = 800, py::arg("view") = "iso", py::arg("floor") = true,
+            "Writes a PNG picture of the model at `time` of `motion` (default: its first row; "
+            "no motion: the default pose), as `sinew render` does.");
+}
+
+}  // namespace sinew::python

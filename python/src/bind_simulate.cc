@@ -1,0 +1,144 @@
+// Model.simulate: engine::Simulate (the loop `sinew simulate` runs) over a model built as the
+// CLI builds it, recording every reported state into NumPy arrays, and write_table, which
+// writes a table with io::StorageWriter (states.sto byte for byte as the CLI writes it).
+// The GIL is released while the engine runs; Ctrl-C (KeyboardInterrupt) stops the run between
+// steps through the driver's stop flag.
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+#include <sinew/engine/integrator.h>
+#include <sinew/engine/simulation.h>
+#include <sinew/functions/constant.h>
+#include <sinew/io/storage_writer.h>
+#include <sinew/opensim/states_table.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <optional>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "simulation_inputs.h"
+#include "state_handle.h"
+
+namespace sinew::python {
+namespace {
+
+// A rows x columns array copied from row-major `values`.
+py::array_t<double> ToMatrix(const std::vector<double>& values, size_t rows, size_t columns) {
+  py::array_t<double> array({rows, columns});
+  if (!values.empty())
+    std::memcpy(array.mutable_data(), values.data(), sizeof(double) * values.size());
+  return array;
+}
+
+// Checks for Ctrl-C at most every 50 ms of wall time, taking the GIL only then; sets `stop`
+// when Python has a pending KeyboardInterrupt (or another signal handler raised).
+class SignalCheck {
+ public:
+  explicit SignalCheck(std::atomic<bool>& stop) : stop_(stop) {}
+  void operator()(double /*fraction*/, double /*t*/) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::milliseconds(50)) return;
+    last_ = now;
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) stop_ = true;
+  }
+
+ private:
+  std::atomic<bool>& stop_;
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+py::object Simulate(const ModelPtr& model, double duration, double accuracy,
+                    const std::string& integrator_name, std::optional<double> step,
+                    double report_interval, const py::object& initial_states,
+                    const std::optional<std::map<std::string, py::object>>& excitations,
+                    const std::optional<std::filesystem::path>& controls) {
+  const RunSetup setup = PrepareRun(model, initial_states, excitations, controls);
+  const engine::System& system = setup.model->system();
+  engine::State state = setup.state;
+  engine::IntegratorSettings settings;
+  settings.accuracy = accuracy;
+  settings.step = step.value_or(0.0);
+  const auto integrator = engine::MakeIntegrator(integrator_name, system, settings);
+  integrator->SetController(setup.controller);
+
+  const size_t nc = system.num_coordinates(), nz = system.num_state_variables();
+  std::vector<double> time, q, u, z, table, row;
+  auto record = [&](const engine::State& s) {
+    time.push_back(s.t);
+    q.insert(q.end(), s.q.data(), s.q.data() + nc);
+    u.insert(u.end(), s.u.data(), s.u.data() + nc);
+    z.insert(z.end(), s.z.data(), s.z.data() + nz);
+    opensim::StatesRow(system, s, row);
+    table.insert(table.end(), row.begin(), row.end());
+  };
+  std::atomic<bool> stop = false;
+  engine::SimulationOptions run;
+  run.duration = duration;
+  run.report_interval = report_interval;
+  run.stop = &stop;
+  run.progress = SignalCheck(stop);
+  engine::SimulationResult result;
+  {
+    py::gil_scoped_release release;
+    result = engine::Simulate(*integrator, state, run, record);
+  }
+  if (!result.completed) throw py::error_already_set();  // the KeyboardInterrupt
+
+  const auto labels = opensim::StatesLabels(system);
+  const size_t n = time.size();
+  py::array_t<double> time_array(n);
+  if (n > 0) std::memcpy(time_array.mutable_data(), time.data(), sizeof(double) * n);
+  const auto stats = integrator->stats();
+  py::dict statistics(py::arg("steps") = stats.steps, py::arg("rejected") = stats.rejected,
+                      py::arg("evaluations") = stats.evaluations);
+  py::object result_type = py::module_::import("sinew.result").attr("Result");
+  return result_type(
+      py::arg("time") = time_array, py::arg("q") = ToMatrix(q, n, nc),
+      py::arg("u") = ToMatrix(u, n, nc), py::arg("z") = ToMatrix(z, n, nz),
+      py::arg("coordinates") = setup.model->CoordinateNames(),
+      py::arg("state_variables") = system.state_variable_names(), py::arg("labels") = labels,
+      py::arg("states") = ToMatrix(table, n, labels.size()),
+      py::arg("final_state") = StateHandle{setup.model, state}, py::arg("statistics") = statistics);
+}
+
+// Writes a storage file with io::StorageWriter: header `name`, `labels`, then one row per time.
+void WriteTable(const std::filesystem::path& path, const std::string& name,
+                const std::vector<std::string>& labels, const DoubleArray& time,
+                const DoubleArray& values) {
+  if (time.ndim() != 1 || values.ndim() != 2 || values.shape(0) != time.shape(0) ||
+      values.shape(1) != static_cast<py::ssize_t>(labels.size())) {
+    throw Error({path.string(), 0}, "",
+                "the table must have one row per time and one column per label");
+  }
+  io::Storage header;
+  header.name = name;
+  header.labels = labels;
+  io::StorageWriter writer(path.string(), header);
+  const size_t columns = labels.size();
+  for (py::ssize_t i = 0; i < time.shape(0); ++i) {
+    writer.AppendRow(time.data()[i], std::span<const double>(values.data() + i * columns, columns));
+  }
+  writer.Finish();
+}
+
+}  // namespace
+
+void BindSimulate(py::module_& m) {
+  py::class_<ModelHandle, ModelPtr> model =
+      py::reinterpret_borrow<py::class_<ModelHandle, ModelPtr>>(m.attr("Model"));
+  model.def("simulate", &Simulate, py::arg("duration"), py::kw_only(), py::arg("accuracy") = 1e-6,
+            py::arg("integrator") = "rk45", py::arg("step") = py::none(),
+            py::arg("report_interval") = 0.01, py::arg("initial_states") = py::none(),
+            py::arg("excitations") = py::none(), py::arg("controls") = py::none(),
+            "Forward simulation over `duration` seconds (what `sinew simulate` runs); returns "
+            "a sinew.Result.");
+  m.def("write_table", &WriteTable, py::arg("path"), py::arg("name"), py::arg("labels"),
+        py::arg("time"), py::arg("values"),
+        "Writes an OpenSim storage file (.sto) as `sinew simulate` writes its tables.");
+}
+
+}  // namespace sinew::python

@@ -1,0 +1,90 @@
+#include "model_handle.h"
+
+#include <sinew/common/error.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
+#include <sinew/opensim/initial_states.h>
+
+namespace sinew::python {
+
+std::shared_ptr<ModelHandle> ModelHandle::Load(const std::string& path,
+                                               const LoadOptions& options) {
+  return Build(path, io::ReadOsim(path), options, 0.0);
+}
+
+std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::ModelSpec spec,
+                                                const LoadOptions& options, double t0) {
+  if (options.contact != "nsc" && options.contact != "smc") {
+    throw Error({path, 0}, "",
+                "contact must be \"nsc\" or \"smc\", not \"" + options.contact + "\"");
+  }
+  auto handle = std::shared_ptr<ModelHandle>(new ModelHandle());
+  handle->path_ = path;
+  handle->options_ = options;
+  handle->t0_ = t0;
+  opensim::OpenSimParser& parser = handle->parser_;
+  parser.SetVisualizationType(viz::ParseVisType(options.visualization));
+  if (options.collision) parser.EnableCollision();
+  parser.SetStrict(options.strict);
+  parser.SetControlsFile(options.controls_file);
+  handle->system_ = std::make_unique<engine::System>();
+  parser.ParseSpec(*handle->system_, std::move(spec));
+  handle->system_->Finalize();
+  // Each actuator owns one input; list them in input order.
+  handle->actuators_.assign(handle->system_->num_inputs(), "");
+  for (const auto& [key, force] : parser.GetReport().forces()) {
+    if (force.actuator && force.input >= 0) handle->actuators_[force.input] = key;
+  }
+  return handle;
+}
+
+std::shared_ptr<ModelHandle> ModelHandle::Rebuild(const std::string& states_file,
+                                                  const std::string& controls_file,
+                                                  std::vector<std::string>& unused_labels,
+                                                  Diagnostics& table_notes) const {
+  model::ModelSpec spec = io::ReadOsim(path_);
+  double t0 = 0.0;
+  unused_labels.clear();
+  table_notes.clear();
+  if (!states_file.empty()) {
+    io::Storage storage = io::ReadStorage(states_file);
+    table_notes = storage.notes;
+    const opensim::InitialStates initial = opensim::ApplyInitialStates(storage, states_file, spec);
+    unused_labels = initial.unused_labels;
+    t0 = initial.t0;
+    if (options_.strict && !unused_labels.empty()) {
+      throw Error({states_file, 0}, unused_labels.front(),
+                  std::to_string(unused_labels.size()) +
+                      " column(s) name no coordinate value or speed that is simulated (strict)");
+    }
+  }
+  LoadOptions options = options_;
+  options.controls_file = controls_file;
+  return Build(path_, std::move(spec), options, t0);
+}
+
+engine::State ModelHandle::DefaultState() const {
+  try {
+    return engine::MakeDefaultState(*system_, t0_);
+  } catch (const Error& error) {  // e.g. constraints that cannot be assembled: name the model
+    if (!error.where().file.empty()) throw;
+    throw Error({path_, 0}, error.component(), error.message());
+  }
+}
+
+std::vector<std::string> ModelHandle::CoordinateNames() const {
+  std::vector<std::string> names;
+  for (const auto& c : system_->coordinates()) names.push_back(c.name);
+  return names;
+}
+
+int ModelHandle::CoordinateIndex(const std::string& name) const {
+  const auto& coordinates = system_->coordinates();
+  for (size_t i = 0; i < coordinates.size(); ++i) {
+    if (coordinates[i].name == name) return static_cast<int>(i);
+  }
+  throw Error({path_, 0}, name, "the model has no coordinate of this name");
+}
+
+}  // namespace sinew::python

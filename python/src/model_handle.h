@@ -1,0 +1,75 @@
+// ModelHandle: what sinew.Model holds on the C++ side. The file's spec, the parser that built
+// the System (its Report and the excitation controller), and the System, shared read-only by
+// every State, Simulator and Batch made from the model (a finalized System never changes).
+#pragma once
+
+#include <sinew/engine/state.h>
+#include <sinew/engine/system.h>
+#include <sinew/model/model_spec.h>
+#include <sinew/opensim/parser.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sinew::python {
+
+/// The options of sinew.load, kept so a model can be built again from its file (with initial
+/// states or a controls file applied, as `sinew simulate` applies them before parsing).
+struct LoadOptions {
+  std::string visualization = "none";  ///< "none", "primitives" or "mesh"
+  bool collision = false;
+  std::string contact = "nsc";  ///< "nsc" or "smc"
+  bool strict = false;
+  std::string controls_file;  ///< an OpenSim ControlSet file, "" for none
+};
+
+/// A parsed model. Immutable after Build; shared by the objects made from it.
+class ModelHandle {
+ public:
+  /// Reads `path` and builds its System as `sinew simulate` does (io::ReadOsim, then
+  /// OpenSimParser::ParseSpec). Throws sinew::Error.
+  static std::shared_ptr<ModelHandle> Load(const std::string& path, const LoadOptions& options);
+  /// The same file built again as `sinew simulate --initial-states F --controls C` builds it:
+  /// the first row of the states table `states_file` ("" for none) as the coordinates'
+  /// defaults (opensim::ApplyInitialStates; t0() is the row's time, `unused_labels` gets the
+  /// columns it could not use, an error when strict, and `table_notes` what the reader read
+  /// leniently), driven by the ControlSet file `controls_file` ("" for the model's own
+  /// controllers).
+  std::shared_ptr<ModelHandle> Rebuild(const std::string& states_file,
+                                       const std::string& controls_file,
+                                       std::vector<std::string>& unused_labels,
+                                       Diagnostics& table_notes) const;
+
+  const std::string& path() const { return path_; }
+  const LoadOptions& options() const { return options_; }
+  const engine::System& system() const { return *system_; }
+  const opensim::OpenSimParser& parser() const { return parser_; }
+  const model::ModelSpec& spec() const { return parser_.GetSpec(); }
+  /// Start time of default states (the initial-states row's time, else 0).
+  double t0() const { return t0_; }
+  /// Names of the coordinates, in System order (the columns of q and u).
+  std::vector<std::string> CoordinateNames() const;
+  /// Names of the actuators, in the order of their inputs (engine::State::inputs).
+  const std::vector<std::string>& actuators() const { return actuators_; }
+
+  /// The default state at t0 (engine::MakeDefaultState); an error names the model's file.
+  engine::State DefaultState() const;
+  /// Index of coordinate `name`; throws sinew::Error naming the model for an unknown one.
+  int CoordinateIndex(const std::string& name) const;
+
+ private:
+  static std::shared_ptr<ModelHandle> Build(const std::string& path, model::ModelSpec spec,
+                                            const LoadOptions& options, double t0);
+
+  std::string path_;
+  LoadOptions options_;
+  opensim::OpenSimParser parser_;
+  std::unique_ptr<engine::System> system_;
+  double t0_ = 0.0;
+  std::vector<std::string> actuators_;
+};
+
+using ModelPtr = std::shared_ptr<ModelHandle>;
+
+}  // namespace sinew::python

@@ -1,0 +1,63 @@
+"""Model.simulate runs what `sinew simulate` runs: the same arrays bit for bit, and the same
+states.sto byte for byte (Result.to_sto), with initial states, excitations, both integrators."""
+import numpy as np
+import pytest
+
+import sinew
+from conftest import CHRONO, RESOURCES, read_sto
+
+CASES = {
+    "rk45 from initial states": (
+        RESOURCES / "DoublePendulum3D.osim",
+        ["--duration", 1, "--accuracy", 1e-8, "--initial-states",
+         RESOURCES / "DoublePendulum3D_InitialStates.sto"],
+        dict(duration=1.0, accuracy=1e-8,
+             initial_states=RESOURCES / "DoublePendulum3D_InitialStates.sto")),
+    "euler with a report interval": (
+        RESOURCES / "SinglePin.osim",
+        ["--duration", 0.5, "--integrator", "euler", "--step", 1e-3, "--report-interval", 0.05],
+        dict(duration=0.5, integrator="euler", step=1e-3, report_interval=0.05)),
+    "excitations": (
+        CHRONO / "double_pendulum.osim",
+        ["--duration", 0.5, "--excitation", "Torq1=sine:0.5,2,0.1", "--excitation",
+         "Torq2=ramp:0.1,2"],
+        dict(duration=0.5, excitations={"Torq1": sinew.Sine(0.5, 2, 0.1),
+                                        "Torq2": sinew.Ramp(0.1, 2)})),
+}
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_simulate_equals_cli_bit_for_bit(case, cli, tmp_path):
+    model_file, args, options = CASES[case]
+    states = cli([model_file, *args], tmp_path / "cli")
+    options = dict(options)
+    result = sinew.load(model_file).simulate(options.pop("duration"), **options)
+    labels, time, values = read_sto(states)
+    assert labels == result.labels
+    assert np.array_equal(time, result.time)
+    assert np.array_equal(values, result.states)
+    for c, coordinate in enumerate(result.coordinates):
+        column = [i for i, label in enumerate(labels) if label.endswith(f"/{coordinate}/value")]
+        assert np.array_equal(values[:, column[0]], result.q[:, c])
+    result.to_sto(tmp_path / "python.sto")
+    assert (tmp_path / "python.sto").read_bytes() == states.read_bytes()
+
+
+def test_constant_excitation_equals_cli(cli, tmp_path):
+    states = cli([CHRONO / "torque-actuator.osim", "--duration", 0.3, "--excitation",
+                  "grav=constant:0.7"], tmp_path / "cli")
+    result = sinew.load(CHRONO / "torque-actuator.osim").simulate(0.3, excitations={"grav": 0.7})
+    assert np.array_equal(read_sto(states)[2], result.states)
+
+
+def test_python_function_excitation_equals_the_library_function():
+    # A Python callable is called at every evaluation; t -> t is Ramp(0, 1) to the last bit.
+    model = sinew.load(CHRONO / "torque-actuator.osim")
+    ramp = model.simulate(0.5, excitations={"grav": sinew.Ramp(0.0, 1.0)})
+    function = model.simulate(0.5, excitations={"grav": lambda t: t})
+    assert np.array_equal(ramp.states, function.states)
+
+    def broken(t):
+        raise ValueError("no excitation at this time")
+    with pytest.raises(ValueError, match="no excitation"):
+        model.simulate(0.5, excitations={"grav": broken})

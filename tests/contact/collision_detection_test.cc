@@ -1,0 +1,124 @@
+// Collision detection of the seed's collision cylinders through Bullet (CollisionDetector):
+// overlaps of cylinders with each other and with a ground plane against their closed forms, and
+// on a real skeleton the family filter and the pairs left out because they overlap at rest.
+#include <gtest/gtest.h>
+#include <sinew/contact/collision_detection.h>
+#include <sinew/kinematics/forward_kinematics.h>
+#include <sinew/kinematics/kinematic_tree.h>
+#include <sinew/opensim/parser.h>
+
+#include <iostream>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace sinew::contact {
+namespace {
+
+std::vector<CollisionContact> Contacts(const CollisionDetector& detector,
+                                       const std::vector<Transform>& X_GB) {
+  std::vector<CollisionContact> out;
+  detector.FindContacts(X_GB, [&](const CollisionContact& c) { out.push_back(c); });
+  return out;
+}
+
+// Bodies 1 and 2 (ground is 0), one family: a 1 m cylinder of radius `r` along x through each
+// body's origin.
+CollisionModel TwoCylinders(double r) {
+  CollisionModel model;
+  model.family = {0, 1, 1};
+  model.shapes = {{1, Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0), r}, {2, Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0), r}};
+  return model;
+}
+
+TEST(CollisionDetectionTest, CylindersOverlapByTheirRadiiMinusTheirDistance) {
+  const double r = 0.05;
+  const CollisionDetector detector(TwoCylinders(r), std::nullopt);
+  ASSERT_EQ(detector.num_pairs(), 1);
+  // Parallel, side by side 0.08 m apart along y: they overlap by 2r - 0.08 = 0.02 m.
+  std::vector<Transform> X_GB = {Transform(), Transform(), Transform::Translation(Vec3(0, 0.08, 0))};
+  std::vector<CollisionContact> c = Contacts(detector, X_GB);
+  ASSERT_EQ(c.size(), 1u);
+  // Bullet's EPA converges to about 1e-6 (measured 3e-6 on the normal).
+  EXPECT_NEAR(c[0].depth, 2 * r - 0.08, 1e-6);
+  // The normal points from body1 to body2, the point is midway through the overlap.
+  const double sign = c[0].body2 == 2 ? 1.0 : -1.0;
+  EXPECT_NEAR((sign * c[0].n_G - Vec3::UnitY()).norm(), 0.0, 1e-5);
+  EXPECT_NEAR(c[0].p_G.y(), 0.04, 1e-6);
+  EXPECT_NEAR(c[0].radius, r / 2, 1e-15);
+  // Crossed at right angles (body 2 turned about y: its axis along z), axes 0.09 m apart along
+  // y: 0.01 m.
+  X_GB[2] = Transform(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitY()).toRotationMatrix(),
+                      Vec3(0, 0.09, 0));
+  c = Contacts(detector, X_GB);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_NEAR(c[0].depth, 2 * r - 0.09, 1e-6);
+  // Given as rest poses, an overlapping pair is left out.
+  const CollisionDetector rest(TwoCylinders(r), std::nullopt, X_GB);
+  EXPECT_EQ(rest.num_pairs(), 0);
+  EXPECT_EQ(rest.num_excluded_at_rest(), 1);
+  // Apart: nothing.
+  X_GB[2] = Transform::Translation(Vec3(0, 0.11, 0));
+  EXPECT_TRUE(Contacts(detector, X_GB).empty());
+}
+
+TEST(CollisionDetectionTest, CylinderSinksIntoTheGroundPlaneByItsLowestPoint) {
+  // One upright cylinder (along y, 1 m, radius 0.05) whose bottom is 0.003 m below the plane
+  // y = 0.2, and one lying along x whose side is 0.001 m below it.
+  CollisionModel model;
+  model.family = {0, 1, 2};
+  model.shapes = {{1, Vec3(0, 0, 0), Vec3(0, 1, 0), 0.05}, {2, Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0), 0.05}};
+  const CollisionDetector detector(model, 0.2);
+  ASSERT_EQ(detector.num_pairs(), 2);  // different families: only the plane
+  const std::vector<Transform> X_GB = {Transform(), Transform::Translation(Vec3(0, 0.197, 0)),
+                                       Transform::Translation(Vec3(3, 0.2 + 0.05 - 0.001, 0))};
+  std::vector<CollisionContact> c = Contacts(detector, X_GB);
+  ASSERT_EQ(c.size(), 2u);
+  for (const CollisionContact& k : c) {
+    EXPECT_EQ(k.body1, 0);
+    EXPECT_EQ(k.n_G, Vec3::UnitY());
+    EXPECT_NEAR(k.depth, k.body2 == 1 ? 0.003 : 0.001, 1e-12);
+    EXPECT_NEAR(k.p_G.y(), 0.2 - k.depth / 2, 1e-12);
+  }
+}
+
+TEST(CollisionDetectionTest, SkeletonAtRestTouchesNothingAndNeverItsParents) {
+  // The seed's Rajagopal2015 with EnableCollision: with the families, no allowed pair of its
+  // cylinders overlaps in the default pose (nothing needs leaving out), and none is a parent
+  // and its child.
+  opensim::OpenSimParser parser;
+  parser.EnableCollision(1, 2);
+  parser.Parse(std::string(SINEW_TEST_DATA_DIR) +
+               "/projectchrono/chrono/data/opensim/Rajagopal2015.osim");
+  const CollisionModel& model = parser.GetCollisionModel();
+  const model::ModelSpec& spec = parser.GetSpec();
+  kinematics::KinematicTree tree(spec);
+  std::vector<Transform> X_GB(spec.bodies.size());
+  kinematics::CalcBodyPoses(tree, tree.default_q(), X_GB);
+  const CollisionDetector all(model, std::nullopt);
+  const CollisionDetector filtered(model, std::nullopt, X_GB);
+  EXPECT_TRUE(Contacts(all, X_GB).empty());
+  EXPECT_EQ(filtered.num_excluded_at_rest(), 0);
+  EXPECT_EQ(filtered.num_pairs(), all.num_pairs());
+  // Every allowed pair: not a parent and its child.
+  int shapes_pairs = 0;
+  for (size_t a = 0; a < model.shapes.size(); ++a) {
+    for (size_t b = a + 1; b < model.shapes.size(); ++b) {
+      const int p = model.shapes[a].body, q = model.shapes[b].body;
+      if (!model.CanCollide(p, q)) continue;
+      ++shapes_pairs;
+      for (const model::JointSpec& j : spec.joints) {
+        EXPECT_FALSE((p == j.parent_body && q == j.child_body) ||
+                     (q == j.parent_body && p == j.child_body))
+            << j.name;
+      }
+    }
+  }
+  EXPECT_EQ(shapes_pairs, all.num_pairs());
+  std::cout << "Rajagopal2015: " << all.num_pairs() << " cylinder pairs allowed by the families, "
+            << "none overlapping at rest\n";
+}
+
+}  // namespace
+}  // namespace sinew::contact

@@ -1,0 +1,87 @@
+// Small OpenSim 4 models written as text for the contact tests: one free body with contact
+// spheres above a ground half-space, and parsing them into a System.
+#pragma once
+
+#include <sinew/contact/contact_force.h>
+#include <sinew/engine/system.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/opensim/parser.h>
+
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sinew::testing {
+
+/// A free body "body" (mass `mass`, central inertia diag(`inertia`)) under `gravity`, with
+/// ContactSpheres "s0", "s1", ... of radius `radius` at `centers` (in the body frame), a
+/// ground ContactHalfSpace "floor" whose solid is y < 0, and `forces` in the ForceSet.
+inline std::string FreeBodyContactModel(double mass, const Vec3& inertia, const Vec3& gravity,
+                                        double radius, const std::vector<Vec3>& centers,
+                                        const std::string& forces) {
+  std::ostringstream m;
+  m.precision(17);
+  m << R"(<OpenSimDocument Version="40000"><Model name="contact">
+<gravity>)" << gravity.transpose() << R"(</gravity><Ground name="ground"/>
+<BodySet><objects><Body name="body"><mass>)" << mass << "</mass><inertia>"
+    << inertia.transpose() << R"( 0 0 0</inertia></Body></objects></BodySet>
+<JointSet><objects><FreeJoint name="free"><socket_parent_frame>/ground</socket_parent_frame>
+<socket_child_frame>/bodyset/body</socket_child_frame><coordinates>
+<Coordinate name="rx"/><Coordinate name="ry"/><Coordinate name="rz"/>
+<Coordinate name="tx"/><Coordinate name="ty"/><Coordinate name="tz"/>
+</coordinates></FreeJoint></objects></JointSet>
+<ForceSet><objects>)" << forces << R"(</objects></ForceSet>
+<ContactGeometrySet><objects>
+<ContactHalfSpace name="floor"><socket_frame>/ground</socket_frame>
+<orientation>0 0 -1.5707963267948966</orientation></ContactHalfSpace>
+)";
+  for (size_t i = 0; i < centers.size(); ++i) {
+    m << "<ContactSphere name=\"s" << i << "\"><socket_frame>/bodyset/body</socket_frame>"
+      << "<location>" << centers[i].transpose() << "</location><radius>" << radius
+      << "</radius></ContactSphere>\n";
+  }
+  m << "</objects></ContactGeometrySet></Model></OpenSimDocument>";
+  return m.str();
+}
+
+/// A HuntCrossleyForce "contact" between the floor and spheres s0 ... s<n-1>, every material
+/// with these parameters (us = ud = `friction`, no viscous friction).
+inline std::string HuntCrossleyText(int spheres, double stiffness, double dissipation,
+                                    double friction, double transition_velocity) {
+  std::ostringstream f;
+  f.precision(17);
+  f << "<HuntCrossleyForce name=\"contact\"><HuntCrossleyForce::ContactParametersSet>"
+    << "<objects><HuntCrossleyForce::ContactParameters><geometry>floor";
+  for (int i = 0; i < spheres; ++i) f << " s" << i;
+  f << "</geometry><stiffness>" << stiffness << "</stiffness><dissipation>" << dissipation
+    << "</dissipation><static_friction>" << friction << "</static_friction><dynamic_friction>"
+    << friction << "</dynamic_friction><viscous_friction>0</viscous_friction>"
+    << "</HuntCrossleyForce::ContactParameters></objects>"
+    << "</HuntCrossleyForce::ContactParametersSet><transition_velocity>" << transition_velocity
+    << "</transition_velocity></HuntCrossleyForce>";
+  return f.str();
+}
+
+/// A finalized system parsed from .osim text (`file` names it in errors).
+inline std::unique_ptr<engine::System> ParseContactModel(const std::string& text,
+                                                         const std::string& file) {
+  opensim::OpenSimParser parser;
+  const model::ModelSpec spec = io::ReadOsimString(text, file);
+  auto system = std::make_unique<engine::System>(spec.gravity);
+  parser.ParseSpec(*system, spec);
+  system->Finalize();
+  return system;
+}
+
+/// The system's contact force named `name`.
+inline const contact::ContactForce& FindContactForce(const engine::System& system,
+                                                     const std::string& name) {
+  for (const auto& f : system.force_elements()) {
+    const auto* c = dynamic_cast<const contact::ContactForce*>(f.get());
+    if (c && c->name() == name) return *c;
+  }
+  throw Error("no contact force " + name);
+}
+
+}  // namespace sinew::testing
