@@ -31,8 +31,10 @@ double ClosedFormForce(double k, double e_t, double e) {
 }
 
 TEST(BlankevoortLawTest, SlackToeAndLinearRegionsMatchTheClosedForm) {
-  const BlankevoortParameters p{.linear_stiffness = 800, .transition_strain = 0.05,
-                                .damping_coefficient = 0, .slack_length = 0.04};
+  const BlankevoortParameters p{.linear_stiffness = 800,
+                                .transition_strain = 0.05,
+                                .damping_coefficient = 0,
+                                .slack_length = 0.04};
   for (double e : {-0.2, -1e-9, 0.0, 1e-4, 0.01, 0.03, 0.0499, 0.05, 0.07, 0.3}) {
     EXPECT_NEAR(BlankevoortSpringForce(p, e), ClosedFormForce(800, 0.05, e), 1e-12) << e;
   }
@@ -54,8 +56,10 @@ TEST(BlankevoortLawTest, SlackToeAndLinearRegionsMatchTheClosedForm) {
 }
 
 TEST(BlankevoortLawTest, DampingOnlyPullsWhileStretchedAndLengtheningAndFadesIn) {
-  const BlankevoortParameters p{.linear_stiffness = 500, .transition_strain = 0.06,
-                                .damping_coefficient = 3, .slack_length = 0.1};
+  const BlankevoortParameters p{.linear_stiffness = 500,
+                                .transition_strain = 0.06,
+                                .damping_coefficient = 3,
+                                .slack_length = 0.1};
   // Stretched (strain 0.1) and lengthening at 0.02 m/s: strain rate 0.2 /s, damping c * 0.2.
   LigamentForces f = CalcBlankevoortForces(p, {.length = 0.11, .lengthening_speed = 0.02});
   EXPECT_NEAR(f.strain_rate, 0.2, 1e-12);
@@ -83,8 +87,10 @@ TEST(BlankevoortLawTest, DampingOnlyPullsWhileStretchedAndLengtheningAndFadesIn)
 }
 
 TEST(BlankevoortLawTest, PotentialEnergyIsTheIntegralOfTheSpringForceOverLength) {
-  const BlankevoortParameters p{.linear_stiffness = 800, .transition_strain = 0.05,
-                                .damping_coefficient = 1, .slack_length = 0.04};
+  const BlankevoortParameters p{.linear_stiffness = 800,
+                                .transition_strain = 0.05,
+                                .damping_coefficient = 1,
+                                .slack_length = 0.04};
   const auto energy = [&](double length) {
     return BlankevoortPotentialEnergy(p, length / p.slack_length - 1);
   };
@@ -158,8 +164,8 @@ const char* kProperties =
     "<slack_length>0.45</slack_length>";
 
 TEST(BlankevoortLigamentTest, GeneralizedForceIsMinusTensionTimesDLengthDq) {
-  auto parsed = ParsePendulum(std::string(kProperties) +
-                              "<damping_coefficient>2</damping_coefficient>");
+  auto parsed =
+      ParsePendulum(std::string(kProperties) + "<damping_coefficient>2</damping_coefficient>");
   const engine::System& system = *parsed->system;
   ASSERT_EQ(system.force_elements().size(), 1u);
   const std::vector<std::string> labels = system.force_elements()[0]->RecordLabels(system);
@@ -191,8 +197,8 @@ TEST(BlankevoortLigamentTest, GeneralizedForceIsMinusTensionTimesDLengthDq) {
 }
 
 TEST(BlankevoortLigamentTest, PendulumHungByAnUndampedLigamentConservesEnergy) {
-  auto parsed = ParsePendulum(std::string(kProperties) +
-                              "<damping_coefficient>0</damping_coefficient>");
+  auto parsed =
+      ParsePendulum(std::string(kProperties) + "<damping_coefficient>0</damping_coefficient>");
   const engine::System& system = *parsed->system;
   auto integrator = engine::MakeIntegrator("rk45", system, {.accuracy = 1e-11});
   engine::State state = engine::MakeDefaultState(system);
@@ -203,7 +209,8 @@ TEST(BlankevoortLigamentTest, PendulumHungByAnUndampedLigamentConservesEnergy) {
     const std::vector<double> record = Record(system, state);
     max_strain = std::max(max_strain, record[5]);
     min_strain = std::min(min_strain, record[5]);
-    max_drift = std::max(max_drift, std::abs(engine::CalcMechanicalEnergy(system, state) - energy0));
+    max_drift =
+        std::max(max_drift, std::abs(engine::CalcMechanicalEnergy(system, state) - energy0));
   }
   // The swing visits the slack, toe and linear regions.
   EXPECT_LT(min_strain, 0.0);
@@ -222,8 +229,8 @@ TEST(BlankevoortLigamentTest, BadParametersAreRefusedWithFileLineAndComponent) {
     }
     return "no error";
   };
-  const std::string negative = message(
-      "\n<linear_stiffness>-3</linear_stiffness><slack_length>0.45</slack_length>");
+  const std::string negative =
+      message("\n<linear_stiffness>-3</linear_stiffness><slack_length>0.45</slack_length>");
   // The error names the property's own line.
   const std::string model = PendulumModel("\n<linear_stiffness>-3</linear_stiffness>");
   const int line = 1 + static_cast<int>(std::count(
@@ -232,16 +239,18 @@ TEST(BlankevoortLigamentTest, BadParametersAreRefusedWithFileLineAndComponent) {
       << negative;
   EXPECT_NE(negative.find("lig"), std::string::npos) << negative;
   EXPECT_NE(negative.find("linear_stiffness"), std::string::npos) << negative;
-  for (const char* bad : {"<damping_coefficient>-1</damping_coefficient><slack_length>0.45</slack_length>",
-                          "<transition_strain>0</transition_strain><slack_length>0.45</slack_length>",
-                          "<slack_length>0</slack_length>", "<linear_stiffness>5</linear_stiffness>"}) {
+  for (const char* bad :
+       {"<damping_coefficient>-1</damping_coefficient><slack_length>0.45</slack_length>",
+        "<transition_strain>0</transition_strain><slack_length>0.45</slack_length>",
+        "<slack_length>0</slack_length>", "<linear_stiffness>5</linear_stiffness>"}) {
     EXPECT_NE(message(bad).find("ligament_test.osim:"), std::string::npos) << bad;
   }
 }
 
 TEST(BlankevoortLigamentTest, Lenhart2015BuildsEveryLigamentAndSimulates) {
   SINEW_SKIP_WITHOUT_CORPUS();
-  const auto file = testing::CorpusDir() / "clnsmith/opensim-jam/models/lenhart2015/lenhart2015.osim";
+  const auto file =
+      testing::CorpusDir() / "clnsmith/opensim-jam/models/lenhart2015/lenhart2015.osim";
   if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " is not in the corpus";
   const model::ModelSpec spec = io::ReadOsim(file.string());
   const auto in_file = std::count_if(spec.forces.begin(), spec.forces.end(), [](const auto& f) {

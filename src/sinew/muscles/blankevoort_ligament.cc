@@ -89,8 +89,7 @@ double BlankevoortLigament::CalcPotentialEnergy(const engine::ForceContext& cont
   return BlankevoortPotentialEnergy(parameters_, length / parameters_.slack_length - 1.0);
 }
 
-std::vector<std::string> BlankevoortLigament::RecordLabels(
-    const engine::System& /*system*/) const {
+std::vector<std::string> BlankevoortLigament::RecordLabels(const engine::System& /*system*/) const {
   std::vector<std::string> labels;
   for (const char* column : {".force_spring", ".force_damping", ".force_total", ".length",
                              ".lengthening_speed", ".strain", ".strain_rate"}) {

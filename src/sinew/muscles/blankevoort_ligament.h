@@ -15,10 +15,10 @@ namespace sinew::muscles {
 
 /// The ligament's parameters, with OpenSim's names and defaults.
 struct BlankevoortParameters {
-  double linear_stiffness = 1.0;      ///< slope of the linear region, N per unit strain
-  double transition_strain = 0.06;    ///< strain where the toe region ends (dimensionless)
-  double damping_coefficient = 0.003; ///< N s per unit strain
-  double slack_length = 0.0;          ///< length (m) at which tension starts
+  double linear_stiffness = 1.0;       ///< slope of the linear region, N per unit strain
+  double transition_strain = 0.06;     ///< strain where the toe region ends (dimensionless)
+  double damping_coefficient = 0.003;  ///< N s per unit strain
+  double slack_length = 0.0;           ///< length (m) at which tension starts
 };
 
 /// The ligament's forces at one path length and lengthening speed (N), and its strains.
