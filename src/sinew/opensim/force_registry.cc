@@ -117,6 +117,7 @@ const ForceType* FindForceType(const std::string& opensim_class) {
       {"PrescribedForce", {&BuildPrescribedForce, false}},
       {"PathActuator", {&BuildPathActuator, true}},
       {"PathSpring", {&BuildPathSpring, false}},
+      {"Blankevoort1991Ligament", {&BuildBlankevoortLigament, false}},
       {"Thelen2003Muscle", {&BuildThelen2003Muscle, true}},
       {"Thelen2003Muscle_Deprecated", {&BuildThelen2003MuscleDeprecated, true}},
       {"Millard2012EquilibriumMuscle", {&BuildMillard2012EquilibriumMuscle, true}},

@@ -2,6 +2,7 @@
 // each a muscles::PathActuator with its tension model. The properties keep OpenSim's names
 // and defaults (Muscle.cpp, Thelen2003Muscle.cpp, ActivationFiberLengthMuscle.cpp).
 #include <sinew/model/element_values.h>
+#include <sinew/muscles/blankevoort_ligament.h>
 #include <sinew/muscles/degroote_fregly2016_spec.h>
 #include <sinew/muscles/degroote_fregly2016_tension.h>
 #include <sinew/muscles/millard2012_spec.h>
@@ -87,6 +88,23 @@ std::shared_ptr<engine::ForceElement> BuildPathSpring(const ForceBuildInput& in)
   return std::make_shared<muscles::PathSpring>(
       in.force.name, MakeEnginePath(in), v.Double("resting_length", 0.0),
       v.Double("stiffness", 0.0), v.Double("dissipation", 0.0));
+}
+
+// OpenSim's defaults except slack_length, whose default 0 makes the strain infinite: it must be
+// given. Bad values are refused with the file, line and component.
+std::shared_ptr<engine::ForceElement> BuildBlankevoortLigament(const ForceBuildInput& in) {
+  const model::ElementValues& v = in.values;
+  if (!v.Has("slack_length")) v.Fail("Blankevoort1991Ligament needs <slack_length>");
+  muscles::BlankevoortParameters p;
+  p.linear_stiffness = v.Double("linear_stiffness", p.linear_stiffness);
+  p.transition_strain = v.Double("transition_strain", p.transition_strain);
+  p.damping_coefficient = v.Double("damping_coefficient", p.damping_coefficient);
+  p.slack_length = v.Double("slack_length", p.slack_length);
+  if (const auto bad = muscles::FindBadParameter(p)) {
+    const model::Element* property = in.force.element.Child(bad->property);
+    v.Fail(bad->message, property ? property->line : 0);
+  }
+  return std::make_shared<muscles::BlankevoortLigament>(in.force.name, MakeEnginePath(in), p);
 }
 
 std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInput& in) {

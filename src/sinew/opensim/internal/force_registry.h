@@ -88,6 +88,8 @@ std::shared_ptr<engine::ForceElement> BuildPrescribedForce(const ForceBuildInput
 /// GeometryPath with its tension model; PathSpring (muscles::PathSpring).
 std::shared_ptr<engine::ForceElement> BuildPathActuator(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildPathSpring(const ForceBuildInput& in);
+/// Blankevoort1991Ligament (muscles::BlankevoortLigament) on its GeometryPath.
+std::shared_ptr<engine::ForceElement> BuildBlankevoortLigament(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildThelen2003MuscleDeprecated(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildMillard2012EquilibriumMuscle(const ForceBuildInput& in);
