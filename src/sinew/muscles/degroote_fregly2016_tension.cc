@@ -36,16 +36,7 @@ DeGrooteFregly2016Dynamics DeGrooteFregly2016Tension::Dynamics(Eigen::Ref<const 
 MuscleQuantities DeGrooteFregly2016Tension::Calc(Eigen::Ref<const VecX> z, double excitation,
                                                  const PathKinematics& path) const {
   const DeGrooteFregly2016Dynamics d = Dynamics(z, excitation, path);
-  MuscleQuantities out;
-  out.activation = d.activation;
-  out.fiber_length = d.fiber_length;
-  out.fiber_velocity = d.fiber_velocity;
-  out.pennation_angle = d.pennation_angle;
-  out.tendon_length = d.tendon_length;
-  out.active_fiber_force = d.active_fiber_force;
-  out.passive_fiber_force = d.passive_fiber_force;
-  out.tendon_force = d.tendon_force;
-  return out;
+  return QuantitiesOf(d);
 }
 
 void DeGrooteFregly2016Tension::CalcStateVariableDerivatives(Eigen::Ref<const VecX> z,

@@ -28,16 +28,7 @@ MuscleQuantities Millard2012Tension::Calc(Eigen::Ref<const VecX> z, double excit
   const Millard2012Dynamics d =
       CalcMillard2012Dynamics(muscle_, layout_.Activation(z, excitation), layout_.Fiber(z, 0.0),
                               path.length, path.lengthening_speed);
-  MuscleQuantities out;
-  out.activation = d.activation;
-  out.fiber_length = d.fiber_length;
-  out.fiber_velocity = d.fiber_velocity;
-  out.pennation_angle = d.pennation_angle;
-  out.tendon_length = d.tendon_length;
-  out.active_fiber_force = d.active_fiber_force;
-  out.passive_fiber_force = d.passive_fiber_force;
-  out.tendon_force = d.tendon_force;
-  return out;
+  return QuantitiesOf(d);
 }
 
 void Millard2012Tension::CalcStateVariableDerivatives(Eigen::Ref<const VecX> z,

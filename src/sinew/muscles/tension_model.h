@@ -25,6 +25,22 @@ struct MuscleQuantities {
   double tendon_force = 0.0;         ///< N: the tension along the path
 };
 
+/// The MuscleQuantities of a model's dynamics result `d` (any struct with the same field names,
+/// e.g. Millard2012Dynamics, DeGrooteFregly2016Dynamics).
+template <class Dynamics>
+MuscleQuantities QuantitiesOf(const Dynamics& d) {
+  MuscleQuantities out;
+  out.activation = d.activation;
+  out.fiber_length = d.fiber_length;
+  out.fiber_velocity = d.fiber_velocity;
+  out.pennation_angle = d.pennation_angle;
+  out.tendon_length = d.tendon_length;
+  out.active_fiber_force = d.active_fiber_force;
+  out.passive_fiber_force = d.passive_fiber_force;
+  out.tendon_force = d.tendon_force;
+  return out;
+}
+
 /// How an equilibrium was found.
 enum class EquilibriumStatus {
   kBalanced,              ///< fiber force along the tendon = tendon force
