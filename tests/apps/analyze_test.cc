@@ -9,6 +9,7 @@
 #include <string>
 
 #include "apps/cli_test_util.h"
+#include "apps/unsupported_wraps.h"
 #include "kinematics/sto_table.h"
 
 namespace {
@@ -100,9 +101,10 @@ TEST_F(AnalyzeCliTest, WrapsNotAppliedAreNamedOnStderr) {
     out << "arm\nversion=1\nnRows=1\nnColumns=2\ninDegrees=yes\nendheader\n"
            "time\tr_elbow_flex\n0\t30\n";
   }
-  // arm26 with its ellipsoids made tori (a type Sinew does not wrap over).
-  const CliRun r =
-      Analyze(CopyWithTorusWraps(kArm26) + " --motion " + motion + " --out " + Path("out"));
+  // arm26 with its ellipsoids made WrapDoubleCylinderObst (a type Sinew does not wrap over).
+  const CliRun r = Analyze(
+      sinew::testing::WriteWithUnsupportedWraps(kArm26, Path("with_unsupported_wraps.osim")) +
+      " --motion " + motion + " --out " + Path("out"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("sinew: warning: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("is not applied yet"), std::string::npos) << r.err;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "apps/cli_test_util.h"
+#include "apps/unsupported_wraps.h"
 
 namespace sinew {
 namespace {
@@ -48,15 +49,18 @@ TEST_F(Inspect, PathsAreListedWithTheirPointsAndWrapsAndWhatIsNotComputed) {
       << run.out;
   // 7 PathWraps over 5 paths, all over cylinders and ellipsoids: all computed.
   EXPECT_NE(run.out.find("path parts not computed (0):"), std::string::npos) << run.out;
-  // The same model with its two ellipsoids made tori: those 2 PathWraps are named with their
-  // path (not applied).
-  const CliRun tori = Run("inspect " + CopyWithTorusWraps(kArm26));
-  ASSERT_EQ(tori.exit_code, 0) << tori.err;
-  EXPECT_NE(tori.out.find("path parts not computed (2):"), std::string::npos) << tori.out;
-  EXPECT_NE(tori.out.find("/forceset/TRIlong: wrap object 'TRIlonghh' (WrapTorus) is not "
-                          "applied yet"),
+  // The same model with its two ellipsoids made WrapDoubleCylinderObst: those 2 PathWraps are named
+  // with their path (not applied).
+  const CliRun unsupported = Run(
+      "inspect " + testing::WriteWithUnsupportedWraps(kArm26, Path("with_unsupported_wraps.osim")));
+  ASSERT_EQ(unsupported.exit_code, 0) << unsupported.err;
+  EXPECT_NE(unsupported.out.find("path parts not computed (2):"), std::string::npos)
+      << unsupported.out;
+  EXPECT_NE(unsupported.out.find(
+                "/forceset/TRIlong: wrap object 'TRIlonghh' (WrapDoubleCylinderObst) is not "
+                "applied yet"),
             std::string::npos)
-      << tori.out;
+      << unsupported.out;
   const CliRun json = Run("inspect --json " + kArm26);
   ASSERT_EQ(json.exit_code, 0) << json.err;
   const nlohmann::json j = nlohmann::json::parse(json.out);

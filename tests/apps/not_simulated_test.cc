@@ -8,6 +8,7 @@
 #include <string>
 
 #include "apps/cli_test_util.h"
+#include "apps/unsupported_wraps.h"
 #include "engine/test_models.h"
 
 namespace sinew {
@@ -66,9 +67,10 @@ FileCounts CountInFile(const std::string& osim) {
 class NotSimulatedTest : public testing::CliTest {
  protected:
   // arm26 with two kinds of parts Sinew does not simulate: its 6 Thelen2003Muscles read as
-  // RigidTendonMuscle and its 2 WrapEllipsoids as WrapTorus.
+  // RigidTendonMuscle and its 2 WrapEllipsoids as WrapDoubleCylinderObst.
   std::string Arm26WithUnsupportedParts() const {
-    std::string text = testing::ReadText(CopyWithTorusWraps(kArm26));
+    std::string text = testing::ReadText(
+        testing::WriteWithUnsupportedWraps(kArm26, Path("with_unsupported_wraps.osim")));
     const std::string from = "Thelen2003Muscle", to = "RigidTendonMuscle";
     for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at)) {
       text.replace(at, from.size(), to);
@@ -99,8 +101,9 @@ TEST_F(NotSimulatedTest, SimulateSaysOnceWhatIsLeftOutByKind) {
 }
 
 TEST_F(NotSimulatedTest, StrictMakesItAnError) {
-  // arm26's muscles and its cylinders and ellipsoids are simulated; tori are not.
-  const std::string model = CopyWithTorusWraps(kArm26);
+  // arm26's muscles and its cylinders and ellipsoids are simulated; WrapDoubleCylinderObst is not.
+  const std::string model =
+      testing::WriteWithUnsupportedWraps(kArm26, Path("with_unsupported_wraps.osim"));
   const CliRun run =
       Run("simulate " + model + " --duration 0 --strict --quiet --out " + Path("out"));
   EXPECT_EQ(run.exit_code, 2) << run.err;

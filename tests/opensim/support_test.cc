@@ -7,14 +7,14 @@ namespace sinew {
 namespace {
 
 TEST(Support, ListsEverythingNotSimulatedYet) {
-  // Ideal actuators, PrescribedControllers and WrapSphere (as WrapCylinder and WrapEllipsoid)
-  // are simulated; Millard2012AccelerationMuscle, other controllers, this constraint, contact
-  // geometry, WrapTorus and unknown joints are not yet.
+  // Ideal actuators, PrescribedControllers and WrapSphere (as WrapCylinder, WrapEllipsoid and
+  // WrapTorus) are simulated; Millard2012AccelerationMuscle, other controllers, this constraint,
+  // contact geometry, WrapDoubleCylinderObst and unknown joints are not yet.
   const std::string text = R"(<OpenSimDocument Version="40000"><Model name="m">
 <Ground name="ground"/>
 <BodySet><objects><Body name="b"><mass>1</mass>
   <WrapObjectSet><objects><WrapSphere name="ws"><radius>0.1</radius></WrapSphere>
-    <WrapTorus name="wt"/></objects></WrapObjectSet>
+    <WrapDoubleCylinderObst name="wt"/></objects></WrapObjectSet>
 </Body><Body name="c"><mass>1</mass></Body></objects></BodySet>
 <JointSet><objects>
   <SliderJoint name="s"><socket_parent_frame>/ground</socket_parent_frame>
@@ -43,7 +43,7 @@ TEST(Support, ListsEverythingNotSimulatedYet) {
       "/constraintset/roll: RollingOnSurfaceConstraint",
       "/controllerset/reflex: ToyReflexController",
       "/contactgeometryset/cs: ContactSphere",
-      "/bodyset/b/wrapobjectset/wt: WrapTorus",
+      "/bodyset/b/wrapobjectset/wt: WrapDoubleCylinderObst",
       "/probe: JointInternalPowerProbe",
   };
   EXPECT_EQ(opensim::ListNotSimulated(spec), expected);

@@ -70,6 +70,8 @@ TEST(CorpusPathsTest, EveryModelsPathsComputeAtTheDefaultPose) {
   std::cout << with_paths << " models, " << paths_total << " paths, " << wraps_total
             << " path wraps (" << unconnected_total << " over unsupported types, not applied)\n";
   EXPECT_EQ(with_paths, 78);
+  // Every wrap object type the corpus's paths use (cylinders, ellipsoids, spheres, tori) wraps.
+  EXPECT_EQ(unconnected_total, 0);
 }
 
 }  // namespace

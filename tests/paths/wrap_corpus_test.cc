@@ -60,9 +60,11 @@ TEST(WrapCorpusTest, EveryWrapObjectBuildsOrIsRefusedByType) {
   }
   // grep -o '<WrapCylinder[ >]' etc. over the corpus's .osim files: 428 cylinders, less the 40
   // of opensim-creator_382_repro.osim, which the reader refuses.
-  EXPECT_EQ(built, (std::map<std::string, int>{
-                       {"WrapCylinder", 388}, {"WrapEllipsoid", 122}, {"WrapSphere", 6}}));
-  EXPECT_EQ(refused, (std::map<std::string, int>{{"WrapTorus", 4}}));
+  EXPECT_EQ(
+      built,
+      (std::map<std::string, int>{
+          {"WrapCylinder", 388}, {"WrapEllipsoid", 122}, {"WrapSphere", 6}, {"WrapTorus", 4}}));
+  EXPECT_TRUE(refused.empty());
 }
 
 }  // namespace

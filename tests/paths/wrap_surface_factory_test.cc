@@ -7,6 +7,7 @@
 #include <sinew/paths/wrap_ellipsoid.h>
 #include <sinew/paths/wrap_sphere.h>
 #include <sinew/paths/wrap_surface_factory.h>
+#include <sinew/paths/wrap_torus.h>
 
 namespace sinew::paths {
 namespace {
@@ -52,7 +53,13 @@ TEST(WrapSurfaceFactoryTest, BuildsSpheresAndCylindersWithTheirDimensions) {
   ASSERT_NE(dynamic_cast<const WrapEllipsoid*>(ellipsoid.get()), nullptr);
   EXPECT_EQ(dynamic_cast<const WrapEllipsoid&>(*ellipsoid).radii(), Vec3(0.035, 0.02, 0.02));
   EXPECT_EQ(SupportedWrapSurfaceTypes(),
-            (std::vector<std::string>{"WrapCylinder", "WrapEllipsoid", "WrapSphere"}));
+            (std::vector<std::string>{"WrapCylinder", "WrapEllipsoid", "WrapSphere", "WrapTorus"}));
+  const auto torus =
+      MakeWrapSurface(Spec("WrapTorus", {{"inner_radius", {0.035}}, {"outer_radius", {0.08}}}));
+  const auto* as_torus = dynamic_cast<const WrapTorus*>(torus.get());
+  ASSERT_NE(as_torus, nullptr);
+  EXPECT_EQ(as_torus->inner_radius(), 0.035);
+  EXPECT_EQ(as_torus->outer_radius(), 0.08);
 }
 
 TEST(WrapSurfaceFactoryTest, MissingDimensionsTakeOpenSimsDefaults) {
@@ -78,7 +85,13 @@ TEST(WrapSurfaceFactoryTest, BadInputIsAnErrorNamingTheObject) {
   fails_with(Spec("WrapCylinder", {{"radius", {0.01}}}, "+w"), "unknown quadrant '+w'");
   fails_with(Spec("WrapEllipsoid", {{"dimensions", {0.01, 0.02}}}), "must be three numbers");
   fails_with(Spec("WrapEllipsoid", {{"dimensions", {0.01, 0.0, 0.02}}}), "must be positive");
-  fails_with(Spec("WrapCylinderObst", {}), "WrapCylinderObst is not a wrap surface");
+  // OpenSim's torus has no default radii, and its tube must fit inside its ring.
+  fails_with(Spec("WrapTorus", {{"outer_radius", {0.08}}}), "WrapTorus has no inner_radius");
+  fails_with(Spec("WrapTorus", {{"inner_radius", {0.08}}, {"outer_radius", {0.05}}}),
+             "outer_radius (0.05) must be greater than inner_radius (0.08)");
+  fails_with(Spec("WrapTorus", {{"inner_radius", {0.0}}, {"outer_radius", {0.05}}}),
+             "inner_radius must be positive");
+  fails_with(Spec("WrapDoubleCylinderObst", {}), "WrapDoubleCylinderObst is not a wrap surface");
 }
 
 TEST(WrapSurfaceFactoryTest, ReadsEveryQuadrantSpellingOpenSimAccepts) {

@@ -4,6 +4,7 @@
 #include <sinew/paths/wrap_quadrant.h>
 #include <sinew/paths/wrap_sphere.h>
 #include <sinew/paths/wrap_surface_factory.h>
+#include <sinew/paths/wrap_torus.h>
 
 #include <cmath>
 #include <functional>
@@ -34,6 +35,12 @@ double PositiveLength(const model::WrapObjectSpec& spec, const std::string& key,
   return value;
 }
 
+// One positive, finite length (m) named `key` that the file must give (OpenSim has no default).
+double RequiredPositiveLength(const model::WrapObjectSpec& spec, const std::string& key) {
+  if (!spec.dimensions.contains(key)) Fail(spec, "has no " + key);
+  return PositiveLength(spec, key, 0.0);
+}
+
 // Three positive, finite lengths (m) named `key`, or `default_value` when the file has none.
 Vec3 PositiveLengths(const model::WrapObjectSpec& spec, const std::string& key,
                      const Vec3& default_value) {
@@ -58,6 +65,18 @@ WrapQuadrant Quadrant(const model::WrapObjectSpec& spec) {
   }
 }
 
+// OpenSim's torus: the tube's radius `inner_radius` below the ring's radius `outer_radius`.
+std::unique_ptr<WrapSurface> MakeWrapTorus(const model::WrapObjectSpec& spec) {
+  const double inner = RequiredPositiveLength(spec, "inner_radius");
+  const double outer = RequiredPositiveLength(spec, "outer_radius");
+  if (!(outer > inner)) {
+    std::ostringstream text;
+    text << "outer_radius (" << outer << ") must be greater than inner_radius (" << inner << ")";
+    Fail(spec, text.str());
+  }
+  return std::make_unique<WrapTorus>(inner, outer, Quadrant(spec));
+}
+
 const std::map<std::string, Builder>& Registry() {
   static const std::map<std::string, Builder> registry{
       {"WrapSphere",
@@ -74,6 +93,7 @@ const std::map<std::string, Builder>& Registry() {
          return std::make_unique<WrapEllipsoid>(
              PositiveLengths(spec, "dimensions", Vec3(0.05, 0.05, 0.05)), Quadrant(spec));
        }},
+      {"WrapTorus", MakeWrapTorus},
   };
   return registry;
 }
