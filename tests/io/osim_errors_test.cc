@@ -327,6 +327,27 @@ TEST(OsimErrors, PathWrapRangeMustBeWholeNumbers) {
   EXPECT_EQ(spec.bodies[1].wrap_objects[0].name, "cyl");
 }
 
+TEST(OsimErrors, WrapDirectionMustBeRightOrLeftHanded) {
+  std::string text = Model40(kGoodJoints);
+  const std::string wrap = R"(<WrapObjectSet><objects><WrapCylinderObst name="obst">
+<radius>0.1</radius>
+<wrapDirection>clockwise</wrapDirection></WrapCylinderObst></objects></WrapObjectSet>)";
+  text.insert(text.find("        </Body>"), wrap);
+  ExpectError(text, LineOf(text, "<wrapDirection>"), "/bodyset/upper/wrapobjectset/obst",
+              "wrapDirection 'clockwise' is not righthand or lefthand");
+  // OpenSim's spellings: kept as wrap_direction +1 or -1.
+  text.replace(text.find("clockwise"), 9, "Lefthanded");
+  const model::ModelSpec spec = io::ReadOsimString(text, "wrap.osim");
+  EXPECT_EQ(spec.bodies[1].wrap_objects[0].dimensions.at("wrap_direction"),
+            std::vector<double>{-1.0});
+  text.replace(text.find("Lefthanded"), 10, "right");
+  EXPECT_EQ(io::ReadOsimString(text, "wrap.osim")
+                .bodies[1]
+                .wrap_objects[0]
+                .dimensions.at("wrap_direction"),
+            std::vector<double>{1.0});
+}
+
 TEST(OsimErrors, MissingFileOrDirectory) {
   EXPECT_THROW(io::ReadOsim("/nonexistent/model.osim"), Error);
   EXPECT_THROW(io::ReadOsim(testing::TempDir()), Error);

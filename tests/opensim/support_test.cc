@@ -7,13 +7,15 @@ namespace sinew {
 namespace {
 
 TEST(Support, ListsEverythingNotSimulatedYet) {
-  // Ideal actuators, PrescribedControllers and WrapSphere (as WrapCylinder, WrapEllipsoid and
-  // WrapTorus) are simulated; Millard2012AccelerationMuscle, other controllers, this constraint,
-  // contact geometry, WrapDoubleCylinderObst and unknown joints are not yet.
+  // Ideal actuators, PrescribedControllers and WrapSphere (as WrapCylinder, WrapEllipsoid,
+  // WrapTorus, WrapSphereObst and WrapCylinderObst) are simulated; Millard2012AccelerationMuscle,
+  // other controllers, this constraint, contact geometry, WrapDoubleCylinderObst and unknown
+  // joints are not yet.
   const std::string text = R"(<OpenSimDocument Version="40000"><Model name="m">
 <Ground name="ground"/>
 <BodySet><objects><Body name="b"><mass>1</mass>
   <WrapObjectSet><objects><WrapSphere name="ws"><radius>0.1</radius></WrapSphere>
+    <WrapSphereObst name="wso"/><WrapCylinderObst name="wco"/>
     <WrapDoubleCylinderObst name="wt"/></objects></WrapObjectSet>
 </Body><Body name="c"><mass>1</mass></Body></objects></BodySet>
 <JointSet><objects>

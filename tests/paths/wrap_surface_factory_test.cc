@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 #include <sinew/common/error.h>
 #include <sinew/paths/wrap_cylinder.h>
+#include <sinew/paths/wrap_cylinder_obst.h>
 #include <sinew/paths/wrap_ellipsoid.h>
 #include <sinew/paths/wrap_sphere.h>
+#include <sinew/paths/wrap_sphere_obst.h>
 #include <sinew/paths/wrap_surface_factory.h>
 #include <sinew/paths/wrap_torus.h>
 
@@ -53,13 +55,30 @@ TEST(WrapSurfaceFactoryTest, BuildsSpheresAndCylindersWithTheirDimensions) {
   ASSERT_NE(dynamic_cast<const WrapEllipsoid*>(ellipsoid.get()), nullptr);
   EXPECT_EQ(dynamic_cast<const WrapEllipsoid&>(*ellipsoid).radii(), Vec3(0.035, 0.02, 0.02));
   EXPECT_EQ(SupportedWrapSurfaceTypes(),
-            (std::vector<std::string>{"WrapCylinder", "WrapEllipsoid", "WrapSphere", "WrapTorus"}));
+            (std::vector<std::string>{"WrapCylinder", "WrapCylinderObst", "WrapEllipsoid",
+                                      "WrapSphere", "WrapSphereObst", "WrapTorus"}));
   const auto torus =
       MakeWrapSurface(Spec("WrapTorus", {{"inner_radius", {0.035}}, {"outer_radius", {0.08}}}));
   const auto* as_torus = dynamic_cast<const WrapTorus*>(torus.get());
   ASSERT_NE(as_torus, nullptr);
   EXPECT_EQ(as_torus->inner_radius(), 0.035);
   EXPECT_EQ(as_torus->outer_radius(), 0.08);
+}
+
+TEST(WrapSurfaceFactoryTest, BuildsObstaclesWithTheirRadiusAndWrapDirection) {
+  const auto right = MakeWrapSurface(Spec("WrapCylinderObst", {{"radius", {0.03}}}));
+  ASSERT_NE(dynamic_cast<const WrapCylinderObst*>(right.get()), nullptr);
+  EXPECT_EQ(dynamic_cast<const WrapCylinderObst&>(*right).radius(), 0.03);
+  EXPECT_EQ(dynamic_cast<const WrapCylinderObst&>(*right).direction(),
+            WrapCylinderObst::Direction::kRightHand);
+  // The reader keeps wrapDirection as wrap_direction: -1 lefthand.
+  const auto left = MakeWrapSurface(Spec("WrapCylinderObst", {{"wrap_direction", {-1.0}}}));
+  EXPECT_EQ(dynamic_cast<const WrapCylinderObst&>(*left).direction(),
+            WrapCylinderObst::Direction::kLeftHand);
+  EXPECT_EQ(dynamic_cast<const WrapCylinderObst&>(*left).radius(), 1.0);
+  const auto sphere = MakeWrapSurface(Spec("WrapSphereObst", {}));
+  ASSERT_NE(dynamic_cast<const WrapSphereObst*>(sphere.get()), nullptr);
+  EXPECT_EQ(dynamic_cast<const WrapSphereObst&>(*sphere).radius(), 0.05);
 }
 
 TEST(WrapSurfaceFactoryTest, MissingDimensionsTakeOpenSimsDefaults) {
@@ -91,6 +110,8 @@ TEST(WrapSurfaceFactoryTest, BadInputIsAnErrorNamingTheObject) {
              "outer_radius (0.05) must be greater than inner_radius (0.08)");
   fails_with(Spec("WrapTorus", {{"inner_radius", {0.0}}, {"outer_radius", {0.05}}}),
              "inner_radius must be positive");
+  fails_with(Spec("WrapSphereObst", {{"length", {0.0}}}), "length must be positive");
+  fails_with(Spec("WrapCylinderObst", {{"wrap_direction", {2.0}}}), "wrap_direction must be");
   fails_with(Spec("WrapDoubleCylinderObst", {}), "WrapDoubleCylinderObst is not a wrap surface");
 }
 

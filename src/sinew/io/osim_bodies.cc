@@ -81,6 +81,26 @@ Mat3 ReadInertia(ReadContext& ctx, const pugi::xml_node& body, const std::string
   return inertia;
 }
 
+// WrapCylinderObst's `wrapDirection` is text, and a wrap object's spec keeps numbers: it is
+// kept among the dimensions as "wrap_direction", +1 for right-handed (also when none is
+// written, OpenSim's default) and -1 for left-handed, in any of OpenSim's spellings.
+void ReadWrapDirection(const XmlDocument& doc, const pugi::xml_node& wrap,
+                       const std::string& component, model::NumberMap& dimensions) {
+  const std::string text = TextOf(wrap, "wrapDirection");
+  if (text.empty()) return;
+  for (const char* right :
+       {"righthand", "right", "righthanded", "Righthand", "Right", "Righthanded", "Unassigned"}) {
+    if (text == right) dimensions["wrap_direction"] = {1.0};
+  }
+  for (const char* left : {"lefthand", "left", "lefthanded", "Lefthand", "Left", "Lefthanded"}) {
+    if (text == left) dimensions["wrap_direction"] = {-1.0};
+  }
+  if (!dimensions.contains("wrap_direction")) {
+    doc.Fail(wrap.child("wrapDirection"), component,
+             "wrapDirection '" + text + "' is not righthand or lefthand");
+  }
+}
+
 void ReadWrapObjects(ReadContext& ctx, const pugi::xml_node& owner, int body,
                      const std::string& owner_path) {
   const XmlDocument& doc = ctx.doc();
@@ -97,6 +117,7 @@ void ReadWrapObjects(ReadContext& ctx, const pugi::xml_node& owner, int body,
     spec.active = ReadBoolOr(doc, wrap, "active", component, true);
     spec.dimensions =
         ReadNumericLeaves(doc, wrap, component, {"xyz_body_rotation", "translation", "active"});
+    ReadWrapDirection(doc, wrap, component, spec.dimensions);
     spec.where = doc.Where(wrap);
     ctx.IndexWrapObject(spec.name);
     ctx.spec().bodies[body].wrap_objects.push_back(std::move(spec));

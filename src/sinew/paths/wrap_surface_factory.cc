@@ -1,8 +1,10 @@
 #include <sinew/common/error.h>
 #include <sinew/paths/wrap_cylinder.h>
+#include <sinew/paths/wrap_cylinder_obst.h>
 #include <sinew/paths/wrap_ellipsoid.h>
 #include <sinew/paths/wrap_quadrant.h>
 #include <sinew/paths/wrap_sphere.h>
+#include <sinew/paths/wrap_sphere_obst.h>
 #include <sinew/paths/wrap_surface_factory.h>
 #include <sinew/paths/wrap_torus.h>
 
@@ -77,6 +79,22 @@ std::unique_ptr<WrapSurface> MakeWrapTorus(const model::WrapObjectSpec& spec) {
   return std::make_unique<WrapTorus>(inner, outer, Quadrant(spec));
 }
 
+// WrapCylinderObst's `wrapDirection`, which the reader keeps as dimensions["wrap_direction"]:
+// +1 right-handed (also when absent), -1 left-handed.
+WrapCylinderObst::Direction WrapDirection(const model::WrapObjectSpec& spec) {
+  const auto found = spec.dimensions.find("wrap_direction");
+  if (found == spec.dimensions.end() || found->second == std::vector<double>{1.0}) {
+    return WrapCylinderObst::Direction::kRightHand;
+  }
+  if (found->second == std::vector<double>{-1.0}) return WrapCylinderObst::Direction::kLeftHand;
+  Fail(spec, "wrap_direction must be +1 (righthand) or -1 (lefthand)");
+}
+
+// An obstacle's length plays no part in its wrap, but OpenSim refuses one that is not positive.
+void CheckObstacleLength(const model::WrapObjectSpec& spec, double default_value) {
+  PositiveLength(spec, "length", default_value);
+}
+
 const std::map<std::string, Builder>& Registry() {
   static const std::map<std::string, Builder> registry{
       {"WrapSphere",
@@ -94,6 +112,17 @@ const std::map<std::string, Builder>& Registry() {
              PositiveLengths(spec, "dimensions", Vec3(0.05, 0.05, 0.05)), Quadrant(spec));
        }},
       {"WrapTorus", MakeWrapTorus},
+      {"WrapCylinderObst",
+       [](const model::WrapObjectSpec& spec) -> std::unique_ptr<WrapSurface> {
+         CheckObstacleLength(spec, 1.0);
+         return std::make_unique<WrapCylinderObst>(PositiveLength(spec, "radius", 1.0),
+                                                   WrapDirection(spec));
+       }},
+      {"WrapSphereObst",
+       [](const model::WrapObjectSpec& spec) -> std::unique_ptr<WrapSurface> {
+         CheckObstacleLength(spec, 0.1);
+         return std::make_unique<WrapSphereObst>(PositiveLength(spec, "radius", 0.05));
+       }},
   };
   return registry;
 }
