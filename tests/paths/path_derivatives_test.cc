@@ -130,7 +130,8 @@ double CheckMomentArmsAndSpeeds(const PathModel& m, const std::string& name,
       };
       const auto check = [&](double analytic, const std::vector<double>& direction,
                              const std::string& what) {
-        const Difference d = Differentiate([&](double h) { return fixed(Move(m, q, direction, h)); });
+        const Difference d =
+            Differentiate([&](double h) { return fixed(Move(m, q, direction, h)); });
         EXPECT_NEAR(analytic, d.value, d.error + kRounding) << what;
         const Difference r =
             Differentiate([&](double h) { return rewrapped(Move(m, q, direction, h)); });
@@ -154,8 +155,8 @@ double CheckMomentArmsAndSpeeds(const PathModel& m, const std::string& name,
     }
   }
   EXPECT_GT(checked, 0);
-  std::cout << name << ": " << checked << " moment arms checked, "
-            << checked_wrapped << " wrapped path states; worst |analytic - d/dq of the length "
+  std::cout << name << ": " << checked << " moment arms checked, " << checked_wrapped
+            << " wrapped path states; worst |analytic - d/dq of the length "
             << "wrapped afresh| on wrapped paths " << worst_rewrapped << " m; " << checked_stale
             << " path states with stale tangent points, worst " << worst_stale << " m\n";
   return worst_rewrapped;
@@ -200,8 +201,8 @@ TEST(PathDerivativesTest, Rajagopal2016MomentArmsFollowTheCoupledPatellae) {
 // constructions' kinks (neither OpenSim's cylinder off its cross-sections nor its ellipsoid is
 // a shortest path), measured here, bounded at twice that.
 TEST(PathDerivativesTest, Arm26MomentArmsOverItsCylindersAndEllipsoids) {
-  const double worst = CheckMomentArmsAndSpeeds(
-      kDataDir + "/MyoHub/myoconverter/models/osim/Arm26/arm26.osim", 12);
+  const double worst =
+      CheckMomentArmsAndSpeeds(kDataDir + "/MyoHub/myoconverter/models/osim/Arm26/arm26.osim", 12);
   EXPECT_LT(worst, kArm26Kink);
 }
 
@@ -217,10 +218,9 @@ TEST(PathDerivativesTest, OverAShortestPathWrapMomentArmsAreMinusDerivativesOfLe
     for (size_t w = 0; w < path.wraps().size(); ++w) {
       const bool elbow = path.wraps()[w].wrap_object == "TRI";
       const auto* cylinder = dynamic_cast<const WrapCylinder*>(path.wraps()[w].surface.get());
-      path.ConnectWrapSurface(static_cast<int>(w),
-                              elbow ? std::make_shared<WrapSphere>(cylinder->radius(),
-                                                                   WrapQuadrant{})
-                                    : nullptr);
+      path.ConnectWrapSurface(
+          static_cast<int>(w),
+          elbow ? std::make_shared<WrapSphere>(cylinder->radius(), WrapQuadrant{}) : nullptr);
       spheres += elbow ? 1 : 0;
     }
   }
@@ -280,6 +280,31 @@ int CheckGeneralizedForces(const std::string& file, int num_poses) {
     }
   }
   return wrapped;
+}
+
+// test_wrapAllVis's knee-extensor path over its torus (activated; the only active wrap object)
+// at the knee angles of its range where it wraps: moment arms and speeds against central
+// differences of the length with the tangent points carried by the femur (asserted inside).
+// OpenSim's torus path is the shortest only in a meridian plane, which this path is not in, so the
+// difference from the length wrapped afresh is only reported.
+TEST(PathDerivativesTest, OverATorusMomentArmsAreDerivativesWithTheTangentPointsCarried) {
+  const PathModel m(testing::WriteWrapAllVisWithActiveTorus());
+  const int knee = m.spec.FindCoordinate("knee_angle_r");
+  ASSERT_GE(knee, 0);
+  std::vector<std::vector<double>> poses;
+  int wrapped = 0;
+  for (double angle = -2.0; angle <= 0.1; angle += 0.05) {
+    std::vector<double> q = m.tree.default_q();
+    q[static_cast<size_t>(knee)] = angle;
+    m.couplers.Apply(q);
+    // Only poses where the torus wraps: near the others its length jumps (the ring point
+    // switching, docs/wrapping.md), and a difference across a jump is no derivative.
+    if (!PathModel::IsWrapped(m.CalcState(0, q))) continue;
+    ++wrapped;
+    poses.push_back(q);
+  }
+  EXPECT_GT(wrapped, 30);
+  CheckMomentArmsAndSpeeds(m, "test_wrapAllVis over its torus", poses, false);
 }
 
 TEST(PathDerivativesTest, GeneralizedForceOfATensionIsMinusTensionTimesLengthGradient) {

@@ -2,6 +2,7 @@
 // path lengths at a pose (for finite differences).
 #pragma once
 
+#include <gtest/gtest.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/kinematics/coordinate_couplers.h>
 #include <sinew/kinematics/forward_kinematics.h>
@@ -9,13 +10,36 @@
 #include <sinew/paths/geometry_path.h>
 #include <sinew/paths/path_set.h>
 
+#include <filesystem>
+#include <fstream>
 #include <span>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace sinew::paths::testing {
 
 inline const std::string kDataDir = SINEW_TEST_DATA_DIR;
+
+/// OpenSim's test_wrapAllVis.osim: one knee-extensor path over six wrap objects, all inactive.
+inline const std::string kWrapAllVis =
+    kDataDir + "/opensim-org/opensim-core/OpenSim/Tools/Test/test_wrapAllVis.osim";
+
+/// A copy of test_wrapAllVis.osim (in the test's temporary folder) whose WrapTorus is active:
+/// its `active` is the first after its name.
+inline std::string WriteWrapAllVisWithActiveTorus() {
+  std::ifstream in(kWrapAllVis);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  std::string text = buffer.str();
+  const std::string inactive = "<active>false</active>";
+  const size_t torus = text.find("<WrapTorus name=\"KnExt_at_fem_torus_r\">");
+  text.replace(text.find(inactive, torus), inactive.size(), "<active>true</active>");
+  const std::string copy =
+      (std::filesystem::path(::testing::TempDir()) / "test_wrapAllVis_torus.osim").string();
+  std::ofstream(copy) << text;
+  return copy;
+}
 
 /// A model with everything the path code needs.
 struct PathModel {
@@ -57,9 +81,8 @@ struct PathModel {
     Vec3 p_G_previous = Vec3::Zero();
     for (size_t i = 0; i < at.points.size(); ++i) {
       const PathPointState& s = at.points[i];
-      const Vec3 p_BP = s.point >= 0
-                            ? path.points()[static_cast<size_t>(s.point)].CalcLocationInBody(q)
-                            : s.p_BP;
+      const Vec3 p_BP =
+          s.point >= 0 ? path.points()[static_cast<size_t>(s.point)].CalcLocationInBody(q) : s.p_BP;
       const Vec3 p_G = X_GB[static_cast<size_t>(s.body)] * p_BP;
       if (i > 0) {
         const double arc = at.points[i - 1].arc_length_to_next;

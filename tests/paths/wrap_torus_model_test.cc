@@ -7,40 +7,16 @@
 #include <sinew/paths/path_analysis.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <numbers>
-#include <sstream>
 
 #include "paths/path_test_util.h"
 
 namespace sinew::paths {
 namespace {
 
+using testing::kWrapAllVis;
 using testing::PathModel;
-
-const std::string kWrapAllVis =
-    testing::kDataDir + "/opensim-org/opensim-core/OpenSim/Tools/Test/test_wrapAllVis.osim";
-
-std::string ReadFile(const std::string& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// A copy of the model whose torus is active (its `active` is the first after its name).
-std::string WithActiveTorus() {
-  std::string text = ReadFile(kWrapAllVis);
-  const size_t torus = text.find("<WrapTorus name=\"KnExt_at_fem_torus_r\">");
-  const size_t active = text.find("<active>false</active>", torus);
-  text.replace(active, std::string("<active>false</active>").size(), "<active>true</active>");
-  const std::string copy =
-      (std::filesystem::path(::testing::TempDir()) / "test_wrapAllVis_torus.osim").string();
-  std::ofstream(copy) << text;
-  return copy;
-}
 
 TEST(WrapTorusModelTest, WrapAllVisPathComputesWithItsWrapObjectsInactive) {
   const PathModel m(kWrapAllVis);
@@ -93,7 +69,7 @@ TEST(WrapTorusModelTest, ActiveTorusWrapsOverACylinderAlongTheRing) {
   // up to 40 cm from it, outside the ring, and OpenSim's rule pulls it through the hole. Where
   // the stationary points found from the two ends are about as near the ring, the ring point
   // switches between them from one pose to the next and the length jumps (docs/wrapping.md).
-  const PathModel m(WithActiveTorus());
+  const PathModel m(testing::WriteWrapAllVisWithActiveTorus());
   const int path = m.FindPath("vas_int_r");
   const int knee = m.spec.FindCoordinate("knee_angle_r");
   const GeometryPath& geometry = m.paths.paths()[static_cast<size_t>(path)];
