@@ -1,10 +1,10 @@
 #include "apps/sinew/run_simulation.h"
 
 #include <sinew/common/error.h>
+#include <sinew/contact/contact_table.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/pose.h>
 #include <sinew/kinematics/body_kinematics.h>
-#include <sinew/contact/contact_table.h>
 #include <sinew/muscles/path_actuator.h>
 #include <sinew/opensim/constraint_forces_table.h>
 #include <sinew/opensim/states_table.h>
@@ -59,6 +59,7 @@ BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options)
   }
   for (const std::string& file : options.external_loads) parser.AddExternalLoads(file);
   for (const std::string& name : options.disabled_forces) parser.DisableForce(name);
+  ApplyContactOptions(options.contact, parser);
   built.system = std::make_unique<engine::System>();
   parser.ParseSpec(*built.system, spec);
   built.system->Finalize();
@@ -181,8 +182,7 @@ void RunTables::Record(const engine::State& s) {
 
 void RunTables::Finish(const std::string& partial_reason) {
   for (std::optional<io::StorageWriter>* table :
-       {&states_, &states_degrees_, &bodies_, &forces_, &controls_, &constraints_,
-        &contacts_}) {
+       {&states_, &states_degrees_, &bodies_, &forces_, &controls_, &constraints_, &contacts_}) {
     if (*table) (*table)->Finish(partial_reason);
   }
 }

@@ -1,0 +1,70 @@
+// `sinew simulate --collision`: a ball with a ContactSphere and no contact force settles on
+// the model's ContactHalfSpace through SMC (the default contact method), its contacts.sto row
+// at rest carrying its weight on one contact; NSC is refused until its stepper is connected;
+// contact options are checked (exit 2).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "apps/cli_test_util.h"
+#include "engine/test_models.h"
+
+namespace sinew {
+namespace {
+
+using engine::testing::ReadStoColumns;
+using testing::CliRun;
+
+const std::string kBall = std::string(SINEW_TEST_DATA_DIR) + "/sinew/ball_on_floor.osim";
+
+class SimulateCollisionTest : public testing::CliTest {};
+
+TEST_F(SimulateCollisionTest, BallSettlesOnTheFloorOnItsWeightWithSmc) {
+  // Dropped 0.2 m (restitution 0.4: its bounces die out within 0.3 s), 1.5 s of semi-implicit
+  // Euler at 1e-4 s. At rest the floor carries the weight m g = 9.80665 N; the damping makes
+  // the residual oscillation negligible (decay time about 0.02 s). The friction is explicit in
+  // Euler: its slope u m g / v_s on the slip's effective mass (m I / (I + m r^2) = 0.29 kg)
+  // must keep h below 2 m_eff v_s / (u m g), so the slip speed is 0.01 m/s (with the default
+  // 1e-3 the spin chatters at a slip of +-2e-4 m/s, a period-2 cycle).
+  const CliRun run = Run("simulate " + kBall +
+                         " --collision --slip-speed 0.01 --integrator euler --step 1e-4 "
+                         "--duration 1.5 --report-interval 0.01 --quiet --out " +
+                         Path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto contacts = ReadStoColumns(Path("out/contacts.sto"));
+  ASSERT_TRUE(contacts.count("smc_contact.ball.force.Y")) << "no SMC columns";
+  const double weight = 9.80665;
+  EXPECT_NEAR(contacts.at("smc_contact.ball.force.Y").back(), weight, 1e-4 * weight);
+  EXPECT_NEAR(contacts.at("smc_contact.ground.force.Y").back(), -weight, 1e-4 * weight);
+  EXPECT_NEAR(contacts.at("smc_contact.ball.force.X").back(), 0.0, 1e-9);
+  EXPECT_EQ(contacts.at("smc_contact.active_contacts").back(), 1.0);
+  EXPECT_EQ(contacts.at("smc_contact.ground-ball.active_contacts").back(), 1.0);
+  // In the air at the start: no contact.
+  EXPECT_EQ(contacts.at("smc_contact.active_contacts").front(), 0.0);
+}
+
+TEST_F(SimulateCollisionTest, NscIsRefusedUntilItsStepperIsConnected) {
+  const CliRun run = Run("simulate " + kBall + " --collision --contact nsc --duration 0.1 " +
+                         "--quiet --out " + Path("out"));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("NSC contact is not available in this build"), std::string::npos)
+      << run.err;
+}
+
+TEST_F(SimulateCollisionTest, BadContactOptionsAreRefused) {
+  for (const auto& [options, what] :
+       {std::pair<std::string, std::string>{"--collision --friction -0.1", "friction -0.1"},
+        {"--collision --young-modulus 0", "young_modulus 0"},
+        {"--collision --kn -5", "kn -5"},
+        {"--ground-plane 0", "needs --collision"},
+        {"--contact smc", "needs --collision"}}) {
+    const CliRun run =
+        Run("simulate " + kBall + " " + options + " --duration 0.1 --quiet --out " + Path("out"));
+    EXPECT_EQ(run.exit_code, 2) << options << ": " << run.err;
+    EXPECT_NE(run.err.find(what), std::string::npos) << options << ": " << run.err;
+  }
+}
+
+}  // namespace
+}  // namespace sinew
