@@ -111,6 +111,34 @@ Shape MakeGeometry(const CollisionGeometry& g) {
   return s;
 }
 
+// The distance between the segments [p1, q1] and [p2, q2] (closest points of two segments, the
+// clamped solution of the two-parameter least-squares problem).
+double SegmentDistance(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) {
+  const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  const double c = d1.dot(r), b = d1.dot(d2), denom = a * e - b * b;
+  double s = denom > 1e-12 * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+  double t = (b * s + f) / e;
+  if (t < 0.0) {
+    t = 0.0;
+    s = std::clamp(-c / a, 0.0, 1.0);
+  } else if (t > 1.0) {
+    t = 1.0;
+    s = std::clamp((b - c) / a, 0.0, 1.0);
+  }
+  return (p1 + s * d1 - (p2 + t * d2)).norm();
+}
+
+// A cylinder lies inside the capsule of its axis and radius: two cylinders whose axes are
+// farther apart than their radii cannot touch (a cheap test before GJK).
+bool CapsulesApart(const Shape& a, const Transform& X_GA, const Shape& b, const Transform& X_GB) {
+  const auto& ca = static_cast<const btCylinderShape&>(*a.bt);
+  const auto& cb = static_cast<const btCylinderShape&>(*b.bt);
+  const Vec3 ha = X_GA.R.col(1) * ca.getHalfExtentsWithoutMargin().y();
+  const Vec3 hb = X_GB.R.col(1) * cb.getHalfExtentsWithoutMargin().y();
+  return SegmentDistance(X_GA.p - ha, X_GA.p + ha, X_GB.p - hb, X_GB.p + hb) > a.radius + b.radius;
+}
+
 struct Pair {
   int i = 0;  // a half-space comes first
   int j = 0;
@@ -232,8 +260,12 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
                                             Visit&& visit) const {
   const Shape& a = shapes[p.i];
   const Shape& b = shapes[p.j];
-  const btTransform X_GA = ToBt(X_GB[a.body] * a.X_BS);
-  const btTransform X_GBs = ToBt(X_GB[b.body] * b.X_BS);
+  const Transform X_GSa = X_GB[a.body] * a.X_BS;
+  const Transform X_GSb = X_GB[b.body] * b.X_BS;
+  if (a.kind == Kind::kCylinder && b.kind == Kind::kCylinder && CapsulesApart(a, X_GSa, b, X_GSb))
+    return;
+  const btTransform X_GA = ToBt(X_GSa);
+  const btTransform X_GBs = ToBt(X_GSb);
   // Broad phase: the shapes' bounding boxes.
   btVector3 min_a, max_a, min_b, max_b;
   a.bt->getAabb(X_GA, min_a, max_a);
