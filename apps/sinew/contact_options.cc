@@ -38,8 +38,17 @@ void AddContactOptions(CLI::App* cmd, ContactOptions& o) {
 
 void ApplyContactOptions(const ContactOptions& o, opensim::OpenSimParser& parser) {
   if (!o.collision) {
-    if (!o.method.empty() || o.ground_plane)
-      throw Error({}, o.method.empty() ? "--ground-plane" : "--contact", "needs --collision");
+    const contact::CollisionMaterial d;
+    const contact::CollisionMaterial& m = o.material;
+    const bool material_set = m.friction != d.friction || m.restitution != d.restitution ||
+                              m.young_modulus != d.young_modulus ||
+                              m.poisson_ratio != d.poisson_ratio || m.kn != d.kn || m.gn != d.gn ||
+                              m.kt != d.kt || m.gt != d.gt;
+    const char* option = !o.method.empty() ? "--contact"
+                         : o.ground_plane  ? "--ground-plane"
+                         : material_set    ? "a contact material option"
+                                           : nullptr;
+    if (option) throw Error({}, option, "needs --collision");
     return;
   }
   contact::CheckMaterial(o.material, {}, "contact material options");

@@ -58,7 +58,8 @@ TEST_F(SimulateCollisionTest, BadContactOptionsAreRefused) {
         {"--collision --young-modulus 0", "young_modulus 0"},
         {"--collision --kn -5", "kn -5"},
         {"--ground-plane 0", "needs --collision"},
-        {"--contact smc", "needs --collision"}}) {
+        {"--contact smc", "needs --collision"},
+        {"--friction 0.3", "needs --collision"}}) {
     const CliRun run =
         Run("simulate " + kBall + " " + options + " --duration 0.1 --quiet --out " + Path("out"));
     EXPECT_EQ(run.exit_code, 2) << options << ": " << run.err;
