@@ -16,6 +16,7 @@
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/pose.h>
 #include <sinew/io/osim_reader.h>
+#include <sinew/opensim/collision_parts.h>
 #include <sinew/viz/export_animation.h>
 
 #include <functional>
@@ -126,6 +127,8 @@ void RunSimulate(const SimulateOptions& options) {
     viz::ExportOptions export_options;
     export_options.visual.mode = viz::ParseVisType(options.vis);
     export_options.visual.geometry_dirs = options.geometry_dirs;
+    // With --collision the shapes that collide, in the contact colour.
+    export_options.collision_parts = opensim::CollisionPartsOf(built.parser.GetCollisionModel());
     PrintSceneWarnings(viz::ExportAnimation(spec, motion, options.export_file, export_options),
                        options.verbose);
   }
