@@ -43,7 +43,16 @@ void OpenTable(std::optional<io::StorageWriter>& writer, const std::string& file
 }  // namespace
 
 BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options) {
-  WarnNotSimulated(spec, options.model_path, options.strict, options.disabled_forces);
+  // With --collision, ContactSphere and ContactHalfSpace collide: they are simulated.
+  model::ModelSpec shown;
+  if (options.contact.collision) {
+    shown = spec;
+    std::erase_if(shown.contact_geometry, [](const model::ContactGeometrySpec& g) {
+      return g.type == "ContactSphere" || g.type == "ContactHalfSpace";
+    });
+  }
+  WarnNotSimulated(options.contact.collision ? shown : spec, options.model_path, options.strict,
+                   options.disabled_forces);
   BuiltModel built;
   opensim::OpenSimParser& parser = built.parser;
   parser.ActivateActuators(options.activate_actuators);

@@ -42,6 +42,8 @@ TEST_F(SimulateCollisionTest, BallSettlesOnTheFloorOnItsWeightWithSmc) {
   EXPECT_EQ(contacts.at("smc_contact.ground-ball.active_contacts").back(), 1.0);
   // In the air at the start: no contact.
   EXPECT_EQ(contacts.at("smc_contact.active_contacts").front(), 0.0);
+  // The sphere and the floor collide: not reported as left out.
+  EXPECT_EQ(run.err.find("NOT simulated"), std::string::npos) << run.err;
 }
 
 TEST_F(SimulateCollisionTest, NscIsRefusedUntilItsStepperIsConnected) {

@@ -107,15 +107,21 @@ void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
   BuildConstraints(system, map.bodies, map.coordinates);
   BuildForces(system, map.bodies, map.coordinates);
   AssignExcitations();
-  for (std::string& line : ListNotSimulated(spec_, disabled_forces_)) {
-    report_.AddNotSimulated(std::move(line));
-  }
   if (collision_enabled_) {
     collision_ = internal::BuildCollision(spec_, collision_settings_, disabled_forces_, report_);
     if (contact_method_ == ContactMethod::kSmc) {
       internal::AddSmoothContact(system, spec_, collision_, map.bodies,
                                  collision_settings_.slip_speed, report_);
     }
+  }
+  for (std::string& line : ListNotSimulated(spec_, disabled_forces_)) {
+    // Contact geometry that collides is simulated, though no contact force names it.
+    const bool collides =
+        std::any_of(collision_.geometry.begin(), collision_.geometry.end(),
+                    [&](const contact::CollisionGeometry& g) {
+                      return line.starts_with("/contactgeometryset/" + g.name + ":");
+                    });
+    if (!collides) report_.AddNotSimulated(std::move(line));
   }
   scene_ = viz::VisualScene();
   if (vis_type_ != VisType::kNone) {
