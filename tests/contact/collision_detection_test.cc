@@ -93,6 +93,37 @@ TEST(CollisionDetectionTest, CylinderSinksIntoTheGroundPlaneByItsLowestPoint) {
   EXPECT_EQ(lying, 2);
 }
 
+TEST(CollisionDetectionTest, SphereRestsOnAnEnvironmentBoxAndItsFloorByTheirClosedForms) {
+  // ball_on_floor.osim (a 0.1 m ContactSphere over its ContactHalfSpace floor) with a box
+  // added to the environment through the parser: 1 m wide, its top face at y = 0.5.
+  opensim::OpenSimParser parser;
+  parser.EnableCollision();
+  parser.AddEnvironmentBox("step", Transform::Translation(Vec3(0, 0.25, 0)), Vec3(0.5, 0.25, 0.5));
+  parser.Parse(std::string(SINEW_TEST_DATA_DIR) + "/sinew/ball_on_floor.osim");
+  const CollisionModel& model = parser.GetCollisionModel();
+  ASSERT_EQ(model.geometry.size(), 3u);  // floor, sphere, step
+  const CollisionDetector detector(model, std::nullopt);
+  // The ball's centre 0.08 m above the step's top: 0.02 m into it, normal +y (from ground's
+  // box to the ball), the point midway through the overlap. GJK treats the sphere as its
+  // centre with a margin, so the depth is exact to rounding.
+  std::vector<Transform> X_GB = {Transform(), Transform::Translation(Vec3(0.1, 0.58, 0))};
+  std::vector<CollisionContact> c = Contacts(detector, X_GB);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].body1, 0);
+  EXPECT_NEAR(c[0].depth, 0.02, 1e-9);
+  EXPECT_NEAR((c[0].n_G - Vec3::UnitY()).norm(), 0.0, 1e-9);
+  EXPECT_NEAR(c[0].p_G.y(), 0.49, 1e-9);
+  EXPECT_NEAR(c[0].radius, 0.1 * kFlatShapeRadius / (0.1 + kFlatShapeRadius), 1e-15);
+  // Beside the step, 0.005 m into the floor: the floor's contact only, exact.
+  X_GB[1] = Transform::Translation(Vec3(2, 0.095, 0));
+  c = Contacts(detector, X_GB);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_NEAR(c[0].depth, 0.005, 1e-15);
+  EXPECT_NEAR(c[0].radius, 0.1, 1e-15);
+  // A box needs positive half extents.
+  EXPECT_THROW(parser.AddEnvironmentBox("flat", Transform(), Vec3(1, 0, 1)), Error);
+}
+
 TEST(CollisionDetectionTest, SkeletonAtRestTouchesNothingAndNeverItsParents) {
   // The seed's Rajagopal2015 with EnableCollision: no allowed pair of its cylinders overlaps
   // in the default pose (nothing needs leaving out), and none is a parent and its child.
