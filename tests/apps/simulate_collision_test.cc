@@ -18,19 +18,21 @@ using testing::CliRun;
 
 const std::string kBall = std::string(SINEW_TEST_DATA_DIR) + "/sinew/ball_on_floor.osim";
 
-class SimulateCollisionTest : public testing::CliTest {};
+class SimulateCollisionTest : public testing::CliTest {
+ protected:
+  // Runs the ball with `integrator_options` and checks contacts.sto at rest.
+  void ExpectBallSettles(const std::string& integrator_options) const;
+};
 
-TEST_F(SimulateCollisionTest, BallSettlesOnTheFloorOnItsWeightWithSmc) {
-  // Dropped 0.2 m (restitution 0.4: its bounces die out within 0.3 s), 1.5 s of semi-implicit
-  // Euler at 1e-4 s. At rest the floor carries the weight m g = 9.80665 N; the damping makes
-  // the residual oscillation negligible (decay time about 0.02 s). The friction is explicit in
-  // Euler: its slope u m g / v_s on the slip's effective mass (m I / (I + m r^2) = 0.29 kg)
+void SimulateCollisionTest::ExpectBallSettles(const std::string& integrator_options) const {
+  // Dropped 0.2 m (restitution 0.4: its bounces die out within 0.3 s), 1.5 s at steps of
+  // 1e-4 s. At rest the floor carries the weight m g = 9.80665 N; the damping makes
+  // the residual oscillation negligible (decay time about 0.02 s). With euler the friction is
+  // explicit: its slope u m g / v_s on the slip's effective mass (m I / (I + m r^2) = 0.29 kg)
   // must keep h below 2 m_eff v_s / (u m g), so the slip speed is 0.01 m/s (with the default
   // 1e-3 the spin chatters at a slip of +-2e-4 m/s, a period-2 cycle).
-  const CliRun run = Run("simulate " + kBall +
-                         " --collision --slip-speed 0.01 --integrator euler --step 1e-4 "
-                         "--duration 1.5 --report-interval 0.01 --quiet --out " +
-                         Path("out"));
+  const CliRun run = Run("simulate " + kBall + " --collision " + integrator_options +
+                         " --duration 1.5 --report-interval 0.01 --quiet --out " + Path("out"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto contacts = ReadStoColumns(Path("out/contacts.sto"));
   ASSERT_TRUE(contacts.count("smc_contact.ball.force.Y")) << "no SMC columns";
@@ -44,6 +46,16 @@ TEST_F(SimulateCollisionTest, BallSettlesOnTheFloorOnItsWeightWithSmc) {
   EXPECT_EQ(contacts.at("smc_contact.active_contacts").front(), 0.0);
   // The sphere and the floor collide: not reported as left out.
   EXPECT_EQ(run.err.find("NOT simulated"), std::string::npos) << run.err;
+}
+
+TEST_F(SimulateCollisionTest, BallSettlesOnTheFloorOnItsWeightWithSmc) {
+  ExpectBallSettles("--slip-speed 0.01 --integrator euler --step 1e-4");
+}
+
+// The implicit Euler step takes the friction's slope in its Jacobian: no chatter with the
+// default slip speed.
+TEST_F(SimulateCollisionTest, BallSettlesOnTheFloorOnItsWeightWithImplicitEuler) {
+  ExpectBallSettles("--integrator implicit-euler --step 1e-4");
 }
 
 TEST_F(SimulateCollisionTest, NscIsRefusedUntilItsStepperIsConnected) {
