@@ -2,7 +2,7 @@
 // renames it on load) as a TensionModel: the muscle of SIMM and OpenSim 1.x/2.x, with spline
 // curves from the file, activation dynamics in a normalized time, a damped Hill force-velocity
 // relation solved for the fiber velocity, and OpenSim's isometric-force iteration for
-// equilibrium. docs/muscles.md#schutte1993muscle_deprecated.
+// equilibrium. docs/muscles.md#schutte1993muscle_deprecated-and-schutte1993muscle.
 #pragma once
 
 #include <sinew/functions/function.h>
