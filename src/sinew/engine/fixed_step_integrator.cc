@@ -24,6 +24,15 @@ void FixedStepIntegrator::TakeStep(State& state, double t_final) {
   ++stats_.steps;
 }
 
+void FixedStepIntegrator::SetVelocityRhs(const State& later, VecX& rhs) const {
+  const int nv = kkt_.num_velocities();
+  const auto& constraints = system_.constraints();
+  for (size_t k = 0; k < constraints.size(); ++k) {
+    constraints[k]->CalcVelocityRhs(
+        system_, later, rhs.segment(nv + kkt_.EquationRow(k), constraints[k]->NumEquations()));
+  }
+}
+
 void FixedStepIntegrator::ProjectAfterStep(State& later, double t_start) {
   constexpr int kIterations = 10;
   if (!TryStartFactorization(later) &&

@@ -25,6 +25,11 @@ class FixedStepIntegrator : public Integrator {
   /// it throws a sinew::Error saying where and what to try.
   void ProjectAfterStep(State& later, double t_start);
 
+  /// Writes every constraint's velocity right-hand side c at `later` (the step's end) into
+  /// the constraint rows of `rhs` (nv + nc entries, KKT order), as the velocity-level step
+  /// J v+ = c(t + h) needs.
+  void SetVelocityRhs(const State& later, VecX& rhs) const;
+
   /// The scheme's name ("euler", ...).
   const std::string& name() const { return name_; }
 

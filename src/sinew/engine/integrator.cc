@@ -327,11 +327,7 @@ class SemiImplicitEuler final : public FixedStepIntegrator {
     rhs.head(nv) = kkt_.MultiplyMass(v0 + h * acc.vdot);
     State later = state;
     later.t = t_new;
-    const auto& constraints = system_.constraints();
-    for (size_t k = 0; k < constraints.size(); ++k) {
-      constraints[k]->CalcVelocityRhs(
-          system_, later, rhs.segment(nv + kkt_.EquationRow(k), constraints[k]->NumEquations()));
-    }
+    SetVelocityRhs(later, rhs);
     // h * J^T lambda of the acceleration solve is replaced by the new impulse.
     const VecX v1 = kkt_.Solve(rhs).head(nv);
     // Positions move with the new velocities.
@@ -369,11 +365,7 @@ class LinearizedImplicitEuler final : public FixedStepIntegrator {
     rhs.head(nv) = kkt_.MultiplyMass(v0 + h * acc.vdot) - h * (D * v0);
     State later = state;
     later.t = t_new;
-    const auto& constraints = system_.constraints();
-    for (size_t k = 0; k < constraints.size(); ++k) {
-      constraints[k]->CalcVelocityRhs(
-          system_, later, rhs.segment(nv + kkt_.EquationRow(k), constraints[k]->NumEquations()));
-    }
+    SetVelocityRhs(later, rhs);
     const Eigen::PartialPivLU<MatX> lu(A);
     const VecX x = lu.solve(rhs);
     if (!x.allFinite() ||

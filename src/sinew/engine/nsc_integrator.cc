@@ -60,11 +60,7 @@ void NscIntegrator::Step(State& state, double h, double t_new) {
   rhs_.head(nv) = kkt_.MultiplyMass(v_free_);
   State later = state;
   later.t = t_new;
-  const auto& constraints = system_.constraints();
-  for (size_t k = 0; k < constraints.size(); ++k) {
-    constraints[k]->CalcVelocityRhs(
-        system_, later, rhs_.segment(nv + kkt_.EquationRow(k), constraints[k]->NumEquations()));
-  }
+  SetVelocityRhs(later, rhs_);
   kkt_.Solve(rhs_, solution_);
   v_free_ = solution_.head(nv);
   // 2-5. Contacts.
