@@ -120,32 +120,31 @@ void NscIntegrator::SolveContacts(const State& state, double h) {
       r.slot[s] = body_slot_[body[s]];
     }
   }
-  SolveBodyColumns();
-  // E_i = A^-1 D_i^T, then W = D E, u_free = D v_free, and the targets.
-  Reserve(E_, nv, 3 * m);
+  SolveBodyBlocks();
+  // W = D A^-1 D^T block by block, u_free = D v_free, and the targets.
   Reserve(W_, 3 * m, 3 * m);
   for (VecX* v : {&u_free_, &u_, &gamma_}) Reserve(*v, 3 * m);
   Reserve(target_, m);
   Reserve(mu_, m);
-  for (int i = 0; i < m; ++i) {
-    auto E = E_.middleCols<3>(3 * i);
-    E.setZero();
-    for (int s = 0; s < 2; ++s) {
-      if (rows_[i].slot[s] >= 0) {
-        E.noalias() += X_.middleCols<6>(6 * rows_[i].slot[s]) * rows_[i].J[s].transpose();
-      }
-    }
-  }
   for (int k = 0; k < m; ++k) {
     const UnilateralContact& c = contacts_[k];
     const int body_of[2] = {c.body1, c.body2};
-    auto W_k = W_.block(3 * k, 0, 3, 3 * m);
-    W_k.setZero();
     Eigen::Vector3d u_free = Eigen::Vector3d::Zero(), u_start = Eigen::Vector3d::Zero();
+    for (int i = 0; i < m; ++i) {
+      Eigen::Matrix3d W_ki = Eigen::Matrix3d::Zero();
+      for (int s = 0; s < 2; ++s) {
+        for (int t = 0; t < 2; ++t) {
+          const int target = rows_[k].slot[s], source = rows_[i].slot[t];
+          if (target < 0 || source < 0) continue;
+          W_ki.noalias() +=
+              rows_[k].J[s] * X_.block<6, 6>(6 * target, 6 * source) * rows_[i].J[t].transpose();
+        }
+      }
+      W_.block<3, 3>(3 * k, 3 * i) = W_ki;
+    }
     for (int s = 0; s < 2; ++s) {
       if (rows_[k].slot[s] < 0) continue;
       const int col = kkt_.BodyColumn(body_of[s]);
-      W_k.noalias() += rows_[k].J[s] * E_.block(col, 0, 6, 3 * m);
       u_free += rows_[k].J[s] * v_free_.segment<6>(col);
       u_start += rows_[k].J[s] * v0_.segment<6>(col);
     }
@@ -168,7 +167,18 @@ void NscIntegrator::SolveContacts(const State& state, double h) {
                            mu_.head(m), nsc_.solver, gamma, u_.head(3 * m));
   report_.iterations = result.iterations;
   report_.residual = result.residual;
-  v_free_.noalias() += E_.leftCols(3 * m) * gamma;
+  // v+ = v_free + A^-1 D^T gamma.
+  rhs_.setZero(nv + kkt_.num_equations());
+  for (int i = 0; i < m; ++i) {
+    const int body_of[2] = {contacts_[i].body1, contacts_[i].body2};
+    for (int s = 0; s < 2; ++s) {
+      if (rows_[i].slot[s] < 0) continue;
+      rhs_.segment<6>(kkt_.BodyColumn(body_of[s])) +=
+          rows_[i].J[s].transpose() * gamma.segment<3>(3 * i);
+    }
+  }
+  kkt_.Solve(rhs_, solution_);
+  v_free_ += solution_.head(nv);
   previous_contacts_ = contacts_;
   Reserve(previous_gamma_, 3 * m);
   previous_gamma_.head(3 * m) = gamma;
@@ -190,17 +200,24 @@ void NscIntegrator::WarmStart() {
   }
 }
 
-void NscIntegrator::SolveBodyColumns() {
-  const int nv = kkt_.num_velocities(), nc = kkt_.num_equations();
-  Reserve(X_, nv, 6 * static_cast<Eigen::Index>(bodies_.size()));
-  rhs_.setZero(nv + nc);
-  for (size_t slot = 0; slot < bodies_.size(); ++slot) {
-    const int col = kkt_.BodyColumn(bodies_[slot]);
+void NscIntegrator::SolveBodyBlocks() {
+  const Eigen::Index nb = static_cast<Eigen::Index>(bodies_.size());
+  Reserve(X_, 6 * nb, 6 * nb);
+  for (Eigen::Index source = 0; source < nb; ++source) {
+    auto X_source = X_.block(0, 6 * source, 6 * nb, 6);
+    if (kkt_.SolveUnitLoadResponses(bodies_[source], bodies_, X_source)) continue;
+    // Constraints outside the tree: six full solves, keeping the rows of the bodies in contact.
+    const int nv = kkt_.num_velocities();
+    rhs_.setZero(nv + kkt_.num_equations());
+    const int col = kkt_.BodyColumn(bodies_[source]);
     for (int j = 0; j < 6; ++j) {
       rhs_[col + j] = 1.0;
       kkt_.Solve(rhs_, solution_);
-      X_.col(6 * slot + j) = solution_.head(nv);
       rhs_[col + j] = 0.0;
+      for (Eigen::Index target = 0; target < nb; ++target) {
+        X_source.block<6, 1>(6 * target, j) =
+            solution_.segment<6>(kkt_.BodyColumn(bodies_[target]));
+      }
     }
   }
 }

@@ -8,8 +8,10 @@
 //  2. Contacts from the ContactProvider at x; per contact three rows D_i (normal, two tangents)
 //     over the bodies' twists.
 //  3. The Delassus operator W = D A^-1 D^T, where A^-1 is the inverse mass *constrained by the
-//     joints* (applied by solving the KKT system factorized at x with the rows' columns as
-//     loads: six solves per body in contact).
+//     joints*: its 6x6 blocks between the bodies in contact, from the KKT system factorized at
+//     x with unit loads on each body in contact (KktSolver::SolveUnitLoadResponses: only the
+//     tree paths from those bodies to ground are visited; with model constraints outside the
+//     tree, six full solves per body).
 //  4. The impulses gamma by SolveContactImpulses (Coulomb's law, circular cone, Gauss-Seidel,
 //     warm-started from the previous step's impulses of the same contacts), with the normal target
 //     speed per contact (gap g = -depth)
@@ -18,7 +20,8 @@
 //     and, when the contact closes during the step while approaching faster than
 //     min_bounce_speed, target = max(target, -e v_n) with v_n the normal speed at the step's
 //     start (Newton's restitution).
-//  5. v+ = v_free + A^-1 D^T gamma; positions move with h v+ and are projected onto the
+//  5. v+ = v_free + A^-1 D^T gamma (one more solve); positions move with h v+ and are projected
+//  onto the
 //     constraints (as "euler").
 #pragma once
 
@@ -73,8 +76,8 @@ class NscIntegrator final : public FixedStepIntegrator {
   void Step(State& state, double h, double t_new) override;
   // Step 2-5: turns v_free_ into v+ for the contacts of `state` (v0_ its velocities).
   void SolveContacts(const State& state, double h);
-  // The columns A^-1 e_j for the six twist columns of every body in contact, into X_.
-  void SolveBodyColumns();
+  // The blocks of A^-1 between the twists of every pair of bodies in contact, into X_.
+  void SolveBodyBlocks();
   // Starts gamma_ from the previous step's impulse of the same contact (same bodies, point
   // within 1 cm, normal within 8 degrees), zero for new contacts.
   void WarmStart();
