@@ -16,15 +16,20 @@ from models import SINGLE_PIN
 from pendulum_period import exact_period, half_period_crossing
 
 
+def client_from_arguments():
+    """A Client of the scheduler whose address is the first command-line argument, or None (then
+    sinew.sweep starts a LocalCluster of 2 worker processes)."""
+    if len(sys.argv) < 2:
+        return None
+    from dask.distributed import Client
+    return Client(sys.argv[1])
+
+
 def main():
     amplitudes = np.linspace(0.1, 3.0, 8)  # rad
     cases = [{"duration": 0.55 * exact_period(a), "coordinates": {"r1_z": a}, "accuracy": 1e-10,
               "report_interval": 1e-3} for a in amplitudes]
-    client = None
-    if len(sys.argv) > 1:
-        from dask.distributed import Client
-        client = Client(sys.argv[1])
-    results = sinew.sweep(SINGLE_PIN, cases, client=client)
+    results = sinew.sweep(SINGLE_PIN, cases, client=client_from_arguments())
     worst = 0.0
     print(" amplitude (rad)  period (s)  exact (s)  relative error")
     for amplitude, result in zip(amplitudes, results):

@@ -13,9 +13,10 @@ import numpy as np
 MASS, INERTIA, DISTANCE, GRAVITY = 0.75, 0.025, 0.5, 9.80665
 
 
-def exact_period(amplitude):
-    """The period (s) of SinglePin released from rest at `amplitude` rad (< pi)."""
-    w0 = math.sqrt(MASS * GRAVITY * DISTANCE / (INERTIA + MASS * DISTANCE**2))
+def exact_period(amplitude, mass=MASS, distance=DISTANCE):
+    """The period (s) of SinglePin released from rest at `amplitude` rad (< pi); `mass` (kg) and
+    `distance` (m, from the pin to the mass centre) as overridden by parameter_sweep.py."""
+    w0 = math.sqrt(mass * GRAVITY * distance / (INERTIA + mass * distance**2))
     a, b = 1.0, math.sqrt(1.0 - math.sin(amplitude / 2) ** 2)
     while abs(a - b) > 1e-15 * a:
         a, b = (a + b) / 2, math.sqrt(a * b)

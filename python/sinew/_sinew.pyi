@@ -63,12 +63,23 @@ Excitation = Union[float, Function, Callable[[float], float]]
 
 
 def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool = False,
-         contact: str = "nsc", strict: bool = False) -> "Model":
+         contact: str = "nsc", strict: bool = False,
+         parameters: Optional[Mapping[str, Union[float, Sequence[float]]]] = None) -> "Model":
     """Reads an OpenSim model (.osim, every version 1.9 to 4.6) and builds what Sinew simulates.
 
     visualization: None/"none", "primitives" or "mesh" (visual assets of the bodies).
     collision: make collision shapes. contact: "nsc" or "smc". strict: anything approximated,
-    substituted or not simulated is an Error. Raises sinew.Error with file, line, component.
+    substituted or not simulated is an Error.
+    parameters: {"<component>/<property>": value} overriding what the file says before the
+    model is built, in order; the component by name or path ("BIClong", "/forceset/BIClong"),
+    the value a number, or a sequence of as many numbers as the property holds. Bodies: mass,
+    mass_center (3), inertia (6: Ixx Iyy Izz Ixy Ixz Iyz) or inertia_xx ... inertia_yz.
+    Coordinates: default_value, default_speed_value, range (2). Forces, actuators, muscles: any
+    numeric property written directly in their element in the file (max_isometric_force,
+    stiffness, optimal_force, ...). Joints, frames, path points, constraints, markers and
+    controllers cannot be overridden yet.
+    Raises sinew.Error with file, line, component (also for an unknown or ambiguous component,
+    a property it lacks, or a wrong value).
     """
 
 

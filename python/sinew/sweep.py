@@ -5,20 +5,27 @@ import os
 from typing import Any, Dict, List, Mapping, Optional, Sequence
 
 # What a case may hold besides the keyword arguments of Model.simulate.
-_CASE_KEYS = ("coordinates", "speeds")
+_CASE_KEYS = ("coordinates", "speeds", "parameters")
 
 
 def run_case(model_path: str, case: Mapping[str, Any]) -> Any:
     """Runs one case in this process: loads `model_path` and simulates it.
 
     A case is a dict: `duration` (s, required), `coordinates` and `speeds` ({name: value}, set
-    on the default state), `load` (keyword arguments of sinew.load), and any other keyword
-    argument of Model.simulate (accuracy, integrator, step, report_interval, initial_states,
-    excitations, controls). Returns the sinew.Result.
+    on the default state), `parameters` ({"<component>/<property>": value}, model properties
+    overridden before the model is built, as sinew.load's `parameters`), `load` (other keyword
+    arguments of sinew.load), and any other keyword argument of Model.simulate (accuracy,
+    integrator, step, report_interval, initial_states, excitations, controls). Returns the
+    sinew.Result.
     """
     from . import load
     options = dict(case)
-    model = load(model_path, **options.pop("load", {}))
+    load_options = dict(options.pop("load", {}))
+    if "parameters" in options:
+        if "parameters" in load_options:
+            raise ValueError("a case gives parameters either at its top level or in 'load'")
+        load_options["parameters"] = options.pop("parameters")
+    model = load(model_path, **load_options)
     coordinates = options.pop("coordinates", {})
     speeds = options.pop("speeds", {})
     if coordinates or speeds:

@@ -2,6 +2,7 @@
 // variables), the parser's Report as plain data, and its default state.
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
+#include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
 
 #include <filesystem>
@@ -57,23 +58,63 @@ py::dict ReportToDict(const opensim::Report& report) {
   return out;
 }
 
+// One number of a parameter's value: a Python number (not a bool), as a double.
+double ParameterNumber(const std::string& path, const std::string& key, py::handle value) {
+  if (!PyBool_Check(value.ptr()) && !PyUnicode_Check(value.ptr())) {
+    const double number = PyFloat_AsDouble(value.ptr());
+    if (!(number == -1.0 && PyErr_Occurred())) return number;
+    PyErr_Clear();
+  }
+  throw Error({path, 0}, key,
+              "parameter '" + key + "': expects a number or a sequence of numbers, not " +
+                  std::string(py::str(py::repr(value))));
+}
+
+// sinew.load's `parameters` ({"<component>/<property>": number or sequence}) as overrides.
+std::vector<model::ParameterOverride> ToParameterOverrides(const std::string& path,
+                                                           const py::dict& parameters) {
+  std::vector<model::ParameterOverride> overrides;
+  for (const auto& [key_object, value] : parameters) {
+    if (!PyUnicode_Check(key_object.ptr())) {
+      throw Error({path, 0}, "",
+                  "a parameter is named by a string '<component>/<property>', not " +
+                      std::string(py::str(py::repr(key_object))));
+    }
+    model::ParameterOverride& override = overrides.emplace_back();
+    override.key = key_object.cast<std::string>();
+    const bool is_sequence = py::isinstance<py::iterable>(value) && !PyUnicode_Check(value.ptr());
+    if (!is_sequence) {
+      override.values.push_back(ParameterNumber(path, override.key, value));
+      continue;
+    }
+    for (py::handle item : value) {
+      override.values.push_back(ParameterNumber(path, override.key, item));
+    }
+  }
+  return overrides;
+}
+
 }  // namespace
 
 void BindModel(py::module_& m) {
   m.def(
       "load",
       [](const std::filesystem::path& path, const std::optional<std::string>& visualization,
-         bool collision, const std::string& contact, bool strict) {
+         bool collision, const std::string& contact, bool strict,
+         const std::optional<py::dict>& parameters) {
         LoadOptions options;
         options.visualization = visualization.value_or("none");
         options.collision = collision;
         options.contact = contact;
         options.strict = strict;
+        if (parameters) options.parameters = ToParameterOverrides(path.string(), *parameters);
         return ModelHandle::Load(path.string(), options);
       },
       py::arg("path"), py::kw_only(), py::arg("visualization") = py::none(),
       py::arg("collision") = false, py::arg("contact") = "nsc", py::arg("strict") = false,
-      "Reads an OpenSim model (.osim) and builds what Sinew simulates of it.");
+      py::arg("parameters") = py::none(),
+      "Reads an OpenSim model (.osim) and builds what Sinew simulates of it, with `parameters` "
+      "({'<component>/<property>': number or sequence}) overriding the file's values.");
 
   py::class_<ModelHandle, ModelPtr>(m, "Model", "A parsed OpenSim model (sinew.load makes one).")
       .def_property_readonly("path", &ModelHandle::path, "The .osim file it was read from.")

@@ -10,7 +10,13 @@ namespace sinew::python {
 
 std::shared_ptr<ModelHandle> ModelHandle::Load(const std::string& path,
                                                const LoadOptions& options) {
-  return Build(path, io::ReadOsim(path), options, 0.0);
+  return Build(path, ReadSpec(path, options), options, 0.0);
+}
+
+model::ModelSpec ModelHandle::ReadSpec(const std::string& path, const LoadOptions& options) {
+  model::ModelSpec spec = io::ReadOsim(path);
+  model::ApplyParameterOverrides(spec, options.parameters);
+  return spec;
 }
 
 std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::ModelSpec spec,
@@ -45,7 +51,8 @@ std::shared_ptr<ModelHandle> ModelHandle::Rebuild(const std::string& states_file
                                                   const std::string& controls_file,
                                                   std::vector<std::string>& unused_labels,
                                                   Diagnostics& table_notes) const {
-  model::ModelSpec spec = io::ReadOsim(path_);
+  // The overrides first: an initial-states row then sets the coordinates' defaults over them.
+  model::ModelSpec spec = ReadSpec(path_, options_);
   double t0 = 0.0;
   unused_labels.clear();
   table_notes.clear();

@@ -6,6 +6,7 @@
 #include <sinew/engine/state.h>
 #include <sinew/engine/system.h>
 #include <sinew/model/model_spec.h>
+#include <sinew/model/parameter_overrides.h>
 #include <sinew/opensim/parser.h>
 
 #include <memory>
@@ -22,13 +23,16 @@ struct LoadOptions {
   std::string contact = "nsc";  ///< "nsc" or "smc"
   bool strict = false;
   std::string controls_file;  ///< an OpenSim ControlSet file, "" for none
+  /// Property overrides applied to the spec before the System is built
+  /// (model::ApplyParameterOverrides), in the order given.
+  std::vector<model::ParameterOverride> parameters;
 };
 
 /// A parsed model. Immutable after Build; shared by the objects made from it.
 class ModelHandle {
  public:
-  /// Reads `path` and builds its System as `sinew simulate` does (io::ReadOsim, then
-  /// OpenSimParser::ParseSpec). Throws sinew::Error.
+  /// Reads `path` and builds its System as `sinew simulate` does (io::ReadOsim, the
+  /// options' parameter overrides, then OpenSimParser::ParseSpec). Throws sinew::Error.
   static std::shared_ptr<ModelHandle> Load(const std::string& path, const LoadOptions& options);
   /// The same file built again as `sinew simulate --initial-states F --controls C` builds it:
   /// the first row of the states table `states_file` ("" for none) as the coordinates'
@@ -59,6 +63,8 @@ class ModelHandle {
   int CoordinateIndex(const std::string& name) const;
 
  private:
+  /// The file's spec with the parameter overrides applied.
+  static model::ModelSpec ReadSpec(const std::string& path, const LoadOptions& options);
   static std::shared_ptr<ModelHandle> Build(const std::string& path, model::ModelSpec spec,
                                             const LoadOptions& options, double t0);
 

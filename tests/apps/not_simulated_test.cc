@@ -66,10 +66,10 @@ FileCounts CountInFile(const std::string& osim) {
 class NotSimulatedTest : public testing::CliTest {
  protected:
   // arm26 with two kinds of parts Sinew does not simulate: its 6 Thelen2003Muscles read as
-  // RigidTendonMuscle and its 2 WrapEllipsoids as WrapTorus.
+  // Millard2012AccelerationMuscle and its 2 WrapEllipsoids as WrapTorus.
   std::string Arm26WithUnsupportedParts() const {
     std::string text = testing::ReadText(CopyWithTorusWraps(kArm26));
-    const std::string from = "Thelen2003Muscle", to = "RigidTendonMuscle";
+    const std::string from = "Thelen2003Muscle", to = "Millard2012AccelerationMuscle";
     for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at)) {
       text.replace(at, from.size(), to);
       at += to.size();

@@ -19,7 +19,7 @@ bool CollisionModel::CanCollide(int a, int b) const {
 
 void AddGroundPlane(CollisionModel& model, double height, int material) {
   CollisionGeometry plane;
-  plane.name = "ground_plane";
+  plane.name = kGroundPlaneName;
   plane.kind = CollisionShapeKind::kHalfSpace;
   // S's x axis points down (-y): its solid x > 0 is y < height.
   Mat3 R_GS;

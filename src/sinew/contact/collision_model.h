@@ -71,6 +71,9 @@ struct CollisionModel {
   bool CanCollide(int a, int b) const;
 };
 
+/// The name AddGroundPlane gives the plane it adds.
+inline constexpr const char* kGroundPlaneName = "ground_plane";
+
 /// Adds the ground plane y = `height` (the solid below it) to `model`'s environment.
 void AddGroundPlane(CollisionModel& model, double height, int material = 0);
 
