@@ -3,19 +3,20 @@
 //  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--external-loads FILE.xml]...
 //  [--disable-force NAME]... [--strict] [--export FILE] [--verbose] [--quiet]
 //  [--report-constraint-forces] [--equilibrate-muscles] [--rename-force-class OLD=NEW]
-//  --out DIR`: a forward simulation of what
-//  the OpenSim parser
+//  [--collision [--contact smc|nsc] [--ground-plane H] [material options]] --out DIR`: a forward
+//  simulation of what the OpenSim parser
 // builds (skeleton, forces, constraints, external loads, actuators and their excitations).
 // Writes DIR/states.sto (every coordinate's value and speed, OpenSim 4 labels, radians and
 // metres), DIR/bodies.sto (OpenSim BodyKinematics positions), DIR/forces.sto (every force's
 // columns, OpenSim's ForceReporter layout), DIR/contacts.sto when the model has contact forces
 // (each one's force and torque per body and its active contacts) and, when asked,
-// DIR/constraints.sto (the forces of the model's constraints, OpenSim's record labels), all streamed as rows are computed. SIGINT
-// or SIGTERM stops the run cleanly: the rows so far are kept, in files whose header says
-// status=partial, and the exit code is 128 + the signal.
+// DIR/constraints.sto (the forces of the model's constraints, OpenSim's record labels), all
+// streamed as rows are computed. SIGINT or SIGTERM stops the run cleanly: the rows so far are kept,
+// in files whose header says status=partial, and the exit code is 128 + the signal.
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/pose.h>
 #include <sinew/io/osim_reader.h>
+#include <sinew/opensim/collision_parts.h>
 #include <sinew/viz/export_animation.h>
 
 #include <functional>
@@ -26,6 +27,7 @@
 #include <vector>
 
 #include "apps/sinew/commands.h"
+#include "apps/sinew/contact_options.h"
 #include "apps/sinew/initial_states.h"
 #include "apps/sinew/notices.h"
 #include "apps/sinew/option_checks.h"
@@ -59,6 +61,7 @@ struct SimulateOptions {
   bool report_constraint_forces = false;
   bool equilibrate_muscles = false;
   std::vector<std::string> renamed_classes;
+  ContactOptions contact;
 };
 
 void RunSimulate(const SimulateOptions& options) {
@@ -83,7 +86,8 @@ void RunSimulate(const SimulateOptions& options) {
                                        .disabled_forces = options.disabled_forces,
                                        .excitations = options.excitations,
                                        .equilibrate_muscles = options.equilibrate_muscles,
-                                       .renamed_force_classes = options.renamed_classes});
+                                       .renamed_force_classes = options.renamed_classes,
+                                       .contact = options.contact});
   const engine::System& system = *built.system;
   engine::State state =
       MakeStartState(system, initial ? &*initial : nullptr, options.equilibrate_muscles,
@@ -91,7 +95,9 @@ void RunSimulate(const SimulateOptions& options) {
   engine::IntegratorSettings settings;
   settings.accuracy = options.accuracy;
   settings.step = options.step;
-  const auto integrator = engine::MakeIntegrator(options.integrator, system, settings);
+  const auto integrator = UsesNscContact(options.contact)
+                              ? MakeNscContactIntegrator(system, built.parser, settings)
+                              : engine::MakeIntegrator(options.integrator, system, settings);
   integrator->SetController(built.parser.GetController());
 
   TableFiles files;
@@ -121,6 +127,8 @@ void RunSimulate(const SimulateOptions& options) {
     viz::ExportOptions export_options;
     export_options.visual.mode = viz::ParseVisType(options.vis);
     export_options.visual.geometry_dirs = options.geometry_dirs;
+    // With --collision the shapes that collide, in the contact colour.
+    export_options.collision_parts = opensim::CollisionPartsOf(built.parser.GetCollisionModel());
     PrintSceneWarnings(viz::ExportAnimation(spec, motion, options.export_file, export_options),
                        options.verbose);
   }
@@ -181,6 +189,7 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_flag("--verbose", options->verbose,
                 "With --export: list every missing mesh file, not just how many");
   AddMuscleOptions(cmd, options->equilibrate_muscles, options->renamed_classes);
+  AddContactOptions(cmd, options->contact);
   cmd->add_flag("--report-constraint-forces", options->report_constraint_forces,
                 "Also write DIR/constraints.sto: the forces of the model's constraints");
   cmd->add_flag("--quiet", options->quiet,

@@ -1,10 +1,10 @@
 #include "apps/sinew/run_simulation.h"
 
 #include <sinew/common/error.h>
+#include <sinew/contact/contact_table.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/pose.h>
 #include <sinew/kinematics/body_kinematics.h>
-#include <sinew/contact/contact_table.h>
 #include <sinew/muscles/path_actuator.h>
 #include <sinew/opensim/constraint_forces_table.h>
 #include <sinew/opensim/states_table.h>
@@ -43,7 +43,16 @@ void OpenTable(std::optional<io::StorageWriter>& writer, const std::string& file
 }  // namespace
 
 BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options) {
-  WarnNotSimulated(spec, options.model_path, options.strict, options.disabled_forces);
+  // With --collision, ContactSphere and ContactHalfSpace collide: they are simulated.
+  model::ModelSpec shown;
+  if (options.contact.collision) {
+    shown = spec;
+    std::erase_if(shown.contact_geometry, [](const model::ContactGeometrySpec& g) {
+      return g.type == "ContactSphere" || g.type == "ContactHalfSpace";
+    });
+  }
+  WarnNotSimulated(options.contact.collision ? shown : spec, options.model_path, options.strict,
+                   options.disabled_forces);
   BuiltModel built;
   opensim::OpenSimParser& parser = built.parser;
   parser.ActivateActuators(options.activate_actuators);
@@ -59,6 +68,7 @@ BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options)
   }
   for (const std::string& file : options.external_loads) parser.AddExternalLoads(file);
   for (const std::string& name : options.disabled_forces) parser.DisableForce(name);
+  ApplyContactOptions(options.contact, parser);
   built.system = std::make_unique<engine::System>();
   parser.ParseSpec(*built.system, spec);
   built.system->Finalize();
@@ -181,8 +191,7 @@ void RunTables::Record(const engine::State& s) {
 
 void RunTables::Finish(const std::string& partial_reason) {
   for (std::optional<io::StorageWriter>* table :
-       {&states_, &states_degrees_, &bodies_, &forces_, &controls_, &constraints_,
-        &contacts_}) {
+       {&states_, &states_degrees_, &bodies_, &forces_, &controls_, &constraints_, &contacts_}) {
     if (*table) (*table)->Finish(partial_reason);
   }
 }

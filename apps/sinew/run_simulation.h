@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/sinew/contact_options.h"
 #include "apps/sinew/initial_states.h"
 
 namespace sinew::cli {
@@ -38,6 +39,7 @@ struct ModelOptions {
   bool equilibrate_muscles = false;
   /// OLD=NEW: forces of class OLD are read as class NEW (`--rename-force-class`).
   std::vector<std::string> renamed_force_classes;
+  ContactOptions contact;  ///< --collision, --contact, --ground-plane, the material
 };
 
 /// A parsed model: the parser (its Report, its controller) and the finalized system.

@@ -32,6 +32,8 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
   opensim::OpenSimParser& parser = handle->parser_;
   parser.SetVisualizationType(viz::ParseVisType(options.visualization));
   if (options.collision) parser.EnableCollision();
+  parser.SetContactMethod(options.contact == "smc" ? opensim::ContactMethod::kSmc
+                                                   : opensim::ContactMethod::kNsc);
   parser.SetStrict(options.strict);
   parser.SetControlsFile(options.controls_file);
   handle->system_ = std::make_unique<engine::System>();

@@ -67,11 +67,11 @@ FileCounts CountInFile(const std::string& osim) {
 class NotSimulatedTest : public testing::CliTest {
  protected:
   // arm26 with two kinds of parts Sinew does not simulate: its 6 Thelen2003Muscles read as
-  // RigidTendonMuscle and its 2 WrapEllipsoids as WrapDoubleCylinderObst.
+  // Millard2012AccelerationMuscle and its 2 WrapEllipsoids as WrapDoubleCylinderObst.
   std::string Arm26WithUnsupportedParts() const {
     std::string text = testing::ReadText(
         testing::WriteWithUnsupportedWraps(kArm26, Path("with_unsupported_wraps.osim")));
-    const std::string from = "Thelen2003Muscle", to = "RigidTendonMuscle";
+    const std::string from = "Thelen2003Muscle", to = "Millard2012AccelerationMuscle";
     for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at)) {
       text.replace(at, from.size(), to);
       at += to.size();

@@ -53,6 +53,34 @@ TEST_F(SimulateMusclesTest, RenamedClassIsSimulatedAndItsMissingEquilibriumIsAnE
   EXPECT_NE(bad.err.find("--rename-force-class: expects OLD=NEW"), std::string::npos) << bad.err;
 }
 
+// arm26's muscles read as Schutte1993Muscle (OpenSim's name for Schutte1993Muscle_Deprecated;
+// the Thelen properties it does not have are not read): simulated under --strict, from
+// equilibrium at OpenSim's default activation 0, with OpenSim 4's state labels; inspect lists
+// nothing as not simulated.
+TEST_F(SimulateMusclesTest, SchutteMusclesSimulateStrictlyFromEquilibrium) {
+  std::string text = testing::ReadText(kArm26);
+  for (size_t at = text.find("Thelen2003Muscle"); at != std::string::npos;
+       at = text.find("Thelen2003Muscle", at)) {
+    text.replace(at, 16, "Schutte1993Muscle");
+  }
+  const std::string model = Path("schutte.osim");
+  std::ofstream(model) << text;
+  const CliRun run =
+      Run("simulate " + model + " --duration 0.05 --strict --equilibrate-muscles --quiet --out " +
+          Path("run"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto states = engine::testing::ReadStoColumns(Path("run/states.sto"));
+  for (const char* muscle : {"TRIlong", "TRIlat", "TRImed", "BIClong", "BICshort", "BRA"}) {
+    const std::string prefix = std::string("/forceset/") + muscle;
+    EXPECT_EQ(states.at(prefix + "/activation").front(), 0.0) << muscle;
+    EXPECT_GT(states.at(prefix + "/fiber_length").front(), 0.0) << muscle;
+  }
+  const CliRun inspect = Run("inspect " + model);
+  ASSERT_EQ(inspect.exit_code, 0) << inspect.err;
+  EXPECT_NE(inspect.out.find("Schutte1993Muscle: 6"), std::string::npos) << inspect.out;
+  EXPECT_NE(inspect.out.find("not simulated (0)"), std::string::npos) << inspect.out;
+}
+
 TEST_F(SimulateMusclesTest, FiberAtItsMinimumLengthIsAWarning) {
   // Without pennation the minimum fiber length is 0; a tendon 0.5% past its slack length pulls
   // less than even a zero-length fiber at activation 0.2 (0.2 fal(0) > fse(1.005)).

@@ -7,9 +7,8 @@
 #include <sinew/kinematics/kinematic_tree.h>
 #include <sinew/opensim/parser.h>
 
-#include <iostream>
-
 #include <cmath>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -28,7 +27,8 @@ std::vector<CollisionContact> Contacts(const CollisionDetector& detector,
 CollisionModel TwoCylinders(double r) {
   CollisionModel model;
   model.family = {0, 1, 1};
-  model.shapes = {{1, Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0), r}, {2, Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0), r}};
+  model.shapes = {{1, Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0), r},
+                  {2, Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0), r}};
   return model;
 }
 
@@ -37,7 +37,8 @@ TEST(CollisionDetectionTest, CylindersOverlapByTheirRadiiMinusTheirDistance) {
   const CollisionDetector detector(TwoCylinders(r), std::nullopt);
   ASSERT_EQ(detector.num_pairs(), 1);
   // Parallel, side by side 0.08 m apart along y: they overlap by 2r - 0.08 = 0.02 m.
-  std::vector<Transform> X_GB = {Transform(), Transform(), Transform::Translation(Vec3(0, 0.08, 0))};
+  std::vector<Transform> X_GB = {Transform(), Transform(),
+                                 Transform::Translation(Vec3(0, 0.08, 0))};
   std::vector<CollisionContact> c = Contacts(detector, X_GB);
   ASSERT_EQ(c.size(), 1u);
   // Bullet's EPA converges to about 1e-6 (measured 3e-6 on the normal).
@@ -49,8 +50,8 @@ TEST(CollisionDetectionTest, CylindersOverlapByTheirRadiiMinusTheirDistance) {
   EXPECT_NEAR(c[0].radius, r / 2, 1e-15);
   // Crossed at right angles (body 2 turned about y: its axis along z), axes 0.09 m apart along
   // y: 0.01 m.
-  X_GB[2] = Transform(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitY()).toRotationMatrix(),
-                      Vec3(0, 0.09, 0));
+  X_GB[2] =
+      Transform(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitY()).toRotationMatrix(), Vec3(0, 0.09, 0));
   c = Contacts(detector, X_GB);
   ASSERT_EQ(c.size(), 1u);
   EXPECT_NEAR(c[0].depth, 2 * r - 0.09, 1e-6);
@@ -68,25 +69,64 @@ TEST(CollisionDetectionTest, CylinderSinksIntoTheGroundPlaneByItsLowestPoint) {
   // y = 0.2, and one lying along x whose side is 0.001 m below it.
   CollisionModel model;
   model.family = {0, 1, 2};
-  model.shapes = {{1, Vec3(0, 0, 0), Vec3(0, 1, 0), 0.05}, {2, Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0), 0.05}};
+  model.jointed = {{0, 1}, {1, 2}};  // a parent and its child: only the plane
+  model.shapes = {{1, Vec3(0, 0, 0), Vec3(0, 1, 0), 0.05},
+                  {2, Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0), 0.05}};
   const CollisionDetector detector(model, 0.2);
-  ASSERT_EQ(detector.num_pairs(), 2);  // different families: only the plane
+  ASSERT_EQ(detector.num_pairs(), 2);
   const std::vector<Transform> X_GB = {Transform(), Transform::Translation(Vec3(0, 0.197, 0)),
                                        Transform::Translation(Vec3(3, 0.2 + 0.05 - 0.001, 0))};
   std::vector<CollisionContact> c = Contacts(detector, X_GB);
-  ASSERT_EQ(c.size(), 2u);
+  // The upright cylinder touches at its bottom rim, the lying one at both ends' rims.
+  ASSERT_EQ(c.size(), 3u);
+  int lying = 0;
   for (const CollisionContact& k : c) {
     EXPECT_EQ(k.body1, 0);
     EXPECT_EQ(k.n_G, Vec3::UnitY());
     EXPECT_NEAR(k.depth, k.body2 == 1 ? 0.003 : 0.001, 1e-12);
     EXPECT_NEAR(k.p_G.y(), 0.2 - k.depth / 2, 1e-12);
+    if (k.body2 == 2) {
+      ++lying;
+      EXPECT_NEAR(std::abs(k.p_G.x() - 3), 0.5, 1e-12);
+    }
   }
+  EXPECT_EQ(lying, 2);
+}
+
+TEST(CollisionDetectionTest, SphereRestsOnAnEnvironmentBoxAndItsFloorByTheirClosedForms) {
+  // ball_on_floor.osim (a 0.1 m ContactSphere over its ContactHalfSpace floor) with a box
+  // added to the environment through the parser: 1 m wide, its top face at y = 0.5.
+  opensim::OpenSimParser parser;
+  parser.EnableCollision();
+  parser.AddEnvironmentBox("step", Transform::Translation(Vec3(0, 0.25, 0)), Vec3(0.5, 0.25, 0.5));
+  parser.Parse(std::string(SINEW_TEST_DATA_DIR) + "/sinew/ball_on_floor.osim");
+  const CollisionModel& model = parser.GetCollisionModel();
+  ASSERT_EQ(model.geometry.size(), 3u);  // floor, sphere, step
+  const CollisionDetector detector(model, std::nullopt);
+  // The ball's centre 0.08 m above the step's top: 0.02 m into it, normal +y (from ground's
+  // box to the ball), the point midway through the overlap. GJK treats the sphere as its
+  // centre with a margin, so the depth is exact to rounding.
+  std::vector<Transform> X_GB = {Transform(), Transform::Translation(Vec3(0.1, 0.58, 0))};
+  std::vector<CollisionContact> c = Contacts(detector, X_GB);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].body1, 0);
+  EXPECT_NEAR(c[0].depth, 0.02, 1e-9);
+  EXPECT_NEAR((c[0].n_G - Vec3::UnitY()).norm(), 0.0, 1e-9);
+  EXPECT_NEAR(c[0].p_G.y(), 0.49, 1e-9);
+  EXPECT_NEAR(c[0].radius, 0.1 * kFlatShapeRadius / (0.1 + kFlatShapeRadius), 1e-15);
+  // Beside the step, 0.005 m into the floor: the floor's contact only, exact.
+  X_GB[1] = Transform::Translation(Vec3(2, 0.095, 0));
+  c = Contacts(detector, X_GB);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_NEAR(c[0].depth, 0.005, 1e-15);
+  EXPECT_NEAR(c[0].radius, 0.1, 1e-15);
+  // A box needs positive half extents.
+  EXPECT_THROW(parser.AddEnvironmentBox("flat", Transform(), Vec3(1, 0, 1)), Error);
 }
 
 TEST(CollisionDetectionTest, SkeletonAtRestTouchesNothingAndNeverItsParents) {
-  // The seed's Rajagopal2015 with EnableCollision: with the families, no allowed pair of its
-  // cylinders overlaps in the default pose (nothing needs leaving out), and none is a parent
-  // and its child.
+  // The seed's Rajagopal2015 with EnableCollision: no allowed pair of its cylinders overlaps
+  // in the default pose (nothing needs leaving out), and none is a parent and its child.
   opensim::OpenSimParser parser;
   parser.EnableCollision(1, 2);
   parser.Parse(std::string(SINEW_TEST_DATA_DIR) +
@@ -116,7 +156,8 @@ TEST(CollisionDetectionTest, SkeletonAtRestTouchesNothingAndNeverItsParents) {
     }
   }
   EXPECT_EQ(shapes_pairs, all.num_pairs());
-  std::cout << "Rajagopal2015: " << all.num_pairs() << " cylinder pairs allowed by the families, "
+  std::cout << "Rajagopal2015: " << all.num_pairs()
+            << " cylinder pairs allowed (not parent and child), "
             << "none overlapping at rest\n";
 }
 

@@ -1,13 +1,17 @@
-// The seed's collision families (OpenSimParser::EnableCollision): bodies at odd tree depth get
-// family 1, at even depth family 2, and only bodies of one family collide. So a body never
-// collides with its parent (or child), does collide with its siblings and its grandparent, and
-// also never with any body whose depth differs by an odd number (an uncle and his nephew, a
-// great-grandparent): the exclusion is wider than "not the parent" (docs/contact.md).
+// The seed's collision filter (OpenSimParser::EnableCollision): no collision between a body and
+// its parent; every other pair may collide, siblings, grandparents, uncles and nephews
+// included. The families still alternate with tree depth (the seed's API), but filtering is
+// per pair (docs/contact.md).
 #include <gtest/gtest.h>
+#include <sinew/contact/collision_detection.h>
 #include <sinew/contact/collision_model.h>
 #include <sinew/opensim/parser.h>
 
+#include <algorithm>
+#include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace sinew::contact {
 namespace {
@@ -24,13 +28,45 @@ TEST(CollisionFamiliesTest, SiblingsAndGrandparentsCollideParentsNever) {
     EXPECT_NE(b, model::kNone) << name;
     return b;
   };
+  // Ground's shapes are the environment (a floor), which touches every body, its child
+  // included; between moving bodies a joint's parent and child never touch.
   for (const model::JointSpec& j : spec.joints) {
+    if (j.parent_body == model::kGroundIndex) continue;
     EXPECT_FALSE(collision.CanCollide(j.parent_body, j.child_body)) << j.name;
   }
+  EXPECT_TRUE(collision.CanCollide(model::kGroundIndex, body("pelvis")));
   EXPECT_TRUE(collision.CanCollide(body("femur_r"), body("femur_l")));  // siblings
   EXPECT_TRUE(collision.CanCollide(body("pelvis"), body("tibia_r")));   // grandparent
   EXPECT_TRUE(collision.CanCollide(body("tibia_r"), body("tibia_l")));  // cousins
-  EXPECT_FALSE(collision.CanCollide(body("femur_l"), body("tibia_r")));  // uncle and nephew
+  EXPECT_TRUE(collision.CanCollide(body("femur_l"), body("tibia_r")));  // uncle and nephew
+  EXPECT_TRUE(collision.CanCollide(body("pelvis"), body("talus_r")));   // great-grandparent
+  EXPECT_TRUE(collision.CanCollide(body("torso"), body("femur_r")));    // siblings
+  // The families are the seed's: alternating with depth.
+  for (const model::JointSpec& j : spec.joints) {
+    if (j.parent_body == model::kGroundIndex)
+      EXPECT_EQ(collision.family[j.child_body], 1);
+    else
+      EXPECT_NE(collision.family[j.parent_body], collision.family[j.child_body]) << j.name;
+  }
+}
+
+// All shapes in one place, so that every pair the filter allows touches: a body touches its
+// sibling, its grandparent and its uncle, never its parent or child.
+TEST(CollisionFamiliesTest, BodyTouchesGrandparentAndSiblingsNeverItsParent) {
+  // ground -> 1 -> 2 -> 3, and 4 a second child of 1 (2's sibling, 3's uncle).
+  CollisionModel model;
+  model.family = {0, 1, 2, 1, 2};
+  model.jointed = {{0, 1}, {1, 2}, {2, 3}, {1, 4}};
+  for (int b = 1; b <= 4; ++b) model.shapes.push_back({b, Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0), 0.05});
+  const CollisionDetector detector(model, std::nullopt);
+  const std::vector<Transform> X_GB(5, Transform());
+  std::set<std::pair<int, int>> touching;
+  detector.FindContacts(X_GB, [&](const CollisionContact& c) {
+    touching.insert({std::min(c.body1, c.body2), std::max(c.body1, c.body2)});
+  });
+  const std::set<std::pair<int, int>> expected = {
+      {1, 3} /* grandparent */, {2, 4} /* siblings */, {3, 4} /* uncle */};
+  EXPECT_EQ(touching, expected);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "engine/chain_model.h"
 #include "engine/test_models.h"
 
 namespace sinew::engine {
@@ -133,3 +134,41 @@ TEST(TreeSolverTest, ReusedFactorizationGivesTheSameAccelerations) {
 
 }  // namespace
 }  // namespace sinew::engine
+
+namespace sinew::engine::testing {
+namespace {
+
+// The twist responses to unit loads that NSC contact needs (only the tree paths between the
+// bodies and ground visited) equal the corresponding entries of full solves.
+TEST(TreeSolverTest, UnitLoadResponsesEqualFullSolves) {
+  const System system = MakeChain(12, JointForm::kParameterized);
+  State state = MakeDefaultState(system);
+  KktSolver kkt(system);
+  kkt.Factorize(state);
+  const std::vector<int> targets = {1, 6, 12, 3};
+  MatX responses(6 * targets.size(), 6);
+  ASSERT_TRUE(kkt.SolveUnitLoadResponses(6, targets, responses));
+  VecX rhs = VecX::Zero(kkt.num_velocities() + kkt.num_equations()), x;
+  double largest = 0.0, error = 0.0;
+  for (int j = 0; j < 6; ++j) {
+    rhs.setZero();
+    rhs[kkt.BodyColumn(6) + j] = 1.0;
+    kkt.Solve(rhs, x);
+    for (size_t t = 0; t < targets.size(); ++t) {
+      const VecX expected = x.segment<6>(kkt.BodyColumn(targets[t]));
+      largest = std::max(largest, expected.lpNorm<Eigen::Infinity>());
+      error =
+          std::max(error, (responses.block<6, 1>(6 * t, j) - expected).lpNorm<Eigen::Infinity>());
+    }
+  }
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LT(error, 1e-12 * largest);
+  // With a constraint outside the tree the paths are not enough: refused.
+  const System coupled = MakeChain(12, JointForm::kParameterized, 2);
+  KktSolver coupled_kkt(coupled);
+  coupled_kkt.Factorize(MakeDefaultState(coupled));
+  EXPECT_FALSE(coupled_kkt.SolveUnitLoadResponses(6, targets, responses));
+}
+
+}  // namespace
+}  // namespace sinew::engine::testing

@@ -19,32 +19,10 @@
 #include <string>
 #include <vector>
 
+#include "slider_model.h"
+
 namespace sinew::muscles {
 namespace {
-
-// A 2 kg block on a slider along ground's x (coordinate x, default 0.1 m, `locked` or not),
-// with `forces` in its ForceSet; no gravity along the slider.
-std::string SliderModel(const std::string& forces, bool locked) {
-  return std::string(R"(<OpenSimDocument Version="40000"><Model name="slider">
-<gravity>0 -9.80665 0</gravity><Ground name="ground"/>
-<BodySet><objects><Body name="block"><mass>2</mass><inertia>0.1 0.1 0.1 0 0 0</inertia></Body>
-</objects></BodySet>
-<JointSet><objects><SliderJoint name="slide"><socket_parent_frame>/ground</socket_parent_frame>
-<socket_child_frame>/bodyset/block</socket_child_frame>
-<coordinates><Coordinate name="x"><default_value>0.1</default_value><locked>)") +
-         (locked ? "true" : "false") + R"(</locked></Coordinate></coordinates>
-</SliderJoint></objects></JointSet>
-<ForceSet><objects>
-)" + forces +
-         R"(
-</objects></ForceSet></Model></OpenSimDocument>)";
-}
-
-// A path from ground at x = -0.3 m to the block's origin: length 0.4 m at x = 0.1 m.
-const char* kPath = R"(<GeometryPath><PathPointSet><objects>
-<PathPoint name="p1"><socket_parent_frame>/ground</socket_parent_frame><location>-0.3 0 0</location></PathPoint>
-<PathPoint name="p2"><socket_parent_frame>/bodyset/block</socket_parent_frame><location>0 0 0</location></PathPoint>
-</objects></PathPointSet></GeometryPath>)";
 
 std::string Thelen(const std::string& extra) {
   return std::string(R"(<Thelen2003Muscle name="musc">)") + kPath +
@@ -69,21 +47,6 @@ std::string DeGroote() {
          R"(<max_isometric_force>500</max_isometric_force><optimal_fiber_length>0.12</optimal_fiber_length>
 <tendon_slack_length>0.27</tendon_slack_length><pennation_angle_at_optimal>0.2</pennation_angle_at_optimal>
 <default_activation>0.2</default_activation></DeGrooteFregly2016Muscle>)";
-}
-
-struct Parsed {
-  opensim::OpenSimParser parser;
-  std::unique_ptr<engine::System> system;
-};
-
-std::unique_ptr<Parsed> Parse(const std::string& text, bool equilibrate = false) {
-  auto parsed = std::make_unique<Parsed>();
-  parsed->parser.EquilibrateMuscles(equilibrate);
-  const model::ModelSpec spec = io::ReadOsimString(text, "muscle_test.osim");
-  parsed->system = std::make_unique<engine::System>(spec.gravity);
-  parsed->parser.ParseSpec(*parsed->system, spec);
-  parsed->system->Finalize();
-  return parsed;
 }
 
 TEST(PathActuatorTest, ConstantTensionAcceleratesTheBlockAsTheClosedForm) {
@@ -209,12 +172,7 @@ TEST(DeGrooteFregly2016MuscleTest, MuscleAtEquilibriumStaysThereUnderConstantExc
 TEST(Millard2012MuscleTest, Rajagopal2016BuildsAndSimulates) {
   const std::string osim = std::string(SINEW_TEST_DATA_DIR) +
                            "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
-  auto parsed = std::make_unique<Parsed>();
-  parsed->parser.EquilibrateMuscles(true);
-  const model::ModelSpec spec = io::ReadOsim(osim);
-  parsed->system = std::make_unique<engine::System>(spec.gravity);
-  parsed->parser.ParseSpec(*parsed->system, spec);
-  parsed->system->Finalize();
+  auto parsed = ParseFile(osim, /*equilibrate=*/true);
   int millard = 0, rigid = 0;
   for (const auto& element : parsed->system->force_elements()) {
     const auto* actuator = dynamic_cast<const PathActuator*>(element.get());
@@ -230,7 +188,8 @@ TEST(Millard2012MuscleTest, Rajagopal2016BuildsAndSimulates) {
   integrator->StepTo(state, 0.02);
   EXPECT_DOUBLE_EQ(state.t, 0.02);
   EXPECT_TRUE(state.z.allFinite());
-  for (const engine::BodyState& body : state.bodies) EXPECT_TRUE(engine::PoseOf(body).p.allFinite());
+  for (const engine::BodyState& body : state.bodies)
+    EXPECT_TRUE(engine::PoseOf(body).p.allFinite());
 }
 
 TEST(ThelenMuscleTest, IgnoredFlagsAreReported) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace sinew {
 
@@ -86,6 +87,12 @@ std::vector<std::string> FindCloseNames(std::string_view name,
   std::vector<std::string> names;
   for (size_t i = 0; i < close.size() && i < max_count; ++i) names.push_back(close[i].second);
   return names;
+}
+
+std::string FormatNumber(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
 }
 
 }  // namespace sinew

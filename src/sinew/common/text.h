@@ -30,6 +30,9 @@ enum class NumberRange {
 /// The first number of `values` that `range` rejects (NaN, or infinite under kFinite), or null.
 const double* FindOutOfRange(const std::vector<double>& values, NumberRange range);
 
+/// `value` for a message: up to 6 significant digits, no trailing zeros ("0.067", "1e-10").
+std::string FormatNumber(double value);
+
 /// The names of `candidates` closest to `name`, for "no X named N; close names: ..." messages:
 /// those within an edit distance (case-insensitive) of a third of the longer name (at least 2),
 /// or containing `name` or contained in it, nearest first, at most `max_count`.

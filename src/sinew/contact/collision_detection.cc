@@ -1,12 +1,15 @@
-#include <sinew/contact/collision_detection.h>
-
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btCylinderShape.h>
+#include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 #include <LinearMath/btAabbUtil2.h>
+#include <sinew/contact/collision_detection.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -26,95 +29,248 @@ Mat3 RotationYTo(const Vec3& u) {
   return Eigen::Quaterniond::FromTwoVectors(Vec3::UnitY(), u).toRotationMatrix();
 }
 
+enum class Kind { kCylinder, kSphere, kBox, kHalfSpace };
+
 struct Shape {
   int body = 0;
-  Transform X_BS;  // the shape's frame in its body (a cylinder's axis is S's y)
-  double radius = 0.0;  // of curvature across the axis; 0 for the plane (infinite)
-  std::unique_ptr<btConvexShape> bt;
+  Transform X_BS;
+  Kind kind = Kind::kSphere;
+  double radius = 0.0;  // of curvature; 0 for a half-space (infinite)
+  int material = 0;
+  std::unique_ptr<btConvexShape> bt;  // null for a half-space
+};
+
+// The points of a convex shape (in its frame S) that can lie deepest in a half-space whose
+// inward direction (into its solid) is `d_S`: at most 8.
+struct Candidates {
+  std::array<Vec3, 8> p_S;
+  int count = 0;
+};
+using FindCandidates = void (*)(const btConvexShape& shape, const Vec3& d_S, Candidates& out);
+
+// A sphere: its support point (Bullet keeps a sphere's radius as its margin).
+void SphereCandidates(const btConvexShape& shape, const Vec3& d_S, Candidates& out) {
+  out.p_S[out.count++] = FromBt(shape.localGetSupportingVertex(ToBt(d_S)));
+}
+// A cylinder (axis S's y): the deepest point of each cap's rim, Bullet's support along d_S
+// with its axial part set to either end.
+void CylinderCandidates(const btConvexShape& shape, const Vec3& d_S, Candidates& out) {
+  for (const double end : {1.0, -1.0}) {
+    out.p_S[out.count++] =
+        FromBt(shape.localGetSupportingVertexWithoutMargin(btVector3(d_S.x(), end, d_S.z())));
+  }
+}
+// A box: its corners.
+void BoxCandidates(const btConvexShape& shape, const Vec3& /*d_S*/, Candidates& out) {
+  const auto& box = static_cast<const btBoxShape&>(shape);
+  for (int i = 0; i < 8; ++i) {
+    btVector3 v;
+    box.getVertex(i, v);
+    out.p_S[out.count++] = FromBt(v);
+  }
+}
+// Per Kind (a half-space has none).
+constexpr std::array<FindCandidates, 4> kCandidatesOf = {&CylinderCandidates, &SphereCandidates,
+                                                         &BoxCandidates, nullptr};
+
+Shape MakeCylinder(const CollisionCylinder& c) {
+  const Vec3 axis = c.p_B_end - c.p_B_start;
+  const double length = axis.norm();
+  Shape s;
+  s.body = c.body;
+  s.kind = Kind::kCylinder;
+  s.X_BS = Transform(RotationYTo(axis / length), 0.5 * (c.p_B_start + c.p_B_end));
+  s.radius = c.radius;
+  s.material = c.material;
+  s.bt = std::make_unique<btCylinderShape>(btVector3(c.radius, 0.5 * length, c.radius));
+  s.bt->setMargin(0.0);
+  return s;
+}
+
+Shape MakeGeometry(const CollisionGeometry& g) {
+  Shape s;
+  s.body = g.body;
+  s.X_BS = g.X_BS;
+  s.material = g.material;
+  switch (g.kind) {
+    case CollisionShapeKind::kSphere:
+      s.kind = Kind::kSphere;
+      s.radius = g.radius;
+      s.bt = std::make_unique<btSphereShape>(g.radius);  // the radius is its margin
+      break;
+    case CollisionShapeKind::kBox:
+      s.kind = Kind::kBox;
+      s.radius = kFlatShapeRadius;
+      s.bt = std::make_unique<btBoxShape>(ToBt(g.half_extents));
+      s.bt->setMargin(0.0);
+      break;
+    case CollisionShapeKind::kHalfSpace:
+      s.kind = Kind::kHalfSpace;
+      break;
+  }
+  return s;
+}
+
+// The distance between the segments [p1, q1] and [p2, q2] (closest points of two segments, the
+// clamped solution of the two-parameter least-squares problem).
+double SegmentDistance(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) {
+  const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  const double c = d1.dot(r), b = d1.dot(d2), denom = a * e - b * b;
+  double s = denom > 1e-12 * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+  double t = (b * s + f) / e;
+  if (t < 0.0) {
+    t = 0.0;
+    s = std::clamp(-c / a, 0.0, 1.0);
+  } else if (t > 1.0) {
+    t = 1.0;
+    s = std::clamp((b - c) / a, 0.0, 1.0);
+  }
+  return (p1 + s * d1 - (p2 + t * d2)).norm();
+}
+
+// A cylinder lies inside the capsule of its axis and radius: two cylinders whose axes are
+// farther apart than their radii cannot touch (a cheap test before GJK).
+bool CapsulesApart(const Shape& a, const Transform& X_GA, const Shape& b, const Transform& X_GB) {
+  const auto& ca = static_cast<const btCylinderShape&>(*a.bt);
+  const auto& cb = static_cast<const btCylinderShape&>(*b.bt);
+  const Vec3 ha = X_GA.R.col(1) * ca.getHalfExtentsWithoutMargin().y();
+  const Vec3 hb = X_GB.R.col(1) * cb.getHalfExtentsWithoutMargin().y();
+  return SegmentDistance(X_GA.p - ha, X_GA.p + ha, X_GB.p - hb, X_GB.p + hb) > a.radius + b.radius;
+}
+
+struct Pair {
+  int i = 0;  // a half-space comes first
+  int j = 0;
+  double radius = 0.0;
+  PairMaterial material;
 };
 
 }  // namespace
 
 struct CollisionDetector::Impl {
   std::vector<Shape> shapes;
-  std::vector<std::pair<int, int>> pairs;
-  std::optional<double> ground_height;
+  std::vector<Pair> pairs;
   int excluded_at_rest = 0;
 
-  // The contact of shape i with the ground plane (the solid y < ground_height), if they
-  // overlap: the shape's deepest point is Bullet's support vertex along -y, as Bullet's
-  // convex-plane algorithm finds it.
-  std::optional<CollisionContact> CollideWithGround(int i, const std::vector<Transform>& X_GB) const;
-
-  // Bullet's deepest contact of shapes i and j at the body poses X_GB, if they overlap.
-  std::optional<CollisionContact> Collide(int i, int j, const std::vector<Transform>& X_GB) const;
+  // Each point of the convex shape p.j inside the half-space p.i.
+  template <class Visit>
+  void CollideWithHalfSpace(const Pair& p, const std::vector<Transform>& X_GB, Visit&& visit) const;
+  // Bullet's deepest contact of the convex shapes p.i and p.j, if they overlap.
+  template <class Visit>
+  void CollideConvex(const Pair& p, const std::vector<Transform>& X_GB, Visit&& visit) const;
+  template <class Visit>
+  void Collide(const Pair& p, const std::vector<Transform>& X_GB, Visit&& visit) const {
+    if (shapes[p.i].kind == Kind::kHalfSpace)
+      CollideWithHalfSpace(p, X_GB, visit);
+    else
+      CollideConvex(p, X_GB, visit);
+  }
 };
 
 CollisionDetector::CollisionDetector(const CollisionModel& model,
                                      std::optional<double> ground_height,
                                      const std::vector<Transform>& X_GB_rest)
     : impl_(std::make_unique<Impl>()) {
+  std::vector<Shape>& shapes = impl_->shapes;
   for (const CollisionCylinder& c : model.shapes) {
-    const Vec3 axis = c.p_B_end - c.p_B_start;
-    const double length = axis.norm();
-    if (!(length > 0.0) || !(c.radius > 0.0)) continue;
-    Shape s;
-    s.body = c.body;
-    s.X_BS = Transform(RotationYTo(axis / length), 0.5 * (c.p_B_start + c.p_B_end));
-    s.radius = c.radius;
-    s.bt = std::make_unique<btCylinderShape>(btVector3(c.radius, 0.5 * length, c.radius));
-    s.bt->setMargin(0.0);
-    impl_->shapes.push_back(std::move(s));
+    if ((c.p_B_end - c.p_B_start).norm() > 0.0 && c.radius > 0.0) shapes.push_back(MakeCylinder(c));
   }
-  const int cylinders = static_cast<int>(impl_->shapes.size());
-  for (int i = 0; i < cylinders; ++i) {
-    for (int j = i + 1; j < cylinders; ++j) {
-      if (!model.CanCollide(impl_->shapes[i].body, impl_->shapes[j].body)) continue;
-      if (!X_GB_rest.empty() && impl_->Collide(i, j, X_GB_rest)) {
-        ++impl_->excluded_at_rest;
-        continue;
+  for (const CollisionGeometry& g : model.geometry) shapes.push_back(MakeGeometry(g));
+  if (ground_height) {
+    CollisionModel environment;
+    AddGroundPlane(environment, *ground_height);
+    shapes.push_back(MakeGeometry(environment.geometry.front()));
+  }
+  const int n = static_cast<int>(shapes.size());
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const Shape& a = shapes[i];
+      const Shape& b = shapes[j];
+      if (a.kind == Kind::kHalfSpace && b.kind == Kind::kHalfSpace) continue;
+      if (!model.CanCollide(a.body, b.body)) continue;
+      Pair p;
+      p.i = b.kind == Kind::kHalfSpace ? j : i;
+      p.j = b.kind == Kind::kHalfSpace ? i : j;
+      p.radius = a.radius > 0.0 && b.radius > 0.0 ? a.radius * b.radius / (a.radius + b.radius)
+                                                  : std::max(a.radius, b.radius);
+      const auto material_of = [&](int m) {
+        return m >= 0 && m < static_cast<int>(model.materials.size()) ? model.materials[m]
+                                                                      : CollisionMaterial{};
+      };
+      p.material = CombineMaterials(material_of(a.material), material_of(b.material));
+      if (!X_GB_rest.empty() && a.body != model::kGroundIndex && b.body != model::kGroundIndex) {
+        bool overlaps = false;
+        impl_->Collide(p, X_GB_rest, [&](const CollisionContact&) { overlaps = true; });
+        if (overlaps) {
+          ++impl_->excluded_at_rest;
+          continue;
+        }
       }
-      impl_->pairs.emplace_back(i, j);
+      impl_->pairs.push_back(p);
     }
   }
-  impl_->ground_height = ground_height;
 }
 
 CollisionDetector::~CollisionDetector() = default;
 
-int CollisionDetector::num_pairs() const {
-  return static_cast<int>(impl_->pairs.size()) +
-         (impl_->ground_height ? static_cast<int>(impl_->shapes.size()) : 0);
+int CollisionDetector::num_pairs() const { return static_cast<int>(impl_->pairs.size()); }
+
+int CollisionDetector::num_excluded_at_rest() const { return impl_->excluded_at_rest; }
+
+std::vector<std::pair<int, int>> CollisionDetector::BodyPairs() const {
+  std::vector<std::pair<int, int>> pairs;
+  for (const Pair& p : impl_->pairs) {
+    const int a = impl_->shapes[p.i].body, b = impl_->shapes[p.j].body;
+    pairs.emplace_back(std::min(a, b), std::max(a, b));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
 }
 
-std::optional<CollisionContact> CollisionDetector::Impl::CollideWithGround(
-    int i, const std::vector<Transform>& X_GB) const {
-  const Shape& a = shapes[i];
-  const Transform X_GS = X_GB[a.body] * a.X_BS;
-  const Vec3 down_S = X_GS.R.transpose() * Vec3(0, -1, 0);
-  const Vec3 p_G = X_GS * FromBt(a.bt->localGetSupportingVertexWithoutMargin(ToBt(down_S)));
+template <class Visit>
+void CollisionDetector::Impl::CollideWithHalfSpace(const Pair& p,
+                                                   const std::vector<Transform>& X_GB,
+                                                   Visit&& visit) const {
+  const Shape& h = shapes[p.i];
+  const Shape& s = shapes[p.j];
+  const Transform X_GH = X_GB[h.body] * h.X_BS;
+  const Transform X_GS = X_GB[s.body] * s.X_BS;
+  const Vec3 inward_G = X_GH.R.col(0);  // into the solid x > 0
+  Candidates candidates;
+  kCandidatesOf[static_cast<int>(s.kind)](*s.bt, X_GS.R.transpose() * inward_G, candidates);
   CollisionContact c;
-  c.depth = *ground_height - p_G.y();
-  if (!(c.depth > 0.0)) return std::nullopt;
-  c.body1 = 0;
-  c.body2 = a.body;
-  c.n_G = Vec3::UnitY();
-  c.p_G = p_G + 0.5 * c.depth * c.n_G;
-  c.radius = a.radius;
-  return c;
+  c.body1 = h.body;
+  c.body2 = s.body;
+  c.n_G = -inward_G;
+  c.radius = p.radius;
+  c.material = p.material;
+  for (int k = 0; k < candidates.count; ++k) {
+    const Vec3 p_G = X_GS * candidates.p_S[k];
+    c.depth = (p_G - X_GH.p).dot(inward_G);
+    if (!(c.depth > 0.0)) continue;
+    c.p_G = p_G + 0.5 * c.depth * c.n_G;
+    visit(c);
+  }
 }
 
-std::optional<CollisionContact> CollisionDetector::Impl::Collide(
-    int i, int j, const std::vector<Transform>& X_GB) const {
-  const Shape& a = shapes[i];
-  const Shape& b = shapes[j];
-  const btTransform X_GA = ToBt(X_GB[a.body] * a.X_BS);
-  const btTransform X_GBs = ToBt(X_GB[b.body] * b.X_BS);
+template <class Visit>
+void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Transform>& X_GB,
+                                            Visit&& visit) const {
+  const Shape& a = shapes[p.i];
+  const Shape& b = shapes[p.j];
+  const Transform X_GSa = X_GB[a.body] * a.X_BS;
+  const Transform X_GSb = X_GB[b.body] * b.X_BS;
+  if (a.kind == Kind::kCylinder && b.kind == Kind::kCylinder && CapsulesApart(a, X_GSa, b, X_GSb))
+    return;
+  const btTransform X_GA = ToBt(X_GSa);
+  const btTransform X_GBs = ToBt(X_GSb);
   // Broad phase: the shapes' bounding boxes.
   btVector3 min_a, max_a, min_b, max_b;
   a.bt->getAabb(X_GA, min_a, max_a);
   b.bt->getAabb(X_GBs, min_b, max_b);
-  if (!TestAabbAgainstAabb2(min_a, max_a, min_b, max_b)) return std::nullopt;
+  if (!TestAabbAgainstAabb2(min_a, max_a, min_b, max_b)) return;
   // Narrow phase: GJK, and EPA for the penetration.
   btVoronoiSimplexSolver simplex;
   btGjkEpaPenetrationDepthSolver epa;
@@ -124,7 +280,7 @@ std::optional<CollisionContact> CollisionDetector::Impl::Collide(
   input.m_transformB = X_GBs;
   btPointCollector output;
   gjk.getClosestPoints(input, output, nullptr);
-  if (!output.m_hasResult || !(output.m_distance < 0.0)) return std::nullopt;
+  if (!output.m_hasResult || !(output.m_distance < 0.0)) return;
   // Bullet's normal points from B towards A, its point lies on B.
   CollisionContact c;
   c.body1 = b.body;
@@ -132,25 +288,17 @@ std::optional<CollisionContact> CollisionDetector::Impl::Collide(
   c.n_G = FromBt(output.m_normalOnBInWorld).normalized();
   c.depth = -output.m_distance;
   // EPA may fail on deep or degenerate overlaps: no usable normal, no contact.
-  if (!c.n_G.allFinite() || !std::isfinite(c.depth)) return std::nullopt;
+  if (!c.n_G.allFinite() || !std::isfinite(c.depth)) return;
   c.p_G = FromBt(output.m_pointInWorld) - 0.5 * c.depth * c.n_G;
-  c.radius = a.radius > 0.0 && b.radius > 0.0 ? a.radius * b.radius / (a.radius + b.radius)
-                                              : std::max(a.radius, b.radius);
-  return c;
+  c.radius = p.radius;
+  c.material = p.material;
+  visit(c);
 }
 
 void CollisionDetector::FindContacts(
     const std::vector<Transform>& X_GB,
     const std::function<void(const CollisionContact&)>& visit) const {
-  for (const auto& [i, j] : impl_->pairs) {
-    if (const std::optional<CollisionContact> c = impl_->Collide(i, j, X_GB)) visit(*c);
-  }
-  if (!impl_->ground_height) return;
-  for (int i = 0; i < static_cast<int>(impl_->shapes.size()); ++i) {
-    if (const std::optional<CollisionContact> c = impl_->CollideWithGround(i, X_GB)) visit(*c);
-  }
+  for (const Pair& p : impl_->pairs) impl_->Collide(p, X_GB, visit);
 }
-
-int CollisionDetector::num_excluded_at_rest() const { return impl_->excluded_at_rest; }
 
 }  // namespace sinew::contact

@@ -1,10 +1,13 @@
-// Collision detection between the seed's collision cylinders (contact::CollisionModel) and an
-// optional ground plane, through Bullet's collision library: its AABB test as the broad phase,
-// GJK/EPA as the narrow phase between cylinders, and the shapes' support vertices against the
-// plane (what Bullet's convex-plane algorithm does). Stateless per query (no contact caching), so one detector
-// can be shared by threads and by the stages of a Runge-Kutta step.
+// Collision detection between a collision model's shapes (contact::CollisionModel: the seed's
+// cylinders, OpenSim's ContactSphere and ContactHalfSpace, environment boxes and planes)
+// through Bullet's collision library: its bounding boxes as the broad phase, GJK/EPA as the
+// narrow phase between convex shapes, and the shapes' support vertices against half-spaces
+// (what Bullet's convex-plane algorithm does; several points per pair for boxes and cylinders).
+// Stateless per query (no contact caching), so one detector can be shared by threads and by the
+// stages of a Runge-Kutta step.
 #pragma once
 
+#include <sinew/contact/collision_material.h>
 #include <sinew/contact/collision_model.h>
 #include <sinew/math/transform.h>
 
@@ -15,10 +18,14 @@
 
 namespace sinew::contact {
 
+/// The effective radius of curvature given to flat shapes (box faces, edges and corners), as
+/// Chrono's default effective curvature radius: m.
+inline constexpr double kFlatShapeRadius = 0.1;
+
 /// One contact between two shapes: they overlap by `depth` (m) along `n_G` (unit, in G, from
 /// shape 1's body towards shape 2's body), centred at `p_G`; `radius` is the effective radius
-/// of curvature of the pair (cylinder radii combined as r1 r2 / (r1 + r2), the plane's
-/// infinite).
+/// of curvature of the pair (radii combined as r1 r2 / (r1 + r2); a half-space's is infinite,
+/// a box's kFlatShapeRadius); `material` the pair's combined material.
 struct CollisionContact {
   int body1 = 0;
   int body2 = 0;
@@ -26,32 +33,37 @@ struct CollisionContact {
   Vec3 n_G = Vec3::UnitY();
   double depth = 0.0;
   double radius = 0.0;
+  PairMaterial material;
 };
 
-/// Finds the contacts of a collision model's cylinders with each other (pairs the families
-/// allow, CollisionModel::CanCollide) and with a ground plane y = `ground_height` (the solid
-/// below it), when given. Bodies are the model's (spec) body indices.
+/// Finds the contacts of a collision model's shapes with each other (pairs of bodies the model
+/// allows, CollisionModel::CanCollide; never two shapes of one body, never two half-spaces)
+/// and with a ground plane y = `ground_height` (the solid below it), when given. Bodies are the
+/// model's body indices.
 class CollisionDetector {
  public:
-  /// Pairs of cylinders that already overlap at the rest poses `X_GB_rest` (one per body,
-  /// ground first; the model's default pose), typically at the joints where segments meet, are
-  /// left out, as are their bodies' pairs with nothing else: they could only push the joints
-  /// apart. Empty `X_GB_rest`: every allowed pair is kept.
+  /// Pairs of shapes on two moving bodies that already overlap at the rest poses `X_GB_rest`
+  /// (one per body, ground first; the model's default pose), typically cylinders at the joints
+  /// where segments meet, are left out: they could only push the joints apart. Empty
+  /// `X_GB_rest`: every allowed pair is kept.
   CollisionDetector(const CollisionModel& model, std::optional<double> ground_height,
                     const std::vector<Transform>& X_GB_rest = {});
   ~CollisionDetector();
   CollisionDetector(const CollisionDetector&) = delete;
   CollisionDetector& operator=(const CollisionDetector&) = delete;
 
-  /// Calls `visit` for every overlapping pair at the body poses `X_GB` (one per body, ground
-  /// first). One contact point per pair (Bullet's deepest point).
+  /// Calls `visit` for every contact at the body poses `X_GB` (one per body, ground first):
+  /// one point per pair of convex shapes (Bullet's deepest point); against a half-space, a
+  /// sphere's deepest point, each of a cylinder's two cap rims' deepest points and each box
+  /// corner that lies inside it.
   void FindContacts(const std::vector<Transform>& X_GB,
                     const std::function<void(const CollisionContact&)>& visit) const;
-  /// The number of shape pairs tested (allowed by the families, plus each cylinder with the
-  /// plane).
+  /// The number of shape pairs tested.
   int num_pairs() const;
-  /// The number of cylinder pairs left out because they overlap at the rest poses.
+  /// The number of shape pairs left out because they overlap at the rest poses.
   int num_excluded_at_rest() const;
+  /// The body pairs (body1 < body2) of the tested shape pairs, sorted, each once.
+  std::vector<std::pair<int, int>> BodyPairs() const;
 
  private:
   struct Impl;

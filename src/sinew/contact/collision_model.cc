@@ -9,6 +9,26 @@ constexpr double kShortestSegment = 1e-3;  // m
 
 }  // namespace
 
+bool CollisionModel::CanCollide(int a, int b) const {
+  if (a == b) return false;
+  if (a == model::kGroundIndex || b == model::kGroundIndex) return true;
+  return std::none_of(jointed.begin(), jointed.end(), [&](const std::pair<int, int>& p) {
+    return (p.first == a && p.second == b) || (p.first == b && p.second == a);
+  });
+}
+
+void AddGroundPlane(CollisionModel& model, double height, int material) {
+  CollisionGeometry plane;
+  plane.name = kGroundPlaneName;
+  plane.kind = CollisionShapeKind::kHalfSpace;
+  // S's x axis points down (-y): its solid x > 0 is y < height.
+  Mat3 R_GS;
+  R_GS << 0, 1, 0, -1, 0, 0, 0, 0, 1;  // columns: x_S = -y, y_S = x, z_S = z
+  plane.X_BS = Transform(R_GS, Vec3(0, height, 0));
+  plane.material = material;
+  model.geometry.push_back(plane);
+}
+
 CollisionModel BuildCollisionModel(const model::ModelSpec& spec, const std::vector<int>& depth,
                                    int family_1, int family_2) {
   CollisionModel model;
@@ -16,6 +36,8 @@ CollisionModel BuildCollisionModel(const model::ModelSpec& spec, const std::vect
   for (size_t b = 1; b < spec.bodies.size(); ++b) {
     model.family[b] = depth[b] % 2 == 1 ? family_1 : family_2;
   }
+  for (const model::JointSpec& j : spec.joints)
+    model.jointed.emplace_back(j.parent_body, j.child_body);
   // One segment per joint end that lies on a body other than ground.
   std::vector<double> lengths;
   for (const model::JointSpec& j : spec.joints) {

@@ -1,12 +1,16 @@
 // Collision shapes of a parsed model (the seed's EnableCollision): a cylinder along every
-// segment from a body's frame to each joint frame on it, and two collision families that
-// alternate with depth in the joint tree so that a body never collides with its parent or
-// its children.
+// segment from a body's frame to each joint frame on it, the seed's two collision families
+// (alternating with depth in the joint tree), and the pairs of bodies that never collide: a
+// body and its parent (every pair a joint joins). Every other pair may collide.
 #pragma once
 
+#include <sinew/contact/collision_material.h>
+#include <sinew/math/transform.h>
 #include <sinew/math/types.h>
 #include <sinew/model/model_spec.h>
 
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace sinew::contact {
@@ -27,21 +31,55 @@ struct CollisionCylinder {
   Vec3 p_B_start = Vec3::Zero();
   Vec3 p_B_end = Vec3::Zero();
   double radius = 0.0;  ///< m
+  int material = 0;     ///< index into CollisionModel::materials
 };
 
-/// Shapes and families of a model. Bodies collide only when their families are equal.
+/// The kinds of collision geometry besides the seed's cylinders.
+enum class CollisionShapeKind {
+  kSphere,     ///< OpenSim's ContactSphere: centred at S's origin, `radius`.
+  kBox,        ///< a box centred at S's origin, `half_extents` along S's axes.
+  kHalfSpace,  ///< OpenSim's ContactHalfSpace convention: the solid x > 0 of S, outward normal -x.
+};
+
+/// A collision shape fixed to a body (OpenSim's contact geometry) or to ground (the
+/// environment: a ground plane, a box, ...).
+struct CollisionGeometry {
+  std::string name;
+  CollisionShapeKind kind = CollisionShapeKind::kSphere;
+  int body = model::kGroundIndex;
+  Transform X_BS;                    ///< the shape's frame S in its body
+  double radius = 0.0;               ///< kSphere: m
+  Vec3 half_extents = Vec3::Zero();  ///< kBox: m
+  int material = 0;                  ///< index into CollisionModel::materials
+};
+
+/// Shapes, families and excluded pairs of a model.
 struct CollisionModel {
-  std::vector<CollisionCylinder> shapes;
-  std::vector<int> family;  ///< Per spec body (ground: 0, no shapes).
+  std::vector<CollisionCylinder> shapes;    ///< the seed's cylinders
+  std::vector<CollisionGeometry> geometry;  ///< contact geometry and environment shapes
+  /// Materials the shapes refer to; entry 0 is the default material.
+  std::vector<CollisionMaterial> materials = std::vector<CollisionMaterial>(1);
+  /// The seed's family of each body (ground: 0). Kept for the seed's API and for inspection:
+  /// filtering is per pair (`jointed`), see docs/contact.md.
+  std::vector<int> family;
+  /// Pairs of bodies a joint joins (parent, child), ground included: these never collide.
+  std::vector<std::pair<int, int>> jointed;
 
-  /// True when shapes of bodies `a` and `b` may touch (different bodies, same family).
-  bool CanCollide(int a, int b) const {
-    return a != b && a != model::kGroundIndex && b != model::kGroundIndex && family[a] == family[b];
-  }
+  /// True when shapes of bodies `a` and `b` may touch: different bodies that no joint joins.
+  /// Ground's shapes (the environment, contact geometry fixed to ground) touch every body, its
+  /// children included: the exclusion is for segments that overlap at their joint.
+  bool CanCollide(int a, int b) const;
 };
+
+/// The name AddGroundPlane gives the plane it adds.
+inline constexpr const char* kGroundPlaneName = "ground_plane";
+
+/// Adds the ground plane y = `height` (the solid below it) to `model`'s environment.
+void AddGroundPlane(CollisionModel& model, double height, int material = 0);
 
 /// Builds the collision model of `spec`: bodies at odd tree depth (`depth` per body, ground 0)
-/// get `family_1`, at even depth `family_2`. The cylinder radius is 10% of the median segment
+/// get `family_1`, at even depth `family_2` (as the seed); every joint's parent and child
+/// are an excluded pair. The cylinder radius is 10% of the median segment
 /// length of the model (at least 1 mm). Segments shorter than 1 mm get no shape.
 CollisionModel BuildCollisionModel(const model::ModelSpec& spec, const std::vector<int>& depth,
                                    int family_1, int family_2);

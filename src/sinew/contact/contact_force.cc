@@ -60,8 +60,9 @@ class CountSink final : public ContactSink {
 
 }  // namespace
 
-ContactForce::ContactForce(std::string name, std::vector<RecordGroup> groups)
-    : name_(std::move(name)), groups_(std::move(groups)) {}
+ContactForce::ContactForce(std::string name, std::vector<RecordGroup> groups,
+                           std::vector<PairGroup> pairs)
+    : name_(std::move(name)), groups_(std::move(groups)), pairs_(std::move(pairs)) {}
 
 void ContactForce::AddLoads(const engine::ForceContext& context, engine::Loads& loads) const {
   LoadsSink sink(context.state, loads);
@@ -71,8 +72,8 @@ void ContactForce::AddLoads(const engine::ForceContext& context, engine::Loads& 
 std::optional<engine::ForceSupport> ContactForce::Support() const {
   engine::ForceSupport support;
   for (const RecordGroup& g : groups_) {
-    if (g.body != 0 && std::find(support.bodies.begin(), support.bodies.end(), g.body) ==
-                           support.bodies.end())
+    if (g.body != 0 &&
+        std::find(support.bodies.begin(), support.bodies.end(), g.body) == support.bodies.end())
       support.bodies.push_back(g.body);
   }
   return support;
@@ -82,7 +83,8 @@ std::vector<std::string> ContactForce::RecordLabels(const engine::System& /*syst
   std::vector<std::string> labels;
   for (const RecordGroup& g : groups_) {
     for (const char* kind : {".force.", ".torque."}) {
-      for (const char* axis : {"X", "Y", "Z"}) labels.push_back(name_ + "." + g.label + kind + axis);
+      for (const char* axis : {"X", "Y", "Z"})
+        labels.push_back(name_ + "." + g.label + kind + axis);
     }
   }
   return labels;
@@ -112,6 +114,27 @@ int ContactForce::CountActiveContacts(const engine::State& state) const {
   CountSink sink;
   VisitContacts(state, sink);
   return sink.count;
+}
+
+std::vector<int> ContactForce::CountActiveContactsPerPair(const engine::State& state) const {
+  class PairCountSink final : public ContactSink {
+   public:
+    explicit PairCountSink(const std::vector<PairGroup>& pairs)
+        : pairs_(pairs), counts(pairs.size(), 0) {}
+    void Add(const ContactLoad& c) override {
+      if (!c.active) return;
+      for (size_t k = 0; k < pairs_.size(); ++k) {
+        const PairGroup& p = pairs_[k];
+        if ((p.body1 == c.body1 && p.body2 == c.body2) ||
+            (p.body1 == c.body2 && p.body2 == c.body1))
+          ++counts[k];
+      }
+    }
+    const std::vector<PairGroup>& pairs_;
+    std::vector<int> counts;
+  } sink(pairs_);
+  VisitContacts(state, sink);
+  return sink.counts;
 }
 
 }  // namespace sinew::contact

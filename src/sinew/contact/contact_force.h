@@ -43,7 +43,15 @@ class ContactForce : public engine::ForceElement {
     int body = 0;
   };
 
-  ContactForce(std::string name, std::vector<RecordGroup> groups);
+  /// A pair of bodies whose active contacts are counted ("<label>.active_contacts").
+  struct PairGroup {
+    std::string label;
+    int body1 = 0;
+    int body2 = 0;
+  };
+
+  ContactForce(std::string name, std::vector<RecordGroup> groups,
+               std::vector<PairGroup> pairs = {});
 
   std::string name() const override { return name_; }
   void AddLoads(const engine::ForceContext& context, engine::Loads& loads) const override;
@@ -60,11 +68,15 @@ class ContactForce : public engine::ForceElement {
   int CountActiveContacts(const engine::State& state) const;
   /// Per record group, [force; torque about the body origin] on its body (N, N m, in G).
   std::vector<Vec6> CalcGroupLoads(const engine::State& state) const;
+  /// Per pair group, the number of active contacts between its two bodies (either order).
+  std::vector<int> CountActiveContactsPerPair(const engine::State& state) const;
   const std::vector<RecordGroup>& record_groups() const { return groups_; }
+  const std::vector<PairGroup>& pair_groups() const { return pairs_; }
 
  private:
   std::string name_;
   std::vector<RecordGroup> groups_;
+  std::vector<PairGroup> pairs_;
 };
 
 }  // namespace sinew::contact

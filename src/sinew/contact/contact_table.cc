@@ -19,6 +19,8 @@ std::vector<std::string> ContactTableLabels(const engine::System& system) {
     const std::vector<std::string> own = c.RecordLabels(system);
     labels.insert(labels.end(), own.begin(), own.end());
     labels.push_back(c.name() + ".active_contacts");
+    for (const ContactForce::PairGroup& p : c.pair_groups())
+      labels.push_back(c.name() + "." + p.label + ".active_contacts");
   });
   return labels;
 }
@@ -27,8 +29,11 @@ void ContactTableRow(const engine::System& system, const engine::State& state,
                      std::vector<double>& row) {
   row.clear();
   ForEachContactForce(system, [&](const ContactForce& c) {
-    for (const Vec6& load : c.CalcGroupLoads(state)) row.insert(row.end(), load.begin(), load.end());
+    for (const Vec6& load : c.CalcGroupLoads(state))
+      row.insert(row.end(), load.begin(), load.end());
     row.push_back(c.CountActiveContacts(state));
+    if (c.pair_groups().empty()) return;
+    for (const int count : c.CountActiveContactsPerPair(state)) row.push_back(count);
   });
 }
 

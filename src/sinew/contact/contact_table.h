@@ -14,7 +14,8 @@ namespace sinew::contact {
 /// For every contact force of `system` (a contact::ContactForce, in element order): its
 /// record groups' "<force>.<group>.force.X|Y|Z" and "<force>.<group>.torque.X|Y|Z" (the net
 /// force, N, and the torque about the body's origin, N m, on that body, in G: forces.sto's
-/// columns), then "<force>.active_contacts". Empty when the system has no contact force.
+/// columns), then "<force>.active_contacts" and, for a force with pair groups (SMC), per body
+/// pair "<force>.<body1>-<body2>.active_contacts". Empty when the system has no contact force.
 std::vector<std::string> ContactTableLabels(const engine::System& system);
 
 /// The values in ContactTableLabels order at `state` (`row` is resized).

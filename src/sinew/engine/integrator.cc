@@ -1,6 +1,8 @@
 #include <sinew/common/error.h>
+#include <sinew/common/text.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/dynamics.h>
+#include <sinew/engine/fixed_step_integrator.h>
 #include <sinew/engine/force_jacobian.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/joint_values.h>
@@ -58,13 +60,6 @@ double Integrator::ConstraintTolerance() const {
 }
 
 namespace {
-
-// A number for a message: up to 6 significant digits, no trailing zeros ("0.067", "1e-10").
-std::string FormatNumber(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", value);
-  return buffer;
-}
 
 // The integrated vector y = [positions; velocities; z]: per moving body p_GB and quat_GB
 // (w, x, y, z), then the integrated q; then the KKT velocities; then the auxiliary state
@@ -313,103 +308,6 @@ void RungeKutta45::Interpolate(double t, State& out) {
   ApplyController(out);
 }
 
-// The schemes that advance by a fixed step `settings.step` (the last step of a StepTo call
-// shortened to land exactly on t_final).
-class FixedStepIntegrator : public Integrator {
- public:
- protected:
-  void TakeStep(State& state, double t_final) override {
-    const double remaining = t_final - state.t;
-    const double h = remaining < 1.0001 * settings_.step ? remaining : settings_.step;
-    Step(state, h, h == remaining ? t_final : state.t + h);
-    ++stats_.steps;
-  }
-
-  FixedStepIntegrator(const System& system, const IntegratorSettings& settings, const char* name)
-      : Integrator(system, settings), name_(name) {
-    if (!(settings.step > 0.0)) {
-      throw Error(std::string("integrator '") + name + "' needs a step > 0");
-    }
-  }
-  // One step of length h from state.t, ending at time t_new.
-  virtual void Step(State& state, double h, double t_new) = 0;
-
-  // Moves `later`, the state a step from `t_start` produced, onto the constraints (positions,
-  // velocities, direct coordinates), with kkt_ still factorized at the step's start. A
-  // fixed-step scheme cannot retry with a shorter step, so when the positions do not converge
-  // it throws a sinew::Error saying where and what to try.
-  void ProjectAfterStep(State& later, double t_start) {
-    constexpr int kIterations = 10;
-    if (!TryStartFactorization(later) &&
-        !ProjectPositions(system_, later, ConstraintTolerance(), kkt_, kIterations,
-                          &stats_.projection_factorizations)) {
-      ++stats_.projection_failures;
-      const VecX phi = CalcPositionErrors(system_, later);
-      throw Error(
-          "integrator '" + name_ +
-          "': position projection failed in the step from t = " + FormatNumber(t_start) +
-          " s to t = " + FormatNumber(later.t) + " s: the largest constraint error is still " +
-          FormatNumber(phi.lpNorm<Eigen::Infinity>()) + " after " + std::to_string(kIterations) +
-          " Newton iterations (tolerance " + FormatNumber(ConstraintTolerance()) +
-          "). A fixed step of " + FormatNumber(settings_.step) +
-          " s is likely too large for this motion: try a smaller step, or the "
-          "error-controlled integrator rk45, which shortens its steps where needed");
-    }
-    ProjectVelocities(system_, later, kkt_);
-    UpdateDirectCoordinates(system_, later);
-  }
-
- private:
-  // Newton iterations on phi(x) = 0 with the KKT matrix still factorized at the step's start:
-  // a modified Newton method (the step moved the positions by h v, so the matrix is off by
-  // O(h |v|) and each iteration divides the error by about 1 / (h |v| / length)). Returns true
-  // once |phi| <= tolerance; false when an iteration does not cut the error tenfold, after
-  // undoing an iteration that made it worse (ProjectPositions then goes on from there, with
-  // fresh factorizations, as it would have from the start).
-  bool ProjectWithStartFactorization(State& later) {
-    constexpr int kMaxIterations = 4;
-    const int nv = kkt_.num_velocities();
-    double previous = std::numeric_limits<double>::infinity();
-    for (int iteration = 0; iteration <= kMaxIterations; ++iteration) {
-      const VecX phi = CalcPositionErrors(system_, later);
-      const double error = phi.size() == 0 ? 0.0 : phi.lpNorm<Eigen::Infinity>();
-      if (error <= ConstraintTolerance()) return true;
-      if (!(error < 0.1 * previous)) {
-        if (!(error < previous)) later = before_;
-        return false;
-      }
-      if (iteration == kMaxIterations) return false;
-      previous = error;
-      before_ = later;
-      rhs_.setZero(nv + phi.size());
-      rhs_.tail(phi.size()) = -phi;
-      kkt_.Solve(rhs_, solution_);
-      step_ = solution_.head(nv);
-      ApplyPositionDisplacement(system_, kkt_, step_, later);
-    }
-    return false;
-  }
-
-  // ProjectWithStartFactorization, except for a while after it failed: where the stale matrix
-  // does not converge fast (a long chain turning fast, whose Jacobian error grows along the
-  // chain) every attempt would cost a solve for nothing.
-  bool TryStartFactorization(State& later) {
-    constexpr int kStepsWithoutAfterFailure = 16;
-    if (steps_without_start_factorization_ > 0) {
-      --steps_without_start_factorization_;
-      return false;
-    }
-    if (ProjectWithStartFactorization(later)) return true;
-    steps_without_start_factorization_ = kStepsWithoutAfterFailure;
-    return false;
-  }
-
-  std::string name_;
-  int steps_without_start_factorization_ = 0;
-  State before_;                // the positions before the last start-factorization iteration
-  VecX rhs_, solution_, step_;  // buffers of ProjectWithStartFactorization
-};
-
 // Fixed-step semi-implicit Euler on the velocity-level KKT system, with projection.
 class SemiImplicitEuler final : public FixedStepIntegrator {
  public:
@@ -429,11 +327,7 @@ class SemiImplicitEuler final : public FixedStepIntegrator {
     rhs.head(nv) = kkt_.MultiplyMass(v0 + h * acc.vdot);
     State later = state;
     later.t = t_new;
-    const auto& constraints = system_.constraints();
-    for (size_t k = 0; k < constraints.size(); ++k) {
-      constraints[k]->CalcVelocityRhs(
-          system_, later, rhs.segment(nv + kkt_.EquationRow(k), constraints[k]->NumEquations()));
-    }
+    SetVelocityRhs(later, rhs);
     // h * J^T lambda of the acceleration solve is replaced by the new impulse.
     const VecX v1 = kkt_.Solve(rhs).head(nv);
     // Positions move with the new velocities.
@@ -471,11 +365,7 @@ class LinearizedImplicitEuler final : public FixedStepIntegrator {
     rhs.head(nv) = kkt_.MultiplyMass(v0 + h * acc.vdot) - h * (D * v0);
     State later = state;
     later.t = t_new;
-    const auto& constraints = system_.constraints();
-    for (size_t k = 0; k < constraints.size(); ++k) {
-      constraints[k]->CalcVelocityRhs(
-          system_, later, rhs.segment(nv + kkt_.EquationRow(k), constraints[k]->NumEquations()));
-    }
+    SetVelocityRhs(later, rhs);
     const Eigen::PartialPivLU<MatX> lu(A);
     const VecX x = lu.solve(rhs);
     if (!x.allFinite() ||

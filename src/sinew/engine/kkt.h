@@ -75,6 +75,18 @@ class KktSolver {
   /// pivots (0 for kTreeGenericNodes and kDense).
   int num_articulated_nodes() const { return tree_ ? tree_->num_articulated_nodes() : 0; }
 
+  /// The twist responses of bodies `targets` to unit loads on body `source`'s six twist
+  /// columns (TreeKktSolver::SolveUnitLoadResponses: only the tree paths between the bodies
+  /// and ground are visited), into `out` (6 rows per target, 6 columns). Returns false, doing
+  /// nothing, when the system has constraints outside the tree (the Schur complement couples
+  /// everything) or the method is kDense: then use Solve.
+  bool SolveUnitLoadResponses(int source, const std::vector<int>& targets,
+                              Eigen::Ref<MatX> out) const {
+    if (!tree_ || ne_ > 0) return false;
+    tree_->SolveUnitLoadResponses(source, targets, out);
+    return true;
+  }
+
   /// M * x (x has nv entries) with the M of the last Factorize.
   VecX MultiplyMass(const VecX& x) const;
   /// J * x with the J of the last Factorize.

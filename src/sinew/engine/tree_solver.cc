@@ -30,6 +30,7 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
     node_of_body[node.body] = node_of_joint[j];
     nodes_.push_back(std::move(node));
   }
+  node_of_body_ = node_of_body;
   // Constraint rows: joint j's own, and coordinate constraints of its coordinates.
   for (int k : tree_constraints) {
     int joint = -1;
@@ -174,6 +175,50 @@ void TreeKktSolver::Solve(const VecX& rhs, VecX& x) const {
   for (size_t k = 0; k < nodes_.size(); ++k) {
     if (nodes_[k].parent >= 0) r[k].noalias() -= nodes_[k].W * r[nodes_[k].parent].head<6>();
     for (size_t i = 0; i < nodes_[k].global.size(); ++i) x[nodes_[k].global[i]] = r[k][i];
+  }
+}
+
+void TreeKktSolver::SolveUnitLoadResponses(int source, const std::vector<int>& targets,
+                                           Eigen::Ref<MatX> out) const {
+  const size_t n = nodes_.size();
+  if (blocks_.size() != n) {
+    blocks_.resize(n);
+    forward_mark_.assign(n, 0);
+    backward_mark_.assign(n, 0);
+  }
+  const long call = ++calls_;
+  // Forward, along the path from the source to ground: z_k = K_k^-1 r_k, and the parent's body
+  // rows lose C^T z_k (every other node's right-hand side stays zero).
+  int k = node_of_body_[source];
+  blocks_[k].setZero(nodes_[k].global.size(), 6);
+  blocks_[k].topRows<6>().setIdentity();
+  while (k >= 0) {
+    forward_mark_[k] = call;
+    SolveNode(nodes_[k], blocks_[k]);
+    const int parent = nodes_[k].parent;
+    if (parent >= 0) {
+      blocks_[parent].setZero(nodes_[parent].global.size(), 6);
+      blocks_[parent].topRows<6>().noalias() -= nodes_[k].C.transpose() * blocks_[k];
+    }
+    k = parent;
+  }
+  // Backward, from ground down to each target: x_k = z_k - W_k x_parent (z_k = 0 off the
+  // source's path).
+  for (size_t t = 0; t < targets.size(); ++t) {
+    stack_.clear();
+    for (int j = node_of_body_[targets[t]]; j >= 0 && backward_mark_[j] != call;
+         j = nodes_[j].parent) {
+      stack_.push_back(j);
+    }
+    for (size_t i = stack_.size(); i-- > 0;) {
+      const int j = stack_[i];
+      if (forward_mark_[j] != call) blocks_[j].setZero(nodes_[j].global.size(), 6);
+      const int parent = nodes_[j].parent;
+      if (parent >= 0) blocks_[j].noalias() -= nodes_[j].W * blocks_[parent].topRows<6>();
+      backward_mark_[j] = call;
+    }
+    out.block<6, 6>(6 * static_cast<Eigen::Index>(t), 0) =
+        blocks_[node_of_body_[targets[t]]].topRows<6>();
   }
 }
 

@@ -41,6 +41,14 @@ class TreeKktSolver {
   void Solve(const VecX& rhs, VecX& x) const;
   /// Node blocks the last Factorize eliminated as articulated pivots (the rest by generic LU).
   int num_articulated_nodes() const;
+  /// The twist responses of bodies `targets` to the six unit loads on body `source`'s twist
+  /// columns (zero constraint right-hand side): block t of `out` (rows 6 t to 6 t + 5, 6
+  /// columns) is the part of Solve([e_j; 0]) at target t's twist, for j over source's six
+  /// columns. Visits only the nodes between the bodies and ground (a path per body, not the
+  /// whole tree): what contact rows need of the constrained inverse mass. No heap use once
+  /// warm. Bodies must not be ground.
+  void SolveUnitLoadResponses(int source, const std::vector<int>& targets,
+                              Eigen::Ref<MatX> out) const;
 
  private:
   struct Entry {
@@ -89,8 +97,16 @@ class TreeKktSolver {
     }
   }
   const System& system_;
-  std::vector<Node> nodes_;  // in tree order (a node after its parent)
+  std::vector<Node> nodes_;        // in tree order (a node after its parent)
+  std::vector<int> node_of_body_;  // per System body, its node (-1: ground)
   mutable std::vector<NodeVector> scratch_;
+  // SolveUnitLoadResponses: per node six right-hand sides, and marks of the nodes a call has
+  // visited forward (on the source's path) and backward (solved), by call number.
+  using NodeBlock = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kMaxNode, 6>;
+  mutable std::vector<NodeBlock> blocks_;
+  mutable std::vector<long> forward_mark_, backward_mark_;
+  mutable std::vector<int> stack_;
+  mutable long calls_ = 0;
 };
 
 }  // namespace sinew::engine

@@ -45,10 +45,17 @@ void ReadSocketFrame(ReadContext& ctx, const pugi::xml_node& node, model::ForceS
 
 // Function-valued properties read for the classes whose builders use them.
 const std::map<std::string_view, std::vector<std::string>>& FunctionProperties() {
+  // OpenSim reads a file's Schutte1993Muscle as Schutte1993Muscle_Deprecated.
+  const std::vector<std::string> kSchutteCurves = {
+      "tendon_force_length_curve", "active_force_length_curve", "passive_force_length_curve"};
   static const std::map<std::string_view, std::vector<std::string>> properties = {
       {"FunctionBasedBushingForce",
        {"m_x_theta_x_function", "m_y_theta_y_function", "m_z_theta_z_function",
         "f_x_delta_x_function", "f_y_delta_y_function", "f_z_delta_z_function"}},
+      {"Schutte1993Muscle_Deprecated", kSchutteCurves},
+      {"Schutte1993Muscle", kSchutteCurves},
+      {"RigidTendonMuscle",
+       {"active_force_length_curve", "passive_force_length_curve", "force_velocity_curve"}},
   };
   return properties;
 }

@@ -122,6 +122,9 @@ const ForceType* FindForceType(const std::string& opensim_class) {
       {"Thelen2003Muscle_Deprecated", {&BuildThelen2003MuscleDeprecated, true}},
       {"Millard2012EquilibriumMuscle", {&BuildMillard2012EquilibriumMuscle, true}},
       {"DeGrooteFregly2016Muscle", {&BuildDeGrooteFregly2016Muscle, true}},
+      {"Schutte1993Muscle_Deprecated", {&BuildSchutte1993Muscle, true}},
+      {"Schutte1993Muscle", {&BuildSchutte1993Muscle, true}},  // OpenSim renames it as above
+      {"RigidTendonMuscle", {&BuildRigidTendonMuscle, true}},
       {"HuntCrossleyForce", {&BuildHuntCrossleyForce, false}},
       {"ElasticFoundationForce", {&BuildElasticFoundationForce, false}},
       {"SmoothSphereHalfSpaceForce", {&BuildSmoothSphereHalfSpaceForce, false}},
@@ -140,8 +143,8 @@ std::shared_ptr<engine::ForceElement> BuildForce(const model::ModelSpec& spec,
   const model::ElementValues values(force.element, file, force.path);
   const ForceType* type = FindForceType(force.type);
   if (!type) values.Fail("'" + force.type + "' is not a force type Sinew simulates");
-  return type->build(ForceBuildInput{spec, force, values, body_map, coordinate_map,
-                                     external_loads, notes, equilibrate_muscles});
+  return type->build(ForceBuildInput{spec, force, values, body_map, coordinate_map, external_loads,
+                                     notes, equilibrate_muscles});
 }
 
 }  // namespace sinew::opensim::internal

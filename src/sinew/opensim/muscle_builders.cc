@@ -9,6 +9,7 @@
 #include <sinew/muscles/millard2012_tension.h>
 #include <sinew/muscles/path_actuator.h>
 #include <sinew/muscles/path_spring.h>
+#include <sinew/muscles/simm_muscle_spec.h>
 #include <sinew/muscles/thelen2003_muscle.h>
 #include <sinew/muscles/thelen2003_muscle_deprecated.h>
 #include <sinew/opensim/internal/force_registry.h>
@@ -43,17 +44,6 @@ std::shared_ptr<engine::ForceElement> MakePathActuator(
     in.values.Fail(error.message());
   }
   return actuator;
-}
-
-muscles::MuscleParameters ReadMuscleParameters(const model::ElementValues& v) {
-  muscles::MuscleParameters m;
-  m.max_isometric_force = v.Double("max_isometric_force", m.max_isometric_force);
-  m.optimal_fiber_length = v.Double("optimal_fiber_length", m.optimal_fiber_length);
-  m.tendon_slack_length = v.Double("tendon_slack_length", m.tendon_slack_length);
-  m.pennation_angle_at_optimal =
-      v.Double("pennation_angle_at_optimal", m.pennation_angle_at_optimal);
-  m.max_contraction_velocity = v.Double("max_contraction_velocity", m.max_contraction_velocity);
-  return m;
 }
 
 // OpenSim's Thelen2003Muscle reads ignore_tendon_compliance and ignore_activation_dynamics
@@ -110,7 +100,7 @@ std::shared_ptr<engine::ForceElement> BuildBlankevoortLigament(const ForceBuildI
 std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInput& in) {
   const model::ElementValues& v = in.values;
   muscles::Thelen2003Parameters p;
-  p.muscle = ReadMuscleParameters(v);
+  p.muscle = muscles::ReadMuscleParameters(in.spec, v);
   muscles::Thelen2003CurveParameters& c = p.curves;
   c.FmaxTendonStrain = v.Double("FmaxTendonStrain", c.FmaxTendonStrain);
   c.FmaxMuscleStrain = v.Double("FmaxMuscleStrain", c.FmaxMuscleStrain);
@@ -143,7 +133,7 @@ std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInpu
 std::shared_ptr<engine::ForceElement> BuildThelen2003MuscleDeprecated(const ForceBuildInput& in) {
   const model::ElementValues& v = in.values;
   muscles::Thelen2003DeprecatedParameters p;
-  p.muscle = ReadMuscleParameters(v);
+  p.muscle = muscles::ReadMuscleParameters(in.spec, v);
   p.activation_time_constant = v.Double("activation_time_constant", p.activation_time_constant);
   p.deactivation_time_constant =
       v.Double("deactivation_time_constant", p.deactivation_time_constant);
@@ -166,6 +156,22 @@ std::shared_ptr<engine::ForceElement> BuildThelen2003MuscleDeprecated(const Forc
     v.Fail(error.message());
   }
   return MakePathActuator(in, v.Double("optimal_force", 1.0), std::move(model), 0.0, 1.0);
+}
+
+// Schutte1993Muscle(_Deprecated) and RigidTendonMuscle: ReadSchutte1993Muscle /
+// ReadRigidTendonMuscle name the file, the line and the muscle in their errors.
+std::shared_ptr<engine::ForceElement> BuildSchutte1993Muscle(const ForceBuildInput& in) {
+  return MakePathActuator(in, in.values.Double("optimal_force", 1.0),
+                          std::make_shared<muscles::Schutte1993Muscle>(
+                              muscles::ReadSchutte1993Muscle(in.spec, in.force)),
+                          0.0, 1.0);
+}
+
+std::shared_ptr<engine::ForceElement> BuildRigidTendonMuscle(const ForceBuildInput& in) {
+  return MakePathActuator(in, in.values.Double("optimal_force", 1.0),
+                          std::make_shared<muscles::RigidTendonMuscle>(
+                              muscles::ReadRigidTendonMuscle(in.spec, in.force)),
+                          0.0, 1.0);
 }
 
 std::shared_ptr<engine::ForceElement> BuildMillard2012EquilibriumMuscle(const ForceBuildInput& in) {

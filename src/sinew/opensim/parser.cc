@@ -2,8 +2,8 @@
 #include <sinew/functions/constant.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/read_controls.h>
-#include <sinew/kinematics/body_depths.h>
 #include <sinew/opensim/build_system.h>
+#include <sinew/opensim/internal/collision_builder.h>
 #include <sinew/opensim/internal/constraint_registry.h>
 #include <sinew/opensim/internal/force_registry.h>
 #include <sinew/opensim/parser.h>
@@ -44,15 +44,27 @@ std::vector<bool> ReplaceUnknownJoints(model::ModelSpec& spec, Report& report) {
 
 void OpenSimParser::EnableCollision(int family_1, int family_2) {
   collision_enabled_ = true;
-  family_1_ = family_1;
-  family_2_ = family_2;
+  collision_settings_.family_1 = family_1;
+  collision_settings_.family_2 = family_2;
+}
+
+void OpenSimParser::AddEnvironmentBox(const std::string& name, const Transform& X_GS,
+                                      const Vec3& half_extents) {
+  if (!(half_extents.minCoeff() > 0.0))
+    throw Error(SourceLocation{}, name, "an environment box needs half extents > 0");
+  contact::CollisionGeometry box;
+  box.name = name;
+  box.kind = contact::CollisionShapeKind::kBox;
+  box.X_BS = X_GS;
+  box.half_extents = half_extents;
+  collision_settings_.environment.push_back(box);
 }
 
 std::unique_ptr<engine::System> OpenSimParser::Parse(const std::string& filename,
                                                      ContactMethod method) {
   auto system = std::make_unique<engine::System>();
-  Parse(*system, filename);
   contact_method_ = method;
+  Parse(*system, filename);
   system->Finalize();
   return system;
 }
@@ -70,7 +82,6 @@ void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
   }
   report_ = Report();
   collision_ = contact::CollisionModel();
-  contact_method_ = ContactMethod::kNsc;
   for (const Diagnostic& w : spec_.warnings) report_.AddWarning(w);
 
   if (system.num_bodies() > 1 && !system.gravity().isApprox(spec_.gravity)) {
@@ -96,12 +107,21 @@ void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
   BuildConstraints(system, map.bodies, map.coordinates);
   BuildForces(system, map.bodies, map.coordinates);
   AssignExcitations();
-  for (std::string& line : ListNotSimulated(spec_, disabled_forces_)) {
-    report_.AddNotSimulated(std::move(line));
-  }
   if (collision_enabled_) {
-    collision_ = contact::BuildCollisionModel(spec_, kinematics::CalcBodyDepths(spec_), family_1_,
-                                              family_2_);
+    collision_ = internal::BuildCollision(spec_, collision_settings_, disabled_forces_, report_);
+    if (contact_method_ == ContactMethod::kSmc) {
+      internal::AddSmoothContact(system, spec_, collision_, map.bodies,
+                                 collision_settings_.slip_speed, report_);
+    }
+  }
+  for (std::string& line : ListNotSimulated(spec_, disabled_forces_)) {
+    // Contact geometry that collides is simulated, though no contact force names it.
+    const bool collides =
+        std::any_of(collision_.geometry.begin(), collision_.geometry.end(),
+                    [&](const contact::CollisionGeometry& g) {
+                      return line.starts_with("/contactgeometryset/" + g.name + ":");
+                    });
+    if (!collides) report_.AddNotSimulated(std::move(line));
   }
   scene_ = viz::VisualScene();
   if (vis_type_ != VisType::kNone) {

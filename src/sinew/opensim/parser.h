@@ -11,6 +11,7 @@
 #include <sinew/functions/function.h>
 #include <sinew/io/external_loads.h>
 #include <sinew/model/model_spec.h>
+#include <sinew/opensim/collision_settings.h>
 #include <sinew/opensim/report.h>
 #include <sinew/viz/visual_scene.h>
 
@@ -38,10 +39,30 @@ class OpenSimParser {
   /// A folder searched for mesh files after the model's folder and its Geometry/ subfolder
   /// (then $SINEW_GEOMETRY_PATH). May be called several times.
   void AddGeometryDir(const std::string& dir) { geometry_dirs_.push_back(dir); }
-  /// Creates collision shapes (cylinders along each body's segments, as in PRIMITIVES) with
-  /// bodies in two alternating families by tree depth, so a body never collides with its
-  /// parent or children (default: off).
+  /// Creates collision shapes (cylinders along each body's segments, as in PRIMITIVES, and the
+  /// model's ContactSphere and ContactHalfSpace) with bodies in two alternating families by
+  /// tree depth (the seed's); a body never collides with its parent or children, every other
+  /// pair may collide (default: off). docs/contact.md.
   void EnableCollision(int family_1 = 1, int family_2 = 2);
+  /// How collisions are treated (default NSC, the seed's): SMC adds the force element
+  /// "smc_contact" (contact::SmoothCollisionForce) to the system; NSC leaves the contacts to
+  /// the NSC time stepper. Parse(filename, method) sets it too.
+  void SetContactMethod(ContactMethod method) { contact_method_ = method; }
+  /// Adds the ground plane y = `height` (the solid below) to the environment (with collision).
+  void SetGroundPlane(double height) { collision_settings_.ground_plane = height; }
+  /// Adds a box fixed to ground (pose X_GS of its centre, half extents in m) to the
+  /// environment, named `name` (for SetContactMaterial), e.g. an incline.
+  void AddEnvironmentBox(const std::string& name, const Transform& X_GS, const Vec3& half_extents);
+  /// The default contact material of the collision shapes (docs/contact.md gives its defaults).
+  void SetContactMaterial(const contact::CollisionMaterial& material) {
+    collision_settings_.material = material;
+  }
+  /// The material of the shapes of the body, contact geometry or environment shape `name`.
+  void SetContactMaterial(const std::string& name, const contact::CollisionMaterial& material) {
+    collision_settings_.overrides.emplace_back(name, material);
+  }
+  /// SMC's friction regularization speed v_s (m/s, default 1e-3): docs/contact.md.
+  void SetFrictionSlipSpeed(double speed) { collision_settings_.slip_speed = speed; }
   /// Prints what is built, and every warning, to stderr while parsing (default: off).
   void SetVerbose(bool verbose) { verbose_ = verbose; }
   /// With true, every actuator starts with the constant excitation 1 (default: 0, OpenSim's
@@ -104,7 +125,7 @@ class OpenSimParser {
   /// The visual assets of the last Parse, one entry per spec body (no parts with NONE).
   /// A mesh that cannot be found is a Report warning and its body gets primitives.
   const viz::VisualScene& GetVisualScene() const { return scene_; }
-  /// The contact method chosen in Parse(filename, method) (NSC otherwise).
+  /// The contact method (SetContactMethod or Parse(filename, method); NSC otherwise).
   ContactMethod GetContactMethod() const { return contact_method_; }
 
  private:
@@ -123,8 +144,7 @@ class OpenSimParser {
 
   VisType vis_type_ = VisType::kNone;
   bool collision_enabled_ = false;
-  int family_1_ = 1;
-  int family_2_ = 2;
+  CollisionSettings collision_settings_;
   bool verbose_ = false;
   bool activate_actuators_ = false;
   bool strict_ = false;

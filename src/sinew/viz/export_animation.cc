@@ -54,6 +54,7 @@ VisualScene ExportAnimation(const model::ModelSpec& spec, const BodyMotion& moti
     }
   }
   VisualScene scene = BuildVisualScene(spec, options.visual);
+  AddCollisionParts(options.collision_parts, scene);
   const std::string title = options.title.empty() ? spec.name : options.title;
   const BodyMotion kept = ThinMotion(motion, options.max_fps);
   PathLines lines;

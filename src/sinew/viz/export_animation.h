@@ -6,6 +6,7 @@
 #include <sinew/io/storage.h>
 #include <sinew/model/model_spec.h>
 #include <sinew/viz/body_motion.h>
+#include <sinew/viz/collision_parts.h>
 #include <sinew/viz/visual_scene.h>
 
 #include <string>
@@ -24,6 +25,8 @@ struct ExportOptions {
   /// A table (the states the motion came from) whose activation columns shade the paths
   /// (ShadeByActivation); null or without such columns: every path muscle red.
   const io::Storage* activations = nullptr;
+  /// Collision shapes drawn in the contact colour (opensim::CollisionPartsOf).
+  std::vector<CollisionPart> collision_parts;
 };
 
 /// The two export formats, told by the file name's extension.

@@ -6,8 +6,8 @@
 
 #include <sinew/common/error.h>
 #include <sinew/engine/force_element.h>
-#include <sinew/io/external_loads.h>
 #include <sinew/forces/expression.h>
+#include <sinew/io/external_loads.h>
 #include <sinew/model/element_values.h>
 #include <sinew/model/model_spec.h>
 
@@ -94,6 +94,8 @@ std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInpu
 std::shared_ptr<engine::ForceElement> BuildThelen2003MuscleDeprecated(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildMillard2012EquilibriumMuscle(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildDeGrooteFregly2016Muscle(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildSchutte1993Muscle(const ForceBuildInput& in);
+std::shared_ptr<engine::ForceElement> BuildRigidTendonMuscle(const ForceBuildInput& in);
 /// HuntCrossleyForce, ElasticFoundationForce, SmoothSphereHalfSpaceForce (contact_builders.cc).
 std::shared_ptr<engine::ForceElement> BuildHuntCrossleyForce(const ForceBuildInput& in);
 std::shared_ptr<engine::ForceElement> BuildElasticFoundationForce(const ForceBuildInput& in);
@@ -104,13 +106,10 @@ const ForceType* FindForceType(const std::string& opensim_class);
 
 /// The engine element of `force`, whose class must have a registry entry.
 /// `external_loads` and `notes` as in ForceBuildInput.
-std::shared_ptr<engine::ForceElement> BuildForce(const model::ModelSpec& spec,
-                                                 const model::ForceSpec& force,
-                                                 const std::vector<int>& body_map,
-                                                 const std::vector<int>& coordinate_map,
-                                                 const io::ExternalLoads* external_loads = nullptr,
-                                                 Diagnostics* notes = nullptr,
-                                                 bool equilibrate_muscles = false);
+std::shared_ptr<engine::ForceElement> BuildForce(
+    const model::ModelSpec& spec, const model::ForceSpec& force, const std::vector<int>& body_map,
+    const std::vector<int>& coordinate_map, const io::ExternalLoads* external_loads = nullptr,
+    Diagnostics* notes = nullptr, bool equilibrate_muscles = false);
 
 /// The last segment of a socket path ("/bodyset/rod1" -> "rod1"), or the name itself.
 std::string LastPathSegment(const std::string& path);

@@ -1,0 +1,56 @@
+// The NSC contact method on the skeleton-on-ground scene (issue 14's figure): the seed's
+// Rajagopal2015 with its collision cylinders, dropped 5 cm onto a ground plane, h = 1e-3 s,
+// the seed's default material (friction 0.6, no restitution), default solver settings.
+//  - BM_Rajagopal2015NscDropOneSecond: the first simulated second (fall, impact, settling);
+//    reports us per step and the mean number of contacts.
+//  - BM_Rajagopal2015NscRestingStep: one step of the skeleton lying on the ground after 2 s
+//    (the steady state: every step with contacts).
+#include <benchmark/benchmark.h>
+#include <sinew/engine/nsc_integrator.h>
+
+#include "contact/skeleton_on_ground.h"
+
+namespace {
+
+void BM_Rajagopal2015NscDropOneSecond(benchmark::State& bench) {
+  double steps = 0.0, contacts = 0.0, sweeps = 0.0;
+  for (auto _ : bench) {
+    bench.PauseTiming();
+    sinew::testing::SkeletonOnGround scene = sinew::testing::MakeSkeletonOnGround(0.05);
+    sinew::engine::IntegratorSettings settings;
+    settings.step = 1e-3;
+    sinew::engine::NscIntegrator integrator(*scene.system, scene.provider, settings);
+    bench.ResumeTiming();
+    for (int n = 1; n <= 1000; ++n) {
+      integrator.StepTo(scene.state, n * 1e-3);
+      contacts += integrator.last_step().contacts;
+      sweeps += integrator.last_step().iterations;
+    }
+    steps += 1000;
+  }
+  bench.counters["us_per_step"] =
+      benchmark::Counter(steps * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  bench.counters["contacts"] = benchmark::Counter(contacts / steps);
+  bench.counters["sweeps"] = benchmark::Counter(sweeps / steps);
+}
+BENCHMARK(BM_Rajagopal2015NscDropOneSecond)->Unit(benchmark::kMillisecond);
+
+void BM_Rajagopal2015NscRestingStep(benchmark::State& bench) {
+  sinew::testing::SkeletonOnGround scene = sinew::testing::MakeSkeletonOnGround(0.05);
+  sinew::engine::IntegratorSettings settings;
+  settings.step = 1e-3;
+  sinew::engine::NscIntegrator integrator(*scene.system, scene.provider, settings);
+  integrator.StepTo(scene.state, 2.0);
+  double contacts = 0.0, sweeps = 0.0, steps = 0.0;
+  for (auto _ : bench) {
+    integrator.Advance(scene.state, scene.state.t + 1e-3);
+    contacts += integrator.last_step().contacts;
+    sweeps += integrator.last_step().iterations;
+    steps += 1.0;
+  }
+  bench.counters["contacts"] = benchmark::Counter(contacts / steps);
+  bench.counters["sweeps"] = benchmark::Counter(sweeps / steps);
+}
+BENCHMARK(BM_Rajagopal2015NscRestingStep)->Unit(benchmark::kMicrosecond);
+
+}  // namespace

@@ -1,0 +1,176 @@
+#include <sinew/contact/smooth_collision_force.h>
+#include <sinew/kinematics/body_depths.h>
+#include <sinew/kinematics/forward_kinematics.h>
+#include <sinew/kinematics/kinematic_tree.h>
+#include <sinew/opensim/internal/collision_builder.h>
+#include <sinew/opensim/support.h>
+
+#include <algorithm>
+#include <functional>
+#include <map>
+#include <set>
+
+namespace sinew::opensim::internal {
+namespace {
+
+// The contact geometry names the file's simulated contact forces use (any text of theirs that
+// is a geometry's name: ContactParameters' <geometry>, the smooth force's sockets).
+std::set<std::string> GeometryUsedByForces(const model::ModelSpec& spec,
+                                           const std::vector<std::string>& disabled_forces) {
+  std::set<std::string> names, used;
+  for (const model::ContactGeometrySpec& g : spec.contact_geometry) names.insert(g.name);
+  std::function<void(const model::Element&)> scan = [&](const model::Element& e) {
+    for (size_t start = 0; start < e.text.size();) {
+      const size_t end = std::min(e.text.find(' ', start), e.text.size());
+      std::string word = e.text.substr(start, end - start);
+      if (const size_t slash = word.find_last_of('/'); slash != std::string::npos)
+        word = word.substr(slash + 1);
+      if (names.count(word)) used.insert(word);
+      start = end + 1;
+    }
+    for (const model::Element& c : e.children) scan(c);
+  };
+  for (const model::ForceSpec& f : spec.forces) {
+    const bool contact_force = f.type == "HuntCrossleyForce" ||
+                               f.type == "ElasticFoundationForce" ||
+                               f.type == "SmoothSphereHalfSpaceForce";
+    const bool disabled = std::find(disabled_forces.begin(), disabled_forces.end(), f.name) !=
+                          disabled_forces.end();
+    if (contact_force && f.applies_force && !disabled && IsForceSimulated(f)) scan(f.element);
+  }
+  return used;
+}
+
+// The collision geometry of an OpenSim ContactSphere or ContactHalfSpace, or nullopt (with a
+// Report warning) for another class.
+std::optional<contact::CollisionGeometry> MakeGeometry(const model::ModelSpec& spec,
+                                                       const model::ContactGeometrySpec& g,
+                                                       Report& report) {
+  contact::CollisionGeometry shape;
+  shape.name = g.name;
+  shape.body = g.body;
+  shape.X_BS = g.X_BC;
+  const std::string component = "/contactgeometryset/" + g.name;
+  if (g.type == "ContactHalfSpace") {
+    shape.kind = contact::CollisionShapeKind::kHalfSpace;
+    return shape;
+  }
+  if (g.type == "ContactSphere") {
+    const auto radius = g.dimensions.find("radius");
+    shape.radius =
+        radius == g.dimensions.end() || radius->second.size() != 1 ? 0.0 : radius->second[0];
+    if (!(shape.radius > 0.0))
+      throw Error({spec.file, g.where.line}, component, "ContactSphere needs a radius > 0");
+    shape.kind = contact::CollisionShapeKind::kSphere;
+    return shape;
+  }
+  report.AddWarning({g.where, component,
+                     g.type + " is not a collision shape yet (ContactSphere and ContactHalfSpace "
+                              "are): it does not collide"});
+  return std::nullopt;
+}
+
+// Gives the shapes named by `settings.overrides` their materials (index into model.materials).
+void AssignMaterials(const model::ModelSpec& spec, const CollisionSettings& settings,
+                     contact::CollisionModel& model) {
+  for (const auto& [name, material] : settings.overrides) {
+    const int index = static_cast<int>(model.materials.size());
+    model.materials.push_back(material);
+    bool found = false;
+    SourceLocation where{spec.file, 0};
+    const int body = spec.FindBody(name);
+    if (body != model::kNone) {
+      where = spec.bodies[body].where;
+      for (contact::CollisionCylinder& c : model.shapes) {
+        if (c.body == body) c.material = index, found = true;
+      }
+    }
+    for (contact::CollisionGeometry& g : model.geometry) {
+      if (g.name == name || (body != model::kNone && g.body == body))
+        g.material = index, found = true;
+    }
+    for (const model::ContactGeometrySpec& g : spec.contact_geometry) {
+      if (g.name == name) where = g.where;
+    }
+    contact::CheckMaterial(material, where, name);
+    if (!found && body == model::kNone) {
+      throw Error(SourceLocation{spec.file, 0}, name,
+                  "a contact material names no body, contact geometry or environment shape");
+    }
+  }
+}
+
+}  // namespace
+
+contact::CollisionModel BuildCollision(const model::ModelSpec& spec,
+                                       const CollisionSettings& settings,
+                                       const std::vector<std::string>& disabled_forces,
+                                       Report& report) {
+  contact::CheckMaterial(settings.material, {spec.file, 0}, "default contact material");
+  contact::CollisionModel model = contact::BuildCollisionModel(
+      spec, kinematics::CalcBodyDepths(spec), settings.family_1, settings.family_2);
+  model.materials = {settings.material};
+  const std::set<std::string> used = GeometryUsedByForces(spec, disabled_forces);
+  for (const model::ContactGeometrySpec& g : spec.contact_geometry) {
+    if (used.count(g.name)) {
+      report.AddWarning({g.where, "/contactgeometryset/" + g.name,
+                         "used by a contact force of the file, which handles its contacts: not "
+                         "also a collision shape"});
+      continue;
+    }
+    if (std::optional<contact::CollisionGeometry> shape = MakeGeometry(spec, g, report))
+      model.geometry.push_back(*shape);
+  }
+  if (settings.ground_plane) contact::AddGroundPlane(model, *settings.ground_plane);
+  for (const contact::CollisionGeometry& g : settings.environment) model.geometry.push_back(g);
+  AssignMaterials(spec, settings, model);
+  for (const contact::CollisionMaterial& m : model.materials) {
+    if (m.kt > 0.0) {
+      report.AddWarning({SourceLocation{spec.file, 0}, "contact material",
+                         "kt (tangential stiffness) needs a contact history, which SMC does not "
+                         "keep: ignored (friction uses gt or the slip speed)"});
+      break;
+    }
+  }
+  return model;
+}
+
+void AddSmoothContact(engine::System& system, const model::ModelSpec& spec,
+                      const contact::CollisionModel& model, const std::vector<int>& body_map,
+                      double slip_speed, Report& report) {
+  // The model in engine body indices.
+  contact::CollisionModel mapped = model;
+  for (contact::CollisionCylinder& c : mapped.shapes) c.body = body_map[c.body];
+  for (contact::CollisionGeometry& g : mapped.geometry) g.body = body_map[g.body];
+  for (auto& [a, b] : mapped.jointed) a = body_map[a], b = body_map[b];
+  std::vector<int> family(system.num_bodies(), 0);
+  for (size_t b = 0; b < model.family.size(); ++b) family[body_map[b]] = model.family[b];
+  mapped.family = family;
+  // Rest poses: the model's default pose.
+  kinematics::KinematicTree tree(spec);
+  std::vector<Transform> X_GB_spec(spec.bodies.size());
+  kinematics::CalcBodyPoses(tree, tree.default_q(), X_GB_spec);
+  std::vector<Transform> X_GB_rest(system.num_bodies());
+  for (size_t b = 0; b < X_GB_spec.size(); ++b) X_GB_rest[body_map[b]] = X_GB_spec[b];
+  auto detector = std::make_shared<contact::CollisionDetector>(mapped, std::nullopt, X_GB_rest);
+  if (detector->num_excluded_at_rest() > 0) {
+    report.AddWarning({SourceLocation{spec.file, 0}, "smc_contact",
+                       std::to_string(detector->num_excluded_at_rest()) +
+                           " shape pair(s) overlap in the default pose and never collide"});
+  }
+  std::vector<double> masses;
+  for (const engine::Body& b : system.bodies()) masses.push_back(b.mass);
+  // Reported: every body with a shape, ground included; every body pair that may touch.
+  std::set<int> bodies;
+  for (const auto& [a, b] : detector->BodyPairs()) bodies.insert(a), bodies.insert(b);
+  std::vector<contact::ContactForce::RecordGroup> groups;
+  for (int b : bodies) groups.push_back({system.bodies()[b].name, b});
+  std::vector<contact::ContactForce::PairGroup> pairs;
+  for (const auto& [a, b] : detector->BodyPairs())
+    pairs.push_back({system.bodies()[a].name + "-" + system.bodies()[b].name, a, b});
+  system.AddForceElement(std::make_shared<contact::SmoothCollisionForce>(
+      "smc_contact", std::move(detector), std::move(masses), slip_speed, std::move(groups),
+      std::move(pairs)));
+}
+
+}  // namespace sinew::opensim::internal
