@@ -17,6 +17,7 @@
 #include <sinew/engine/pose.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/opensim/collision_parts.h>
+#include <sinew/opensim/run_integrator.h>
 #include <sinew/viz/export_animation.h>
 
 #include <functional>
@@ -95,9 +96,8 @@ void RunSimulate(const SimulateOptions& options) {
   engine::IntegratorSettings settings;
   settings.accuracy = options.accuracy;
   settings.step = options.step;
-  const auto integrator = UsesNscContact(options.contact)
-                              ? MakeNscContactIntegrator(system, built.parser, settings)
-                              : engine::MakeIntegrator(options.integrator, system, settings);
+  const auto integrator =
+      opensim::MakeRunIntegrator(options.integrator, system, built.parser, settings);
   integrator->SetController(built.parser.GetController());
 
   TableFiles files;

@@ -1,12 +1,5 @@
 #include "apps/sinew/contact_options.h"
 
-#include <sinew/contact/collision_contact_provider.h>
-#include <sinew/engine/assemble.h>
-#include <sinew/engine/nsc_integrator.h>
-
-#include <utility>
-#include <vector>
-
 #include "apps/sinew/option_checks.h"
 
 namespace sinew::cli {
@@ -65,33 +58,6 @@ void ApplyContactOptions(const ContactOptions& o, opensim::OpenSimParser& parser
   if (o.ground_plane) parser.SetGroundPlane(*o.ground_plane);
   parser.SetContactMaterial(o.material);
   parser.SetFrictionSlipSpeed(o.slip_speed);
-}
-
-bool UsesNscContact(const ContactOptions& o) { return o.collision && o.method == "nsc"; }
-
-std::unique_ptr<engine::Integrator> MakeNscContactIntegrator(
-    const engine::System& system, const opensim::OpenSimParser& parser,
-    const engine::IntegratorSettings& settings) {
-  // The NSC provider queries the ground plane itself, raised by its envelope: take the plane
-  // out of the environment so that it is not met twice.
-  contact::CollisionModel model = parser.GetCollisionModel();
-  std::optional<double> ground_height;
-  std::erase_if(model.geometry, [&](const contact::CollisionGeometry& g) {
-    const bool plane = g.name == contact::kGroundPlaneName && g.body == model::kGroundIndex &&
-                       g.kind == contact::CollisionShapeKind::kHalfSpace;
-    if (plane) ground_height = g.X_BS.p.y();
-    return plane;
-  });
-  const contact::CollisionMaterial& material = model.materials.front();
-  const contact::NscMaterial nsc{.friction = material.friction,
-                                 .restitution = material.restitution};
-  std::vector<Transform> X_GB_rest;
-  contact::GatherBodyPoses(engine::MakeDefaultState(system), X_GB_rest);
-  auto provider =
-      std::make_shared<contact::CollisionContactProvider>(model, ground_height, nsc, X_GB_rest);
-  engine::IntegratorSettings nsc_settings = settings;
-  if (!(nsc_settings.step > 0.0)) nsc_settings.step = kDefaultNscStep;
-  return std::make_unique<engine::NscIntegrator>(system, std::move(provider), nsc_settings);
 }
 
 }  // namespace sinew::cli

@@ -31,17 +31,4 @@ void AddContactOptions(CLI::App* cmd, ContactOptions& options);
 /// `parser` before it parses.
 void ApplyContactOptions(const ContactOptions& options, opensim::OpenSimParser& parser);
 
-/// True when the run needs the NSC time stepper (--collision with --contact nsc).
-bool UsesNscContact(const ContactOptions& options);
-
-/// The fixed step of an NSC run when --step is not given (s), the seed's.
-inline constexpr double kDefaultNscStep = 1e-3;
-
-/// The integrator of an NSC contact run (--collision --contact nsc): engine::NscIntegrator at
-/// `settings.step` (kDefaultNscStep when not > 0) over the parser's collision model, the ground
-/// plane queried by the provider itself, the default material's friction and restitution.
-std::unique_ptr<engine::Integrator> MakeNscContactIntegrator(
-    const engine::System& system, const opensim::OpenSimParser& parser,
-    const engine::IntegratorSettings& settings);
-
 }  // namespace sinew::cli

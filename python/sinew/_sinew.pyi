@@ -68,9 +68,9 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
     """Reads an OpenSim model (.osim, every version 1.9 to 4.6) and builds what Sinew simulates.
 
     visualization: None/"none", "primitives" or "mesh" (visual assets of the bodies).
-    collision: make the seed's collision shapes collide. contact: "nsc" or "smc"; with
-    collision=True only "smc" (penalty contact) is available from Python yet, "nsc" raises
-    Error (the CLI runs it). strict: anything approximated,
+    collision: make the seed's collision shapes collide. contact: "smc" (penalty contact, a
+    force: every integrator) or "nsc" (non-smooth: runs step with the NSC stepper at `step`,
+    default 1 ms, whatever integrator is named). strict: anything approximated,
     substituted or not simulated is an Error.
     parameters: {"<component>/<property>": value} overriding what the file says before the
     model is built, in order; the component by name or path ("BIClong", "/forceset/BIClong"),

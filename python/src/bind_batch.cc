@@ -33,7 +33,8 @@ class Batch {
     settings.step = step;
     settings.accuracy = accuracy;
     copies_.reserve(n);
-    for (int i = 0; i < n; ++i) copies_.emplace_back(model_->system(), integrator, settings, step);
+    for (int i = 0; i < n; ++i)
+      copies_.emplace_back(model_->system(), model_->parser(), integrator, settings, step);
     pool_ = std::make_unique<WorkerPool>(std::min(count, n));
     for (SteppedCopy& copy : copies_) copy.Reset(initial_);
   }

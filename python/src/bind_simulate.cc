@@ -9,6 +9,7 @@
 #include <sinew/engine/simulation.h>
 #include <sinew/functions/constant.h>
 #include <sinew/io/storage_writer.h>
+#include <sinew/opensim/run_integrator.h>
 #include <sinew/opensim/states_table.h>
 
 #include <atomic>
@@ -62,7 +63,8 @@ py::object Simulate(const ModelPtr& model, double duration, double accuracy,
   engine::IntegratorSettings settings;
   settings.accuracy = accuracy;
   settings.step = step.value_or(0.0);
-  const auto integrator = engine::MakeIntegrator(integrator_name, system, settings);
+  const auto integrator =
+      opensim::MakeRunIntegrator(integrator_name, system, setup.model->parser(), settings);
   integrator->SetController(setup.controller);
 
   const size_t nc = system.num_coordinates(), nz = system.num_state_variables();

@@ -21,7 +21,7 @@ class Simulator {
   Simulator(const RunSetup& setup, double step, const std::string& integrator, double accuracy)
       : model_(setup.model),
         initial_(setup.state),
-        copy_(model_->system(), integrator, Settings(step, accuracy), step) {
+        copy_(model_->system(), model_->parser(), integrator, Settings(step, accuracy), step) {
     copy_.Reset(initial_);
   }
 

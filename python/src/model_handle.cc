@@ -25,14 +25,6 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
     throw Error({path, 0}, "",
                 "contact must be \"nsc\" or \"smc\", not \"" + options.contact + "\"");
   }
-  if (options.collision && options.contact == "nsc") {
-    // NSC runs through its own time stepper (engine::NscIntegrator), which the Python
-    // simulator does not drive yet: refuse rather than simulate without collision.
-    throw Error({path, 0}, "",
-                "collision=True with contact=\"nsc\" is not available from Python yet (the "
-                "CLI's `sinew simulate --collision --contact nsc` runs it); use "
-                "contact=\"smc\" (penalty contact, every integrator)");
-  }
   auto handle = std::shared_ptr<ModelHandle>(new ModelHandle());
   handle->path_ = path;
   handle->options_ = options;

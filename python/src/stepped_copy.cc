@@ -2,24 +2,30 @@
 
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
+#include <sinew/opensim/run_integrator.h>
 
 #include <algorithm>
 #include <cmath>
 
 namespace sinew::python {
 
-SteppedCopy::SteppedCopy(const engine::System& system, const std::string& integrator,
-                         const engine::IntegratorSettings& settings, double interval)
-    : system_(system), integrator_name_(integrator), settings_(settings), interval_(interval) {
+SteppedCopy::SteppedCopy(const engine::System& system, const opensim::OpenSimParser& parser,
+                         const std::string& integrator, const engine::IntegratorSettings& settings,
+                         double interval)
+    : system_(system),
+      parser_(parser),
+      integrator_name_(integrator),
+      settings_(settings),
+      interval_(interval) {
   if (!(interval > 0.0) || !std::isfinite(interval)) {
     throw Error("step must be a finite time > 0 (s), not " + std::to_string(interval));
   }
-  integrator_ = engine::MakeIntegrator(integrator_name_, system_, settings_);
+  integrator_ = opensim::MakeRunIntegrator(integrator_name_, system_, parser_, settings_);
 }
 
 void SteppedCopy::Reset(const engine::State& state) {
   engine::CheckState(system_, state);
-  integrator_ = engine::MakeIntegrator(integrator_name_, system_, settings_);
+  integrator_ = opensim::MakeRunIntegrator(integrator_name_, system_, parser_, settings_);
   state_ = state;
   t_start_ = state.t;
   steps_ = 0;

@@ -7,6 +7,7 @@
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/state.h>
 #include <sinew/engine/system.h>
+#include <sinew/opensim/parser.h>
 
 #include <memory>
 #include <string>
@@ -15,9 +16,12 @@ namespace sinew::python {
 
 class SteppedCopy {
  public:
-  /// Throws sinew::Error for an unknown integrator or a step that is not > 0.
-  SteppedCopy(const engine::System& system, const std::string& integrator,
-              const engine::IntegratorSettings& settings, double interval);
+  /// `system` as `parser` built it (its collision settings choose NSC stepping,
+  /// opensim::MakeRunIntegrator). Throws sinew::Error for an unknown integrator or a step that
+  /// is not > 0.
+  SteppedCopy(const engine::System& system, const opensim::OpenSimParser& parser,
+              const std::string& integrator, const engine::IntegratorSettings& settings,
+              double interval);
   /// Starts again from `state` (checked against the system).
   void Reset(const engine::State& state);
   /// Sets the inputs to `controls` (system.num_inputs() values; null keeps them) and advances
@@ -27,6 +31,7 @@ class SteppedCopy {
 
  private:
   const engine::System& system_;
+  const opensim::OpenSimParser& parser_;
   std::string integrator_name_;
   engine::IntegratorSettings settings_;
   double interval_;

@@ -1,9 +1,11 @@
-"""Collision from Python: load(collision=True, contact="smc") makes the seed's collision shapes
-collide through SMC penalty contact (docs/contact.md), as `sinew simulate --collision` does."""
+"""Collision from Python: load(collision=True, contact="smc"|"nsc") makes the seed's collision
+shapes collide as `sinew simulate --collision --contact ...` does (docs/contact.md)."""
 import math
 
+import numpy as np
+
 import sinew
-from conftest import DATA
+from conftest import DATA, read_sto
 
 BALL = DATA / "sinew" / "ball_on_floor.osim"
 
@@ -24,3 +26,33 @@ def test_ball_rests_at_hertz_static_depth_with_smc():
     assert abs(ty[0] - 0.3) < 1e-12
     assert abs(ty[-1] - (radius - depth)) < 1e-6, (ty[-1], radius - depth)
     assert abs(result.u[-1, result.coordinates.index("ty")]) < 1e-4
+
+
+def test_nsc_simulate_equals_cli_bit_for_bit_and_rests_on_the_floor(cli, tmp_path):
+    # contact="nsc" runs the NSC stepper (opensim::MakeRunIntegrator, fixed step 1 ms) as
+    # `sinew simulate --collision --contact nsc` does. The ball comes to rest touching the floor,
+    # at most the contact envelope (2 mm) into it (docs/contact.md).
+    states = cli([BALL, "--collision", "--contact", "nsc", "--duration", 1.0,
+                  "--report-interval", 0.01], tmp_path / "cli")
+    result = sinew.load(BALL, collision=True, contact="nsc").simulate(1.0, report_interval=0.01)
+    labels, time, values = read_sto(states)
+    assert labels == result.labels
+    assert np.array_equal(time, result.time)
+    assert np.array_equal(values, result.states)
+    ty = result.q[:, result.coordinates.index("ty")]
+    assert 0.1 - 2e-3 - 1e-9 <= ty[-1] <= 0.1 + 1e-9
+    assert abs(result.u[-1, result.coordinates.index("ty")]) < 1e-6
+
+
+def test_nsc_simulator_steps_as_simulate_does():
+    # The same 1 ms NSC steps: the Simulator ends step k at exactly k h, the driver at its own
+    # report grid, so the two agree to round-off rather than bit for bit.
+    model = sinew.load(BALL, collision=True, contact="nsc")
+    simulator = model.simulator(1e-3)
+    simulator.reset()
+    for _ in range(1000):
+        simulator.step()
+    result = model.simulate(1.0, step=1e-3, report_interval=0.5)
+    assert np.allclose(simulator.state.q, result.q[-1], rtol=0.0, atol=1e-12)
+    ty = simulator.state.q[model.coordinates.index("ty")]
+    assert abs(ty - 0.098) < 1e-9  # resting the envelope (2 mm) deep

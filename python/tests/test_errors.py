@@ -3,9 +3,7 @@ import numpy as np
 import pytest
 
 import sinew
-from conftest import CHRONO, DATA, RESOURCES
-
-BALL = DATA / "sinew" / "ball_on_floor.osim"
+from conftest import CHRONO, RESOURCES
 
 
 def test_malformed_model_names_file_and_line(tmp_path):
@@ -88,10 +86,3 @@ def test_what_the_table_reader_read_leniently_is_a_warning_with_file_and_line():
     with pytest.warns(UserWarning, match=f"{states}:3: nColumns=4"):
         sinew.load(RESOURCES / "DoublePendulum3D.osim").simulate(0.01, initial_states=states)
 
-
-def test_nsc_collision_is_refused_rather_than_ignored():
-    # The NSC stepper is not driven from Python yet: a model asking for it must not simulate
-    # without collision.
-    with pytest.raises(sinew.Error, match="nsc") as error:
-        sinew.load(BALL, collision=True, contact="nsc")
-    assert error.value.file == str(BALL)

@@ -127,6 +127,8 @@ class OpenSimParser {
   const viz::VisualScene& GetVisualScene() const { return scene_; }
   /// The contact method (SetContactMethod or Parse(filename, method); NSC otherwise).
   ContactMethod GetContactMethod() const { return contact_method_; }
+  /// Whether EnableCollision was called: the seed's collision shapes collide.
+  bool IsCollisionEnabled() const { return collision_enabled_; }
 
  private:
   void BuildConstraints(engine::System& system, const std::vector<int>& body_map,
