@@ -86,7 +86,7 @@ TEST(CorpusPathsTest, EveryModelsPathsComputeAtTheDefaultPose) {
 // lengthening speed equal the derivatives of its length, by central differences, to the
 // differences' own error bound (testing::CheckMomentArmsAndSpeeds: tangent points carried by
 // their wrap bodies, as OpenSim's analytic values are; unwrapped paths also against the length
-// recomputed afresh).
+// recomputed afresh); and the generalized force of a tension is -tension dL/du.
 TEST(CorpusPathsTest, EveryModelsMomentArmsAreDerivativesOfLength) {
   SINEW_SKIP_WITHOUT_CORPUS();
   int checked = 0;
@@ -99,8 +99,9 @@ TEST(CorpusPathsTest, EveryModelsMomentArmsAreDerivativesOfLength) {
     }
     if (m->paths.paths().empty()) continue;
     SCOPED_TRACE(file.string());
-    testing::CheckMomentArmsAndSpeeds(*m, file.filename().string(), testing::MakePoses(*m, 1),
-                                      false);
+    const std::vector<std::vector<double>> poses = testing::MakePoses(*m, 1);
+    testing::CheckMomentArmsAndSpeeds(*m, file.filename().string(), poses, false);
+    testing::CheckGeneralizedForces(*m, poses);
     ++checked;
   }
   EXPECT_EQ(checked, 78);

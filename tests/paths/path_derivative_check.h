@@ -5,13 +5,15 @@
 #include <gtest/gtest.h>
 #include <sinew/paths/coupling_vector.h>
 #include <sinew/paths/path_analysis.h>
+#include <sinew/paths/path_loads.h>
+#include <sinew/paths/speed_columns.h>
 
 #include <algorithm>
 #include <array>
-#include <span>
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -78,11 +80,12 @@ inline bool NearAConditionalLimit(const PathModel& m, const std::vector<double>&
   return false;
 }
 
-// q moved by h along the coupling vector c (couplers reapplied so the pose stays consistent).
+// q moved by h along the coupling vector c (couplers reapplied so the pose stays consistent,
+// unless `couple` is false).
 inline std::vector<double> Move(const PathModel& m, std::vector<double> q,
-                                const std::vector<double>& c, double h) {
+                                const std::vector<double>& c, double h, bool couple = true) {
   for (size_t k = 0; k < q.size(); ++k) q[k] += h * c[k];
-  m.couplers.Apply(q);
+  if (couple) m.couplers.Apply(q);
   return q;
 }
 
@@ -111,13 +114,14 @@ inline std::vector<double> CalcQDot(const PathModel& m, const std::vector<double
 // a coordinate that barely moves its coupled partners), and the bound scaled back.
 template <typename F>
 Difference DifferentiateAlong(const PathModel& m, const std::vector<double>& q,
-                              const std::vector<double>& direction, const F& f) {
+                              const std::vector<double>& direction, const F& f,
+                              bool couple = true) {
   std::vector<double> qdot = CalcQDot(m, q, direction);
   double scale = 0.0;
   for (double x : qdot) scale = std::max(scale, std::abs(x));
   if (scale == 0.0) return {0.0, 0.0};
   for (double& x : qdot) x /= scale;
-  const Difference d = Differentiate([&](double h) { return f(Move(m, q, qdot, h)); });
+  const Difference d = Differentiate([&](double h) { return f(Move(m, q, qdot, h, couple)); });
   return {scale * d.value, scale * (d.error + kRounding)};
 }
 
@@ -199,6 +203,45 @@ inline double CheckMomentArmsAndSpeeds(const PathModel& m, const std::string& na
             << "wrapped afresh| on wrapped paths " << worst_rewrapped << " m; " << checked_stale
             << " path states with stale tangent points, worst " << worst_stale << " m\n";
   return worst_rewrapped;
+}
+
+// The generalized force of a tension T is -T dL/du (power balance), checked against central
+// differences of L along each speed alone (no coupling), the tangent points of wrapped
+// paths carried by their bodies. Returns the number of wrapped path states checked.
+inline int CheckGeneralizedForces(const PathModel& m,
+                                  const std::vector<std::vector<double>>& poses) {
+  const double tension = 250.0;
+  int wrapped = 0;
+  for (const std::vector<double>& q : poses) {
+    if (NearAConditionalLimit(m, q)) continue;
+    std::vector<Transform> X_GB(static_cast<size_t>(m.tree.num_bodies()));
+    kinematics::CalcBodyPoses(m.tree, q, X_GB);
+    SpeedColumns columns;
+    CalcSpeedColumns(m.tree, q, X_GB, columns);
+    for (size_t p = 0; p < m.paths.paths().size(); ++p) {
+      const int path = static_cast<int>(p);
+      PathState state;
+      m.paths.paths()[p].CalcState(q, X_GB, state);
+      wrapped += PathModel::IsWrapped(state) ? 1 : 0;
+      PathLoads loads;
+      CalcPathLoads(state, X_GB, tension, loads);
+      std::vector<double> Q(q.size(), 0.0);
+      AddGeneralizedForces(loads, X_GB, columns, Q);
+      for (size_t k = 0; k < q.size(); ++k) {
+        std::vector<double> e_k(q.size(), 0.0);
+        e_k[k] = 1.0;
+        const Difference dL = DifferentiateAlong(
+            m, q, e_k,
+            [&](const std::vector<double>& moved) {
+              return m.CalcLengthThrough(path, moved, state);
+            },
+            false);
+        EXPECT_NEAR(Q[k], -tension * dL.value, tension * dL.error)
+            << m.paths.paths()[p].name() << " on " << m.spec.coordinates[k].name;
+      }
+    }
+  }
+  return wrapped;
 }
 
 }  // namespace sinew::paths::testing

@@ -117,40 +117,9 @@ TEST(PathDerivativesTest, OverAShortestPathWrapMomentArmsAreMinusDerivativesOfLe
   CheckMomentArmsAndSpeeds(m, "arm26 over a sphere", poses, true);
 }
 
-// The generalized force of a tension T is -T dL/du (power balance), checked against central
-// differences of L about each coordinate alone (no coupling), the tangent points of wrapped
-// paths carried by their bodies. Returns the number of wrapped path states checked.
 int CheckGeneralizedForces(const std::string& file, int num_poses) {
   const PathModel m(file);
-  const double tension = 250.0;
-  int wrapped = 0;
-  for (const std::vector<double>& q : MakePoses(m, num_poses)) {
-    if (NearAConditionalLimit(m, q)) continue;
-    std::vector<Transform> X_GB(static_cast<size_t>(m.tree.num_bodies()));
-    kinematics::CalcBodyPoses(m.tree, q, X_GB);
-    SpeedColumns columns;
-    CalcSpeedColumns(m.tree, q, X_GB, columns);
-    for (size_t p = 0; p < m.paths.paths().size(); ++p) {
-      const int path = static_cast<int>(p);
-      PathState state;
-      m.paths.paths()[p].CalcState(q, X_GB, state);
-      wrapped += PathModel::IsWrapped(state) ? 1 : 0;
-      PathLoads loads;
-      CalcPathLoads(state, X_GB, tension, loads);
-      std::vector<double> Q(q.size(), 0.0);
-      AddGeneralizedForces(loads, X_GB, columns, Q);
-      for (size_t k = 0; k < q.size(); ++k) {
-        const Difference dL = Differentiate([&](double h) {
-          std::vector<double> moved = q;
-          moved[k] += h;
-          return m.CalcLengthThrough(path, moved, state);
-        });
-        EXPECT_NEAR(Q[k], -tension * dL.value, tension * (dL.error + kRounding))
-            << m.paths.paths()[p].name() << " on " << m.spec.coordinates[k].name;
-      }
-    }
-  }
-  return wrapped;
+  return testing::CheckGeneralizedForces(m, MakePoses(m, num_poses));
 }
 
 // test_wrapAllVis's knee-extensor path over its torus (activated; the only active wrap object)
