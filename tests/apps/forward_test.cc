@@ -379,12 +379,10 @@ std::map<std::string, ColumnError> CompareStates(const Columns& ours, const Colu
 
 // OpenSim's testForward: subject01's run reproduces std_subject01_walk1_states.sto within RMS
 // 0.035 rad on the coordinates and 1e-3 on activations and fiber lengths. OpenSim's test reads
-// the model's Thelen2003Muscles as Thelen2003Muscle_Deprecated, and so does this one.
-// DISABLED: it does not match yet. Measured (rk45 at the setup's 1e-5): coordinates RMS up to
-// 0.31 rad (mtp_angle_l; lumbar_extension 0.22, pelvis_tilt 0.20), and pelvis_tilt's speed
-// jumps from 0.06 to 1.9 rad/s in the first 10 ms, so something drives the body harder than
-// OpenSim's run from the first step; the cause is not found yet (docs/forward.md).
-TEST_F(ForwardTest, DISABLED_Subject01ReproducesOpenSim) {
+// the model's Thelen2003Muscles as Thelen2003Muscle_Deprecated, and so does this one. (It
+// matches since the CMC actuators of the bare ForceSet file act as OpenSim reads them: with
+// their directions negated, docs/forward.md.)
+TEST_F(ForwardTest, Subject01ReproducesOpenSim) {
   const testing::CliRun run =
       Forward(kForward + "subject01_Setup_Forward.xml", "s",
               "--rename-force-class Thelen2003Muscle=Thelen2003Muscle_Deprecated");

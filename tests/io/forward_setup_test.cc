@@ -179,6 +179,10 @@ TEST(ForceSetFilesTest, ActuatorsAreAppendedOrReplaceTheForceSet) {
   EXPECT_EQ(fx.path, "/forceset/FX");
   EXPECT_EQ(fx.where.file, actuators);
   EXPECT_EQ(fx.where.line, 49);  // <PointActuator name="FX"> in the file
+  // Each force keeps its document's format version: the model's, and 10500 for the bare
+  // <ForceSet> file (no OpenSimDocument), as OpenSim reads it.
+  EXPECT_EQ(appended.forces.front().version, 20302);
+  EXPECT_EQ(fx.version, 10500);
   EXPECT_EQ(appended.forces.back().name, "mtp_angle_l_reserve");
   const model::ModelSpec replaced = ReadOsim(model, ForceSetFiles{{actuators}, true});
   ASSERT_EQ(replaced.forces.size(), 12u);

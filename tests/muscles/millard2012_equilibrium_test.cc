@@ -174,10 +174,10 @@ TEST(Millard2012EquilibriumTest, BadInputNamesTheMuscle) {
 }
 
 // A model file's spec (4.x format) as far as the muscle readers look at it.
-model::ModelSpec ModelFile(int version = 40000) {
+model::ModelSpec ModelFile() {
   model::ModelSpec spec;
   spec.file = "model.osim";
-  spec.version = version;
+  spec.version = 40000;
   return spec;
 }
 
@@ -187,6 +187,7 @@ model::ForceSpec MuscleElement() {
   force.name = "vas";
   force.path = "/forceset/vas";
   force.type = "Millard2012EquilibriumMuscle";
+  force.version = 40000;
   force.element.tag = force.type;
   force.element.line = 40;
   auto add = [](model::Element& parent, const std::string& tag, const std::string& text,
@@ -225,10 +226,12 @@ TEST(Millard2012SpecTest, ReadsPropertiesWithOpenSimsDefaults) {
 TEST(Millard2012SpecTest, OldFilesMinControlOfZeroIsDropped) {
   model::ForceSpec force = MuscleElement();
   force.element.children.push_back({"min_control", "", "0", 48, {}});
-  EXPECT_FALSE(ReadMillard2012Parameters(ModelFile(30000), force).min_control.has_value());
-  EXPECT_NO_THROW(ReadMillard2012Muscle(ModelFile(30000), force));
-  EXPECT_EQ(ReadMillard2012Parameters(ModelFile(40000), force).min_control, 0.0);
-  EXPECT_THROW(ReadMillard2012Muscle(ModelFile(40000), force), Error);
+  force.version = 30000;
+  EXPECT_FALSE(ReadMillard2012Parameters(ModelFile(), force).min_control.has_value());
+  EXPECT_NO_THROW(ReadMillard2012Muscle(ModelFile(), force));
+  force.version = 40000;
+  EXPECT_EQ(ReadMillard2012Parameters(ModelFile(), force).min_control, 0.0);
+  EXPECT_THROW(ReadMillard2012Muscle(ModelFile(), force), Error);
 }
 
 TEST(Millard2012SpecTest, BadPropertiesNameFileLineAndMuscle) {

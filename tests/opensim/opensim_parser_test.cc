@@ -5,6 +5,7 @@
 #include <sinew/engine/integrator.h>
 #include <sinew/functions/excitations.h>
 #include <sinew/functions/linear_function.h>
+#include <sinew/io/osim_reader.h>
 #include <sinew/opensim/parser.h>
 
 #include <cmath>
@@ -59,6 +60,41 @@ TEST(OpenSimParserTest, TorqueActuatorWithConstantExcitationGivesParabola) {
     const double t = times[i];
     EXPECT_NEAR(q[i], kQ0 - 0.5 * 9.8 / kPinInertia * t * t, kAngleTolerance) << "t = " << t;
   }
+}
+
+// A ForceSet file is read with its own format version: a bare <ForceSet> is version 10500, as
+// OpenSim assumes, and OpenSim's TorqueActuator (like its PointActuator) negates the axis read
+// from any document older than 1.9.5. So one TorqueActuator on rod1 about +z (optimal force
+// 9.8 N m, excitation 1, "grav" left out) turns rod1 by q = q0 + 4.9 t^2 / I from an
+// OpenSimDocument of version 40000, and by q0 - 4.9 t^2 / I from a bare file. (OpenSim's
+// gait2354_CMC_Actuators.xml is such a bare file: its residuals act opposite to what it says.)
+TEST(OpenSimParserTest, ActuatorsOfABareForceSetFileActOppositeToTheirWrittenAxis) {
+  const std::filesystem::path dir =
+      std::filesystem::path(::testing::TempDir()) / "sinew_force_set_version";
+  std::filesystem::create_directories(dir);
+  const std::string set =
+      "<ForceSet name=\"extra\"><objects><TorqueActuator name=\"twist\"><bodyA>rod1</bodyA>"
+      "<bodyB>ground</bodyB><axis>0 0 1</axis><optimal_force>9.8</optimal_force>"
+      "</TorqueActuator></objects></ForceSet>";
+  const std::string bare = (dir / "bare.xml").string();
+  const std::string wrapped = (dir / "wrapped.xml").string();
+  std::ofstream(bare) << set;
+  std::ofstream(wrapped) << "<OpenSimDocument Version=\"40000\">" << set << "</OpenSimDocument>";
+  for (const auto& [file, sign] : {std::pair{wrapped, 1.0}, std::pair{bare, -1.0}}) {
+    const model::ModelSpec spec =
+        io::ReadOsim(kChronoDir + "torque-actuator.osim", io::ForceSetFiles{{file}, false});
+    EXPECT_EQ(spec.forces.back().version, sign > 0 ? 40000 : 10500);
+    opensim::OpenSimParser parser;
+    parser.DisableForce("grav");
+    engine::System system(spec.gravity);
+    parser.ParseSpec(system, spec);
+    system.Finalize();
+    parser.SetExcitationFunction("twist", std::make_shared<functions::LinearFunction>(0.0, 1.0));
+    EXPECT_NEAR(SimulateQ1(system, parser, {1.0})[0], kQ0 + sign * 4.9 / kPinInertia,
+                kAngleTolerance)
+        << file;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(OpenSimParserTest, TorqueActuatorWithRampExcitationGivesCubic) {

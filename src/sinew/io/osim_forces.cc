@@ -172,10 +172,10 @@ pugi::xml_node FindPathOwner(const pugi::xml_node& force) {
 }  // namespace
 
 void ReadForces(ReadContext& ctx, const pugi::xml_node& model) {
-  ReadForceSet(ctx, model.child("ForceSet"));
+  ReadForceSet(ctx, model.child("ForceSet"), ctx.spec().version);
 }
 
-void ReadForceSet(ReadContext& ctx, const pugi::xml_node& force_set) {
+void ReadForceSet(ReadContext& ctx, const pugi::xml_node& force_set, int version) {
   const XmlDocument& doc = ctx.doc();
   for (pugi::xml_node node : ObjectsOf(force_set)) {
     model::ForceSpec force;
@@ -207,6 +207,7 @@ void ReadForceSet(ReadContext& ctx, const pugi::xml_node& force_set) {
     ReadForceAttachments(ctx, node, force);
     force.element = ToElement(doc, node);
     force.where = doc.Where(node);
+    force.version = version;
     ctx.spec().forces.push_back(std::move(force));
   }
 }

@@ -54,14 +54,21 @@ pugi::xml_node FindForceSet(const internal::XmlDocument& doc) {
   return set;
 }
 
-// Appends (or, with `replace`, substitutes) the forces of the ForceSet files.
+// OpenSim reads a document without an OpenSimDocument root as format 10500 (before 1.6).
+constexpr int kUnwrappedDocumentVersion = 10500;
+
+// Appends (or, with `replace`, substitutes) the forces of the ForceSet files, each with its own
+// file's format version (a bare <ForceSet> is 10500, as in OpenSim).
 void ReadForceSetFiles(internal::ReadContext& ctx, const ForceSetFiles& force_sets) {
   if (force_sets.replace) ctx.spec().forces.clear();
   const internal::XmlDocument& model_doc = ctx.doc();
   for (const std::string& file : force_sets.files) {
     const internal::XmlDocument doc = internal::XmlDocument::Load(file);
     ctx.SwitchDocument(doc);
-    internal::ReadForceSet(ctx, FindForceSet(doc));
+    const int version = std::string_view(doc.root().name()) == "OpenSimDocument"
+                            ? ReadVersion(doc, doc.root(), ctx.spec())
+                            : kUnwrappedDocumentVersion;
+    internal::ReadForceSet(ctx, FindForceSet(doc), version);
     ctx.SwitchDocument(model_doc);
   }
 }

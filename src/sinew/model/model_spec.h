@@ -192,6 +192,10 @@ struct ForceSpec {
   std::map<std::string, std::vector<functions::FunctionPtr>, std::less<>> functions;
   Element element;
   SourceLocation where;
+  /// Format version of the document the force was read from: the model's, or its ForceSet
+  /// file's (10500 for a ForceSet file without an OpenSimDocument, as OpenSim assumes; its
+  /// version-dependent upgrades, such as the actuators' flipped directions, follow it).
+  int version = 0;
 };
 
 /// A frame a constraint attaches to, resolved to the body it is fixed to: WeldConstraint's

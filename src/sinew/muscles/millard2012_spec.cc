@@ -40,7 +40,7 @@ Millard2012Parameters ReadMillard2012Parameters(const model::ModelSpec& spec,
       v.Double("deactivation_time_constant", p.deactivation_time_constant);
   p.minimum_activation = v.Double("minimum_activation", p.minimum_activation);
   if (v.Has("min_control")) p.min_control = v.Bound("min_control", 0.0);
-  if (spec.version < 30513 && p.min_control == 0.0) p.min_control.reset();
+  if (force.version < 30513 && p.min_control == 0.0) p.min_control.reset();
   p.maximum_pennation_angle = v.Double("maximum_pennation_angle", p.maximum_pennation_angle);
 
   ReadCurve(force, file, "ActiveForceLengthCurve",

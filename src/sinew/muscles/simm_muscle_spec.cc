@@ -30,12 +30,12 @@ Model Make(const model::ElementValues& v, Parameters parameters) {
 
 }  // namespace
 
-MuscleParameters ReadMuscleParameters(const model::ModelSpec& spec, const model::ElementValues& v) {
+MuscleParameters ReadMuscleParameters(int version, const model::ElementValues& v) {
   MuscleParameters m;
   m.max_isometric_force = v.Double("max_isometric_force", m.max_isometric_force);
   m.optimal_fiber_length = v.Double("optimal_fiber_length", m.optimal_fiber_length);
   m.tendon_slack_length = v.Double("tendon_slack_length", m.tendon_slack_length);
-  const bool old_name = spec.version <= kPennationRenamedVersion &&
+  const bool old_name = version <= kPennationRenamedVersion &&
                         !v.Has("pennation_angle_at_optimal") && v.Has("pennation_angle");
   m.pennation_angle_at_optimal = v.Double(
       old_name ? "pennation_angle" : "pennation_angle_at_optimal", m.pennation_angle_at_optimal);
@@ -56,7 +56,7 @@ Schutte1993Muscle ReadSchutte1993Muscle(const model::ModelSpec& spec,
     }
   }
   Schutte1993Parameters p;
-  p.muscle = ReadMuscleParameters(spec, v);
+  p.muscle = ReadMuscleParameters(force.version, v);
   p.time_scale = v.Double("time_scale", p.time_scale);
   p.activation1 = v.Double("activation1", p.activation1);
   p.activation2 = v.Double("activation2", p.activation2);
@@ -71,7 +71,7 @@ RigidTendonMuscle ReadRigidTendonMuscle(const model::ModelSpec& spec,
                                         const model::ForceSpec& force) {
   const model::ElementValues v(force.element, spec.file, force.path);
   RigidTendonParameters p;
-  p.muscle = ReadMuscleParameters(spec, v);
+  p.muscle = ReadMuscleParameters(force.version, v);
   p.active_force_length_curve = CurveOf(force, "active_force_length_curve");
   p.passive_force_length_curve = CurveOf(force, "passive_force_length_curve");
   p.force_velocity_curve = CurveOf(force, "force_velocity_curve");

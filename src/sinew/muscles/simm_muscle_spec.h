@@ -11,8 +11,9 @@ namespace sinew::muscles {
 
 /// max_isometric_force, optimal_fiber_length, tendon_slack_length, pennation_angle_at_optimal
 /// (`pennation_angle` in files of format 20301 and older, which OpenSim renames) and
-/// max_contraction_velocity, with OpenSim's defaults.
-MuscleParameters ReadMuscleParameters(const model::ModelSpec& spec, const model::ElementValues& v);
+/// max_contraction_velocity, with OpenSim's defaults; `version` is the format version of the
+/// document the muscle was read from (ForceSpec::version).
+MuscleParameters ReadMuscleParameters(int version, const model::ElementValues& v);
 
 /// The Schutte1993Muscle(_Deprecated) `force` of `spec`, its curves from the file or OpenSim's
 /// defaults. Throws sinew::Error naming the file, the line and the force for values OpenSim

@@ -12,39 +12,48 @@
 namespace sinew::opensim::internal {
 namespace {
 
-// Files older than 1.9.5 name actuator bodies and directions differently; OpenSim renames
-// them on load and flips the direction (see PointActuator / TorqueActuator updateFromXMLNode).
+// Documents older than 1.9.5 named actuator bodies and directions differently. OpenSim's
+// PointActuator and TorqueActuator::updateFromXMLNode rename those properties when present and,
+// for every document of such a version, negate the direction (axis) read; the PointActuator's
+// force_is_global defaults to true there. A ForceSet file without an OpenSimDocument root is
+// such a document (version 10500): gait2354_CMC_Actuators.xml's residual actuators act
+// opposite to their written directions in OpenSim, and so they do here.
 constexpr int kRenamedActuatorVersion = 10905;
+
+bool UpgradesActuator(const model::ForceSpec& force) {
+  return force.version > 0 && force.version < kRenamedActuatorVersion;
+}
 
 std::shared_ptr<forces::Actuator> MakePointActuator(const ForceBuildInput& in) {
   const model::ModelSpec& spec = in.spec;
   const model::ElementValues& v = in.values;
   const std::vector<int>& body_map = in.body_map;
-  const bool renamed = spec.version < kRenamedActuatorVersion && v.Has("body_B");
-  const std::string body = renamed ? v.String("body_B") : v.String("body");
-  Vec3 direction = v.Vector3(renamed ? "direction_A" : "direction", Vec3::Zero());
-  if (renamed) direction = -direction;
+  const bool upgrade = UpgradesActuator(in.force);
+  auto name = [&](const char* old_name, const char* new_name) {
+    return upgrade && v.Has(old_name) ? old_name : new_name;
+  };
+  Vec3 direction = v.Vector3(name("direction_A", "direction"), Vec3::Zero());
+  if (upgrade) direction = -direction;
   return std::make_shared<forces::PointActuator>(
-      in.force.name, v.Double("optimal_force", 1.0), MapBody(spec, v, body, body_map, "body"),
-      v.Vector3(renamed ? "point_B" : "point", Vec3::Zero()), v.Bool("point_is_global", false),
-      direction, renamed ? true : v.Bool("force_is_global", false));
+      in.force.name, v.Double("optimal_force", 1.0),
+      MapBody(spec, v, v.String(name("body_B", "body")), body_map, "body"),
+      v.Vector3(name("point_B", "point"), Vec3::Zero()), v.Bool("point_is_global", false),
+      direction, v.Bool("force_is_global", upgrade));
 }
 
 std::shared_ptr<forces::Actuator> MakeTorqueActuator(const ForceBuildInput& in) {
   const model::ModelSpec& spec = in.spec;
   const model::ElementValues& v = in.values;
   const std::vector<int>& body_map = in.body_map;
-  const bool renamed = spec.version < kRenamedActuatorVersion && v.Has("body_A");
-  std::string body_a, body_b;
-  if (renamed) {
-    body_a = v.String("body_B");
-    body_b = v.String("body_A");
-  } else {
-    body_a = v.FirstString({"bodyA", "socket_bodyA"}).value_or("");
-    body_b = v.FirstString({"bodyB", "socket_bodyB"}).value_or("");
-  }
-  Vec3 axis = v.Vector3(renamed ? "direction_A" : "axis", Vec3(0, 0, 1));
-  if (renamed) axis = -axis;
+  const bool upgrade = UpgradesActuator(in.force);
+  const std::string body_a = upgrade && v.Has("body_B")
+                                 ? v.String("body_B")
+                                 : v.FirstString({"bodyA", "socket_bodyA"}).value_or("");
+  const std::string body_b = upgrade && v.Has("body_A")
+                                 ? v.String("body_A")
+                                 : v.FirstString({"bodyB", "socket_bodyB"}).value_or("");
+  Vec3 axis = v.Vector3(upgrade && v.Has("direction_A") ? "direction_A" : "axis", Vec3(0, 0, 1));
+  if (upgrade) axis = -axis;
   return std::make_shared<forces::TorqueActuator>(
       in.force.name, v.Double("optimal_force", 1.0), MapBody(spec, v, body_a, body_map, "bodyA"),
       MapBody(spec, v, body_b, body_map, "bodyB"), axis, v.Bool("torque_is_global", true));

@@ -100,7 +100,7 @@ std::shared_ptr<engine::ForceElement> BuildBlankevoortLigament(const ForceBuildI
 std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInput& in) {
   const model::ElementValues& v = in.values;
   muscles::Thelen2003Parameters p;
-  p.muscle = muscles::ReadMuscleParameters(in.spec, v);
+  p.muscle = muscles::ReadMuscleParameters(in.force.version, v);
   muscles::Thelen2003CurveParameters& c = p.curves;
   c.FmaxTendonStrain = v.Double("FmaxTendonStrain", c.FmaxTendonStrain);
   c.FmaxMuscleStrain = v.Double("FmaxMuscleStrain", c.FmaxMuscleStrain);
@@ -133,7 +133,7 @@ std::shared_ptr<engine::ForceElement> BuildThelen2003Muscle(const ForceBuildInpu
 std::shared_ptr<engine::ForceElement> BuildThelen2003MuscleDeprecated(const ForceBuildInput& in) {
   const model::ElementValues& v = in.values;
   muscles::Thelen2003DeprecatedParameters p;
-  p.muscle = muscles::ReadMuscleParameters(in.spec, v);
+  p.muscle = muscles::ReadMuscleParameters(in.force.version, v);
   p.activation_time_constant = v.Double("activation_time_constant", p.activation_time_constant);
   p.deactivation_time_constant =
       v.Double("deactivation_time_constant", p.deactivation_time_constant);

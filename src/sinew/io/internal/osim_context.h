@@ -178,8 +178,9 @@ void ReadVisibleObject(ReadContext& ctx, const pugi::xml_node& visible, int body
 void ReadJoints(ReadContext& ctx, const pugi::xml_node& model);
 /// Forces (muscles included) and their geometry paths.
 void ReadForces(ReadContext& ctx, const pugi::xml_node& model);
-/// The forces of one <ForceSet> element (the model's, or a ForceSet file's) appended to the spec.
-void ReadForceSet(ReadContext& ctx, const pugi::xml_node& force_set);
+/// The forces of one <ForceSet> element (the model's, or a ForceSet file's) appended to the spec,
+/// each marked with the format `version` of its document.
+void ReadForceSet(ReadContext& ctx, const pugi::xml_node& force_set, int version);
 /// The frames a force's sockets name and the function-valued properties its builder needs
 /// (ForceSpec::frames, ForceSpec::functions).
 void ReadForceAttachments(ReadContext& ctx, const pugi::xml_node& node, model::ForceSpec& force);
