@@ -81,6 +81,13 @@ class ExportContactsTest : public testing::CliTest {
   ParsedGlb ReadGlb(const std::string& name) const {
     return viz::testing::ParseGlb(viz::ReadFileBytes(Path(name)));
   }
+  // `sinew simulate MODEL OPTIONS --quiet --out DIR/out --export DIR/ball.glb`, checked to succeed.
+  ParsedGlb SimulateAndExport(const std::string& model, const std::string& options) const {
+    const CliRun run = Run("simulate " + model + " " + options + " --quiet --out " + Path("out") +
+                           " --export " + Path("ball.glb"));
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return ReadGlb("ball.glb");
+  }
 };
 
 // The ball (r = 0.1 m, centre 0.3 m above ground) falls 0.3 m onto its floor at y = -0.1 and
@@ -90,12 +97,9 @@ class ExportContactsTest : public testing::CliTest {
 // the Hertz dent).
 TEST_F(ExportContactsTest, BallAtRestHasAnArrowOfItsWeightFromItsContactOnTheFloor) {
   const std::string model = BallWithFloorAt(-0.1);
-  const CliRun run = Run("simulate " + model +
-                         " --collision --integrator implicit-euler --step 1e-4 --duration 1.5 "
-                         "--quiet --out " +
-                         Path("out") + " --export " + Path("ball.glb"));
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const ParsedGlb glb = ReadGlb("ball.glb");
+  const ParsedGlb glb = SimulateAndExport(
+      model, "--collision --integrator implicit-euler --step 1e-4 --duration 1.5");
+  ASSERT_FALSE(HasFailure());
   const nlohmann::json& extras = glb.doc["scenes"][0]["extras"];
   EXPECT_NEAR(extras["floor"]["point"][1].get<double>(), -0.1, 1e-12);
   EXPECT_NEAR(extras["floor"]["normal"][1].get<double>(), 1.0, 1e-12);
@@ -135,12 +139,9 @@ TEST_F(ExportContactsTest, BallAtRestHasAnArrowOfItsWeightFromItsContactOnTheFlo
 
 // --ground-plane gives the floor when collision adds one.
 TEST_F(ExportContactsTest, GroundPlaneOptionIsTheFloor) {
-  const CliRun run = Run("simulate " + kBall +
-                         " --collision --ground-plane -0.05 --duration 0.01 "
-                         "--quiet --out " +
-                         Path("out") + " --export " + Path("ball.glb"));
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const ParsedGlb glb = ReadGlb("ball.glb");
+  const ParsedGlb glb =
+      SimulateAndExport(kBall, "--collision --ground-plane -0.05 --duration 0.01");
+  ASSERT_FALSE(HasFailure());
   const nlohmann::json& floor = glb.doc["scenes"][0]["extras"]["floor"];
   EXPECT_EQ(floor["point"][1], -0.05);
   EXPECT_EQ(floor["source"], "--ground-plane");

@@ -56,4 +56,18 @@ inline std::string DumpDom(const std::string& chromium, const std::string& url,
   return text.str();
 }
 
+/// Pixels of the 3D view (between the title and the control bar) whose channel `c` (0 red,
+/// 1 green, 2 blue) is above `least` and above the other two by more than `margin`.
+inline int PixelsOfColour(const Image& image, int c, int least, int margin) {
+  int count = 0;
+  for (int y = 40; y < image.height - 50; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const uint8_t* p = image.At(x, y);
+      const int a = p[(c + 1) % 3], b = p[(c + 2) % 3];
+      if (p[c] > least && p[c] > a + margin && p[c] > b + margin) ++count;
+    }
+  }
+  return count;
+}
+
 }  // namespace sinew::viz::testing

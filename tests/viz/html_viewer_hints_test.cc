@@ -21,16 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // Pixels in the arrows' green.
-int GreenPixels(const Image& image) {
-  int count = 0;
-  for (int y = 40; y < image.height - 50; ++y) {
-    for (int x = 0; x < image.width; ++x) {
-      const uint8_t* p = image.At(x, y);
-      if (p[1] > 100 && p[1] > p[0] + 50 && p[1] > p[2] + 50) ++count;
-    }
-  }
-  return count;
-}
+int GreenPixels(const Image& image) { return testing::PixelsOfColour(image, 1, 100, 50); }
 
 // The value of attribute `name` of the page's <body>.
 std::string BodyAttribute(const std::string& dom, const std::string& name) {

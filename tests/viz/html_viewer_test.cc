@@ -78,16 +78,7 @@ TEST(HtmlViewerTest, ShowsTheModelAndAnimatesInHeadlessChromium) {
 }
 
 // Pixels of the 3D view in muscle red.
-int RedPixels(const Image& image) {
-  int count = 0;
-  for (int y = 40; y < image.height - 50; ++y) {
-    for (int x = 0; x < image.width; ++x) {
-      const uint8_t* p = image.At(x, y);
-      if (p[0] > 120 && p[0] > p[1] + 60 && p[0] > p[2] + 60) ++count;
-    }
-  }
-  return count;
-}
+int RedPixels(const Image& image) { return testing::PixelsOfColour(image, 0, 120, 60); }
 
 TEST(HtmlViewerTest, ShowsArm26MusclesMovingAsRedLines) {
   const std::string chromium = FindChromium();
