@@ -53,8 +53,7 @@ TEST(CorpusExportTest, EveryModelExportsOrFailsWithASinewError) {
     ++exported;
   }
   // 136 models; all but the broken repro the reader rejects export, with 2,449 .vtp parts found
-  // and read (2,447 attached geometry, 2 ContactMesh of visualize_contacts.osim). A model that
-  // stops exporting, or a mesh no longer found, fails this test.
+  // and read (2,447 attached geometry, 2 ContactMesh of visualize_contacts.osim). A model that stops exporting, or a mesh no longer found, fails this test.
   EXPECT_EQ(models, 136);
   EXPECT_EQ(exported, 135);
   EXPECT_EQ(meshes, 2449);

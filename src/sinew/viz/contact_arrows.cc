@@ -75,6 +75,7 @@ std::vector<Group> FindGroups(const model::ModelSpec& spec, const io::Storage& t
     const auto it = known.find(g.name);
     g.body = it != known.end() ? it->second
                                : BodyOfGroup(spec, g.name.substr(0, dot), g.name.substr(dot + 1));
+    if (g.body < 0 || g.body >= static_cast<int>(spec.bodies.size())) g.body = model::kNone;
     if (g.body == model::kNone) {
       if (notes) {
         Diagnostic d;
