@@ -1,4 +1,5 @@
-// `sinew export MODEL.osim [--motion FILE | --states FILE] --vis primitives|mesh [--no-paths]
+// `sinew export MODEL.osim [--motion FILE | --states FILE] [--contacts FILE]
+//  --vis primitives|mesh [--no-paths]
 //  [--verbose] --out FILE.glb|FILE.html`: the model (and its motion) for a glTF viewer or a
 //  browser.
 #include <sinew/io/osim_reader.h>
@@ -24,6 +25,7 @@ struct ExportArgs {
   std::string model;
   std::string motion;
   std::string states;
+  std::string contacts;
   std::string vis = "mesh";
   std::string out;
   std::vector<std::string> geometry_dirs;
@@ -43,8 +45,13 @@ void RunExport(const ExportArgs& args) {
   options.max_fps = args.fps;
   options.paths = !args.no_paths;
   viz::BodyMotion motion;
-  io::Storage table;
+  io::Storage table, contacts;
   const std::string& table_file = args.motion.empty() ? args.states : args.motion;
+  if (!args.contacts.empty()) {
+    if (table_file.empty()) throw Error("--contacts needs --motion or --states");
+    contacts = io::ReadStorage(args.contacts);
+    options.contacts = &contacts;
+  }
   if (table_file.empty()) {
     motion = viz::DefaultPoseMotion(spec);
   } else {
@@ -70,6 +77,8 @@ void AddExportCommand(CLI::App& app) {
   auto* motion = cmd->add_option("--motion", args->motion, "Coordinates over time (.mot/.sto)");
   auto* states = cmd->add_option("--states", args->states, "States over time (.sto)");
   motion->excludes(states);
+  cmd->add_option("--contacts", args->contacts,
+                  "Contact forces over time (a contacts.sto of `sinew simulate`), drawn as arrows");
   cmd->add_option("--vis", args->vis, "Visualization: primitives, mesh or none")
       ->check(CLI::IsMember({"primitives", "mesh", "none"}));
   cmd->add_option("--geometry-dir", args->geometry_dirs,

@@ -7,6 +7,7 @@
 #include <sinew/viz/motion_poses.h>
 #include <sinew/viz/path_lines.h>
 #include <sinew/viz/rasterizer.h>
+#include <sinew/viz/view_hints.h>
 
 #include <algorithm>
 #include <cmath>
@@ -84,6 +85,7 @@ void RunRender(const RenderArgs& args) {
   options.width = args.width;
   options.height = args.height;
   options.floor = !args.no_floor;
+  options.floor_plane = viz::ViewFloor(spec, scene, frame);
   options.view_direction = viz::ParseViewDirection(args.view);
   viz::WriteFileBytes(args.out,
                       viz::EncodePng(viz::RenderFramed(scene, X_GB, options, lines, line_colors)));

@@ -13,9 +13,11 @@
 // DIR/constraints.sto (the forces of the model's constraints, OpenSim's record labels), all
 // streamed as rows are computed. SIGINT or SIGTERM stops the run cleanly: the rows so far are kept,
 // in files whose header says status=partial, and the exit code is 128 + the signal.
+#include <sinew/contact/contact_force.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/pose.h>
 #include <sinew/io/osim_reader.h>
+#include <sinew/io/storage.h>
 #include <sinew/opensim/collision_parts.h>
 #include <sinew/opensim/run_integrator.h>
 #include <sinew/viz/export_animation.h>
@@ -38,6 +40,19 @@
 
 namespace sinew::cli {
 namespace {
+
+// The body of every column group "<force>.<group>" of the system's contact forces.
+viz::GroupBodies ContactGroupBodies(const engine::System& system) {
+  viz::GroupBodies bodies;
+  for (const auto& element : system.force_elements()) {
+    const auto* force = dynamic_cast<const contact::ContactForce*>(element.get());
+    if (!force) continue;
+    for (const contact::ContactForce::RecordGroup& g : force->record_groups()) {
+      bodies[force->name() + "." + g.label] = g.body;
+    }
+  }
+  return bodies;
+}
 
 struct SimulateOptions {
   std::string model;
@@ -129,6 +144,16 @@ void RunSimulate(const SimulateOptions& options) {
     export_options.visual.geometry_dirs = options.geometry_dirs;
     // With --collision the shapes that collide, in the contact colour.
     export_options.collision_parts = opensim::CollisionPartsOf(built.parser.GetCollisionModel());
+    if (options.contact.collision && options.contact.ground_plane) {
+      export_options.floor = viz::HorizontalFloor(*options.contact.ground_plane, "--ground-plane");
+    }
+    // The contact forces as arrows, from the contacts.sto just written.
+    io::Storage contacts;
+    if (tables.writes_contacts()) {
+      contacts = io::ReadStorage(files.contacts);
+      export_options.contacts = &contacts;
+      export_options.contact_groups = ContactGroupBodies(system);
+    }
     PrintSceneWarnings(viz::ExportAnimation(spec, motion, options.export_file, export_options),
                        options.verbose);
   }
@@ -181,7 +206,8 @@ void AddSimulateCommand(CLI::App& app) {
                 "Fail (exit code 2) if anything in the model or the initial states is "
                 "approximated, not simulated or not used");
   cmd->add_option("--export", options->export_file,
-                  "Also write the motion as a .glb or self-contained .html viewer");
+                  "Also write the motion as a .glb or self-contained .html viewer (with the "
+                  "contact forces as arrows when contacts.sto is written)");
   cmd->add_option("--vis", options->vis, "Visualization for --export: mesh (default), primitives")
       ->check(CLI::IsMember({"primitives", "mesh"}));
   cmd->add_option("--geometry-dir", options->geometry_dirs,

@@ -13,6 +13,7 @@
 #include <sinew/viz/image.h>
 #include <sinew/viz/motion_poses.h>
 #include <sinew/viz/rasterizer.h>
+#include <sinew/viz/view_hints.h>
 
 #include <filesystem>
 #include <optional>
@@ -107,15 +108,15 @@ void Render(const ModelPtr& model, const std::filesystem::path& path, const py::
   options.view_direction = viz::ParseViewDirection(view);
   viz::CheckRenderSize(width, height);
   const model::ModelSpec& spec = model->spec();
-  std::vector<Transform> X_GB;
+  viz::BodyMotion frame;
   if (motion.is_none()) {
     if (time) throw Error("render: a time needs a motion");
-    X_GB = viz::DefaultPoseMotion(spec).X_GB[0];
+    frame = viz::DefaultPoseMotion(spec);
   } else {
     const io::Storage table = TableOf(motion);
     Diagnostics notes;
-    X_GB = viz::PosesAtTime(spec, table, time.value_or(table.time.empty() ? 0.0 : table.time[0]),
-                            &notes);
+    frame = viz::MotionAtTime(spec, table, time.value_or(table.time.empty() ? 0.0 : table.time[0]),
+                              &notes);
     WarnNotes(notes, "motion");
   }
   viz::VisualOptions visual;
@@ -123,7 +124,9 @@ void Render(const ModelPtr& model, const std::filesystem::path& path, const py::
   visual.geometry_dirs = geometry_dirs;
   const viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
   WarnNotes(scene.warnings, "render");
-  viz::WriteFileBytes(path.string(), viz::EncodePng(viz::RenderFramed(scene, X_GB, options)));
+  options.floor_plane = viz::ViewFloor(spec, scene, frame);  // as `sinew render`
+  viz::WriteFileBytes(path.string(),
+                      viz::EncodePng(viz::RenderFramed(scene, frame.X_GB[0], options)));
 }
 
 }  // namespace

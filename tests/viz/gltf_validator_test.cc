@@ -7,6 +7,7 @@
 #include <sinew/viz/gltf_writer.h>
 #include <sinew/viz/motion_poses.h>
 #include <sinew/viz/path_lines.h>
+#include <sinew/viz/view_hints.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -61,6 +62,16 @@ TEST(GltfValidatorTest, KhronosValidatorFindsNoIssues) {
   activation.time = {0.0, 1.0};
   activation.values = {0.1, 0.9};
   ShadeByActivation(activation, flexing.times, shaded_lines);
+  // The viewer's hints with a contact arrow that appears, turns and vanishes (scale 0).
+  ViewHints hints = MakeViewHints(two_link, BuildVisualScene(two_link, mesh),
+                                  testing::SwingMotion(3, 0, 0.1, 0.3), ModelFloor(two_link));
+  hints.arrows.names = {"contact.link"};
+  hints.arrows.bodies = {1};
+  hints.arrows.start.assign(3, {Vec3(0.1, 0, 0)});
+  hints.arrows.force = {{Vec3::Zero()}, {Vec3(0, 10, 0)}, {Vec3(3, -4, 0)}};
+  hints.arrows.body_weight = 10;
+  hints.arrows.unit_length = 0.5;
+  hints.arrows.metres_per_newton = 0.05;
   const BodyMotion still = DefaultPoseMotion(arm26);
   const PathLines still_lines = CalcPathLines(arm26, still, nullptr);
   const std::vector<std::pair<std::string, std::vector<uint8_t>>> files = {
@@ -70,6 +81,8 @@ TEST(GltfValidatorTest, KhronosValidatorFindsNoIssues) {
       {"animated.glb",
        WriteGlb(BuildVisualScene(two_link, mesh), testing::SwingMotion(5, 0, 0.1, 0.3), "a")},
       {"static.glb", WriteGlb(BuildVisualScene(two_link, mesh), {}, "s")},
+      {"arrows.glb", WriteGlb(BuildVisualScene(two_link, mesh),
+                              testing::SwingMotion(3, 0, 0.1, 0.3), "c", nullptr, &hints)},
       {"empty.glb", WriteGlb(BuildVisualScene(two_link, none), {}, "e")},
       {"rajagopal.glb", WriteGlb(BuildVisualScene(rajagopal, mesh), running, "r")}};
   std::string args;

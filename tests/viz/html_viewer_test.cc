@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <string>
 
+#include "viz/chromium_util.h"
 #include "viz/two_link_spec.h"
 
 namespace sinew::viz {
@@ -20,31 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The first Chromium found in PATH, or "".
-std::string FindChromium() {
-  for (const char* name : {"chromium", "chromium-browser", "google-chrome", "chrome"}) {
-    if (std::system(("command -v " + std::string(name) + " >/dev/null 2>&1").c_str()) == 0) {
-      return name;
-    }
-  }
-  return "";
-}
-
-// Screenshot of `url` after `budget_ms` of virtual time (timers and animation frames run
-// that long without waiting). SwiftShader gives WebGL without a GPU or display.
-Image Screenshot(const std::string& chromium, const std::string& url, const fs::path& png,
-                 int budget_ms) {
-  const fs::path profile = png.parent_path() / ("profile_" + png.stem().string());
-  const std::string command = chromium +
-                              " --headless=new --no-sandbox --disable-gpu --use-angle=swiftshader"
-                              " --enable-unsafe-swiftshader --hide-scrollbars --no-first-run"
-                              " --user-data-dir=" +
-                              profile.string() + " --window-size=480,360 --virtual-time-budget=" +
-                              std::to_string(budget_ms) + " --screenshot=" + png.string() + " '" +
-                              url + "' >" + (png.string() + ".log") + " 2>&1";
-  EXPECT_EQ(std::system(command.c_str()), 0) << command;
-  return DecodePng(ReadFileBytes(png.string()), png.string());
-}
+using testing::FindChromium;
+using testing::Screenshot;
 
 // Pixels of the 3D view (between the title and the control bar) unlike the background.
 double ForegroundFraction(const Image& image) {
@@ -100,16 +78,7 @@ TEST(HtmlViewerTest, ShowsTheModelAndAnimatesInHeadlessChromium) {
 }
 
 // Pixels of the 3D view in muscle red.
-int RedPixels(const Image& image) {
-  int count = 0;
-  for (int y = 40; y < image.height - 50; ++y) {
-    for (int x = 0; x < image.width; ++x) {
-      const uint8_t* p = image.At(x, y);
-      if (p[0] > 120 && p[0] > p[1] + 60 && p[0] > p[2] + 60) ++count;
-    }
-  }
-  return count;
-}
+int RedPixels(const Image& image) { return testing::PixelsOfColour(image, 0, 120, 60); }
 
 TEST(HtmlViewerTest, ShowsArm26MusclesMovingAsRedLines) {
   const std::string chromium = FindChromium();

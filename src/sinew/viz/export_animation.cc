@@ -2,6 +2,7 @@
 #include <sinew/viz/gltf_writer.h>
 #include <sinew/viz/html_viewer.h>
 #include <sinew/viz/path_lines.h>
+#include <sinew/viz/view_hints.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -62,7 +63,13 @@ VisualScene ExportAnimation(const model::ModelSpec& spec, const BodyMotion& moti
   if (options.activations && !lines.names.empty()) {
     ShadeByActivation(*options.activations, kept.times, lines);
   }
-  std::vector<uint8_t> glb = WriteGlb(scene, kept, title, &lines);
+  const FloorPlane floor = options.floor.value_or(ViewFloor(spec, scene, kept));
+  ViewHints hints = MakeViewHints(spec, scene, kept, floor);
+  if (options.contacts) {
+    hints.arrows = ContactArrowsFromTable(spec, *options.contacts, kept, scene, floor,
+                                          options.contact_groups, &scene.warnings);
+  }
+  std::vector<uint8_t> glb = WriteGlb(scene, kept, title, &lines, &hints);
   if (html) {
     const std::string page = MakeViewerHtml(glb, title);
     WriteFileBytes(path, std::vector<uint8_t>(page.begin(), page.end()));

@@ -7,8 +7,11 @@
 #include <sinew/model/model_spec.h>
 #include <sinew/viz/body_motion.h>
 #include <sinew/viz/collision_parts.h>
+#include <sinew/viz/contact_arrows.h>
+#include <sinew/viz/floor_plane.h>
 #include <sinew/viz/visual_scene.h>
 
+#include <optional>
 #include <string>
 
 namespace sinew::viz {
@@ -27,6 +30,12 @@ struct ExportOptions {
   const io::Storage* activations = nullptr;
   /// Collision shapes drawn in the contact colour (opensim::CollisionPartsOf).
   std::vector<CollisionPart> collision_parts;
+  /// The floor the viewer's grid lies on; unset: ViewFloor (the model's floor).
+  std::optional<FloorPlane> floor;
+  /// A contacts table (contacts.sto) whose forces are drawn as arrows (ContactArrowsFromTable),
+  /// with the bodies of its column groups the caller knows; null: no arrows.
+  const io::Storage* contacts = nullptr;
+  GroupBodies contact_groups;
 };
 
 /// The two export formats, told by the file name's extension.
@@ -42,7 +51,9 @@ BodyMotion ThinMotion(const BodyMotion& motion, double max_fps);
 /// Writes `spec` moving along `motion` (body poses X_GB per frame; one frame for a still pose)
 /// to `path`: a binary glTF 2.0 file when it ends in .glb, a self-contained HTML viewer when it
 /// ends in .html/.htm, with the model's paths as red lines (options.paths, motion.q needed;
-/// paths that cannot be drawn are named in the scene's warnings). Returns the scene it drew: its
+/// paths that cannot be drawn are named in the scene's warnings), and the viewer's hints
+/// (MakeViewHints on the floor, with the contact arrows of options.contacts; column groups
+/// that name no body are in the scene's warnings). Returns the scene it drew: its
 /// `warnings` and `missing_meshes` say what could not be drawn as asked. Throws sinew::Error for
 /// another extension, a motion whose frames do not cover every body, or an unwritable file.
 VisualScene ExportAnimation(const model::ModelSpec& spec, const BodyMotion& motion,

@@ -2,6 +2,8 @@
 #include <sinew/common/error.h>
 #include <sinew/viz/gltf_writer.h>
 #include <sinew/viz/internal/glb_builder.h>
+#include <sinew/viz/internal/gltf_contact_arrows.h>
+#include <sinew/viz/internal/gltf_mesh.h>
 #include <sinew/viz/internal/gltf_path_lines.h>
 
 #include <cstring>
@@ -14,14 +16,6 @@ namespace {
 
 using internal::BinaryBuilder;
 using internal::json;
-using internal::kArrayBuffer;
-
-std::vector<float> Flatten(const std::vector<io::Vec3f>& v) {
-  std::vector<float> out;
-  out.reserve(3 * v.size());
-  for (const io::Vec3f& p : v) out.insert(out.end(), {p.x(), p.y(), p.z()});
-  return out;
-}
 
 json TranslationOf(const Transform& X) { return {X.p.x(), X.p.y(), X.p.z()}; }
 
@@ -39,7 +33,8 @@ void AppendUint32(std::vector<uint8_t>& out, uint32_t v) {
 }  // namespace
 
 std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion,
-                              const std::string& model_name, const PathLines* lines) {
+                              const std::string& model_name, const PathLines* lines,
+                              const ViewHints* hints) {
   json doc;
   doc["asset"] = {{"version", "2.0"}, {"generator", "Sinew"}};
   doc["scene"] = 0;
@@ -53,23 +48,7 @@ std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion
   auto primitive = [&](const io::TriangleMesh& mesh) -> json {
     auto it = primitive_of.find(&mesh);
     if (it != primitive_of.end()) return it->second;
-    io::TriangleMesh copy;
-    const io::TriangleMesh* m = &mesh;
-    if (mesh.normals.size() != mesh.positions.size()) {
-      copy = mesh;
-      io::ComputeVertexNormals(copy);
-      m = &copy;
-    }
-    std::vector<uint32_t> indices;
-    indices.reserve(3 * m->triangles.size());
-    for (const auto& t : m->triangles) indices.insert(indices.end(), t.begin(), t.end());
-    json p = {{"attributes",
-               {{"POSITION", bin.AddFloats(Flatten(m->positions), "VEC3", 3, kArrayBuffer, true)},
-                {"NORMAL", bin.AddFloats(Flatten(m->normals), "VEC3", 3, kArrayBuffer, false)}}},
-              {"indices", bin.AddIndices(indices)},
-              {"mode", 4}};
-    primitive_of[&mesh] = p;
-    return p;
+    return primitive_of[&mesh] = internal::MeshPrimitive(bin, mesh);
   };
 
   json root_children = json::array();
@@ -114,8 +93,18 @@ std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion
   if (lines && !lines->names.empty() && !lines->vertices.empty()) {
     root_children.push_back(internal::AddPathNodes(doc, bin, *lines, path_frame_nodes));
   }
+  std::vector<internal::ArrowNodes> arrow_nodes;
+  const bool arrows =
+      hints && !hints->arrows.empty() && hints->arrows.start.size() == motion.times.size();
+  if (arrows)
+    root_children.push_back(internal::AddArrowNodes(doc, bin, hints->arrows, arrow_nodes));
   doc["nodes"].push_back({{"name", model_name}, {"children", root_children}});
   doc["scenes"] = json::array({{{"name", model_name}, {"nodes", {doc["nodes"].size() - 1}}}});
+  if (hints) {
+    std::vector<int> arrow_node_list;
+    for (const internal::ArrowNodes& n : arrow_nodes) arrow_node_list.push_back(n.arrow);
+    doc["scenes"][0]["extras"] = internal::ViewHintsExtras(*hints, arrow_node_list);
+  }
 
   // The animation: one time input shared by every channel.
   const size_t n_frames = motion.times.size();
@@ -155,6 +144,8 @@ std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion
                           {"target", {{"node", body_nodes[i]}, {"path", "rotation"}}}});
     }
     internal::AddPathChannels(bin, times, path_frame_nodes, samplers, channels);
+    if (arrows)
+      internal::AddArrowChannels(bin, input, hints->arrows, arrow_nodes, samplers, channels);
     doc["animations"] = json::array({{{"name", "motion"},
                                       {"samplers", samplers},
                                       {"channels", channels},

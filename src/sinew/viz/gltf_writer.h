@@ -3,6 +3,7 @@
 
 #include <sinew/viz/body_motion.h>
 #include <sinew/viz/path_lines.h>
+#include <sinew/viz/view_hints.h>
 #include <sinew/viz/visual_scene.h>
 
 #include <cstdint>
@@ -21,8 +22,13 @@ namespace sinew::viz {
 /// vertex counts), and the
 /// animation shows frame k's mesh (scale 1, STEP) from its time to the next frame's, hiding
 /// it (scale 0) otherwise: the simplest animation of lines whose point count changes.
+/// With `hints`, the scene's extras carry them for the HTML viewer ("floor", "grid",
+/// "follow_body", "contact_arrows"), and each contact arrow (one frame per motion frame) is a
+/// node "contact <force>.<group>" under a node "contact_forces", animated with the motion
+/// (docs/contact.md, "Seeing it").
 std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion,
-                              const std::string& model_name, const PathLines* lines = nullptr);
+                              const std::string& model_name, const PathLines* lines = nullptr,
+                              const ViewHints* hints = nullptr);
 
 /// Writes bytes to a file, atomically (sinew::WriteFileAtomically); throws sinew::Error when the
 /// file cannot be written.

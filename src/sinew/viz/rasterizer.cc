@@ -47,10 +47,12 @@ Vec3 ParseViewDirection(const std::string& view) {
   throw Error("unknown view '" + view + "' (front, back, right, left, top or iso)");
 }
 
-std::pair<Vec3, Vec3> SceneBounds(const VisualScene& scene, const std::vector<Transform>& X_GB) {
+std::pair<Vec3, Vec3> SceneBounds(const VisualScene& scene, const std::vector<Transform>& X_GB,
+                                  bool with_ground) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const VisualBody& body : scene.bodies) {
     if (body.body >= static_cast<int>(X_GB.size())) continue;
+    if (!with_ground && body.body == model::kGroundIndex) continue;
     for (const VisualPart& part : body.parts) {
       if (!part.mesh) continue;
       for (const Vec3& p : Pose(part, X_GB[body.body]).positions) {
@@ -265,26 +267,29 @@ Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
     }
   }
   if (options.floor && !parts.empty()) {
-    // A floor just below the model and the model's shadow on it, cast along the key light.
+    // A square of the floor plane around the model, and the model's shadow on it, cast along
+    // the key light.
     const auto [lo, hi] = SceneBounds(scene, X_GB);
-    const double y0 = lo.y();
-    const double reach = 1.0 * std::max({hi.x() - lo.x(), hi.z() - lo.z(), hi.y() - lo.y()});
-    const Vec3 c(0.5 * (lo.x() + hi.x()), y0, 0.5 * (lo.z() + hi.z()));
-    const Vec3 up = Vec3::UnitY();
+    const FloorPlane plane = options.floor_plane.value_or(HorizontalFloor(lo.y(), "lowest point"));
+    const Vec3& up = plane.normal;
+    const double reach = 1.0 * (hi - lo).maxCoeff();
+    const Vec3 middle = 0.5 * (lo + hi);
+    const Vec3 c = middle - up * plane.HeightOf(middle);
+    const Vec3 u = up.unitOrthogonal() * reach, w = up.cross(u);
     const Vec3 floor_color = options.background * 0.9;
-    const Vec3 corners[4] = {c + Vec3(-reach, 0, -reach), c + Vec3(reach, 0, -reach),
-                             c + Vec3(reach, 0, reach), c + Vec3(-reach, 0, reach)};
+    const Vec3 corners[4] = {c + u - w, c - u - w, c - u + w, c + u + w};
     const Vec3 normals[3] = {up, up, up};
     canvas.DrawTriangle({corners[0], corners[1], corners[2]}, normals, floor_color, 1, false, key);
     canvas.DrawTriangle({corners[0], corners[2], corners[3]}, normals, floor_color, 1, false, key);
     const double bias = 1e-3 * reach;
-    for (size_t i = 0; i < parts.size(); ++i) {
+    const double key_up = key.dot(up);
+    for (size_t i = 0; key_up > 0.05 && i < parts.size(); ++i) {
       const PosedPart& posed = posed_parts[i];
       for (const auto& t : parts[i]->mesh->triangles) {
         Vec3 q[3];
         for (int k = 0; k < 3; ++k) {
           const Vec3& p = posed.positions[t[k]];
-          q[k] = p - key * ((p.y() - y0) / key.y());  // along the light onto y = y0
+          q[k] = p - key * (plane.HeightOf(p) / key_up);  // along the light onto the plane
         }
         canvas.DrawTriangle(q, normals, floor_color * 0.7, 1, false, key, bias);
       }

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <sinew/math/transform.h>
+#include <sinew/viz/floor_plane.h>
 #include <sinew/viz/image.h>
 #include <sinew/viz/visual_scene.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,8 +29,10 @@ struct RenderOptions {
   /// OpenSim's x points forward, y up, z to the model's right.
   Vec3 view_direction = Vec3(1.0, 0.35, 0.8);
   Vec3 background = Vec3(0.96, 0.96, 0.96);  ///< RGB in [0, 1].
-  /// A floor under the model (at its lowest point) with the model's shadow from the key light.
+  /// A floor with the model's shadow on it from the key light: on `floor_plane` when given
+  /// (ModelFloor, FloorUnder), else under the model's lowest point.
   bool floor = false;
+  std::optional<FloorPlane> floor_plane;
   Vec3 line_color = Vec3(0.8, 0.1, 0.1);  ///< RGB of the lines (muscle paths).
   double line_width = 2.0;                ///< Line width (pixels).
 };
@@ -37,8 +41,10 @@ struct RenderOptions {
 /// Throws sinew::Error otherwise.
 Vec3 ParseViewDirection(const std::string& view);
 
-/// World-space bounds of the posed scene (min, max); an empty scene gives a unit box.
-std::pair<Vec3, Vec3> SceneBounds(const VisualScene& scene, const std::vector<Transform>& X_GB);
+/// World-space bounds of the posed scene (min, max), ground's parts left out unless
+/// `with_ground`; an empty scene gives a unit box.
+std::pair<Vec3, Vec3> SceneBounds(const VisualScene& scene, const std::vector<Transform>& X_GB,
+                                  bool with_ground = true);
 
 /// A camera looking at the bounds' centre from `direction`, far enough that the bounding
 /// sphere fits the view at the given aspect ratio (width / height).

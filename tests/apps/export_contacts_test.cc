@@ -1,0 +1,178 @@
+// Contact forces in the viewer (docs/contact.md, "Seeing it"): `sinew simulate --export` draws
+// contacts.sto as arrows, and `sinew export --contacts` draws a contacts.sto again; a ball at rest
+// has an arrow of its weight from its contact point on the floor, the floor being the model's
+// ContactHalfSpace (or --ground-plane).
+#include <gtest/gtest.h>
+#include <sinew/viz/image.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "apps/cli_test_util.h"
+#include "engine/test_models.h"
+#include "viz/glb_test_util.h"
+
+namespace sinew {
+namespace {
+
+using testing::CliRun;
+using viz::testing::ParsedGlb;
+
+const std::string kData = SINEW_TEST_DATA_DIR;
+const std::string kBall = kData + "/sinew/ball_on_floor.osim";
+const std::string kSmoothBall = kData +
+                                "/opensim-org/opensim-core/OpenSim/Simulation/Test/"
+                                "BouncingBall_SmoothSphereHalfSpace.osim";
+constexpr double kWeight = 9.80665;  // the 1 kg ball's, N
+
+// One arrow's track, per frame: its start (m) and its force (N) from the drawn length along the
+// arrow's turned +y (what the viewer shows).
+struct ArrowTrack {
+  std::vector<Vec3> start, force;
+};
+
+// The channel outputs of `node`'s `path` (frame by frame).
+std::vector<float> Channel(const ParsedGlb& glb, int node, const std::string& path) {
+  const nlohmann::json& animation = glb.doc["animations"][0];
+  for (const nlohmann::json& c : animation["channels"]) {
+    if (c["target"]["node"] == node && c["target"]["path"] == path) {
+      const int sampler = c["sampler"];
+      return viz::testing::ReadFloatAccessor(glb, animation["samplers"][sampler]["output"]);
+    }
+  }
+  ADD_FAILURE() << "no " << path << " channel for node " << node;
+  return {};
+}
+
+ArrowTrack ReadArrow(const ParsedGlb& glb, int node) {
+  const double metres_per_newton =
+      glb.doc["scenes"][0]["extras"]["contact_arrows"]["metres_per_newton"];
+  const int head = glb.doc["nodes"][node]["children"][1];
+  const std::vector<float> start = Channel(glb, node, "translation");
+  const std::vector<float> rotation = Channel(glb, node, "rotation");
+  const std::vector<float> scale = Channel(glb, node, "scale");
+  const std::vector<float> head_at = Channel(glb, head, "translation");
+  const std::vector<float> head_size = Channel(glb, head, "scale");
+  ArrowTrack track;
+  for (size_t k = 0; 3 * k + 2 < start.size(); ++k) {
+    track.start.emplace_back(start[3 * k], start[3 * k + 1], start[3 * k + 2]);
+    const Quat q(rotation[4 * k + 3], rotation[4 * k], rotation[4 * k + 1], rotation[4 * k + 2]);
+    const double length = scale[3 * k + 1] * (head_at[3 * k + 1] + head_size[3 * k + 1]);
+    track.force.push_back(q.normalized() * Vec3::UnitY() * (length / metres_per_newton));
+  }
+  return track;
+}
+
+class ExportContactsTest : public testing::CliTest {
+ protected:
+  // ball_on_floor.osim with its floor (the ContactHalfSpace on ground) at y = `height`.
+  std::string BallWithFloorAt(double height) const {
+    std::string text = testing::ReadText(kBall);
+    const std::string socket = "<socket_frame>/ground</socket_frame>";
+    text.insert(text.find(socket) + socket.size(),
+                "<location>0 " + std::to_string(height) + " 0</location>");
+    const std::string copy = Path("ball.osim");
+    std::ofstream(copy) << text;
+    return copy;
+  }
+  ParsedGlb ReadGlb(const std::string& name) const {
+    return viz::testing::ParseGlb(viz::ReadFileBytes(Path(name)));
+  }
+  // `sinew simulate MODEL OPTIONS --quiet --out DIR/out --export DIR/ball.glb`, checked to succeed.
+  ParsedGlb SimulateAndExport(const std::string& model, const std::string& options) const {
+    const CliRun run = Run("simulate " + model + " " + options + " --quiet --out " + Path("out") +
+                           " --export " + Path("ball.glb"));
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return ReadGlb("ball.glb");
+  }
+};
+
+// The ball (r = 0.1 m, centre 0.3 m above ground) falls 0.3 m onto its floor at y = -0.1 and
+// settles through SMC (as SimulateCollisionTest: implicit Euler at 1e-4 s, 1.5 s). At rest
+// contacts.sto carries the weight to 1e-4; the arrow drawn from it is the weight, straight up,
+// from the floor under the ball's centre (the line of action crosses the floor there, within
+// the Hertz dent).
+TEST_F(ExportContactsTest, BallAtRestHasAnArrowOfItsWeightFromItsContactOnTheFloor) {
+  const std::string model = BallWithFloorAt(-0.1);
+  const ParsedGlb glb = SimulateAndExport(
+      model, "--collision --integrator implicit-euler --step 1e-4 --duration 1.5");
+  ASSERT_FALSE(HasFailure());
+  const nlohmann::json& extras = glb.doc["scenes"][0]["extras"];
+  EXPECT_NEAR(extras["floor"]["point"][1].get<double>(), -0.1, 1e-12);
+  EXPECT_NEAR(extras["floor"]["normal"][1].get<double>(), 1.0, 1e-12);
+  EXPECT_EQ(extras["floor"]["source"], "ContactHalfSpace floor");
+  const nlohmann::json& arrows = extras["contact_arrows"];
+  EXPECT_NEAR(arrows["body_weight"].get<double>(), kWeight, 1e-12);
+  ASSERT_EQ(arrows["arrows"].size(), 1u);  // the ball's; the floor's reaction is not drawn
+  EXPECT_EQ(arrows["arrows"][0]["name"], "smc_contact.ball");
+  EXPECT_EQ(arrows["arrows"][0]["body"], 1);
+  const ArrowTrack track = ReadArrow(glb, arrows["arrows"][0]["node"]);
+  const auto contacts = engine::testing::ReadStoColumns(Path("out/contacts.sto"));
+  ASSERT_EQ(track.force.size(), contacts.at("time").size());
+  // In the air at first: no arrow.
+  EXPECT_EQ(track.force.front().norm(), 0.0);
+  // At rest: the weight (contacts.sto's own accuracy is 1e-4; floats keep 1e-6).
+  const Vec3 rest = track.force.back();
+  EXPECT_NEAR(rest.y(), kWeight, 1e-4 * kWeight);
+  EXPECT_NEAR(rest.y(), contacts.at("smc_contact.ball.force.Y").back(), 1e-5 * kWeight);
+  EXPECT_NEAR(std::hypot(rest.x(), rest.z()), 0.0, 1e-6);
+  EXPECT_NEAR(track.start.back().y(), -0.1, 1e-6);
+  EXPECT_NEAR(track.start.back().x(), 0.0, 1e-6);
+  EXPECT_NEAR(track.start.back().z(), 0.0, 1e-6);
+
+  // `sinew export --states --contacts` draws the same arrows from the files (the group found
+  // by the body's name).
+  const CliRun again = Run("export " + model + " --states " + Path("out/states.sto") +
+                           " --contacts " + Path("out/contacts.sto") + " -o " + Path("again.glb"));
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  const ParsedGlb other = ReadGlb("again.glb");
+  const nlohmann::json& other_arrows = other.doc["scenes"][0]["extras"]["contact_arrows"];
+  ASSERT_EQ(other_arrows["arrows"].size(), 1u);
+  EXPECT_EQ(other_arrows["arrows"][0]["body"], 1);
+  const ArrowTrack same = ReadArrow(other, other_arrows["arrows"][0]["node"]);
+  EXPECT_NEAR((same.force.back() - rest).norm(), 0.0, 1e-5 * kWeight);
+  EXPECT_NEAR((same.start.back() - track.start.back()).norm(), 0.0, 1e-6);
+}
+
+// --ground-plane gives the floor when collision adds one.
+TEST_F(ExportContactsTest, GroundPlaneOptionIsTheFloor) {
+  const ParsedGlb glb =
+      SimulateAndExport(kBall, "--collision --ground-plane -0.05 --duration 0.01");
+  ASSERT_FALSE(HasFailure());
+  const nlohmann::json& floor = glb.doc["scenes"][0]["extras"]["floor"];
+  EXPECT_EQ(floor["point"][1], -0.05);
+  EXPECT_EQ(floor["source"], "--ground-plane");
+}
+
+// SmoothSphereHalfSpaceForce names its column groups "Sphere" and "HalfSpace": the export finds
+// the sphere's body through the force's socket, as the simulation knows it.
+TEST_F(ExportContactsTest, SmoothForceGroupsAreFoundThroughTheSockets) {
+  const CliRun run = Run("simulate " + kSmoothBall + " --duration 0.05 --quiet --out " +
+                         Path("out") + " --export " + Path("sim.glb"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const CliRun again = Run("export " + kSmoothBall + " --states " + Path("out/states.sto") +
+                           " --contacts " + Path("out/contacts.sto") + " -o " + Path("exp.glb"));
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(again.err.find("names no body"), std::string::npos) << again.err;
+  for (const char* name : {"sim.glb", "exp.glb"}) {
+    const ParsedGlb glb = ReadGlb(name);
+    const nlohmann::json& arrows = glb.doc["scenes"][0]["extras"]["contact_arrows"];
+    ASSERT_EQ(arrows["arrows"].size(), 1u) << name;
+    EXPECT_TRUE(arrows["arrows"][0]["name"].get<std::string>().ends_with(".Sphere")) << name;
+    EXPECT_EQ(arrows["arrows"][0]["body"], 1) << name;
+  }
+}
+
+TEST_F(ExportContactsTest, ContactsNeedAMotion) {
+  std::ofstream(Path("contacts.sto")) << "Contacts\nendheader\ntime\n";
+  const CliRun run =
+      Run("export " + kBall + " --contacts " + Path("contacts.sto") + " -o " + Path("x.glb"));
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.err.find("--contacts needs --motion or --states"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace sinew
