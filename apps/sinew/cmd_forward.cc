@@ -1,5 +1,6 @@
 // `sinew forward SETUP.xml [--model F.osim] [--out DIR] [--report-interval DT] [--strict]
-//  [--equilibrate-muscles] [--rename-force-class OLD=NEW] [--disable-force NAME]... [--quiet]`:
+//  [--equilibrate-muscles] [--rename-force-class OLD=NEW] [--cylinder-refinement RULE]
+//  [--disable-force NAME]... [--quiet]`:
 //  runs an OpenSim ForwardTool setup file (io::ReadForwardSetup; docs/forward.md):
 // the model with the setup's force set files, initial states, controls and external loads,
 // integrated from initial_time to final_time at the setup's accuracy. Writes <name>_states.sto,
@@ -38,6 +39,7 @@ struct ForwardOptions {
   bool equilibrate_muscles = false;
   std::vector<std::string> renamed_classes;
   std::vector<std::string> disabled_forces;
+  std::string cylinder_refinement = "several-wraps";
 };
 
 void RunForward(const ForwardOptions& options) {
@@ -86,6 +88,7 @@ void RunForward(const ForwardOptions& options) {
       setup.solve_for_equilibrium_for_auxiliary_states || options.equilibrate_muscles;
   model_options.renamed_force_classes = options.renamed_classes;
   model_options.disabled_forces = options.disabled_forces;
+  model_options.cylinder_refinement = CylinderRefinementOption(options.cylinder_refinement);
   BuiltModel built = BuildModel(spec, model_options);
   const engine::System& system = *built.system;
   // As OpenSim: the states file's values first, then equilibrium of the auxiliary states.
@@ -133,7 +136,8 @@ void AddForwardCommand(CLI::App& app) {
   cmd->add_flag("--strict", options->strict,
                 "Fail (exit code 2) if anything in the setup, the model or the states file is "
                 "approximated, not simulated or not used");
-  AddMuscleOptions(cmd, options->equilibrate_muscles, options->renamed_classes);
+  AddMuscleOptions(cmd, options->equilibrate_muscles, options->renamed_classes,
+                   options->cylinder_refinement);
   cmd->add_option("--disable-force", options->disabled_forces,
                   "Leave out the force of this name (model, force set files or external loads; "
                   "repeatable)");

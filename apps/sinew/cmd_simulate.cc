@@ -3,6 +3,7 @@
 //  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--external-loads FILE.xml]...
 //  [--disable-force NAME]... [--strict] [--export FILE] [--verbose] [--quiet]
 //  [--report-constraint-forces] [--equilibrate-muscles] [--rename-force-class OLD=NEW]
+//  [--cylinder-refinement several-wraps|always]
 //  [--collision [--contact smc|nsc] [--ground-plane H] [material options]] --out DIR`: a forward
 //  simulation of what the OpenSim parser
 // builds (skeleton, forces, constraints, external loads, actuators and their excitations).
@@ -77,6 +78,7 @@ struct SimulateOptions {
   bool report_constraint_forces = false;
   bool equilibrate_muscles = false;
   std::vector<std::string> renamed_classes;
+  std::string cylinder_refinement = "several-wraps";
   ContactOptions contact;
 };
 
@@ -93,17 +95,19 @@ void RunSimulate(const SimulateOptions& options) {
   if (!options.initial_states.empty()) {
     initial = ApplyInitialStates(options.initial_states, options.strict, spec);
   }
-  BuiltModel built = BuildModel(spec, {.model_path = options.model,
-                                       .strict = options.strict,
-                                       .quiet = options.quiet,
-                                       .activate_actuators = options.activate_actuators,
-                                       .controls = options.controls,
-                                       .external_loads = options.external_loads,
-                                       .disabled_forces = options.disabled_forces,
-                                       .excitations = options.excitations,
-                                       .equilibrate_muscles = options.equilibrate_muscles,
-                                       .renamed_force_classes = options.renamed_classes,
-                                       .contact = options.contact});
+  BuiltModel built = BuildModel(
+      spec, {.model_path = options.model,
+             .strict = options.strict,
+             .quiet = options.quiet,
+             .activate_actuators = options.activate_actuators,
+             .controls = options.controls,
+             .external_loads = options.external_loads,
+             .disabled_forces = options.disabled_forces,
+             .excitations = options.excitations,
+             .equilibrate_muscles = options.equilibrate_muscles,
+             .renamed_force_classes = options.renamed_classes,
+             .cylinder_refinement = CylinderRefinementOption(options.cylinder_refinement),
+             .contact = options.contact});
   const engine::System& system = *built.system;
   engine::State state =
       MakeStartState(system, initial ? &*initial : nullptr, options.equilibrate_muscles,
@@ -214,7 +218,8 @@ void AddSimulateCommand(CLI::App& app) {
                   "Extra folder to search for mesh files (repeatable)");
   cmd->add_flag("--verbose", options->verbose,
                 "With --export: list every missing mesh file, not just how many");
-  AddMuscleOptions(cmd, options->equilibrate_muscles, options->renamed_classes);
+  AddMuscleOptions(cmd, options->equilibrate_muscles, options->renamed_classes,
+                   options->cylinder_refinement);
   AddContactOptions(cmd, options->contact);
   cmd->add_flag("--report-constraint-forces", options->report_constraint_forces,
                 "Also write DIR/constraints.sto: the forces of the model's constraints");

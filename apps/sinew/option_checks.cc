@@ -41,7 +41,13 @@ void CheckSimulationSize(double duration, double report_interval, double step) {
   }
 }
 
-void AddMuscleOptions(CLI::App* cmd, bool& equilibrate, std::vector<std::string>& renames) {
+paths::CylinderRefinement CylinderRefinementOption(const std::string& text) {
+  return text == "always" ? paths::CylinderRefinement::kAlways
+                          : paths::CylinderRefinement::kSeveralWraps;
+}
+
+void AddMuscleOptions(CLI::App* cmd, bool& equilibrate, std::vector<std::string>& renames,
+                      std::string& cylinder_refinement) {
   cmd->add_flag("--equilibrate-muscles", equilibrate,
                 "Start every muscle's fiber at muscle-tendon equilibrium for its activation "
                 "(OpenSim's equilibrateMuscles); otherwise default_fiber_length or the "
@@ -49,6 +55,11 @@ void AddMuscleOptions(CLI::App* cmd, bool& equilibrate, std::vector<std::string>
   cmd->add_option("--rename-force-class", renames,
                   "OLD=NEW: read forces of class OLD as class NEW (OpenSim's renameType; "
                   "OpenSim's forward tests read Thelen2003Muscle=Thelen2003Muscle_Deprecated)");
+  cmd->add_option("--cylinder-refinement", cylinder_refinement,
+                  "When a WrapCylinder refines its tangent points: several-wraps (OpenSim 4.4 "
+                  "and later: only on paths with two or more wrap objects; the default) or "
+                  "always (every OpenSim before 4.4, to compare with results it wrote)")
+      ->check(CLI::IsMember({"several-wraps", "always"}));
 }
 
 }  // namespace sinew::cli

@@ -3,6 +3,8 @@
 // sinew::Error: exit code 2 with a message naming the option.
 #pragma once
 
+#include <sinew/paths/geometry_path.h>
+
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <string>
@@ -25,8 +27,13 @@ CLI::Validator FiniteNumber(double min = -HUGE_VAL, bool exclusive = false);
 /// rows at most kMaxOutputRows and, when `step` > 0, `duration` / `step` steps at most kMaxSteps.
 void CheckSimulationSize(double duration, double report_interval, double step);
 
+/// The rule --cylinder-refinement names ("always" or "several-wraps").
+paths::CylinderRefinement CylinderRefinementOption(const std::string& text);
+
 /// Adds the muscle options `simulate` and `forward` share: --equilibrate-muscles (into
-/// `equilibrate`) and the repeatable --rename-force-class OLD=NEW (into `renames`).
-void AddMuscleOptions(CLI::App* cmd, bool& equilibrate, std::vector<std::string>& renames);
+/// `equilibrate`), the repeatable --rename-force-class OLD=NEW (into `renames`) and
+/// --cylinder-refinement several-wraps|always (into `cylinder_refinement`, checked).
+void AddMuscleOptions(CLI::App* cmd, bool& equilibrate, std::vector<std::string>& renames,
+                      std::string& cylinder_refinement);
 
 }  // namespace sinew::cli

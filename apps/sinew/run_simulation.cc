@@ -59,6 +59,7 @@ BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options)
   parser.SetControlsFile(options.controls);
   parser.SetStrict(options.strict);
   parser.EquilibrateMuscles(options.equilibrate_muscles);
+  parser.SetCylinderRefinement(options.cylinder_refinement);
   for (const std::string& rename : options.renamed_force_classes) {
     const size_t eq = rename.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == rename.size()) {

@@ -12,6 +12,7 @@
 #include <sinew/io/storage_writer.h>
 #include <sinew/model/model_spec.h>
 #include <sinew/opensim/parser.h>
+#include <sinew/paths/geometry_path.h>
 
 #include <functional>
 #include <memory>
@@ -39,6 +40,8 @@ struct ModelOptions {
   bool equilibrate_muscles = false;
   /// OLD=NEW: forces of class OLD are read as class NEW (`--rename-force-class`).
   std::vector<std::string> renamed_force_classes;
+  /// When cylinders refine their tangent points (`--cylinder-refinement`).
+  paths::CylinderRefinement cylinder_refinement = paths::CylinderRefinement::kSeveralWraps;
   ContactOptions contact;  ///< --collision, --contact, --ground-plane, the material
 };
 

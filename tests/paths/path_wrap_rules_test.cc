@@ -1,13 +1,18 @@
 // OpenSim's rules for applying wrap objects to a path (GeometryPath::applyWrapObjects), with
 // stand-in surfaces that record what they are offered: `range`, inactive objects, the first
 // mandatory wrap, the least lengthening among plain wraps; and, with arm26's real surfaces, the
-// length along a fine elbow sweep, continuous as the wraps engage and disengage.
+// length along a fine elbow sweep, continuous as the wraps engage and disengage; and which
+// OpenSim version's cylinder rule a path follows (CylinderRefinement).
 #include <gtest/gtest.h>
 #include <sinew/paths/path_analysis.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "paths/path_test_util.h"
 
@@ -161,6 +166,76 @@ TEST(PathWrapRulesTest, LengthsAreContinuousAsWrapsEngageAndDisengage) {
             << " paths engage or disengage a wrap along the sweep; worst step / bound " << worst
             << "\n";
   EXPECT_GE(engaging, 3);
+}
+
+// Hands every wrap on to `surface` with WrapOptions::single_wrap replaced by `single_wrap`,
+// recording the value the path asked for.
+class ForcedSingleWrapSurface final : public WrapSurface {
+ public:
+  ForcedSingleWrapSurface(std::shared_ptr<const WrapSurface> surface, bool single_wrap)
+      : surface_(std::move(surface)), single_wrap_(single_wrap) {}
+  WrapResult Wrap(const Vec3& p_WP, const Vec3& p_WS, const WrapOptions& options) const override {
+    asked.push_back(options.single_wrap);
+    WrapOptions forced = options;
+    forced.single_wrap = single_wrap_;
+    return surface_->Wrap(p_WP, p_WS, forced);
+  }
+  mutable std::vector<bool> asked;
+
+ private:
+  std::shared_ptr<const WrapSurface> surface_;
+  bool single_wrap_;
+};
+
+// OpenSim's cylinder rule by version (docs/wrapping.md): OpenSim 4.4 and later refine a
+// cylinder's tangent points only on paths with two or more wrap objects, every earlier version
+// on every path. arm26's BRA (one wrap object, the elbow cylinder, wrapped at full extension)
+// built with CylinderRefinement::kSeveralWraps asks its cylinder for a single wrap; built with
+// kAlways it gets, bit for bit, what the cylinder gives when told to refine, and refining
+// shortens it (the refinement takes out the kink between the straight segments and the helix).
+// TRIlong's path (three wrap objects) is the same under both rules.
+TEST(PathWrapRulesTest, CylinderRefinementFollowsTheOpenSimVersionsRule) {
+  const PathModel m(kArm26);
+  const int elbow = m.spec.FindCoordinate("r_elbow_flex");
+  ASSERT_GE(elbow, 0);
+  std::vector<double> q = m.tree.default_q();
+  q[static_cast<size_t>(elbow)] = 0.0;
+  std::vector<Transform> X_GB(static_cast<size_t>(m.tree.num_bodies()));
+  kinematics::CalcBodyPoses(m.tree, q, X_GB);
+  auto state_of = [&](const std::string& name, CylinderRefinement refinement,
+                      std::shared_ptr<ForcedSingleWrapSurface>* forced = nullptr) {
+    for (const model::ForceSpec& force : m.spec.forces) {
+      if (force.name != name) continue;
+      GeometryPath path(m.spec, force, refinement);
+      if (forced) {
+        EXPECT_EQ(path.wraps().size(), 1u);
+        *forced = std::make_shared<ForcedSingleWrapSurface>(path.wraps()[0].surface, false);
+        path.ConnectWrapSurface(0, *forced);
+      }
+      PathState state;
+      path.CalcState(q, X_GB, state);
+      return state;
+    }
+    ADD_FAILURE() << name;
+    return PathState();
+  };
+  std::shared_ptr<ForcedSingleWrapSurface> told_to_refine;
+  const PathState since_4_4 = state_of("BRA", CylinderRefinement::kSeveralWraps, &told_to_refine);
+  const PathState before_4_4 = state_of("BRA", CylinderRefinement::kAlways);
+  ASSERT_TRUE(PathModel::IsWrapped(since_4_4));
+  ASSERT_TRUE(PathModel::IsWrapped(before_4_4));
+  EXPECT_EQ(told_to_refine->asked, std::vector<bool>{true});
+  EXPECT_EQ(before_4_4.length, since_4_4.length);
+  ASSERT_EQ(before_4_4.points.size(), since_4_4.points.size());
+  for (size_t i = 0; i < before_4_4.points.size(); ++i) {
+    EXPECT_EQ(before_4_4.points[i].p_GP, since_4_4.points[i].p_GP) << i;
+  }
+  const PathState unrefined = state_of("BRA", CylinderRefinement::kSeveralWraps);
+  std::printf("BRA at full elbow extension: %.10f m unrefined (OpenSim 4.4), %.10f m refined\n",
+              unrefined.length, before_4_4.length);
+  EXPECT_LT(before_4_4.length, unrefined.length);
+  EXPECT_EQ(state_of("TRIlong", CylinderRefinement::kAlways).length,
+            state_of("TRIlong", CylinderRefinement::kSeveralWraps).length);
 }
 
 }  // namespace

@@ -142,18 +142,16 @@ const ForceType* FindForceType(const std::string& opensim_class) {
   return it == registry.end() ? nullptr : &it->second;
 }
 
-std::shared_ptr<engine::ForceElement> BuildForce(const model::ModelSpec& spec,
-                                                 const model::ForceSpec& force,
-                                                 const std::vector<int>& body_map,
-                                                 const std::vector<int>& coordinate_map,
-                                                 const io::ExternalLoads* external_loads,
-                                                 Diagnostics* notes, bool equilibrate_muscles) {
+std::shared_ptr<engine::ForceElement> BuildForce(
+    const model::ModelSpec& spec, const model::ForceSpec& force, const std::vector<int>& body_map,
+    const std::vector<int>& coordinate_map, const io::ExternalLoads* external_loads,
+    Diagnostics* notes, bool equilibrate_muscles, paths::CylinderRefinement cylinder_refinement) {
   const std::string& file = external_loads ? external_loads->file : spec.file;
   const model::ElementValues values(force.element, file, force.path);
   const ForceType* type = FindForceType(force.type);
   if (!type) values.Fail("'" + force.type + "' is not a force type Sinew simulates");
   return type->build(ForceBuildInput{spec, force, values, body_map, coordinate_map, external_loads,
-                                     notes, equilibrate_muscles});
+                                     notes, equilibrate_muscles, cylinder_refinement});
 }
 
 }  // namespace sinew::opensim::internal

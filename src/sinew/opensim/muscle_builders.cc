@@ -25,9 +25,10 @@ muscles::EnginePath MakeEnginePath(const ForceBuildInput& in) {
   if (!in.force.geometry_path) {
     in.values.Fail("has no GeometryPath (FunctionBasedPath and other path kinds are not read)");
   }
-  return muscles::EnginePath(
-      paths::GeometryPath(in.spec, in.force), static_cast<int>(in.spec.bodies.size()),
-      static_cast<int>(in.spec.coordinates.size()), in.body_map, in.coordinate_map);
+  return muscles::EnginePath(paths::GeometryPath(in.spec, in.force, in.cylinder_refinement),
+                             static_cast<int>(in.spec.bodies.size()),
+                             static_cast<int>(in.spec.coordinates.size()), in.body_map,
+                             in.coordinate_map);
 }
 
 // The actuator, with min_control / max_control kept for reporting (they do not clamp).

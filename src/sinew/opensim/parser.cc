@@ -177,7 +177,7 @@ void OpenSimParser::BuildOneForce(engine::System& system, const model::ForceSpec
   } else if (IsForceSimulated(force)) {
     Diagnostics notes;
     auto element = internal::BuildForce(spec_, force, body_map, coordinate_map, external_loads,
-                                        &notes, equilibrate_muscles_);
+                                        &notes, equilibrate_muscles_, cylinder_refinement_);
     for (Diagnostic& note : notes) report_.AddWarning(std::move(note));
     const int k = system.AddForceElement(element);
     info.load = element;

@@ -13,6 +13,7 @@
 #include <sinew/model/model_spec.h>
 #include <sinew/opensim/collision_settings.h>
 #include <sinew/opensim/report.h>
+#include <sinew/paths/geometry_path.h>
 #include <sinew/viz/visual_scene.h>
 
 #include <map>
@@ -87,6 +88,12 @@ class OpenSimParser {
   /// engine::InitializeStateVariables is called; a muscle without an equilibrium makes that an
   /// error naming it. Default false: the file's default_fiber_length (or loaded states).
   void EquilibrateMuscles(bool equilibrate) { equilibrate_muscles_ = equilibrate; }
+  /// Which OpenSim's WrapCylinder rule the paths of muscles and other path forces follow in
+  /// every later Parse: OpenSim 4.4's (the default) or, with kAlways, that of every earlier
+  /// OpenSim, to compare with results those versions wrote (paths::CylinderRefinement).
+  void SetCylinderRefinement(paths::CylinderRefinement refinement) {
+    cylinder_refinement_ = refinement;
+  }
   /// Reads the forces of class `from` as class `to` in every later Parse (OpenSim's
   /// Object::renameType; OpenSim's own forward tests read Thelen2003Muscle as
   /// Thelen2003Muscle_Deprecated). The Report lists them under `to`.
@@ -154,6 +161,7 @@ class OpenSimParser {
   std::vector<std::string> external_loads_files_;
   std::vector<std::string> disabled_forces_;
   bool equilibrate_muscles_ = false;
+  paths::CylinderRefinement cylinder_refinement_ = paths::CylinderRefinement::kSeveralWraps;
   std::vector<std::pair<std::string, std::string>> force_class_renames_;
   std::vector<std::string> geometry_dirs_;
   ContactMethod contact_method_ = ContactMethod::kNsc;

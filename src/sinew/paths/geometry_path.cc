@@ -32,8 +32,9 @@ const model::WrapObjectSpec* FindWrapObject(const model::ModelSpec& spec, const 
 
 }  // namespace
 
-GeometryPath::GeometryPath(const model::ModelSpec& spec, const model::ForceSpec& owner)
-    : name_(owner.name), component_(owner.path), where_(owner.where) {
+GeometryPath::GeometryPath(const model::ModelSpec& spec, const model::ForceSpec& owner,
+                           CylinderRefinement refinement)
+    : name_(owner.name), component_(owner.path), where_(owner.where), refinement_(refinement) {
   const model::GeometryPathSpec& path = owner.geometry_path.value();
   if (path.points.size() < 2) {
     throw Error(where_, component_,
@@ -155,7 +156,7 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
   const Transform X_GW = X_GB[wrap.body] * wrap.X_BW;
   const Transform X_WG = X_GW.Inverse();
   WrapOptions options = wrap.options;
-  options.single_wrap = wraps_.size() == 1;
+  options.single_wrap = wraps_.size() == 1 && refinement_ == CylinderRefinement::kSeveralWraps;
   options.with_arc_points = with_arc_points;
   double best_change = std::numeric_limits<double>::infinity();
   int best_segment = -1;

@@ -65,6 +65,16 @@ struct PathState {
   int stale_tangent_points = 0;
 };
 
+/// When OpenSim's WrapCylinder refines its tangent points toward tangency with the helix
+/// (docs/wrapping.md). OpenSim 4.4 stopped refining on a path with a single wrap object (a
+/// speed-up, opensim-core pull request 3125, February 2022); every earlier OpenSim (2.x, 3.x,
+/// 4.0 to 4.3) refines on every path. Results written by those versions, such as OpenSim's
+/// std_arm26_states.sto, need kAlways (docs/forward.md).
+enum class CylinderRefinement {
+  kSeveralWraps,  ///< OpenSim 4.4 and later: only on paths with two or more wrap objects
+  kAlways,        ///< OpenSim before 4.4: on every path
+};
+
 /// With several wrap objects, OpenSim repeats its wrapping passes at most this many times...
 inline constexpr int kMaxWrapPasses = 8;
 /// ... until the path length changes by less than this between passes (m).
@@ -78,8 +88,9 @@ class GeometryPath {
   /// unconnected: the path goes straight past them, and PathSet::ListOmissions names them).
   /// Throws sinew::Error (file, line, component) for a path with fewer than two points, a
   /// PathWrap whose range names points the path does not have, or a supported wrap object with
-  /// bad dimensions.
-  GeometryPath(const model::ModelSpec& spec, const model::ForceSpec& owner);
+  /// bad dimensions. `refinement` says which OpenSim's cylinder rule to follow.
+  GeometryPath(const model::ModelSpec& spec, const model::ForceSpec& owner,
+               CylinderRefinement refinement = CylinderRefinement::kSeveralWraps);
 
   /// The owner's name (the muscle, spring or ligament), used as the label in tables.
   const std::string& name() const { return name_; }
@@ -132,6 +143,7 @@ class GeometryPath {
   SourceLocation where_;
   std::vector<PathPoint> points_;
   std::vector<PathWrap> wraps_;
+  CylinderRefinement refinement_;
 };
 
 }  // namespace sinew::paths

@@ -28,7 +28,8 @@ struct WrapOptions {
   /// Whether this is the path's only wrap object. OpenSim's WrapCylinder refines its tangent
   /// points iteratively (to 0.1 degree of tangency) only when a path has two or more wrap
   /// objects, so the same segment gives slightly different lengths in the two cases; the path
-  /// must say which applies to reproduce OpenSim's lengths.
+  /// must say which applies to reproduce OpenSim's lengths. (OpenSim before 4.4 refined in
+  /// both cases: a path following it passes false, see paths::CylinderRefinement.)
   bool single_wrap = true;
   /// Whether to fill WrapResult::arc_points (for drawing). Off by default: sampling the arc
   /// costs more than the wrap itself, and lengths and derivatives do not need it.

@@ -10,6 +10,7 @@
 #include <sinew/io/external_loads.h>
 #include <sinew/model/element_values.h>
 #include <sinew/model/model_spec.h>
+#include <sinew/paths/geometry_path.h>
 
 #include <memory>
 #include <string>
@@ -32,6 +33,8 @@ struct ForceBuildInput {
   Diagnostics* notes = nullptr;
   /// Muscles start at muscle-tendon equilibrium (OpenSimParser::EquilibrateMuscles).
   bool equilibrate_muscles = false;
+  /// Which OpenSim's rule path forces' cylinders follow (OpenSimParser::SetCylinderRefinement).
+  paths::CylinderRefinement cylinder_refinement = paths::CylinderRefinement::kSeveralWraps;
 };
 
 /// How one OpenSim force class is built.
@@ -105,11 +108,13 @@ std::shared_ptr<engine::ForceElement> BuildSmoothSphereHalfSpaceForce(const Forc
 const ForceType* FindForceType(const std::string& opensim_class);
 
 /// The engine element of `force`, whose class must have a registry entry.
-/// `external_loads` and `notes` as in ForceBuildInput.
+/// `external_loads`, `notes`, `equilibrate_muscles` and `cylinder_refinement` as in
+/// ForceBuildInput.
 std::shared_ptr<engine::ForceElement> BuildForce(
     const model::ModelSpec& spec, const model::ForceSpec& force, const std::vector<int>& body_map,
     const std::vector<int>& coordinate_map, const io::ExternalLoads* external_loads = nullptr,
-    Diagnostics* notes = nullptr, bool equilibrate_muscles = false);
+    Diagnostics* notes = nullptr, bool equilibrate_muscles = false,
+    paths::CylinderRefinement cylinder_refinement = paths::CylinderRefinement::kSeveralWraps);
 
 /// The last segment of a socket path ("/bodyset/rod1" -> "rod1"), or the name itself.
 std::string LastPathSegment(const std::string& path);
