@@ -1,8 +1,9 @@
 // One simulated second of Rajagopal2016 with its 80 Millard2012EquilibriumMuscles (some with
-// rigid tendons) on their wrapped paths, RK45 at accuracy 1e-5. The pelvis's six coordinates are
-// locked, so the legs and trunk swing from a fixed pelvis instead of the model falling through
-// the floor it has no contact with. No controls: the excitations are 0 and the activations decay
-// from their defaults. Fibers start at equilibrium. Reports simulated seconds per CPU second.
+// rigid tendons) on their wrapped paths, rk45, cvode and cvode-gmres at accuracy 1e-5. The pelvis's
+// six coordinates are locked, so the legs and trunk swing from a fixed pelvis instead of the model
+// falling through the floor it has no contact with. No controls: the excitations are 0 and the
+// activations decay from their defaults. Fibers start at equilibrium. Reports simulated seconds per
+// CPU second.
 #include <benchmark/benchmark.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/integrator.h>
@@ -16,7 +17,7 @@
 
 namespace {
 
-void BM_Rajagopal2016MillardOneSecond(benchmark::State& bench) {
+void RunRajagopal(benchmark::State& bench, const std::string& integrator) {
   sinew::model::ModelSpec spec =
       sinew::io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
                           "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
@@ -29,8 +30,18 @@ void BM_Rajagopal2016MillardOneSecond(benchmark::State& bench) {
   parser.ParseSpec(system, spec);
   system.Finalize();
   const sinew::engine::State start = sinew::engine::MakeDefaultState(system);
-  RunOneSecond(bench, system, parser.GetController(), start, 1e-5);
+  RunOneSecond(bench, system, parser.GetController(), start, 1e-5, integrator);
+}
+
+void BM_Rajagopal2016MillardOneSecond(benchmark::State& bench) { RunRajagopal(bench, "rk45"); }
+void BM_Rajagopal2016MillardOneSecondCvode(benchmark::State& bench) {
+  RunRajagopal(bench, "cvode");
 }
 BENCHMARK(BM_Rajagopal2016MillardOneSecond)->Unit(benchmark::kMillisecond);
+void BM_Rajagopal2016MillardOneSecondCvodeGmres(benchmark::State& bench) {
+  RunRajagopal(bench, "cvode-gmres");
+}
+BENCHMARK(BM_Rajagopal2016MillardOneSecondCvode)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Rajagopal2016MillardOneSecondCvodeGmres)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -1,5 +1,7 @@
 // `sinew forward SETUP.xml [--model F.osim] [--out DIR] [--report-interval DT] [--strict]
-//  [--equilibrate-muscles] [--rename-force-class OLD=NEW] [--quiet]`: runs an OpenSim ForwardTool setup file (io::ReadForwardSetup; docs/forward.md):
+//  [--equilibrate-muscles] [--rename-force-class OLD=NEW] [--integrator rk45|cvode|cvode-gmres]
+//  [--quiet]`:
+//  runs an OpenSim ForwardTool setup file (io::ReadForwardSetup; docs/forward.md):
 // the model with the setup's force set files, initial states, controls and external loads,
 // integrated from initial_time to final_time at the setup's accuracy. Writes <name>_states.sto,
 // <name>_states_degrees.mot, <name>_controls.sto and <name>_forces.sto in OpenSim's layout into
@@ -36,6 +38,7 @@ struct ForwardOptions {
   bool quiet = false;
   bool equilibrate_muscles = false;
   std::vector<std::string> renamed_classes;
+  std::string integrator = "rk45";
 };
 
 void RunForward(const ForwardOptions& options) {
@@ -93,7 +96,7 @@ void RunForward(const ForwardOptions& options) {
   settings.accuracy = setup.integrator_error_tolerance;
   settings.step = setup.maximum_integrator_step_size;
   settings.min_step = setup.minimum_integrator_step_size;
-  const auto integrator = engine::MakeIntegrator("rk45", system, settings);
+  const auto integrator = engine::MakeIntegrator(options.integrator, system, settings);
   integrator->SetController(built.parser.GetController());
 
   const std::string base = out + "/" + setup.name;
@@ -131,6 +134,9 @@ void AddForwardCommand(CLI::App& app) {
                 "Fail (exit code 2) if anything in the setup, the model or the states file is "
                 "approximated, not simulated or not used");
   AddMuscleOptions(cmd, options->equilibrate_muscles, options->renamed_classes);
+  cmd->add_option("--integrator", options->integrator,
+                  "rk45 (explicit, default), cvode or cvode-gmres (implicit BDF for stiff "
+                  "muscles; see `simulate`), at the setup's error tolerance and step bounds");
   cmd->add_flag("--quiet", options->quiet,
                 "No progress bar or summary (warnings are still printed)");
   cmd->callback([options]() { RunForward(*options); });

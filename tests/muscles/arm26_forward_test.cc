@@ -18,45 +18,10 @@
 #include <memory>
 #include <string>
 
+#include "muscles/arm26_model.h"
+
 namespace sinew::muscles {
 namespace {
-
-const std::string kDir = std::string(SINEW_TEST_DATA_DIR) +
-                         "/opensim-org/opensim-core/Applications/Forward/tests/resources/";
-
-struct Arm26 {
-  model::ModelSpec spec;
-  opensim::OpenSimParser parser;
-  std::unique_ptr<engine::System> system;
-  engine::State state;
-};
-
-// The model, its controls and the initial states file's first row (coordinates and the
-// muscles' activation and fiber_length), as the Forward tool sets them.
-std::unique_ptr<Arm26> LoadArm26() {
-  auto arm = std::make_unique<Arm26>();
-  arm->spec = io::ReadOsim(kDir + "arm26.osim");
-  const io::Storage initial = io::ReadStorage(kDir + "arm26_InitialStates.sto");
-  for (model::CoordinateSpec& c : arm->spec.coordinates) {
-    c.default_value = initial.Value(0, initial.FindColumn(c.name));
-    c.default_speed_value = initial.Value(0, initial.FindColumn(c.name + "_u"));
-  }
-  arm->parser.RenameForceClass("Thelen2003Muscle", "Thelen2003Muscle_Deprecated");
-  arm->parser.SetControlsFile(kDir + "arm26_StaticOptimization_controls.xml");
-  arm->system = std::make_unique<engine::System>(arm->spec.gravity);
-  arm->parser.ParseSpec(*arm->system, arm->spec);
-  arm->system->Finalize();
-  arm->state = engine::MakeDefaultState(*arm->system);
-  int set = 0;
-  for (size_t i = 0; i < initial.labels.size(); ++i) {
-    const int z = opensim::FindStateVariableColumn(*arm->system, initial.labels[i]);
-    if (z < 0) continue;
-    arm->state.z[z] = initial.Value(0, static_cast<int>(i));
-    ++set;
-  }
-  EXPECT_EQ(set, 12);
-  return arm;
-}
 
 // The reference's value of column `label` at time t, by linear interpolation between rows.
 double ReferenceAt(const io::Storage& reference, const std::string& label, double t) {
@@ -74,7 +39,7 @@ double ReferenceAt(const io::Storage& reference, const std::string& label, doubl
 // activation and fiber length, integrated from the controls by RK4, follow OpenSim's.
 TEST(Arm26ForwardTest, NonWrappingMuscleFollowsOpenSimAlongOpenSimsTrajectory) {
   auto arm = LoadArm26();
-  const io::Storage reference = io::ReadStorage(kDir + "std_arm26_states.sto");
+  const io::Storage reference = io::ReadStorage(kArm26Dir + "std_arm26_states.sto");
   const int k = [&] {
     for (size_t i = 0; i < arm->system->force_elements().size(); ++i) {
       if (arm->system->force_elements()[i]->name() == "BICshort") return static_cast<int>(i);
@@ -143,7 +108,7 @@ TEST(Arm26ForwardTest, NonWrappingMuscleFollowsOpenSimAlongOpenSimsTrajectory) {
 // own tolerance 5e-3 (docs/forward.md).
 TEST(Arm26ForwardTest, DISABLED_ReproducesOpenSimsForwardRun) {
   auto arm = LoadArm26();
-  const io::Storage reference = io::ReadStorage(kDir + "std_arm26_states.sto");
+  const io::Storage reference = io::ReadStorage(kArm26Dir + "std_arm26_states.sto");
   auto integrator = engine::MakeIntegrator("rk45", *arm->system, {.accuracy = 1e-7});
   integrator->SetController(arm->parser.GetController());
   const std::vector<std::string> labels = opensim::StatesLabels(*arm->system);

@@ -9,6 +9,7 @@
 #include <sinew/engine/state_vector.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <cstdlib>
@@ -33,18 +34,26 @@ std::string FlagName(int flag) {
 
 class CvodeIntegrator final : public Integrator {
  public:
-  CvodeIntegrator(const System& system, const IntegratorSettings& settings)
-      : Integrator(system, settings), vector_(system, kkt_) {
+  CvodeIntegrator(const System& system, const IntegratorSettings& settings,
+                  CvodeLinearSolver linear_solver)
+      : Integrator(system, settings),
+        name_(linear_solver == CvodeLinearSolver::kDense ? "cvode" : "cvode-gmres"),
+        vector_(system, kkt_) {
     if (SUNContext_Create(nullptr, &context_) != 0) Fail("SUNContext_Create", -1);
     const int n = vector_.size();
     y_ = N_VNew_Serial(n, context_);
     dky_ = N_VNew_Serial(n, context_);
-    matrix_ = SUNDenseMatrix(n, n, context_);
-    solver_ = SUNLinSol_Dense(y_, matrix_, context_);
+    if (linear_solver == CvodeLinearSolver::kDense) {
+      matrix_ = SUNDenseMatrix(n, n, context_);
+      solver_ = SUNLinSol_Dense(y_, matrix_, context_);
+    } else {
+      solver_ = SUNLinSol_SPGMR(y_, SUN_PREC_NONE, 0, context_);  // 0: CVODE's default basis
+    }
     memory_ = CVodeCreate(CV_BDF, context_);
-    if (!y_ || !dky_ || !matrix_ || !solver_ || !memory_) {
+    if (!y_ || !dky_ || !solver_ || !memory_ ||
+        (linear_solver == CvodeLinearSolver::kDense && !matrix_)) {
       Release();
-      throw Error("integrator 'cvode': CVODE could not be set up (out of memory)");
+      throw Error("integrator '" + name_ + "': CVODE could not be set up (out of memory)");
     }
     zdot_.resize(vector_.num_state_variables());
   }
@@ -73,6 +82,7 @@ class CvodeIntegrator final : public Integrator {
   [[noreturn]] void Fail(const char* call, int flag);
   void Release();
 
+  std::string name_;  // "cvode" or "cvode-gmres", for messages
   StateVector vector_;
   SUNContext context_ = nullptr;
   N_Vector y_ = nullptr;
@@ -105,7 +115,7 @@ void CvodeIntegrator::Release() {
 void CvodeIntegrator::Fail(const char* call, int flag) {
   double t = last_t_;
   if (memory_) CVodeGetCurrentTime(memory_, &t);
-  std::string text = "integrator 'cvode': " + std::string(call) + " failed with " +
+  std::string text = "integrator '" + name_ + "': " + std::string(call) + " failed with " +
                      FlagName(flag) + " at t = " + FormatNumber(t) + " s";
   if (!message_.empty()) text += ": " + message_;
   throw Error(text);
@@ -169,8 +179,7 @@ void CvodeIntegrator::Restart(const State& state) {
     Check(CVodeSetErrHandlerFn(memory_, &KeepMessage, this), "CVodeSetErrHandlerFn");
     Check(CVodeInit(memory_, &Rhs, state.t, y_), "CVodeInit");
     Check(CVodeSetUserData(memory_, this), "CVodeSetUserData");
-    Check(CVodeSStolerances(memory_, settings_.accuracy, settings_.accuracy),
-          "CVodeSStolerances");
+    Check(CVodeSStolerances(memory_, settings_.accuracy, settings_.accuracy), "CVodeSStolerances");
     Check(CVodeSetLinearSolver(memory_, solver_, matrix_), "CVodeSetLinearSolver");
     if (settings_.step > 0.0) Check(CVodeSetMaxStep(memory_, settings_.step), "CVodeSetMaxStep");
     Check(CVodeSetMinStep(memory_, settings_.min_step), "CVodeSetMinStep");
@@ -222,7 +231,7 @@ void CvodeIntegrator::TakeStep(State& state, double t_limit) {
 void CvodeIntegrator::Interpolate(double t, State& out) {
   const int flag = initialized_ ? CVodeGetDky(memory_, t, 0, dky_) : CV_BAD_T;
   if (flag != CV_SUCCESS) {
-    throw Error("integrator 'cvode': Interpolate at t = " + FormatNumber(t) +
+    throw Error("integrator '" + name_ + "': Interpolate at t = " + FormatNumber(t) +
                 " s, outside the last step (" + FlagName(flag) + ")");
   }
   out = step_start_;
@@ -230,7 +239,7 @@ void CvodeIntegrator::Interpolate(double t, State& out) {
   if (!system_.constraints().empty()) {
     if (!ProjectPositions(system_, out, ConstraintTolerance(), kkt_, 10,
                           &stats_.projection_factorizations)) {
-      throw Error("integrator 'cvode': the interpolated state at t = " + FormatNumber(t) +
+      throw Error("integrator '" + name_ + "': the interpolated state at t = " + FormatNumber(t) +
                   " s could not be projected onto the constraints");
     }
     ProjectVelocities(system_, out, kkt_);
@@ -242,8 +251,9 @@ void CvodeIntegrator::Interpolate(double t, State& out) {
 }  // namespace
 
 std::unique_ptr<Integrator> MakeCvodeIntegrator(const System& system,
-                                                const IntegratorSettings& settings) {
-  return std::make_unique<CvodeIntegrator>(system, settings);
+                                                const IntegratorSettings& settings,
+                                                CvodeLinearSolver linear_solver) {
+  return std::make_unique<CvodeIntegrator>(system, settings, linear_solver);
 }
 
 }  // namespace sinew::engine

@@ -314,6 +314,11 @@ std::unique_ptr<Integrator> Make(const System& system, const IntegratorSettings&
   return std::make_unique<Scheme>(system, settings);
 }
 
+template <CvodeLinearSolver kSolver>
+std::unique_ptr<Integrator> MakeCvode(const System& system, const IntegratorSettings& settings) {
+  return MakeCvodeIntegrator(system, settings, kSolver);
+}
+
 // Every scheme by name (aliases included), in the order the error message lists them.
 constexpr struct {
   const char* name;
@@ -321,7 +326,8 @@ constexpr struct {
 } kIntegrators[] = {
     {"rk45", &Make<RungeKutta45>},
     {"dopri5", &Make<RungeKutta45>},
-    {"cvode", &MakeCvodeIntegrator},
+    {"cvode", &MakeCvode<CvodeLinearSolver::kDense>},
+    {"cvode-gmres", &MakeCvode<CvodeLinearSolver::kGmres>},
     {"euler", &Make<SemiImplicitEuler>},
     {"semi-implicit-euler", &Make<SemiImplicitEuler>},
     {"implicit-euler", &Make<LinearizedImplicitEuler>},
@@ -334,7 +340,8 @@ std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System
   for (const auto& entry : kIntegrators) {
     if (name == entry.name) return entry.make(system, settings);
   }
-  throw Error("unknown integrator '" + name + "' (known: rk45, cvode, euler, implicit-euler)");
+  throw Error("unknown integrator '" + name +
+              "' (known: rk45, cvode, cvode-gmres, euler, implicit-euler)");
 }
 
 }  // namespace sinew::engine

@@ -5,8 +5,7 @@
 
 namespace sinew::engine {
 
-StateVector::StateVector(const System& system, const KktSolver& kkt)
-    : system_(system), kkt_(kkt) {
+StateVector::StateVector(const System& system, const KktSolver& kkt) : system_(system), kkt_(kkt) {
   nb_ = system.num_bodies() - 1;
   np_ = 7 * nb_ + system.num_integrated();
   nv_ = kkt.num_velocities();
