@@ -1,6 +1,6 @@
 // `sinew forward SETUP.xml [--model F.osim] [--out DIR] [--report-interval DT] [--strict]
 //  [--equilibrate-muscles] [--rename-force-class OLD=NEW] [--cylinder-refinement RULE]
-//  [--disable-force NAME]... [--quiet]`:
+//  [--integrator rk45|cvode|cvode-gmres] [--disable-force NAME]... [--quiet]`:
 //  runs an OpenSim ForwardTool setup file (io::ReadForwardSetup; docs/forward.md):
 // the model with the setup's force set files, initial states, controls and external loads,
 // integrated from initial_time to final_time at the setup's accuracy. Writes <name>_states.sto,
@@ -40,6 +40,7 @@ struct ForwardOptions {
   std::vector<std::string> renamed_classes;
   std::vector<std::string> disabled_forces;
   std::string cylinder_refinement = "several-wraps";
+  std::string integrator = "rk45";
 };
 
 void RunForward(const ForwardOptions& options) {
@@ -99,7 +100,7 @@ void RunForward(const ForwardOptions& options) {
   settings.accuracy = setup.integrator_error_tolerance;
   settings.step = setup.maximum_integrator_step_size;
   settings.min_step = setup.minimum_integrator_step_size;
-  const auto integrator = engine::MakeIntegrator("rk45", system, settings);
+  const auto integrator = engine::MakeIntegrator(options.integrator, system, settings);
   integrator->SetController(built.parser.GetController());
 
   const std::string base = out + "/" + setup.name;
@@ -138,6 +139,9 @@ void AddForwardCommand(CLI::App& app) {
                 "approximated, not simulated or not used");
   AddMuscleOptions(cmd, options->equilibrate_muscles, options->renamed_classes,
                    options->cylinder_refinement);
+  cmd->add_option("--integrator", options->integrator,
+                  "rk45 (explicit, default), cvode or cvode-gmres (implicit BDF for stiff "
+                  "muscles; see `simulate`), at the setup's error tolerance and step bounds");
   cmd->add_option("--disable-force", options->disabled_forces,
                   "Leave out the force of this name (model, force set files or external loads; "
                   "repeatable)");

@@ -183,9 +183,13 @@ void AddSimulateCommand(CLI::App& app) {
       ->check(FiniteNumber(0.0));
   cmd->add_option("--accuracy", options->accuracy, "Integrator accuracy (default 1e-6)")
       ->check(FiniteNumber(0.0, true));
-  cmd->add_option("--integrator", options->integrator,
-                  "rk45 (error-controlled, default), euler or implicit-euler (fixed step)");
-  cmd->add_option("--step", options->step, "Fixed step for euler; largest step for rk45 (s)")
+  cmd->add_option(
+      "--integrator", options->integrator,
+      "rk45 (error-controlled, explicit, default), cvode (error-controlled, implicit BDF: "
+      "stiff muscles, dense Jacobian: small models), cvode-gmres (the same, matrix-free: large "
+      "models), euler or implicit-euler (fixed step)");
+  cmd->add_option("--step", options->step,
+                  "Fixed step for euler; largest step for rk45 and cvode(-gmres) (s)")
       ->check(FiniteNumber(0.0));
   cmd->add_option("--report-interval", options->report_interval,
                   "Time between output rows (s, default 0.01)")

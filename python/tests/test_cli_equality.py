@@ -1,5 +1,6 @@
 """Model.simulate runs what `sinew simulate` runs: the same arrays bit for bit, and the same
-states.sto byte for byte (Result.to_sto), with initial states, excitations, both integrators."""
+states.sto byte for byte (Result.to_sto), with initial states, excitations, and the rk45, cvode
+and euler integrators."""
 import numpy as np
 import pytest
 
@@ -17,6 +18,11 @@ CASES = {
         RESOURCES / "SinglePin.osim",
         ["--duration", 0.5, "--integrator", "euler", "--step", 1e-3, "--report-interval", 0.05],
         dict(duration=0.5, integrator="euler", step=1e-3, report_interval=0.05)),
+    "cvode (implicit BDF) with dense output": (
+        RESOURCES / "DoublePendulum3D.osim",
+        ["--duration", 0.5, "--integrator", "cvode", "--accuracy", 1e-7,
+         "--report-interval", 0.02],
+        dict(duration=0.5, integrator="cvode", accuracy=1e-7, report_interval=0.02)),
     "excitations": (
         CHRONO / "double_pendulum.osim",
         ["--duration", 0.5, "--excitation", "Torq1=sine:0.5,2,0.1", "--excitation",

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -136,6 +137,74 @@ TEST(ForceInterfaceTest, StateVariableIsIntegratedUnderErrorControl) {
             static_cast<double>(coarse->stats().steps) * settings.accuracy);
 }
 
+TEST(ForceInterfaceTest, CvodeIntegratesAStiffLagInFewSteps) {
+  // tau = 0.1 ms against a 1 s run: stiff. rk45's stability interval on the negative real axis
+  // ends near -3.3, so it cannot take steps longer than about 3.3 tau once the lag has settled
+  // (>= 3,000 steps); the implicit BDF's steps are bounded by accuracy only.
+  const double tau = 1e-4, k = 3.0, x0 = 0.5, r = -1.0, q0 = 0.1;
+  const System system = MakeLaggedSlider(tau, k, x0);
+  IntegratorSettings settings;
+  settings.accuracy = 1e-8;
+  State explicit_state = MakeDefaultState(system);
+  explicit_state.inputs[0] = r;
+  auto rk45 = MakeIntegrator("rk45", system, settings);
+  rk45->StepTo(explicit_state, 1.0);
+  EXPECT_GT(rk45->stats().steps, static_cast<long>(1.0 / (3.3 * tau)));
+  for (const char* name : {"cvode", "cvode-gmres"}) {
+    State state = MakeDefaultState(system);
+    state.inputs[0] = r;
+    auto integrator = MakeIntegrator(name, system, settings);
+    double worst_x = 0.0, worst_q = 0.0;
+    for (double t : {1e-4, 1e-3, 0.01, 0.1, 0.5}) {
+      integrator->StepTo(state, t);
+      worst_x = std::max(worst_x, std::abs(state.z[0] - LagValue(t, tau, x0, r)));
+      worst_q = std::max(worst_q, std::abs(state.q[0] - LaggedPosition(t, tau, k, x0, r, q0)));
+    }
+    // One more step, then the dense output inside it (CVODE's interpolating polynomial).
+    integrator->Advance(state, 1.0);
+    const double t_end = state.t, t_mid = 0.5 * (0.5 + t_end);
+    State mid = state;
+    integrator->Interpolate(t_mid, mid);
+    const double mid_q_error = std::abs(mid.q[0] - LaggedPosition(t_mid, tau, k, x0, r, q0));
+    integrator->StepTo(state, 1.0);
+    worst_x = std::max(worst_x, std::abs(state.z[0] - LagValue(1.0, tau, x0, r)));
+    worst_q = std::max(worst_q, std::abs(state.q[0] - LaggedPosition(1.0, tau, k, x0, r, q0)));
+    // CVODE keeps each step's local error estimate below accuracy in the RMS norm of its
+    // 16-component vector (so a component's below 4 x accuracy, unit floor); global errors as
+    // in the rk45 test above: steps x local error, q integrating x twice over at most 1 s.
+    const long steps = integrator->stats().steps;
+    const double bound = 4.0 * static_cast<double>(steps) * settings.accuracy;
+    EXPECT_LT(worst_x, bound) << name;
+    EXPECT_LT(worst_q, 3.0 * bound) << name;
+    EXPECT_LT(mid_q_error, 3.0 * bound) << name;
+    EXPECT_LT(steps, 300) << name;
+    std::printf(
+        "stiff lag over 1 s: %s %ld steps, %ld evaluations (x error %.2g, q %.2g); "
+        "rk45 %ld steps, %ld evaluations\n",
+        name, steps, integrator->stats().evaluations, worst_x, worst_q, rk45->stats().steps,
+        rk45->stats().evaluations);
+  }
+}
+
+TEST(ForceInterfaceTest, CvodeRestartsFromAStateChangedBetweenSteps) {
+  // The input jumps from r1 to r2 at t1 (set in the state between two StepTo calls, no
+  // controller): x follows the piecewise closed form, so cvode did not keep integrating the
+  // old input from its own history.
+  const double tau = 0.05, k = 1.0, x0 = 0.0, r1 = 1.0, r2 = -2.0, t1 = 0.3;
+  const System system = MakeLaggedSlider(tau, k, x0);
+  const double x1 = LagValue(t1, tau, x0, r1);
+  for (const char* name : {"cvode", "cvode-gmres"}) {
+    State state = MakeDefaultState(system);
+    state.inputs[0] = r1;
+    auto integrator = MakeIntegrator(name, system, {.accuracy = 1e-9});
+    integrator->StepTo(state, t1);
+    state.inputs[0] = r2;
+    integrator->StepTo(state, 1.0);
+    const double bound = 4.0 * static_cast<double>(integrator->stats().steps) * 1e-9;
+    EXPECT_LT(std::abs(state.z[0] - LagValue(1.0 - t1, tau, x1, r2)), bound) << name;
+  }
+}
+
 TEST(ForceInterfaceTest, FixedStepSchemesIntegrateStateVariablesToFirstOrder) {
   const double tau = 0.2, k = 3.0, x0 = 0.5, r = -1.0;
   const System system = MakeLaggedSlider(tau, k, x0);
@@ -189,16 +258,21 @@ TEST(ForceInterfaceTest, ControllerSetsInputsAtEveryEvaluation) {
   // Inputs held over a step instead of read per stage would be off by O(h) there.
   const double w = 5.0;
   const System system = MakeLaggedSlider(1.0, 1.0, 0.0);
-  State state = MakeDefaultState(system);
-  IntegratorSettings settings;
-  settings.accuracy = 1e-10;
-  auto integrator = MakeIntegrator("rk45", system, settings);
-  integrator->SetController(std::make_shared<SineController>(w));
-  integrator->StepTo(state, 1.0);
-  const double exact = (std::sin(w) - w * std::cos(w) + w * std::exp(-1.0)) / (1 + w * w);
-  EXPECT_LT(std::abs(state.z[0] - exact),
-            static_cast<double>(integrator->stats().steps) * settings.accuracy);
-  EXPECT_EQ(state.inputs[0], std::sin(w * 1.0));  // the controller's value at the end
+  // rk45 bounds each component's local error by accuracy, cvode their RMS (4 x per component).
+  for (const auto& [name, norm_factor] :
+       {std::pair{"rk45", 1.0}, std::pair{"cvode", 4.0}, std::pair{"cvode-gmres", 4.0}}) {
+    State state = MakeDefaultState(system);
+    IntegratorSettings settings;
+    settings.accuracy = 1e-10;
+    auto integrator = MakeIntegrator(name, system, settings);
+    integrator->SetController(std::make_shared<SineController>(w));
+    integrator->StepTo(state, 1.0);
+    const double exact = (std::sin(w) - w * std::cos(w) + w * std::exp(-1.0)) / (1 + w * w);
+    EXPECT_LT(std::abs(state.z[0] - exact),
+              norm_factor * static_cast<double>(integrator->stats().steps) * settings.accuracy)
+        << name;
+    EXPECT_EQ(state.inputs[0], std::sin(w * 1.0)) << name;  // the controller's value at the end
+  }
 }
 
 TEST(ForceInterfaceTest, TwoThreadsShareOneSystemWithDifferentInputs) {

@@ -24,48 +24,10 @@
 #include <memory>
 #include <string>
 
+#include "muscles/arm26_model.h"
+
 namespace sinew::muscles {
 namespace {
-
-const std::string kDir = std::string(SINEW_TEST_DATA_DIR) +
-                         "/opensim-org/opensim-core/Applications/Forward/tests/resources/";
-
-struct Arm26 {
-  model::ModelSpec spec;
-  opensim::OpenSimParser parser;
-  std::unique_ptr<engine::System> system;
-  engine::State state;
-};
-
-// The model, its controls and the initial states file's first row (coordinates and the
-// muscles' activation and fiber_length), as the Forward tool sets them, its cylinders following
-// `refinement`.
-std::unique_ptr<Arm26> LoadArm26(
-    paths::CylinderRefinement refinement = paths::CylinderRefinement::kAlways) {
-  auto arm = std::make_unique<Arm26>();
-  arm->spec = io::ReadOsim(kDir + "arm26.osim");
-  const io::Storage initial = io::ReadStorage(kDir + "arm26_InitialStates.sto");
-  for (model::CoordinateSpec& c : arm->spec.coordinates) {
-    c.default_value = initial.Value(0, initial.FindColumn(c.name));
-    c.default_speed_value = initial.Value(0, initial.FindColumn(c.name + "_u"));
-  }
-  arm->parser.RenameForceClass("Thelen2003Muscle", "Thelen2003Muscle_Deprecated");
-  arm->parser.SetControlsFile(kDir + "arm26_StaticOptimization_controls.xml");
-  arm->parser.SetCylinderRefinement(refinement);
-  arm->system = std::make_unique<engine::System>(arm->spec.gravity);
-  arm->parser.ParseSpec(*arm->system, arm->spec);
-  arm->system->Finalize();
-  arm->state = engine::MakeDefaultState(*arm->system);
-  int set = 0;
-  for (size_t i = 0; i < initial.labels.size(); ++i) {
-    const int z = opensim::FindStateVariableColumn(*arm->system, initial.labels[i]);
-    if (z < 0) continue;
-    arm->state.z[z] = initial.Value(0, static_cast<int>(i));
-    ++set;
-  }
-  EXPECT_EQ(set, 12);
-  return arm;
-}
 
 // The reference's value of column `label` at time t, by linear interpolation between rows.
 double ReferenceAt(const io::Storage& reference, const std::string& label, double t) {
@@ -83,7 +45,7 @@ double ReferenceAt(const io::Storage& reference, const std::string& label, doubl
 // activation and fiber length, integrated from the controls by RK4, follow OpenSim's.
 TEST(Arm26ForwardTest, NonWrappingMuscleFollowsOpenSimAlongOpenSimsTrajectory) {
   auto arm = LoadArm26();
-  const io::Storage reference = io::ReadStorage(kDir + "std_arm26_states.sto");
+  const io::Storage reference = io::ReadStorage(kArm26Dir + "std_arm26_states.sto");
   const int k = [&] {
     for (size_t i = 0; i < arm->system->force_elements().size(); ++i) {
       if (arm->system->force_elements()[i]->name() == "BICshort") return static_cast<int>(i);
@@ -155,7 +117,7 @@ TEST(Arm26ForwardTest, NonWrappingMuscleFollowsOpenSimAlongOpenSimsTrajectory) {
 // larger, and the elbow's acceleration is 1.5% higher (docs/forward.md). The bound, 0.3%, is a
 // fifth of what the rule changes, so it tells the two rules apart.
 TEST(Arm26ForwardTest, StartAccelerationsAreOpenSimsFirstStepWithItsCylinderRule) {
-  const io::Storage reference = io::ReadStorage(kDir + "std_arm26_states.sto");
+  const io::Storage reference = io::ReadStorage(kArm26Dir + "std_arm26_states.sto");
   ASSERT_DOUBLE_EQ(reference.time[1], 1e-8);
   const Eigen::Vector2d opensim(
       reference.Value(1, reference.FindColumn("r_shoulder_elev_u")) / reference.time[1],
@@ -188,7 +150,7 @@ TEST(Arm26ForwardTest, StartAccelerationsAreOpenSimsFirstStepWithItsCylinderRule
 // tolerance 5e-3 (its test checks only the first and last rows; this checks every row).
 TEST(Arm26ForwardTest, ReproducesOpenSimsForwardRun) {
   auto arm = LoadArm26();
-  const io::Storage reference = io::ReadStorage(kDir + "std_arm26_states.sto");
+  const io::Storage reference = io::ReadStorage(kArm26Dir + "std_arm26_states.sto");
   auto integrator = engine::MakeIntegrator("rk45", *arm->system, {.accuracy = 1e-7});
   integrator->SetController(arm->parser.GetController());
   const std::vector<std::string> labels = opensim::StatesLabels(*arm->system);

@@ -1,13 +1,14 @@
 #include <sinew/common/error.h>
 #include <sinew/common/text.h>
 #include <sinew/engine/assemble.h>
+#include <sinew/engine/cvode_integrator.h>
 #include <sinew/engine/dynamics.h>
 #include <sinew/engine/fixed_step_integrator.h>
 #include <sinew/engine/force_jacobian.h>
 #include <sinew/engine/integrator.h>
-#include <sinew/engine/joint_values.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/projection.h>
+#include <sinew/engine/state_vector.h>
 
 #include <Eigen/LU>
 #include <algorithm>
@@ -61,87 +62,6 @@ double Integrator::ConstraintTolerance() const {
 
 namespace {
 
-// The integrated vector y = [positions; velocities; z]: per moving body p_GB and quat_GB
-// (w, x, y, z), then the integrated q; then the KKT velocities; then the auxiliary state
-// variables.
-class StateVector {
- public:
-  StateVector(const System& system, const KktSolver& kkt) : system_(system), kkt_(kkt) {
-    nb_ = system.num_bodies() - 1;
-    np_ = 7 * nb_ + system.num_integrated();
-    nv_ = kkt.num_velocities();
-    nz_ = system.num_state_variables();
-  }
-  int size() const { return np_ + nv_ + nz_; }
-  int num_state_variables() const { return nz_; }
-
-  VecX Pack(const State& state) const {
-    VecX y(size());
-    for (int b = 1; b <= nb_; ++b) {
-      const BodyState& s = state.bodies[b];
-      y.segment<3>(7 * (b - 1)) = s.p_GB;
-      y.segment<4>(7 * (b - 1) + 3) << s.quat_GB.w(), s.quat_GB.x(), s.quat_GB.y(), s.quat_GB.z();
-    }
-    for (int c = 0; c < system_.num_coordinates(); ++c) {
-      if (system_.IsIntegrated(c)) y[7 * nb_ + system_.SpeedIndex(c)] = state.q[c];
-    }
-    y.segment(np_, nv_) = GatherVelocities(system_, kkt_, state);
-    y.tail(nz_) = state.z;
-    return y;
-  }
-
-  // Writes y into `state` (direct coordinates then read off the poses).
-  void Unpack(const VecX& y, double t, State& state) const {
-    state.t = t;
-    for (int b = 1; b <= nb_; ++b) {
-      BodyState& s = state.bodies[b];
-      s.p_GB = y.segment<3>(7 * (b - 1));
-      const auto qv = y.segment<4>(7 * (b - 1) + 3);
-      s.quat_GB = Quat(qv[0], qv[1], qv[2], qv[3]).normalized();
-    }
-    for (int c = 0; c < system_.num_coordinates(); ++c) {
-      if (system_.IsIntegrated(c)) state.q[c] = y[7 * nb_ + system_.SpeedIndex(c)];
-    }
-    ScatterVelocities(system_, kkt_, y.segment(np_, nv_), state);
-    state.z = y.tail(nz_);
-    UpdateDirectCoordinates(system_, state);
-  }
-
-  // ydot at the state (whose quaternions are those of y, unnormalized kept in y), given the
-  // accelerations and the state variables' derivatives.
-  void Derivative(const VecX& y, const State& state, const VecX& vdot, const VecX& zdot,
-                  VecX& yd) const {
-    yd.resize(size());
-    for (int b = 1; b <= nb_; ++b) {
-      const BodyState& s = state.bodies[b];
-      yd.segment<3>(7 * (b - 1)) = s.v_GB;
-      const auto qv = y.segment<4>(7 * (b - 1) + 3);
-      const Quat quat(qv[0], qv[1], qv[2], qv[3]);
-      // quat_dot = 1/2 [0, w_G] * quat
-      const Quat wq(0.0, s.w_GB.x(), s.w_GB.y(), s.w_GB.z());
-      const Quat qd = wq * quat;
-      yd.segment<4>(7 * (b - 1) + 3) << 0.5 * qd.w(), 0.5 * qd.x(), 0.5 * qd.y(), 0.5 * qd.z();
-    }
-    for (const Joint& joint : system_.joints()) {
-      if (joint.form != JointForm::kParameterized || joint.coordinates.empty()) continue;
-      const size_t n = joint.coordinates.size();
-      const JointValues q(state.q, joint.coordinates), u(state.u, joint.coordinates);
-      JointValues qdot(n);
-      joint.model->CalcQDot(q, u, qdot);
-      for (size_t i = 0; i < n; ++i) {
-        yd[7 * nb_ + system_.SpeedIndex(joint.coordinates[i])] = qdot[i];
-      }
-    }
-    yd.segment(np_, nv_) = vdot;
-    yd.tail(nz_) = zdot;
-  }
-
- private:
-  const System& system_;
-  const KktSolver& kkt_;
-  int nb_ = 0, np_ = 0, nv_ = 0, nz_ = 0;
-};
-
 // Dormand-Prince 5(4) with projection after every accepted step.
 class RungeKutta45 final : public Integrator {
  public:
@@ -183,6 +103,7 @@ class RungeKutta45 final : public Integrator {
     vector_.Unpack(y, t, scratch);
     zdot_.resize(vector_.num_state_variables());
     const Accelerations& acc = Evaluate(scratch, zdot_);
+    ydot.resize(vector_.size());
     vector_.Derivative(y, scratch, acc.vdot, zdot_, ydot);
   }
 
@@ -384,14 +305,43 @@ class LinearizedImplicitEuler final : public FixedStepIntegrator {
 
 }  // namespace
 
+namespace {
+
+using Maker = std::unique_ptr<Integrator> (*)(const System&, const IntegratorSettings&);
+
+template <class Scheme>
+std::unique_ptr<Integrator> Make(const System& system, const IntegratorSettings& settings) {
+  return std::make_unique<Scheme>(system, settings);
+}
+
+template <CvodeLinearSolver kSolver>
+std::unique_ptr<Integrator> MakeCvode(const System& system, const IntegratorSettings& settings) {
+  return MakeCvodeIntegrator(system, settings, kSolver);
+}
+
+// Every scheme by name (aliases included), in the order the error message lists them.
+constexpr struct {
+  const char* name;
+  Maker make;
+} kIntegrators[] = {
+    {"rk45", &Make<RungeKutta45>},
+    {"dopri5", &Make<RungeKutta45>},
+    {"cvode", &MakeCvode<CvodeLinearSolver::kDense>},
+    {"cvode-gmres", &MakeCvode<CvodeLinearSolver::kGmres>},
+    {"euler", &Make<SemiImplicitEuler>},
+    {"semi-implicit-euler", &Make<SemiImplicitEuler>},
+    {"implicit-euler", &Make<LinearizedImplicitEuler>},
+};
+
+}  // namespace
+
 std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System& system,
                                            const IntegratorSettings& settings) {
-  if (name == "rk45" || name == "dopri5") return std::make_unique<RungeKutta45>(system, settings);
-  if (name == "euler" || name == "semi-implicit-euler") {
-    return std::make_unique<SemiImplicitEuler>(system, settings);
+  for (const auto& entry : kIntegrators) {
+    if (name == entry.name) return entry.make(system, settings);
   }
-  if (name == "implicit-euler") return std::make_unique<LinearizedImplicitEuler>(system, settings);
-  throw Error("unknown integrator '" + name + "' (known: rk45, euler, implicit-euler)");
+  throw Error("unknown integrator '" + name +
+              "' (known: rk45, cvode, cvode-gmres, euler, implicit-euler)");
 }
 
 }  // namespace sinew::engine

@@ -1,9 +1,13 @@
-// Time stepping. Three schemes share one interface:
+// Time stepping. Four schemes share one interface:
 // Auxiliary state variables z are integrated with the positions and velocities (under rk45's
 // error control; by an explicit Euler step in the fixed-step schemes).
 //  - "rk45": Dormand-Prince 5(4) with error control on positions and velocities and, after each
 //    accepted step, projection of positions (Newton) and velocities (least squares) onto the
 //    constraints. Used to match OpenSim's results.
+//  - "cvode", "cvode-gmres": SUNDIALS CVODE's implicit BDF (orders 1-5, Newton; dense
+//    difference-quotient Jacobian, or matrix-free GMRES) with the same error control target
+//    and projection (cvode_integrator.h): for stiff models (stiff tendons, fibers far from
+//    equilibrium) where rk45's steps are bounded by stability.
 //  - "euler": fixed-step semi-implicit (symplectic) Euler: the new velocities solve the
 //    velocity-level KKT system M (v+ - v) = h f + J^T lambda, J v+ = c; positions then move
 //    with v+ and are projected. First order, robust, one factorization per step (the velocity
@@ -60,7 +64,7 @@ class Integrator {
   /// Takes one step from state.t, ending at or before `t_limit` (> state.t); steps are not
   /// shortened to land on intermediate times (see Interpolate). Throws sinew::Error on failure.
   void Advance(State& state, double t_limit);
-  /// True when Interpolate can give states inside the last step (rk45: dense output).
+  /// True when Interpolate can give states inside the last step (rk45, cvode: dense output).
   virtual bool HasDenseOutput() const { return false; }
   /// The state at time `t` inside the last step taken by Advance or StepTo (between its start
   /// and end), moved onto the constraints, written into `out` (any state of the system).
@@ -103,8 +107,9 @@ class Integrator {
   IntegratorStats stats_;
 };
 
-/// Makes the integrator named `name` ("rk45", "euler" or "implicit-euler"). Throws sinew::Error for
-/// another name.
+/// Makes the integrator named `name` ("rk45", "cvode", "cvode-gmres", "euler" or
+/// "implicit-euler"; aliases
+/// "dopri5" and "semi-implicit-euler"). Throws sinew::Error for another name.
 std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System& system,
                                            const IntegratorSettings& settings);
 
