@@ -22,8 +22,9 @@ namespace sinew::contact {
 /// Chrono's default effective curvature radius: m.
 inline constexpr double kFlatShapeRadius = 0.1;
 
-/// One contact between two shapes: they overlap by `depth` (m) along `n_G` (unit, in G, from
-/// shape 1's body towards shape 2's body), centred at `p_G`; `radius` is the effective radius
+/// One contact between two shapes: they overlap by `depth` (m; negative: a gap within the
+/// detector's envelope) along `n_G` (unit, in G, from shape 1's body towards shape 2's body),
+/// centred at `p_G` (midway through the overlap or gap); `radius` is the effective radius
 /// of curvature of the pair (radii combined as r1 r2 / (r1 + r2); a half-space's is infinite,
 /// a box's kFlatShapeRadius); `material` the pair's combined material.
 struct CollisionContact {
@@ -46,8 +47,13 @@ class CollisionDetector {
   /// (one per body, ground first; the model's default pose), typically cylinders at the joints
   /// where segments meet, are left out: they could only push the joints apart. Empty
   /// `X_GB_rest`: every allowed pair is kept.
+  /// `envelope` (m, >= 0): contacts are reported while the shapes are less than this apart,
+  /// with a negative depth (the gap) until they overlap. Exact for every pair: GJK and EPA work
+  /// on each convex shape grown by half the envelope (Bullet's margin), whose overlap is the
+  /// true one plus the envelope; against a half-space the shape's own points are measured.
+  /// Throws sinew::Error for a negative envelope.
   CollisionDetector(const CollisionModel& model, std::optional<double> ground_height,
-                    const std::vector<Transform>& X_GB_rest = {});
+                    const std::vector<Transform>& X_GB_rest = {}, double envelope = 0.0);
   ~CollisionDetector();
   CollisionDetector(const CollisionDetector&) = delete;
   CollisionDetector& operator=(const CollisionDetector&) = delete;
