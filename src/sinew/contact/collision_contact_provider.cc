@@ -21,6 +21,14 @@ const NscMaterial& CheckMaterial(const NscMaterial& material) {
   return material;
 }
 
+// The model whose default material (entry 0) has the NSC material's friction and restitution.
+CollisionModel WithDefaultMaterial(CollisionModel model, const NscMaterial& material) {
+  if (model.materials.empty()) model.materials.resize(1);
+  model.materials.front().friction = material.friction;
+  model.materials.front().restitution = material.restitution;
+  return model;
+}
+
 }  // namespace
 
 CollisionContactProvider::CollisionContactProvider(const CollisionModel& model,
@@ -28,7 +36,8 @@ CollisionContactProvider::CollisionContactProvider(const CollisionModel& model,
                                                    const NscMaterial& material,
                                                    const std::vector<Transform>& X_GB_rest)
     : material_(CheckMaterial(material)),
-      detector_(model, ground_height, X_GB_rest, material.envelope) {}
+      detector_(WithDefaultMaterial(model, material), ground_height, X_GB_rest,
+                material.envelope) {}
 
 int CollisionContactProvider::num_pairs() const { return detector_.num_pairs(); }
 
@@ -37,8 +46,8 @@ void CollisionContactProvider::FindContacts(
     std::vector<engine::UnilateralContact>& contacts) const {
   GatherBodyPoses(state, X_GB_);
   detector_.FindContacts(X_GB_, [&](const CollisionContact& c) {
-    contacts.push_back({c.body1, c.body2, c.p_G, c.n_G, c.depth, material_.friction,
-                        material_.restitution});
+    contacts.push_back({c.body1, c.body2, c.p_G, c.n_G, c.depth, c.material.friction,
+                        c.material.restitution});
   });
 }
 

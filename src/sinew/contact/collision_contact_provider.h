@@ -12,9 +12,10 @@
 
 namespace sinew::contact {
 
-/// The contact material of every shape pair (the seed's ChMaterialSurfaceNSC defaults:
-/// friction 0.6, no restitution) and the envelope within which contacts are reported before
-/// the shapes touch.
+/// The default contact material of an NSC run (the seed's ChMaterialSurfaceNSC defaults:
+/// friction 0.6, no restitution), given to the shapes without a material of their own (the
+/// model's entry 0), and the envelope within which contacts are reported before the shapes
+/// touch.
 struct NscMaterial {
   double friction = 0.6;     ///< Coulomb coefficient (>= 0)
   double restitution = 0.0;  ///< Newton's coefficient (0 to 1)
@@ -26,8 +27,10 @@ struct NscMaterial {
 };
 
 /// Contacts of a collision model's shapes with each other and with a ground plane y = H,
-/// through a CollisionDetector. Bodies are the model's (spec) body indices, which are the
-/// System's for systems the OpenSim parser builds.
+/// through a CollisionDetector. Each contact has its pair's material, the two shapes' combined
+/// as SMC combines them (CombineMaterials: the smaller friction, the smaller restitution);
+/// shapes with the default material take the NscMaterial's. Bodies are the model's (spec) body
+/// indices, which are the System's for systems the OpenSim parser builds.
 class CollisionContactProvider final : public engine::ContactProvider {
  public:
   /// `X_GB_rest`: the rest poses whose overlapping cylinder pairs are left out (see
