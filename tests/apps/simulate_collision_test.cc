@@ -94,6 +94,31 @@ TEST_F(SimulateCollisionTest, BallBouncesToRestitutionSquaredAndRestsWithNsc) {
   EXPECT_NEAR(apex - rest, e * e * fall, 2e-3) << "fall " << fall;
 }
 
+// NSC's contacts.sto: at rest the floor's impulse per step is m g h, so the reported force
+// (impulse / h) is the weight, to the solver's tolerance (1e-6 m/s: an impulse error of at most
+// m 1e-6 m/s, 1e-3 N at h = 1 ms), with no torque about the ball's centre (the contact is below
+// it) and one active contact; before the first step, none.
+TEST_F(SimulateCollisionTest, NscContactsTableReportsTheBallsWeightAtRest) {
+  const CliRun run = Run("simulate " + kBall + " --collision --contact nsc --duration 1.5 " +
+                         "--report-interval 0.01 --quiet --out " + Path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto contacts = ReadStoColumns(Path("out/contacts.sto"));
+  ASSERT_TRUE(contacts.count("nsc_contact.ball.force.Y")) << "no NSC columns";
+  const double weight = 9.80665, bound = 1.0 * 1e-6 / 1e-3;
+  EXPECT_NEAR(contacts.at("nsc_contact.ball.force.Y").back(), weight, bound);
+  EXPECT_NEAR(contacts.at("nsc_contact.ground.force.Y").back(), -weight, bound);
+  for (const char* axis : {"X", "Z"})
+    EXPECT_NEAR(contacts.at(std::string("nsc_contact.ball.force.") + axis).back(), 0.0, bound);
+  for (const char* axis : {"X", "Y", "Z"}) {
+    EXPECT_NEAR(contacts.at(std::string("nsc_contact.ball.torque.") + axis).back(), 0.0,
+                0.1 * bound);
+  }
+  EXPECT_EQ(contacts.at("nsc_contact.active_contacts").back(), 1.0);
+  EXPECT_EQ(contacts.at("nsc_contact.ground-ball.active_contacts").back(), 1.0);
+  EXPECT_EQ(contacts.at("nsc_contact.active_contacts").front(), 0.0);
+  EXPECT_EQ(contacts.at("nsc_contact.ball.force.Y").front(), 0.0);
+}
+
 TEST_F(SimulateCollisionTest, BadContactOptionsAreRefused) {
   for (const auto& [options, what] :
        {std::pair<std::string, std::string>{"--collision --friction -0.1", "friction -0.1"},

@@ -8,6 +8,7 @@
 #include <sinew/engine/unilateral_contact.h>
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace sinew::contact {
@@ -45,6 +46,8 @@ class CollisionContactProvider final : public engine::ContactProvider {
   const NscMaterial& material() const { return material_; }
   /// Shape pairs tested per query (the pairs the model allows, and each shape with the plane).
   int num_pairs() const;
+  /// The body pairs (body1 < body2) of the tested shape pairs, sorted, each once.
+  std::vector<std::pair<int, int>> BodyPairs() const { return detector_.BodyPairs(); }
 
  private:
   NscMaterial material_;
