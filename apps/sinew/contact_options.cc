@@ -6,8 +6,9 @@ namespace sinew::cli {
 
 void AddContactOptions(CLI::App* cmd, ContactOptions& o) {
   cmd->add_flag("--collision", o.collision,
-                "The seed's collision shapes (a cylinder per segment, the model's ContactSphere "
-                "and ContactHalfSpace) collide; never a body with its parent");
+                "The seed's collision shapes (a cylinder per segment, the model's ContactSphere, "
+                "ContactHalfSpace, ContactCylinder, ContactEllipsoid and ContactMesh) collide; "
+                "never a body with its parent");
   cmd->add_option("--contact", o.method,
                   "With --collision: smc (penalty, default) or nsc (complementarity, fixed "
                   "--step); either's contacts go to contacts.sto (smc_contact.*, nsc_contact.*)")

@@ -43,12 +43,14 @@ void OpenTable(std::optional<io::StorageWriter>& writer, const std::string& file
 }  // namespace
 
 BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options) {
-  // With --collision, ContactSphere and ContactHalfSpace collide: they are simulated.
+  // With --collision, the contact geometry that is a collision shape collides: it is simulated.
   model::ModelSpec shown;
   if (options.contact.collision) {
     shown = spec;
     std::erase_if(shown.contact_geometry, [](const model::ContactGeometrySpec& g) {
-      return g.type == "ContactSphere" || g.type == "ContactHalfSpace";
+      return g.type == "ContactSphere" || g.type == "ContactHalfSpace" ||
+             g.type == "ContactCylinder" || g.type == "ContactEllipsoid" ||
+             g.type == "ContactMesh";
     });
   }
   WarnNotSimulated(options.contact.collision ? shown : spec, options.model_path, options.strict,

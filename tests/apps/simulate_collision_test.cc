@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -117,6 +119,35 @@ TEST_F(SimulateCollisionTest, NscContactsTableReportsTheBallsWeightAtRest) {
   EXPECT_EQ(contacts.at("nsc_contact.ground-ball.active_contacts").back(), 1.0);
   EXPECT_EQ(contacts.at("nsc_contact.active_contacts").front(), 0.0);
   EXPECT_EQ(contacts.at("nsc_contact.ball.force.Y").front(), 0.0);
+}
+
+// A collision shape the model cannot have (a ContactMesh whose file is missing, a
+// ContactCylinder with a negative radius) stops --collision with exit 2, file:line:component.
+TEST_F(SimulateCollisionTest, BadCollisionShapesAreRefusedWithFileLineAndComponent) {
+  std::ifstream in(kBall);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string ball = text.str();
+  const std::string anchor = "<ContactSphere name=\"sphere\">";
+  ASSERT_NE(ball.find(anchor), std::string::npos);
+  for (const auto& [shape, what] :
+       {std::pair<std::string, std::string>{
+            "<ContactMesh name=\"hull\"><socket_frame>/bodyset/ball</socket_frame>"
+            "<filename>missing.obj</filename></ContactMesh>\n",
+            "not found"},
+        {"<ContactCylinder name=\"hull\"><socket_frame>/bodyset/ball</socket_frame>"
+         "<radius>-0.1</radius></ContactCylinder>\n",
+         "radius > 0"}}) {
+    std::string model = ball;
+    model.insert(model.find(anchor), shape);
+    std::ofstream(Path("bad.osim")) << model;
+    const CliRun run = Run("simulate " + Path("bad.osim") + " --collision --contact nsc " +
+                           "--duration 0.01 --quiet --out " + Path("out"));
+    EXPECT_EQ(run.exit_code, 2) << run.err;
+    EXPECT_NE(run.err.find("bad.osim:"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("/contactgeometryset/hull"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(what), std::string::npos) << run.err;
+  }
 }
 
 TEST_F(SimulateCollisionTest, BadContactOptionsAreRefused) {

@@ -1,4 +1,5 @@
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/CollisionShapes/btCylinderShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
@@ -8,6 +9,7 @@
 #include <LinearMath/btAabbUtil2.h>
 #include <sinew/common/error.h>
 #include <sinew/contact/collision_detection.h>
+#include <sinew/contact/internal/bullet_ellipsoid.h>
 
 #include <algorithm>
 #include <array>
@@ -30,48 +32,51 @@ Mat3 RotationYTo(const Vec3& u) {
   return Eigen::Quaterniond::FromTwoVectors(Vec3::UnitY(), u).toRotationMatrix();
 }
 
-enum class Kind { kCylinder, kSphere, kBox, kHalfSpace };
+enum class Kind { kCylinder, kSphere, kBox, kHalfSpace, kEllipsoid, kHull };
 
 struct Shape {
   int body = 0;
-  Transform X_BS;
+  Transform X_BS;  // for a cylinder, Bullet's: its axis along S's y
   Kind kind = Kind::kSphere;
   double radius = 0.0;  // of curvature; 0 for a half-space (infinite)
   int material = 0;
   // Bullet's shape, inflated by half the envelope (its margin) for GJK; null for a half-space.
   std::unique_ptr<btConvexShape> bt;
+  std::vector<Vec3> hull;  // kHull: its distinct points, in S
 };
 
-// The points of a convex shape (in its frame S, not inflated) that can lie deepest in a
-// half-space whose inward direction (into its solid) is `d_S`: at most 8.
-struct Candidates {
-  std::array<Vec3, 8> p_S;
-  int count = 0;
-};
-using FindCandidates = void (*)(const Shape& shape, const Vec3& d_S, Candidates& out);
-
-// A sphere: its point farthest along d_S.
-void SphereCandidates(const Shape& shape, const Vec3& d_S, Candidates& out) {
-  out.p_S[out.count++] = shape.radius * d_S.normalized();
-}
-// A cylinder (axis S's y): the deepest point of each cap's rim, Bullet's support of its core
-// along d_S with its axial part set to either end.
-void CylinderCandidates(const Shape& shape, const Vec3& d_S, Candidates& out) {
-  for (const double end : {1.0, -1.0}) {
-    out.p_S[out.count++] =
-        FromBt(shape.bt->localGetSupportingVertexWithoutMargin(btVector3(d_S.x(), end, d_S.z())));
+// Calls visit(p_S) for each point of the convex `shape` (in its frame S, not inflated) that can
+// lie deepest in a half-space whose inward direction (into its solid) is `d_S`.
+template <class Visit>
+void ForEachCandidate(const Shape& shape, const Vec3& d_S, Visit&& visit) {
+  switch (shape.kind) {
+    case Kind::kSphere:  // its point farthest along d_S
+      visit(Vec3(shape.radius * d_S.normalized()));
+      break;
+    case Kind::kCylinder:  // the deepest point of each cap's rim: the core's support along d_S
+                           // with its axial part set to either end
+      for (const double end : {1.0, -1.0}) {
+        visit(FromBt(
+            shape.bt->localGetSupportingVertexWithoutMargin(btVector3(d_S.x(), end, d_S.z()))));
+      }
+      break;
+    case Kind::kBox: {  // its corners
+      const Vec3 h =
+          FromBt(static_cast<const btBoxShape&>(*shape.bt).getHalfExtentsWithoutMargin());
+      for (int i = 0; i < 8; ++i)
+        visit(Vec3(i & 1 ? h.x() : -h.x(), i & 2 ? h.y() : -h.y(), i & 4 ? h.z() : -h.z()));
+      break;
+    }
+    case Kind::kEllipsoid:  // its (exact) support point
+      visit(FromBt(shape.bt->localGetSupportingVertexWithoutMargin(ToBt(d_S))));
+      break;
+    case Kind::kHull:  // its points (each one inside the half-space is a contact)
+      for (const Vec3& p : shape.hull) visit(p);
+      break;
+    case Kind::kHalfSpace:
+      break;
   }
 }
-// A box: its corners.
-void BoxCandidates(const Shape& shape, const Vec3& /*d_S*/, Candidates& out) {
-  const Vec3 h = FromBt(static_cast<const btBoxShape&>(*shape.bt).getHalfExtentsWithoutMargin());
-  for (int i = 0; i < 8; ++i) {
-    out.p_S[out.count++] = Vec3(i & 1 ? h.x() : -h.x(), i & 2 ? h.y() : -h.y(), i & 4 ? h.z() : -h.z());
-  }
-}
-// Per Kind (a half-space has none).
-constexpr std::array<FindCandidates, 4> kCandidatesOf = {&CylinderCandidates, &SphereCandidates,
-                                                         &BoxCandidates, nullptr};
 
 // Bullet keeps a shape's margin outside its core (`extents` without it): the core grown by
 // `inflation` all round, exactly the Minkowski sum GJK and EPA then work on.
@@ -95,6 +100,17 @@ Shape MakeCylinder(const CollisionCylinder& c, double inflation) {
   return s;
 }
 
+// The distinct points of a mesh (files often repeat a vertex per face).
+std::vector<Vec3> DistinctPoints(const std::vector<Vec3>& points) {
+  std::vector<Vec3> sorted = points;
+  const auto less = [](const Vec3& a, const Vec3& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  };
+  std::sort(sorted.begin(), sorted.end(), less);
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  return sorted;
+}
+
 Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
   Shape s;
   s.body = g.body;
@@ -115,6 +131,31 @@ Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
     case CollisionShapeKind::kHalfSpace:
       s.kind = Kind::kHalfSpace;
       break;
+    case CollisionShapeKind::kCylinder:
+      // OpenSim's axis is S's z, Bullet's its y: turn y onto z (+90 degrees about x).
+      s.kind = Kind::kCylinder;
+      s.radius = g.radius;
+      s.X_BS = g.X_BS * Transform(RotationYTo(Vec3::UnitZ()), Vec3::Zero());
+      s.bt = Inflated<btCylinderShape>(Vec3(g.radius, g.half_length, g.radius), inflation);
+      break;
+    case CollisionShapeKind::kEllipsoid: {
+      s.kind = Kind::kEllipsoid;
+      s.radius = g.radii.minCoeff();  // for SMC's Hertz law: the sharpest principal radius
+      s.bt = std::make_unique<BulletEllipsoid>(ToBt(g.radii));
+      s.bt->setMargin(inflation);
+      break;
+    }
+    case CollisionShapeKind::kConvexMesh: {
+      s.kind = Kind::kHull;
+      s.radius = kFlatShapeRadius;
+      if (g.vertices) s.hull = DistinctPoints(*g.vertices);
+      auto hull = std::make_unique<btConvexHullShape>();
+      for (const Vec3& p : s.hull) hull->addPoint(ToBt(p), false);
+      hull->recalcLocalAabb();
+      hull->setMargin(inflation);
+      s.bt = std::move(hull);
+      break;
+    }
   }
   return s;
 }
@@ -255,21 +296,19 @@ void CollisionDetector::Impl::CollideWithHalfSpace(const Pair& p,
   const Transform X_GH = X_GB[h.body] * h.X_BS;
   const Transform X_GS = X_GB[s.body] * s.X_BS;
   const Vec3 inward_G = X_GH.R.col(0);  // into the solid x > 0
-  Candidates candidates;
-  kCandidatesOf[static_cast<int>(s.kind)](s, X_GS.R.transpose() * inward_G, candidates);
   CollisionContact c;
   c.body1 = h.body;
   c.body2 = s.body;
   c.n_G = -inward_G;
   c.radius = p.radius;
   c.material = p.material;
-  for (int k = 0; k < candidates.count; ++k) {
-    const Vec3 p_G = X_GS * candidates.p_S[k];
+  ForEachCandidate(s, X_GS.R.transpose() * inward_G, [&](const Vec3& p_S) {
+    const Vec3 p_G = X_GS * p_S;
     c.depth = (p_G - X_GH.p).dot(inward_G);
-    if (!(c.depth > -envelope)) continue;
+    if (!(c.depth > -envelope)) return;
     c.p_G = p_G + 0.5 * c.depth * c.n_G;
     visit(c);
-  }
+  });
 }
 
 template <class Visit>
