@@ -244,6 +244,13 @@ TEST(CollisionShapesTest, BadSizesAndMissingMeshesAreErrorsWithFileLineAndCompon
       EXPECT_NE(std::string(error.what()).find(what), std::string::npos) << error.what();
     }
   }
+  // Through the C++ API: a mesh without vertices.
+  CollisionModel model;
+  CollisionGeometry empty;
+  empty.name = "empty";
+  empty.kind = CollisionShapeKind::kConvexMesh;
+  model.geometry.push_back(empty);
+  EXPECT_THROW(CollisionDetector(model, std::nullopt), Error);
 }
 
 }  // namespace

@@ -149,6 +149,7 @@ Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
       s.kind = Kind::kHull;
       s.radius = kFlatShapeRadius;
       if (g.vertices) s.hull = DistinctPoints(*g.vertices);
+      if (s.hull.empty()) throw Error("contact: the mesh '" + g.name + "' has no vertices");
       auto hull = std::make_unique<btConvexHullShape>();
       for (const Vec3& p : s.hull) hull->addPoint(ToBt(p), false);
       hull->recalcLocalAabb();
