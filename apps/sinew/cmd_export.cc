@@ -1,5 +1,5 @@
 // `sinew export MODEL.osim [--motion FILE | --states FILE] [--contacts FILE]
-//  --vis primitives|mesh [--no-paths]
+//  --vis primitives|mesh [--no-paths] [--collision]
 //  [--verbose] --out FILE.glb|FILE.html`: the model (and its motion) for a glTF viewer or a
 //  browser.
 #include <sinew/io/osim_reader.h>
@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/sinew/collision_drawing.h"
 #include "apps/sinew/commands.h"
 #include "apps/sinew/notices.h"
 #include "apps/sinew/option_checks.h"
@@ -31,6 +32,7 @@ struct ExportArgs {
   std::vector<std::string> geometry_dirs;
   double fps = 0;
   bool no_paths = false;
+  bool collision = false;
   bool verbose = false;
 };
 
@@ -44,6 +46,7 @@ void RunExport(const ExportArgs& args) {
   options.visual.geometry_dirs = args.geometry_dirs;
   options.max_fps = args.fps;
   options.paths = !args.no_paths;
+  if (args.collision) options.collision_parts = ModelCollisionParts(spec);
   viz::BodyMotion motion;
   io::Storage table, contacts;
   const std::string& table_file = args.motion.empty() ? args.states : args.motion;
@@ -85,6 +88,9 @@ void AddExportCommand(CLI::App& app) {
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
   cmd->add_option("--fps", args->fps, "Keep at most this many frames per second (default: all)")
       ->check(FiniteNumber(0.0));
+  cmd->add_flag("--collision", args->collision,
+                "Also draw the collision shapes (the seed's cylinders, the contact geometry that "
+                "collides), as simulate --collision --export does");
   cmd->add_flag("--no-paths", args->no_paths,
                 "Leave out the muscle, spring and ligament paths (drawn as red lines)");
   cmd->add_flag(

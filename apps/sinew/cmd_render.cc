@@ -1,5 +1,5 @@
-// `sinew render MODEL.osim [--motion FILE | --states FILE] [--time T] [--no-paths] [--verbose]
-//  --out FILE.png`: a still picture made by the built-in software renderer (no display or GPU
+// `sinew render MODEL.osim [--motion FILE | --states FILE] [--time T] [--no-paths]
+//  [--collision] [--verbose] --out FILE.png`: a still picture made by the built-in software renderer (no display or GPU
 // needed).
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
@@ -18,6 +18,7 @@
 
 #include "apps/sinew/commands.h"
 #include "apps/sinew/notices.h"
+#include "apps/sinew/collision_drawing.h"
 #include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
@@ -39,6 +40,7 @@ struct RenderArgs {
   std::vector<std::string> geometry_dirs;
   bool no_floor = false;
   bool no_paths = false;
+  bool collision = false;
   bool verbose = false;
 };
 
@@ -66,6 +68,7 @@ void RunRender(const RenderArgs& args) {
   }
   const std::vector<Transform>& X_GB = frame.X_GB[0];
   viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
+  if (args.collision) viz::AddCollisionParts(ModelCollisionParts(spec), scene);
   std::vector<std::vector<Vec3>> lines;
   std::vector<Vec3> line_colors;
   if (!args.no_paths) {
@@ -116,6 +119,9 @@ void AddRenderCommand(CLI::App& app) {
   cmd->add_option("--geometry-dir", args->geometry_dirs,
                   "Extra folder to search for mesh files (repeatable; also $SINEW_GEOMETRY_PATH)");
   cmd->add_flag("--no-floor", args->no_floor, "Leave out the floor and the model's shadow");
+  cmd->add_flag("--collision", args->collision,
+                "Also draw the collision shapes (the seed's cylinders, the contact geometry that "
+                "collides), as simulate --collision --export does");
   cmd->add_flag("--no-paths", args->no_paths,
                 "Leave out the muscle, spring and ligament paths (drawn as red lines)");
   cmd->add_flag(

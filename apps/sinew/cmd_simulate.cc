@@ -10,12 +10,15 @@
 // Writes DIR/states.sto (every coordinate's value and speed, OpenSim 4 labels, radians and
 // metres), DIR/bodies.sto (OpenSim BodyKinematics positions), DIR/forces.sto (every force's
 // columns, OpenSim's ForceReporter layout), DIR/contacts.sto when the model has contact forces
-// (each one's force and torque per body and its active contacts) and, when asked,
-// DIR/constraints.sto (the forces of the model's constraints, OpenSim's record labels), all
-// streamed as rows are computed. SIGINT or SIGTERM stops the run cleanly: the rows so far are kept,
+// or collides with NSC (each one's force and torque per body and its active contacts) and, when
+// asked, DIR/constraints.sto (the forces of the model's constraints, OpenSim's record labels),
+// all streamed as rows are computed. SIGINT or SIGTERM stops the run cleanly: the rows so far are kept,
 // in files whose header says status=partial, and the exit code is 128 + the signal.
+#include <sinew/contact/collision_contact_provider.h>
 #include <sinew/contact/contact_force.h>
+#include <sinew/contact/nsc_contact_table.h>
 #include <sinew/engine/integrator.h>
+#include <sinew/engine/nsc_integrator.h>
 #include <sinew/engine/pose.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
@@ -125,7 +128,15 @@ void RunSimulate(const SimulateOptions& options) {
   files.forces = options.out + "/forces.sto";
   if (options.report_constraint_forces) files.constraints = options.out + "/constraints.sto";
   files.contacts = options.out + "/contacts.sto";
-  RunTables tables(system, spec, files);
+  // NSC's collision contacts are the stepper's impulses, not a force element's: their columns
+  // come from the stepper's last step.
+  std::optional<contact::NscContactTable> nsc_table;
+  if (const auto* nsc = dynamic_cast<const engine::NscIntegrator*>(integrator.get())) {
+    if (const auto* provider =
+            dynamic_cast<const contact::CollisionContactProvider*>(nsc->provider().get()))
+      nsc_table.emplace(system, *nsc, *provider);
+  }
+  RunTables tables(system, spec, files, nsc_table ? &*nsc_table : nullptr);
   viz::BodyMotion motion;
   std::function<void(const engine::State&)> record_motion;
   // The coordinates too, so that the export draws the muscle paths.

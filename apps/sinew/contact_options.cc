@@ -6,9 +6,12 @@ namespace sinew::cli {
 
 void AddContactOptions(CLI::App* cmd, ContactOptions& o) {
   cmd->add_flag("--collision", o.collision,
-                "The seed's collision shapes (a cylinder per segment, the model's ContactSphere "
-                "and ContactHalfSpace) collide; never a body with its parent");
-  cmd->add_option("--contact", o.method, "With --collision: smc (penalty, default) or nsc")
+                "The seed's collision shapes (a cylinder per segment, the model's ContactSphere, "
+                "ContactHalfSpace, ContactCylinder, ContactEllipsoid and ContactMesh) collide; "
+                "never a body with its parent");
+  cmd->add_option("--contact", o.method,
+                  "With --collision: smc (penalty, default) or nsc (complementarity, fixed "
+                  "--step); either's contacts go to contacts.sto (smc_contact.*, nsc_contact.*)")
       ->check(CLI::IsMember({"nsc", "smc"}));
   cmd->add_option("--ground-plane", o.ground_plane,
                   "With --collision: a ground plane y = HEIGHT (m), the solid below it")

@@ -43,12 +43,14 @@ void OpenTable(std::optional<io::StorageWriter>& writer, const std::string& file
 }  // namespace
 
 BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options) {
-  // With --collision, ContactSphere and ContactHalfSpace collide: they are simulated.
+  // With --collision, the contact geometry that is a collision shape collides: it is simulated.
   model::ModelSpec shown;
   if (options.contact.collision) {
     shown = spec;
     std::erase_if(shown.contact_geometry, [](const model::ContactGeometrySpec& g) {
-      return g.type == "ContactSphere" || g.type == "ContactHalfSpace";
+      return g.type == "ContactSphere" || g.type == "ContactHalfSpace" ||
+             g.type == "ContactCylinder" || g.type == "ContactEllipsoid" ||
+             g.type == "ContactMesh";
     });
   }
   WarnNotSimulated(options.contact.collision ? shown : spec, options.model_path, options.strict,
@@ -126,8 +128,8 @@ engine::State MakeStartState(const engine::System& system, const InitialStates* 
 }
 
 RunTables::RunTables(const engine::System& system, const model::ModelSpec& spec,
-                     const TableFiles& files)
-    : system_(system), spec_(spec), force_reporter_(system), data_(system) {
+                     const TableFiles& files, const contact::NscContactTable* nsc)
+    : system_(system), spec_(spec), nsc_(nsc), force_reporter_(system), data_(system) {
   OpenTable(states_, files.states, "states", opensim::StatesLabels(system));
   // OpenSim's Forward tool also writes the states with rotational coordinates' values and
   // speeds in degrees (SimbodyEngine::convertRadiansToDegrees); other columns are unchanged.
@@ -149,8 +151,11 @@ RunTables::RunTables(const engine::System& system, const model::ModelSpec& spec,
   OpenTable(controls_, files.controls, "controls", opensim::ControlsLabels(system));
   OpenTable(constraints_, files.constraints, "ConstraintForces",
             opensim::ConstraintForcesLabels(system));
-  // Each contact force's force and torque per body and its active contacts, when there are any.
-  if (std::vector<std::string> labels = contact::ContactTableLabels(system); !labels.empty()) {
+  // Each contact force's force and torque per body and its active contacts, when there are any;
+  // then NSC's collision contacts.
+  std::vector<std::string> labels = contact::ContactTableLabels(system);
+  if (nsc_) labels.insert(labels.end(), nsc_->labels().begin(), nsc_->labels().end());
+  if (!labels.empty()) {
     OpenTable(contacts_, files.contacts, "Contacts", std::move(labels));
   }
   X_GB_.resize(system.num_bodies());
@@ -186,6 +191,10 @@ void RunTables::Record(const engine::State& s) {
   }
   if (contacts_) {
     contact::ContactTableRow(system_, s, row_);
+    if (nsc_) {
+      nsc_->Row(nsc_row_);
+      row_.insert(row_.end(), nsc_row_.begin(), nsc_row_.end());
+    }
     contacts_->AppendRow(s.t, row_);
   }
 }

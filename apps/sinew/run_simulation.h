@@ -3,6 +3,7 @@
 // bar; and a clean stop on SIGINT/SIGTERM.
 #pragma once
 
+#include <sinew/contact/nsc_contact_table.h>
 #include <sinew/engine/dynamics.h>
 #include <sinew/engine/force_reporter.h>
 #include <sinew/engine/integrator.h>
@@ -72,14 +73,17 @@ struct TableFiles {
   std::string forces;          ///< ForceReporter
   std::string controls;        ///< each actuator's control (OpenSim's controls table)
   std::string constraints;     ///< constraint forces
-  std::string contacts;        ///< contact forces per body; written only when the model has some
+  std::string contacts;  ///< contact forces per body; written only when the model has some, or NSC
 };
 
 /// The tables of a run, streamed to disk row by row (bounded memory) and committed by Finish.
 class RunTables {
  public:
-  /// Opens every table named in `files` for `system` (built from `spec`).
-  RunTables(const engine::System& system, const model::ModelSpec& spec, const TableFiles& files);
+  /// Opens every table named in `files` for `system` (built from `spec`). With `nsc` (an NSC
+  /// run's collision contacts, which must outlive the tables) its columns follow the contact
+  /// forces' in the contacts table.
+  RunTables(const engine::System& system, const model::ModelSpec& spec, const TableFiles& files,
+            const contact::NscContactTable* nsc = nullptr);
   /// Appends one row per table for `state`.
   void Record(const engine::State& state);
   /// Commits every table; a non-empty `partial_reason` marks them status=partial.
@@ -92,12 +96,13 @@ class RunTables {
  private:
   const engine::System& system_;
   const model::ModelSpec& spec_;
+  const contact::NscContactTable* nsc_;
   engine::ForceReporter force_reporter_;
   engine::Data data_;
   std::optional<io::StorageWriter> states_, states_degrees_, bodies_, forces_, controls_,
       constraints_, contacts_;
   std::vector<double> degrees_per_unit_;  // per states column: 180/pi (rotational) or 1
-  std::vector<double> row_;
+  std::vector<double> row_, nsc_row_;
   std::vector<Transform> X_GB_;
 };
 

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -92,6 +94,60 @@ TEST_F(SimulateCollisionTest, BallBouncesToRestitutionSquaredAndRestsWithNsc) {
   }
   const double fall = 0.3 - rest;
   EXPECT_NEAR(apex - rest, e * e * fall, 2e-3) << "fall " << fall;
+}
+
+// NSC's contacts.sto: at rest the floor's impulse per step is m g h, so the reported force
+// (impulse / h) is the weight, to the solver's tolerance (1e-6 m/s: an impulse error of at most
+// m 1e-6 m/s, 1e-3 N at h = 1 ms), with no torque about the ball's centre (the contact is below
+// it) and one active contact; before the first step, none.
+TEST_F(SimulateCollisionTest, NscContactsTableReportsTheBallsWeightAtRest) {
+  const CliRun run = Run("simulate " + kBall + " --collision --contact nsc --duration 1.5 " +
+                         "--report-interval 0.01 --quiet --out " + Path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto contacts = ReadStoColumns(Path("out/contacts.sto"));
+  ASSERT_TRUE(contacts.count("nsc_contact.ball.force.Y")) << "no NSC columns";
+  const double weight = 9.80665, bound = 1.0 * 1e-6 / 1e-3;
+  EXPECT_NEAR(contacts.at("nsc_contact.ball.force.Y").back(), weight, bound);
+  EXPECT_NEAR(contacts.at("nsc_contact.ground.force.Y").back(), -weight, bound);
+  for (const char* axis : {"X", "Z"})
+    EXPECT_NEAR(contacts.at(std::string("nsc_contact.ball.force.") + axis).back(), 0.0, bound);
+  for (const char* axis : {"X", "Y", "Z"}) {
+    EXPECT_NEAR(contacts.at(std::string("nsc_contact.ball.torque.") + axis).back(), 0.0,
+                0.1 * bound);
+  }
+  EXPECT_EQ(contacts.at("nsc_contact.active_contacts").back(), 1.0);
+  EXPECT_EQ(contacts.at("nsc_contact.ground-ball.active_contacts").back(), 1.0);
+  EXPECT_EQ(contacts.at("nsc_contact.active_contacts").front(), 0.0);
+  EXPECT_EQ(contacts.at("nsc_contact.ball.force.Y").front(), 0.0);
+}
+
+// A collision shape the model cannot have (a ContactMesh whose file is missing, a
+// ContactCylinder with a negative radius) stops --collision with exit 2, file:line:component.
+TEST_F(SimulateCollisionTest, BadCollisionShapesAreRefusedWithFileLineAndComponent) {
+  std::ifstream in(kBall);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string ball = text.str();
+  const std::string anchor = "<ContactSphere name=\"sphere\">";
+  ASSERT_NE(ball.find(anchor), std::string::npos);
+  for (const auto& [shape, what] :
+       {std::pair<std::string, std::string>{
+            "<ContactMesh name=\"hull\"><socket_frame>/bodyset/ball</socket_frame>"
+            "<filename>missing.obj</filename></ContactMesh>\n",
+            "not found"},
+        {"<ContactCylinder name=\"hull\"><socket_frame>/bodyset/ball</socket_frame>"
+         "<radius>-0.1</radius></ContactCylinder>\n",
+         "radius > 0"}}) {
+    std::string model = ball;
+    model.insert(model.find(anchor), shape);
+    std::ofstream(Path("bad.osim")) << model;
+    const CliRun run = Run("simulate " + Path("bad.osim") + " --collision --contact nsc " +
+                           "--duration 0.01 --quiet --out " + Path("out"));
+    EXPECT_EQ(run.exit_code, 2) << run.err;
+    EXPECT_NE(run.err.find("bad.osim:"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("/contactgeometryset/hull"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(what), std::string::npos) << run.err;
+  }
 }
 
 TEST_F(SimulateCollisionTest, BadContactOptionsAreRefused) {

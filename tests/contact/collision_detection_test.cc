@@ -2,6 +2,7 @@
 // overlaps of cylinders with each other and with a ground plane against their closed forms, and
 // on a real skeleton the family filter and the pairs left out because they overlap at rest.
 #include <gtest/gtest.h>
+#include <sinew/common/error.h>
 #include <sinew/contact/collision_detection.h>
 #include <sinew/kinematics/forward_kinematics.h>
 #include <sinew/kinematics/kinematic_tree.h>
@@ -122,6 +123,48 @@ TEST(CollisionDetectionTest, SphereRestsOnAnEnvironmentBoxAndItsFloorByTheirClos
   EXPECT_NEAR(c[0].radius, 0.1, 1e-15);
   // A box needs positive half extents.
   EXPECT_THROW(parser.AddEnvironmentBox("flat", Transform(), Vec3(1, 0, 1)), Error);
+}
+
+TEST(CollisionDetectionTest, EnvelopeReportsTheExactGapOfEveryShape) {
+  // The same scene with an envelope of 2 mm: each shape is reported while it is less than that
+  // from what it meets, with the gap as a negative depth, and its overlap unchanged once it
+  // overlaps. GJK works on the shapes grown by 1 mm each (the margin), whose overlap is the
+  // true one plus the envelope.
+  constexpr double kEnvelope = 2e-3;
+  opensim::OpenSimParser parser;
+  parser.EnableCollision();
+  parser.AddEnvironmentBox("step", Transform::Translation(Vec3(0, 0.25, 0)), Vec3(0.5, 0.25, 0.5));
+  parser.Parse(std::string(SINEW_TEST_DATA_DIR) + "/sinew/ball_on_floor.osim");
+  const CollisionDetector detector(parser.GetCollisionModel(), std::nullopt, {}, kEnvelope);
+  // 1.5 mm above the step (the floor far below): one contact, depth -1.5 mm, midway in the gap.
+  std::vector<Transform> X_GB = {Transform(), Transform::Translation(Vec3(0.1, 0.6015, 0))};
+  std::vector<CollisionContact> c = Contacts(detector, X_GB);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_NEAR(c[0].depth, -1.5e-3, 1e-9);
+  EXPECT_NEAR(c[0].p_G.y(), 0.50075, 1e-9);
+  EXPECT_NEAR((c[0].n_G - Vec3::UnitY()).norm(), 0.0, 1e-9);
+  // 0.02 m into the step: as without the envelope.
+  X_GB[1] = Transform::Translation(Vec3(0.1, 0.58, 0));
+  c = Contacts(detector, X_GB);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_NEAR(c[0].depth, 0.02, 1e-9);
+  EXPECT_NEAR(c[0].p_G.y(), 0.49, 1e-9);
+  // 2.5 mm above: beyond the envelope, nothing.
+  X_GB[1] = Transform::Translation(Vec3(0.1, 0.6025, 0));
+  EXPECT_TRUE(Contacts(detector, X_GB).empty());
+  // Beside the step, 1 mm above the floor half-space: depth -1 mm exactly.
+  X_GB[1] = Transform::Translation(Vec3(2, 0.101, 0));
+  c = Contacts(detector, X_GB);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_NEAR(c[0].depth, -1e-3, 1e-15);
+  EXPECT_NEAR(c[0].p_G.y(), 0.0005, 1e-15);
+  // Two parallel cylinders (r = 5 cm) 0.101 m apart: a gap of 1 mm, exact to EPA's accuracy.
+  const CollisionDetector pair(TwoCylinders(0.05), std::nullopt, {}, kEnvelope);
+  X_GB = {Transform(), Transform(), Transform::Translation(Vec3(0, 0.101, 0))};
+  c = Contacts(pair, X_GB);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_NEAR(c[0].depth, -1e-3, 1e-6);
+  EXPECT_THROW(CollisionDetector(TwoCylinders(0.05), std::nullopt, {}, -1e-3), Error);
 }
 
 TEST(CollisionDetectionTest, SkeletonAtRestTouchesNothingAndNeverItsParents) {

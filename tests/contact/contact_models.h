@@ -14,12 +14,11 @@
 
 namespace sinew::testing {
 
-/// A free body "body" (mass `mass`, central inertia diag(`inertia`)) under `gravity`, with
-/// ContactSpheres "s0", "s1", ... of radius `radius` at `centers` (in the body frame), a
-/// ground ContactHalfSpace "floor" whose solid is y < 0, and `forces` in the ForceSet.
-inline std::string FreeBodyContactModel(double mass, const Vec3& inertia, const Vec3& gravity,
-                                        double radius, const std::vector<Vec3>& centers,
-                                        const std::string& forces) {
+/// A free body "body" (mass `mass`, central inertia diag(`inertia`)) under `gravity`, with a
+/// ground ContactHalfSpace "floor" whose solid is y < 0, then the contact geometry `geometry`
+/// (XML) in the ContactGeometrySet, and `forces` in the ForceSet.
+inline std::string FreeBodyModel(double mass, const Vec3& inertia, const Vec3& gravity,
+                                 const std::string& geometry, const std::string& forces) {
   std::ostringstream m;
   m.precision(17);
   m << R"(<OpenSimDocument Version="40000"><Model name="contact">
@@ -35,14 +34,24 @@ inline std::string FreeBodyContactModel(double mass, const Vec3& inertia, const 
 <ContactGeometrySet><objects>
 <ContactHalfSpace name="floor"><socket_frame>/ground</socket_frame>
 <orientation>0 0 -1.5707963267948966</orientation></ContactHalfSpace>
-)";
+)" << geometry
+    << "</objects></ContactGeometrySet></Model></OpenSimDocument>";
+  return m.str();
+}
+
+/// FreeBodyModel with ContactSpheres "s0", "s1", ... of radius `radius` at `centers` (in the
+/// body frame).
+inline std::string FreeBodyContactModel(double mass, const Vec3& inertia, const Vec3& gravity,
+                                        double radius, const std::vector<Vec3>& centers,
+                                        const std::string& forces) {
+  std::ostringstream g;
+  g.precision(17);
   for (size_t i = 0; i < centers.size(); ++i) {
-    m << "<ContactSphere name=\"s" << i << "\"><socket_frame>/bodyset/body</socket_frame>"
+    g << "<ContactSphere name=\"s" << i << "\"><socket_frame>/bodyset/body</socket_frame>"
       << "<location>" << centers[i].transpose() << "</location><radius>" << radius
       << "</radius></ContactSphere>\n";
   }
-  m << "</objects></ContactGeometrySet></Model></OpenSimDocument>";
-  return m.str();
+  return FreeBodyModel(mass, inertia, gravity, g.str(), forces);
 }
 
 /// A HuntCrossleyForce "contact" between the floor and spheres s0 ... s<n-1>, every material

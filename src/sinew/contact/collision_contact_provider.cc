@@ -4,7 +4,6 @@
 #include <sinew/engine/state.h>
 
 #include <cmath>
-#include <memory>
 
 namespace sinew::contact {
 namespace {
@@ -22,15 +21,11 @@ const NscMaterial& CheckMaterial(const NscMaterial& material) {
   return material;
 }
 
-// The model with every radius inflated by half the envelope (for the pairs of cylinders).
-CollisionModel Inflate(CollisionModel model, double envelope) {
-  for (CollisionCylinder& shape : model.shapes) shape.radius += 0.5 * envelope;
-  return model;
-}
-
-// The model with every body in a family of its own: no pair may collide, only the plane.
-CollisionModel WithoutPairs(CollisionModel model) {
-  for (size_t b = 0; b < model.family.size(); ++b) model.family[b] = static_cast<int>(b);
+// The model whose default material (entry 0) has the NSC material's friction and restitution.
+CollisionModel WithDefaultMaterial(CollisionModel model, const NscMaterial& material) {
+  if (model.materials.empty()) model.materials.resize(1);
+  model.materials.front().friction = material.friction;
+  model.materials.front().restitution = material.restitution;
   return model;
 }
 
@@ -41,34 +36,19 @@ CollisionContactProvider::CollisionContactProvider(const CollisionModel& model,
                                                    const NscMaterial& material,
                                                    const std::vector<Transform>& X_GB_rest)
     : material_(CheckMaterial(material)),
-      pair_detector_(Inflate(model, material.envelope), std::nullopt, X_GB_rest) {
-  if (ground_height) {
-    plane_detector_ = std::make_unique<CollisionDetector>(WithoutPairs(model),
-                                                          *ground_height + material.envelope);
-  }
-}
+      detector_(WithDefaultMaterial(model, material), ground_height, X_GB_rest,
+                material.envelope) {}
 
-int CollisionContactProvider::num_pairs() const {
-  return pair_detector_.num_pairs() + (plane_detector_ ? plane_detector_->num_pairs() : 0);
-}
+int CollisionContactProvider::num_pairs() const { return detector_.num_pairs(); }
 
 void CollisionContactProvider::FindContacts(
     const engine::System&, const engine::State& state,
     std::vector<engine::UnilateralContact>& contacts) const {
   GatherBodyPoses(state, X_GB_);
-  const double envelope = material_.envelope;
-  // Depths come back deeper by the envelope. Between inflated cylinders the midway point of the
-  // overlap is where it is without inflation; on the raised plane it is half the envelope
-  // above the midway point of the real plane.
-  auto add = [&](const CollisionContact& c, const Vec3& p_G) {
-    contacts.push_back({c.body1, c.body2, p_G, c.n_G, c.depth - envelope, material_.friction,
-                        material_.restitution});
-  };
-  pair_detector_.FindContacts(X_GB_, [&](const CollisionContact& c) { add(c, c.p_G); });
-  if (plane_detector_) {
-    plane_detector_->FindContacts(
-        X_GB_, [&](const CollisionContact& c) { add(c, c.p_G - 0.5 * envelope * c.n_G); });
-  }
+  detector_.FindContacts(X_GB_, [&](const CollisionContact& c) {
+    contacts.push_back({c.body1, c.body2, c.p_G, c.n_G, c.depth, c.material.friction,
+                        c.material.restitution});
+  });
 }
 
 void GatherBodyPoses(const engine::State& state, std::vector<Transform>& X_GB) {

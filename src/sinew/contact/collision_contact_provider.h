@@ -1,4 +1,4 @@
-// The seed's collision cylinders (and a ground plane) as an engine::ContactProvider, so that
+// The seed's collision shapes (and a ground plane) as an engine::ContactProvider, so that
 // the NSC stepper (engine::NscIntegrator) can make them collide: `--contact nsc --collision
 // [--ground-plane H]`.
 #pragma once
@@ -7,31 +7,31 @@
 #include <sinew/contact/collision_model.h>
 #include <sinew/engine/unilateral_contact.h>
 
-#include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace sinew::contact {
 
-/// The contact material of every shape pair (the seed's ChMaterialSurfaceNSC defaults:
-/// friction 0.6, no restitution) and the envelope within which contacts are reported before
-/// the shapes touch.
+/// The default contact material of an NSC run (the seed's ChMaterialSurfaceNSC defaults:
+/// friction 0.6, no restitution), given to the shapes without a material of their own (the
+/// model's entry 0), and the envelope within which contacts are reported before the shapes
+/// touch.
 struct NscMaterial {
   double friction = 0.6;     ///< Coulomb coefficient (>= 0)
   double restitution = 0.0;  ///< Newton's coefficient (0 to 1)
-  /// Contacts are reported while the gap is below this (m), so that the stepper stops bodies
-  /// where they meet instead of letting them sink in first: the plane is queried raised by it,
-  /// the pairs of cylinders with every radius inflated by half of it, and the depth reported
-  /// is the detector's minus it. Exact for any cylinder on the plane and for cylinder sides
-  /// meeting; where an end cap meets another cylinder only that cylinder is inflated, so the
-  /// pair may end up overlapping by up to half the envelope. 0: contacts only once shapes
+  /// Contacts are reported while the gap is below this (m), with the gap as a negative depth,
+  /// so that the stepper stops bodies where they meet instead of letting them sink in first
+  /// (CollisionDetector's envelope: exact for every shape pair). 0: contacts only once shapes
   /// overlap.
   double envelope = 2e-3;
 };
 
-/// Contacts of a collision model's cylinders with each other and with a ground plane y = H,
-/// through a CollisionDetector. Bodies are the model's (spec) body indices, which are the
-/// System's for systems the OpenSim parser builds.
+/// Contacts of a collision model's shapes with each other and with a ground plane y = H,
+/// through a CollisionDetector. Each contact has its pair's material, the two shapes' combined
+/// as SMC combines them (CombineMaterials: the smaller friction, the smaller restitution);
+/// shapes with the default material take the NscMaterial's. Bodies are the model's (spec) body
+/// indices, which are the System's for systems the OpenSim parser builds.
 class CollisionContactProvider final : public engine::ContactProvider {
  public:
   /// `X_GB_rest`: the rest poses whose overlapping cylinder pairs are left out (see
@@ -44,14 +44,14 @@ class CollisionContactProvider final : public engine::ContactProvider {
                     std::vector<engine::UnilateralContact>& contacts) const override;
 
   const NscMaterial& material() const { return material_; }
-  /// Shape pairs tested per query (cylinder pairs the families allow, and each cylinder with
-  /// the plane).
+  /// Shape pairs tested per query (the pairs the model allows, and each shape with the plane).
   int num_pairs() const;
+  /// The body pairs (body1 < body2) of the tested shape pairs, sorted, each once.
+  std::vector<std::pair<int, int>> BodyPairs() const { return detector_.BodyPairs(); }
 
  private:
   NscMaterial material_;
-  CollisionDetector pair_detector_;                    // cylinder pairs (inflated)
-  std::unique_ptr<CollisionDetector> plane_detector_;  // cylinders on the raised plane
+  CollisionDetector detector_;
 
   mutable std::vector<Transform> X_GB_;  // the poses of the last query (reused)
 };

@@ -1,4 +1,5 @@
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/CollisionShapes/btCylinderShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
@@ -6,7 +7,9 @@
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 #include <LinearMath/btAabbUtil2.h>
+#include <sinew/common/error.h>
 #include <sinew/contact/collision_detection.h>
+#include <sinew/contact/internal/bullet_ellipsoid.h>
 
 #include <algorithm>
 #include <array>
@@ -29,51 +32,62 @@ Mat3 RotationYTo(const Vec3& u) {
   return Eigen::Quaterniond::FromTwoVectors(Vec3::UnitY(), u).toRotationMatrix();
 }
 
-enum class Kind { kCylinder, kSphere, kBox, kHalfSpace };
+enum class Kind { kCylinder, kSphere, kBox, kHalfSpace, kEllipsoid, kHull };
 
 struct Shape {
   int body = 0;
-  Transform X_BS;
+  Transform X_BS;  // for a cylinder, Bullet's: its axis along S's y
   Kind kind = Kind::kSphere;
   double radius = 0.0;  // of curvature; 0 for a half-space (infinite)
   int material = 0;
-  std::unique_ptr<btConvexShape> bt;  // null for a half-space
+  // Bullet's shape, inflated by half the envelope (its margin) for GJK; null for a half-space.
+  std::unique_ptr<btConvexShape> bt;
+  std::vector<Vec3> hull;  // kHull: its distinct points, in S
 };
 
-// The points of a convex shape (in its frame S) that can lie deepest in a half-space whose
-// inward direction (into its solid) is `d_S`: at most 8.
-struct Candidates {
-  std::array<Vec3, 8> p_S;
-  int count = 0;
-};
-using FindCandidates = void (*)(const btConvexShape& shape, const Vec3& d_S, Candidates& out);
-
-// A sphere: its support point (Bullet keeps a sphere's radius as its margin).
-void SphereCandidates(const btConvexShape& shape, const Vec3& d_S, Candidates& out) {
-  out.p_S[out.count++] = FromBt(shape.localGetSupportingVertex(ToBt(d_S)));
-}
-// A cylinder (axis S's y): the deepest point of each cap's rim, Bullet's support along d_S
-// with its axial part set to either end.
-void CylinderCandidates(const btConvexShape& shape, const Vec3& d_S, Candidates& out) {
-  for (const double end : {1.0, -1.0}) {
-    out.p_S[out.count++] =
-        FromBt(shape.localGetSupportingVertexWithoutMargin(btVector3(d_S.x(), end, d_S.z())));
+// Calls visit(p_S) for each point of the convex `shape` (in its frame S, not inflated) that can
+// lie deepest in a half-space whose inward direction (into its solid) is `d_S`.
+template <class Visit>
+void ForEachCandidate(const Shape& shape, const Vec3& d_S, Visit&& visit) {
+  switch (shape.kind) {
+    case Kind::kSphere:  // its point farthest along d_S
+      visit(Vec3(shape.radius * d_S.normalized()));
+      break;
+    case Kind::kCylinder:  // the deepest point of each cap's rim: the core's support along d_S
+                           // with its axial part set to either end
+      for (const double end : {1.0, -1.0}) {
+        visit(FromBt(
+            shape.bt->localGetSupportingVertexWithoutMargin(btVector3(d_S.x(), end, d_S.z()))));
+      }
+      break;
+    case Kind::kBox: {  // its corners
+      const Vec3 h =
+          FromBt(static_cast<const btBoxShape&>(*shape.bt).getHalfExtentsWithoutMargin());
+      for (int i = 0; i < 8; ++i)
+        visit(Vec3(i & 1 ? h.x() : -h.x(), i & 2 ? h.y() : -h.y(), i & 4 ? h.z() : -h.z()));
+      break;
+    }
+    case Kind::kEllipsoid:  // its (exact) support point
+      visit(FromBt(shape.bt->localGetSupportingVertexWithoutMargin(ToBt(d_S))));
+      break;
+    case Kind::kHull:  // its points (each one inside the half-space is a contact)
+      for (const Vec3& p : shape.hull) visit(p);
+      break;
+    case Kind::kHalfSpace:
+      break;
   }
 }
-// A box: its corners.
-void BoxCandidates(const btConvexShape& shape, const Vec3& /*d_S*/, Candidates& out) {
-  const auto& box = static_cast<const btBoxShape&>(shape);
-  for (int i = 0; i < 8; ++i) {
-    btVector3 v;
-    box.getVertex(i, v);
-    out.p_S[out.count++] = FromBt(v);
-  }
-}
-// Per Kind (a half-space has none).
-constexpr std::array<FindCandidates, 4> kCandidatesOf = {&CylinderCandidates, &SphereCandidates,
-                                                         &BoxCandidates, nullptr};
 
-Shape MakeCylinder(const CollisionCylinder& c) {
+// Bullet keeps a shape's margin outside its core (`extents` without it): the core grown by
+// `inflation` all round, exactly the Minkowski sum GJK and EPA then work on.
+template <class BtShape>
+std::unique_ptr<btConvexShape> Inflated(const Vec3& extents, double inflation) {
+  auto shape = std::make_unique<BtShape>(ToBt(extents + Vec3::Constant(inflation)));
+  shape->setMargin(inflation);
+  return shape;
+}
+
+Shape MakeCylinder(const CollisionCylinder& c, double inflation) {
   const Vec3 axis = c.p_B_end - c.p_B_start;
   const double length = axis.norm();
   Shape s;
@@ -82,12 +96,22 @@ Shape MakeCylinder(const CollisionCylinder& c) {
   s.X_BS = Transform(RotationYTo(axis / length), 0.5 * (c.p_B_start + c.p_B_end));
   s.radius = c.radius;
   s.material = c.material;
-  s.bt = std::make_unique<btCylinderShape>(btVector3(c.radius, 0.5 * length, c.radius));
-  s.bt->setMargin(0.0);
+  s.bt = Inflated<btCylinderShape>(Vec3(c.radius, 0.5 * length, c.radius), inflation);
   return s;
 }
 
-Shape MakeGeometry(const CollisionGeometry& g) {
+// The distinct points of a mesh (files often repeat a vertex per face).
+std::vector<Vec3> DistinctPoints(const std::vector<Vec3>& points) {
+  std::vector<Vec3> sorted = points;
+  const auto less = [](const Vec3& a, const Vec3& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  };
+  std::sort(sorted.begin(), sorted.end(), less);
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  return sorted;
+}
+
+Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
   Shape s;
   s.body = g.body;
   s.X_BS = g.X_BS;
@@ -96,17 +120,43 @@ Shape MakeGeometry(const CollisionGeometry& g) {
     case CollisionShapeKind::kSphere:
       s.kind = Kind::kSphere;
       s.radius = g.radius;
-      s.bt = std::make_unique<btSphereShape>(g.radius);  // the radius is its margin
+      // The radius is a sphere's margin: a point grown by it.
+      s.bt = std::make_unique<btSphereShape>(g.radius + inflation);
       break;
     case CollisionShapeKind::kBox:
       s.kind = Kind::kBox;
       s.radius = kFlatShapeRadius;
-      s.bt = std::make_unique<btBoxShape>(ToBt(g.half_extents));
-      s.bt->setMargin(0.0);
+      s.bt = Inflated<btBoxShape>(g.half_extents, inflation);
       break;
     case CollisionShapeKind::kHalfSpace:
       s.kind = Kind::kHalfSpace;
       break;
+    case CollisionShapeKind::kCylinder:
+      // OpenSim's axis is S's z, Bullet's its y: turn y onto z (+90 degrees about x).
+      s.kind = Kind::kCylinder;
+      s.radius = g.radius;
+      s.X_BS = g.X_BS * Transform(RotationYTo(Vec3::UnitZ()), Vec3::Zero());
+      s.bt = Inflated<btCylinderShape>(Vec3(g.radius, g.half_length, g.radius), inflation);
+      break;
+    case CollisionShapeKind::kEllipsoid: {
+      s.kind = Kind::kEllipsoid;
+      s.radius = g.radii.minCoeff();  // for SMC's Hertz law: the sharpest principal radius
+      s.bt = std::make_unique<BulletEllipsoid>(ToBt(g.radii));
+      s.bt->setMargin(inflation);
+      break;
+    }
+    case CollisionShapeKind::kConvexMesh: {
+      s.kind = Kind::kHull;
+      s.radius = kFlatShapeRadius;
+      if (g.vertices) s.hull = DistinctPoints(*g.vertices);
+      if (s.hull.empty()) throw Error("contact: the mesh '" + g.name + "' has no vertices");
+      auto hull = std::make_unique<btConvexHullShape>();
+      for (const Vec3& p : s.hull) hull->addPoint(ToBt(p), false);
+      hull->recalcLocalAabb();
+      hull->setMargin(inflation);
+      s.bt = std::move(hull);
+      break;
+    }
   }
   return s;
 }
@@ -130,13 +180,15 @@ double SegmentDistance(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec
 }
 
 // A cylinder lies inside the capsule of its axis and radius: two cylinders whose axes are
-// farther apart than their radii cannot touch (a cheap test before GJK).
-bool CapsulesApart(const Shape& a, const Transform& X_GA, const Shape& b, const Transform& X_GB) {
+// farther apart than their radii and the envelope cannot touch (a cheap test before GJK).
+bool CapsulesApart(const Shape& a, const Transform& X_GA, const Shape& b, const Transform& X_GB,
+                   double envelope) {
   const auto& ca = static_cast<const btCylinderShape&>(*a.bt);
   const auto& cb = static_cast<const btCylinderShape&>(*b.bt);
   const Vec3 ha = X_GA.R.col(1) * ca.getHalfExtentsWithoutMargin().y();
   const Vec3 hb = X_GB.R.col(1) * cb.getHalfExtentsWithoutMargin().y();
-  return SegmentDistance(X_GA.p - ha, X_GA.p + ha, X_GB.p - hb, X_GB.p + hb) > a.radius + b.radius;
+  return SegmentDistance(X_GA.p - ha, X_GA.p + ha, X_GB.p - hb, X_GB.p + hb) >
+         a.radius + b.radius + envelope;
 }
 
 struct Pair {
@@ -149,6 +201,7 @@ struct Pair {
 }  // namespace
 
 struct CollisionDetector::Impl {
+  double envelope = 0.0;
   std::vector<Shape> shapes;
   std::vector<Pair> pairs;
   int excluded_at_rest = 0;
@@ -170,17 +223,23 @@ struct CollisionDetector::Impl {
 
 CollisionDetector::CollisionDetector(const CollisionModel& model,
                                      std::optional<double> ground_height,
-                                     const std::vector<Transform>& X_GB_rest)
+                                     const std::vector<Transform>& X_GB_rest,
+                                     double envelope)
     : impl_(std::make_unique<Impl>()) {
+  if (!(envelope >= 0.0) || !std::isfinite(envelope))
+    throw Error("contact: the collision envelope must be a finite length >= 0");
+  impl_->envelope = envelope;
+  const double inflation = 0.5 * envelope;
   std::vector<Shape>& shapes = impl_->shapes;
   for (const CollisionCylinder& c : model.shapes) {
-    if ((c.p_B_end - c.p_B_start).norm() > 0.0 && c.radius > 0.0) shapes.push_back(MakeCylinder(c));
+    if ((c.p_B_end - c.p_B_start).norm() > 0.0 && c.radius > 0.0)
+      shapes.push_back(MakeCylinder(c, inflation));
   }
-  for (const CollisionGeometry& g : model.geometry) shapes.push_back(MakeGeometry(g));
+  for (const CollisionGeometry& g : model.geometry) shapes.push_back(MakeGeometry(g, inflation));
   if (ground_height) {
     CollisionModel environment;
     AddGroundPlane(environment, *ground_height);
-    shapes.push_back(MakeGeometry(environment.geometry.front()));
+    shapes.push_back(MakeGeometry(environment.geometry.front(), inflation));
   }
   const int n = static_cast<int>(shapes.size());
   for (int i = 0; i < n; ++i) {
@@ -238,21 +297,19 @@ void CollisionDetector::Impl::CollideWithHalfSpace(const Pair& p,
   const Transform X_GH = X_GB[h.body] * h.X_BS;
   const Transform X_GS = X_GB[s.body] * s.X_BS;
   const Vec3 inward_G = X_GH.R.col(0);  // into the solid x > 0
-  Candidates candidates;
-  kCandidatesOf[static_cast<int>(s.kind)](*s.bt, X_GS.R.transpose() * inward_G, candidates);
   CollisionContact c;
   c.body1 = h.body;
   c.body2 = s.body;
   c.n_G = -inward_G;
   c.radius = p.radius;
   c.material = p.material;
-  for (int k = 0; k < candidates.count; ++k) {
-    const Vec3 p_G = X_GS * candidates.p_S[k];
+  ForEachCandidate(s, X_GS.R.transpose() * inward_G, [&](const Vec3& p_S) {
+    const Vec3 p_G = X_GS * p_S;
     c.depth = (p_G - X_GH.p).dot(inward_G);
-    if (!(c.depth > 0.0)) continue;
+    if (!(c.depth > -envelope)) return;
     c.p_G = p_G + 0.5 * c.depth * c.n_G;
     visit(c);
-  }
+  });
 }
 
 template <class Visit>
@@ -262,7 +319,8 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   const Shape& b = shapes[p.j];
   const Transform X_GSa = X_GB[a.body] * a.X_BS;
   const Transform X_GSb = X_GB[b.body] * b.X_BS;
-  if (a.kind == Kind::kCylinder && b.kind == Kind::kCylinder && CapsulesApart(a, X_GSa, b, X_GSb))
+  if (a.kind == Kind::kCylinder && b.kind == Kind::kCylinder &&
+      CapsulesApart(a, X_GSa, b, X_GSb, envelope))
     return;
   const btTransform X_GA = ToBt(X_GSa);
   const btTransform X_GBs = ToBt(X_GSb);
@@ -281,15 +339,18 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   btPointCollector output;
   gjk.getClosestPoints(input, output, nullptr);
   if (!output.m_hasResult || !(output.m_distance < 0.0)) return;
-  // Bullet's normal points from B towards A, its point lies on B.
+  // Bullet's normal points from B towards A, its point lies on B (both shapes inflated by half
+  // the envelope: the overlap of the inflated shapes is the true one plus the envelope, and its
+  // midway point is the true one's).
   CollisionContact c;
   c.body1 = b.body;
   c.body2 = a.body;
   c.n_G = FromBt(output.m_normalOnBInWorld).normalized();
-  c.depth = -output.m_distance;
+  const double inflated_depth = -output.m_distance;
   // EPA may fail on deep or degenerate overlaps: no usable normal, no contact.
-  if (!c.n_G.allFinite() || !std::isfinite(c.depth)) return;
-  c.p_G = FromBt(output.m_pointInWorld) - 0.5 * c.depth * c.n_G;
+  if (!c.n_G.allFinite() || !std::isfinite(inflated_depth)) return;
+  c.depth = inflated_depth - envelope;
+  c.p_G = FromBt(output.m_pointInWorld) - 0.5 * inflated_depth * c.n_G;
   c.radius = p.radius;
   c.material = p.material;
   visit(c);

@@ -1,8 +1,9 @@
 // Collision detection between a collision model's shapes (contact::CollisionModel: the seed's
-// cylinders, OpenSim's ContactSphere and ContactHalfSpace, environment boxes and planes)
-// through Bullet's collision library: its bounding boxes as the broad phase, GJK/EPA as the
-// narrow phase between convex shapes, and the shapes' support vertices against half-spaces
-// (what Bullet's convex-plane algorithm does; several points per pair for boxes and cylinders).
+// cylinders, OpenSim's ContactSphere, ContactHalfSpace, ContactCylinder, ContactEllipsoid and
+// ContactMesh (its convex hull), environment boxes and planes) through Bullet's collision
+// library: its bounding boxes as the broad phase, GJK/EPA as the narrow phase between convex
+// shapes, and the shapes' support vertices against half-spaces (what Bullet's convex-plane
+// algorithm does; several points per pair for boxes, cylinders and hulls).
 // Stateless per query (no contact caching), so one detector can be shared by threads and by the
 // stages of a Runge-Kutta step.
 #pragma once
@@ -22,8 +23,9 @@ namespace sinew::contact {
 /// Chrono's default effective curvature radius: m.
 inline constexpr double kFlatShapeRadius = 0.1;
 
-/// One contact between two shapes: they overlap by `depth` (m) along `n_G` (unit, in G, from
-/// shape 1's body towards shape 2's body), centred at `p_G`; `radius` is the effective radius
+/// One contact between two shapes: they overlap by `depth` (m; negative: a gap within the
+/// detector's envelope) along `n_G` (unit, in G, from shape 1's body towards shape 2's body),
+/// centred at `p_G` (midway through the overlap or gap); `radius` is the effective radius
 /// of curvature of the pair (radii combined as r1 r2 / (r1 + r2); a half-space's is infinite,
 /// a box's kFlatShapeRadius); `material` the pair's combined material.
 struct CollisionContact {
@@ -46,16 +48,21 @@ class CollisionDetector {
   /// (one per body, ground first; the model's default pose), typically cylinders at the joints
   /// where segments meet, are left out: they could only push the joints apart. Empty
   /// `X_GB_rest`: every allowed pair is kept.
+  /// `envelope` (m, >= 0): contacts are reported while the shapes are less than this apart,
+  /// with a negative depth (the gap) until they overlap. Exact for every pair: GJK and EPA work
+  /// on each convex shape grown by half the envelope (Bullet's margin), whose overlap is the
+  /// true one plus the envelope; against a half-space the shape's own points are measured.
+  /// Throws sinew::Error for a negative envelope or a mesh without vertices.
   CollisionDetector(const CollisionModel& model, std::optional<double> ground_height,
-                    const std::vector<Transform>& X_GB_rest = {});
+                    const std::vector<Transform>& X_GB_rest = {}, double envelope = 0.0);
   ~CollisionDetector();
   CollisionDetector(const CollisionDetector&) = delete;
   CollisionDetector& operator=(const CollisionDetector&) = delete;
 
   /// Calls `visit` for every contact at the body poses `X_GB` (one per body, ground first):
   /// one point per pair of convex shapes (Bullet's deepest point); against a half-space, a
-  /// sphere's deepest point, each of a cylinder's two cap rims' deepest points and each box
-  /// corner that lies inside it.
+  /// sphere's or an ellipsoid's deepest point, each of a cylinder's two cap rims' deepest
+  /// points and each box corner or hull vertex that lies inside it.
   void FindContacts(const std::vector<Transform>& X_GB,
                     const std::function<void(const CollisionContact&)>& visit) const;
   /// The number of shape pairs tested.

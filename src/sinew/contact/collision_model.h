@@ -9,6 +9,7 @@
 #include <sinew/math/types.h>
 #include <sinew/model/model_spec.h>
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,7 +40,14 @@ enum class CollisionShapeKind {
   kSphere,     ///< OpenSim's ContactSphere: centred at S's origin, `radius`.
   kBox,        ///< a box centred at S's origin, `half_extents` along S's axes.
   kHalfSpace,  ///< OpenSim's ContactHalfSpace convention: the solid x > 0 of S, outward normal -x.
+  kCylinder,   ///< OpenSim's ContactCylinder: axis S's z, `radius`, from -half_length to +.
+  kEllipsoid,  ///< OpenSim's ContactEllipsoid: semi-axes `radii` along S's x, y, z.
+  kConvexMesh, ///< OpenSim's ContactMesh: the convex hull of `vertices` (in S).
 };
+
+/// The half length of an OpenSim ContactCylinder as a collision shape, in radii: Simbody's
+/// cylinder is infinite along its z axis; OpenSim draws it 4 radii long, and so it collides.
+inline constexpr double kContactCylinderHalfLength = 2.0;
 
 /// A collision shape fixed to a body (OpenSim's contact geometry) or to ground (the
 /// environment: a ground plane, a box, ...).
@@ -48,9 +56,12 @@ struct CollisionGeometry {
   CollisionShapeKind kind = CollisionShapeKind::kSphere;
   int body = model::kGroundIndex;
   Transform X_BS;                    ///< the shape's frame S in its body
-  double radius = 0.0;               ///< kSphere: m
+  double radius = 0.0;               ///< kSphere, kCylinder: m
   Vec3 half_extents = Vec3::Zero();  ///< kBox: m
   int material = 0;                  ///< index into CollisionModel::materials
+  double half_length = 0.0;          ///< kCylinder: m
+  Vec3 radii = Vec3::Zero();         ///< kEllipsoid: m
+  std::shared_ptr<const std::vector<Vec3>> vertices = nullptr;  ///< kConvexMesh: in S, m
 };
 
 /// Shapes, families and excluded pairs of a model.

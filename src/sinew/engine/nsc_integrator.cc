@@ -66,7 +66,7 @@ void NscIntegrator::Step(State& state, double h, double t_new) {
   // 2-5. Contacts.
   contacts_.clear();
   provider_->FindContacts(system_, state, contacts_);
-  report_ = NscStepReport{static_cast<int>(contacts_.size()), 0, 0.0};
+  report_ = NscStepReport{h, static_cast<int>(contacts_.size()), 0, 0.0};
   if (!contacts_.empty()) {
     SolveContacts(state, h);
   } else {
@@ -106,9 +106,10 @@ void NscIntegrator::SolveContacts(const State& state, double h) {
     for (int s = 0; s < 2; ++s) {
       Rows& r = rows_[i];
       r.slot[s] = -1;
+      r.arm[s] = c.p_G - state.bodies[body[s]].p_GB;
       if (body[s] == 0) continue;
       const double sign = s == 0 ? -1.0 : 1.0;
-      const Vec3 arm = c.p_G - state.bodies[body[s]].p_GB;
+      const Vec3& arm = r.arm[s];
       for (int k = 0; k < 3; ++k) {
         r.J[s].block<1, 3>(k, 0) = sign * arm.cross(d[k]).transpose();
         r.J[s].block<1, 3>(k, 3) = sign * d[k].transpose();
@@ -182,6 +183,25 @@ void NscIntegrator::SolveContacts(const State& state, double h) {
   previous_contacts_ = contacts_;
   Reserve(previous_gamma_, 3 * m);
   previous_gamma_.head(3 * m) = gamma;
+}
+
+void NscIntegrator::LastBodyImpulses(std::vector<BodyContactImpulse>& per_body) const {
+  per_body.assign(system_.num_bodies(), BodyContactImpulse{});
+  for (size_t i = 0; i < contacts_.size(); ++i) {
+    const UnilateralContact& c = contacts_[i];
+    Vec3 t1, t2;
+    ContactFrame(c.n_G, t1, t2);
+    const Eigen::Vector3d gamma = gamma_.segment<3>(3 * static_cast<Eigen::Index>(i));
+    // On body2 along +n and the tangents, on body1 the opposite (the rows are body2's point
+    // velocity minus body1's).
+    const Vec3 p = gamma[0] * c.n_G + gamma[1] * t1 + gamma[2] * t2;
+    const int body[2] = {c.body1, c.body2};
+    for (int s = 0; s < 2; ++s) {
+      const Vec3 p_s = s == 0 ? Vec3(-p) : p;
+      per_body[body[s]].linear += p_s;
+      per_body[body[s]].angular += rows_[i].arm[s].cross(p_s);
+    }
+  }
 }
 
 void NscIntegrator::WarmStart() {

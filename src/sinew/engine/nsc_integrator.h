@@ -47,9 +47,17 @@ struct NscSettings {
 
 /// What the last step did.
 struct NscStepReport {
+  double step = 0.0;      ///< the step's length h (s; 0 before the first step)
   int contacts = 0;       ///< contacts the provider gave
   int iterations = 0;     ///< Gauss-Seidel sweeps of the impulse solve (0 without contacts)
   double residual = 0.0;  ///< its final residual (m/s; see ContactSolverResult)
+};
+
+/// The impulse the last step's contacts gave one body: N s, and N m s about the body's origin
+/// (at the step's start), in G. Divided by the step, the mean force and torque over the step.
+struct BodyContactImpulse {
+  Vec3 linear = Vec3::Zero();
+  Vec3 angular = Vec3::Zero();
 };
 
 /// The NSC stepper: an Integrator (so engine::Simulate drives it) of fixed step
@@ -69,6 +77,12 @@ class NscIntegrator final : public FixedStepIntegrator {
   VecX last_impulses() const {
     return gamma_.head(3 * static_cast<Eigen::Index>(contacts_.size()));
   }
+  /// The impulse of the last step's contacts on every body of the system, ground included
+  /// (`per_body` resized to System::num_bodies()); zero before the first step and after a step
+  /// without contacts.
+  void LastBodyImpulses(std::vector<BodyContactImpulse>& per_body) const;
+  /// The contact provider.
+  const std::shared_ptr<const ContactProvider>& provider() const { return provider_; }
   /// The two unit tangents the stepper uses with normal `n_G` (t1 x t2 = n_G).
   static void ContactFrame(const Vec3& n_G, Vec3& t1, Vec3& t2);
 
@@ -94,6 +108,7 @@ class NscIntegrator final : public FixedStepIntegrator {
   struct Rows {
     Eigen::Matrix<double, 3, 6> J[2];
     int slot[2] = {-1, -1};
+    Vec3 arm[2];  // from each body's origin (ground's too) to the contact point, in G
   };
   std::vector<Rows> rows_;
   std::vector<int> bodies_;     // bodies in contact (not ground)

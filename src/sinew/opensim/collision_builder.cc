@@ -3,9 +3,11 @@
 #include <sinew/kinematics/forward_kinematics.h>
 #include <sinew/kinematics/kinematic_tree.h>
 #include <sinew/opensim/internal/collision_builder.h>
+#include <sinew/opensim/internal/contact_mesh.h>
 #include <sinew/opensim/support.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <set>
@@ -41,8 +43,16 @@ std::set<std::string> GeometryUsedByForces(const model::ModelSpec& spec,
   return used;
 }
 
-// The collision geometry of an OpenSim ContactSphere or ContactHalfSpace, or nullopt (with a
-// Report warning) for another class.
+// The numbers of a geometry's property `key` (empty when it has none).
+std::vector<double> Numbers(const model::ContactGeometrySpec& g, const char* key) {
+  const auto it = g.dimensions.find(key);
+  return it == g.dimensions.end() ? std::vector<double>{} : it->second;
+}
+
+// The collision geometry of an OpenSim ContactHalfSpace, ContactSphere, ContactCylinder,
+// ContactEllipsoid or ContactMesh, or nullopt (with a Report warning) for another class.
+// Throws sinew::Error at the geometry's line for a size that is not positive or a mesh that
+// cannot be read.
 std::optional<contact::CollisionGeometry> MakeGeometry(const model::ModelSpec& spec,
                                                        const model::ContactGeometrySpec& g,
                                                        Report& report) {
@@ -51,23 +61,48 @@ std::optional<contact::CollisionGeometry> MakeGeometry(const model::ModelSpec& s
   shape.body = g.body;
   shape.X_BS = g.X_BC;
   const std::string component = "/contactgeometryset/" + g.name;
+  const auto fail = [&](const std::string& message) {
+    throw Error({spec.file, g.where.line}, component, message);
+  };
+  const auto positive_radius = [&]() {
+    const std::vector<double> radius = Numbers(g, "radius");
+    if (radius.size() != 1 || !(radius[0] > 0.0) || !std::isfinite(radius[0]))
+      fail(g.type + " needs a radius > 0");
+    return radius[0];
+  };
   if (g.type == "ContactHalfSpace") {
     shape.kind = contact::CollisionShapeKind::kHalfSpace;
-    return shape;
-  }
-  if (g.type == "ContactSphere") {
-    const auto radius = g.dimensions.find("radius");
-    shape.radius =
-        radius == g.dimensions.end() || radius->second.size() != 1 ? 0.0 : radius->second[0];
-    if (!(shape.radius > 0.0))
-      throw Error({spec.file, g.where.line}, component, "ContactSphere needs a radius > 0");
+  } else if (g.type == "ContactSphere") {
     shape.kind = contact::CollisionShapeKind::kSphere;
-    return shape;
+    shape.radius = positive_radius();
+  } else if (g.type == "ContactCylinder") {
+    // Simbody's cylinder is infinite along z; it collides over the length OpenSim draws it.
+    shape.kind = contact::CollisionShapeKind::kCylinder;
+    shape.radius = positive_radius();
+    shape.half_length = contact::kContactCylinderHalfLength * shape.radius;
+    report.AddWarning({g.where, component,
+                       "ContactCylinder is infinite along its z axis in OpenSim; it collides as "
+                       "a cylinder 4 radii long (as OpenSim draws it)"});
+  } else if (g.type == "ContactEllipsoid") {
+    shape.kind = contact::CollisionShapeKind::kEllipsoid;
+    const std::vector<double> radii = Numbers(g, "radii");
+    if (radii.size() != 3 || !std::all_of(radii.begin(), radii.end(), [](double r) {
+          return r > 0.0 && std::isfinite(r);
+        }))
+      fail("ContactEllipsoid needs three radii > 0");
+    shape.radii = Vec3(radii[0], radii[1], radii[2]);
+  } else if (g.type == "ContactMesh") {
+    shape.kind = contact::CollisionShapeKind::kConvexMesh;
+    const std::shared_ptr<const contact::ShapeMesh> mesh = ReadContactMesh(spec, g);
+    shape.vertices = std::shared_ptr<const std::vector<Vec3>>(mesh, &mesh->vertices);
+  } else {
+    report.AddWarning({g.where, component,
+                       g.type + " is not a collision shape (ContactHalfSpace, ContactSphere, "
+                                "ContactCylinder, ContactEllipsoid and ContactMesh are): it does "
+                                "not collide"});
+    return std::nullopt;
   }
-  report.AddWarning({g.where, component,
-                     g.type + " is not a collision shape yet (ContactSphere and ContactHalfSpace "
-                              "are): it does not collide"});
-  return std::nullopt;
+  return shape;
 }
 
 // Gives the shapes named by `settings.overrides` their materials (index into model.materials).

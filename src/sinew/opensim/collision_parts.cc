@@ -17,11 +17,30 @@ std::vector<viz::CollisionPart> CollisionPartsOf(const contact::CollisionModel& 
   }
   for (const contact::CollisionGeometry& g : model.geometry) {
     viz::CollisionPart part{g.name, g.body, Shape::kSphere, g.X_BS, Vec3::Constant(g.radius)};
-    if (g.kind == contact::CollisionShapeKind::kBox) {
-      part.shape = Shape::kBox;
-      part.half_size = g.half_extents;
-    } else if (g.kind == contact::CollisionShapeKind::kHalfSpace) {
-      part.shape = Shape::kHalfSpace;
+    switch (g.kind) {
+      case contact::CollisionShapeKind::kSphere:
+        break;
+      case contact::CollisionShapeKind::kBox:
+        part.shape = Shape::kBox;
+        part.half_size = g.half_extents;
+        break;
+      case contact::CollisionShapeKind::kHalfSpace:
+        part.shape = Shape::kHalfSpace;
+        break;
+      case contact::CollisionShapeKind::kCylinder:  // the drawn cylinder's axis is y, OpenSim's z
+        part.shape = Shape::kCylinder;
+        part.X_BS = g.X_BS * Transform(Eigen::Quaterniond::FromTwoVectors(Vec3::UnitY(),
+                                                                          Vec3::UnitZ())
+                                           .toRotationMatrix(),
+                                       Vec3::Zero());
+        part.half_size = Vec3(g.radius, g.half_length, g.radius);
+        break;
+      case contact::CollisionShapeKind::kEllipsoid:
+        part.shape = Shape::kEllipsoid;
+        part.half_size = g.radii;
+        break;
+      case contact::CollisionShapeKind::kConvexMesh:
+        continue;  // the scene draws the ContactMesh itself (its triangles, not its hull)
     }
     parts.push_back(part);
   }

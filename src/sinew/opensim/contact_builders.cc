@@ -4,8 +4,8 @@
 #include <sinew/contact/elastic_foundation_force.h>
 #include <sinew/contact/hunt_crossley_force.h>
 #include <sinew/contact/smooth_sphere_half_space_force.h>
-#include <sinew/io/mesh_file.h>
 #include <sinew/model/element_values.h>
+#include <sinew/opensim/internal/contact_mesh.h>
 #include <sinew/opensim/internal/force_registry.h>
 
 #include <map>
@@ -29,26 +29,6 @@ const model::ContactGeometrySpec& FindGeometry(const ForceBuildInput& in,
   }
   values.Fail("names contact geometry '" + name + "', which the model's ContactGeometrySet "
               "does not have", line);
-}
-
-std::shared_ptr<const contact::ShapeMesh> ReadContactMesh(const model::ModelSpec& spec,
-                                                          const model::ContactGeometrySpec& g) {
-  if (g.mesh_file.empty()) FailAtGeometry(spec, g, "ContactMesh has no <filename>");
-  const std::optional<std::string> file =
-      io::FindMeshFile(g.mesh_file, io::MeshSearchDirs(spec.file, {}));
-  if (!file) {
-    FailAtGeometry(spec, g, "mesh file '" + g.mesh_file +
-                                "' not found beside the model, in its Geometry/ folder or in $" +
-                                io::kGeometryPathVariable);
-  }
-  const io::TriangleMesh read = io::ReadMesh(*file);
-  auto mesh = std::make_shared<contact::ShapeMesh>();
-  for (const io::Vec3f& v : read.positions) mesh->vertices.push_back(v.cast<double>());
-  for (const auto& t : read.triangles)
-    mesh->triangles.push_back({static_cast<int>(t[0]), static_cast<int>(t[1]),
-                               static_cast<int>(t[2])});
-  if (mesh->triangles.empty()) FailAtGeometry(spec, g, "mesh file '" + *file + "' has no faces");
-  return mesh;
 }
 
 // The shape of a geometry: its kind, body (engine index), pose and size; fails at the

@@ -41,9 +41,9 @@ class OpenSimParser {
   /// (then $SINEW_GEOMETRY_PATH). May be called several times.
   void AddGeometryDir(const std::string& dir) { geometry_dirs_.push_back(dir); }
   /// Creates collision shapes (cylinders along each body's segments, as in PRIMITIVES, and the
-  /// model's ContactSphere and ContactHalfSpace) with bodies in two alternating families by
-  /// tree depth (the seed's); a body never collides with its parent or children, every other
-  /// pair may collide (default: off). docs/contact.md.
+  /// model's ContactSphere, ContactHalfSpace, ContactCylinder, ContactEllipsoid and ContactMesh)
+  /// with bodies in two alternating families by tree depth (the seed's); a body never collides
+  /// with its parent or children, every other pair may collide (default: off). docs/contact.md.
   void EnableCollision(int family_1 = 1, int family_2 = 2);
   /// How collisions are treated (default NSC, the seed's): SMC adds the force element
   /// "smc_contact" (contact::SmoothCollisionForce) to the system; NSC leaves the contacts to

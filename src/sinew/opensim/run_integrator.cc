@@ -18,23 +18,17 @@ std::unique_ptr<engine::Integrator> MakeRunIntegrator(const std::string& name,
                                                       const OpenSimParser& parser,
                                                       const engine::IntegratorSettings& settings) {
   if (!UsesNscContact(parser)) return engine::MakeIntegrator(name, system, settings);
-  // The NSC provider queries the ground plane itself, raised by its envelope: take the plane
-  // out of the environment so that it is not met twice.
-  contact::CollisionModel model = parser.GetCollisionModel();
-  std::optional<double> ground_height;
-  std::erase_if(model.geometry, [&](const contact::CollisionGeometry& g) {
-    const bool plane = g.name == contact::kGroundPlaneName && g.body == model::kGroundIndex &&
-                       g.kind == contact::CollisionShapeKind::kHalfSpace;
-    if (plane) ground_height = g.X_BS.p.y();
-    return plane;
-  });
+  // The ground plane stays in the environment with its own material (the detector's envelope
+  // covers every shape alike).
+  const contact::CollisionModel& model = parser.GetCollisionModel();
+  // The default material's friction and restitution; shapes with their own keep theirs.
   const contact::CollisionMaterial& material = model.materials.front();
   const contact::NscMaterial nsc{.friction = material.friction,
                                  .restitution = material.restitution};
   std::vector<Transform> X_GB_rest;
   contact::GatherBodyPoses(engine::MakeDefaultState(system), X_GB_rest);
   auto provider =
-      std::make_shared<contact::CollisionContactProvider>(model, ground_height, nsc, X_GB_rest);
+      std::make_shared<contact::CollisionContactProvider>(model, std::nullopt, nsc, X_GB_rest);
   engine::IntegratorSettings nsc_settings = settings;
   if (!(nsc_settings.step > 0.0)) nsc_settings.step = kDefaultNscStep;
   return std::make_unique<engine::NscIntegrator>(system, std::move(provider), nsc_settings);

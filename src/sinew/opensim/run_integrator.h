@@ -22,9 +22,9 @@ inline constexpr double kDefaultNscStep = 1e-3;
 bool UsesNscContact(const OpenSimParser& parser);
 
 /// For NSC (UsesNscContact): engine::NscIntegrator at `settings.step` (kDefaultNscStep when not
-/// > 0) over the parser's collision model, its ground plane handed to the contact provider
-/// (which queries it raised by the contact envelope), the default material's friction and
-/// restitution, the pairs overlapping at the default pose left out. Otherwise
+/// > 0) over the parser's collision model (its ground plane with the rest of the environment),
+/// each pair's friction and restitution combined from its shapes' materials, the pairs
+/// overlapping at the default pose left out. Otherwise
 /// engine::MakeIntegrator(`name`, ...). `system` is what `parser` built; both must outlive the
 /// integrator. Throws sinew::Error as MakeIntegrator does.
 std::unique_ptr<engine::Integrator> MakeRunIntegrator(const std::string& name,

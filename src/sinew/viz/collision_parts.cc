@@ -26,6 +26,10 @@ void AddCollisionParts(const std::vector<CollisionPart>& parts, VisualScene& sce
         part.mesh = UnitSphere();
         part.scale = Vec3::Constant(c.half_size.x());
         break;
+      case CollisionPart::Shape::kEllipsoid:
+        part.mesh = UnitSphere();
+        part.scale = c.half_size;
+        break;
       case CollisionPart::Shape::kBox:
         part.mesh = UnitBox();
         part.scale = c.half_size;

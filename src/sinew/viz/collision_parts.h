@@ -15,7 +15,7 @@ namespace sinew::viz {
 /// (`half_size.x()` its radius), a box (`half_size` its half extents), or a half-space (the
 /// solid x > 0 of S, drawn as a 4 m square slab just inside it).
 struct CollisionPart {
-  enum class Shape { kCylinder, kSphere, kBox, kHalfSpace };
+  enum class Shape { kCylinder, kSphere, kBox, kHalfSpace, kEllipsoid };
   std::string name;
   int body = 0;
   Shape shape = Shape::kSphere;

@@ -1,5 +1,5 @@
 // The seed's collision system from a parsed model (OpenSimParser::EnableCollision): the
-// collision model (the seed's cylinders, OpenSim's ContactSphere and ContactHalfSpace, the
+// collision model (the seed's cylinders, OpenSim's contact geometry, the
 // environment, materials) and, for the SMC contact method, its force element.
 #pragma once
 

@@ -1,0 +1,257 @@
+// OpenSim's ContactCylinder, ContactEllipsoid and ContactMesh as collision shapes (Bullet's
+// btCylinderShape, an exact ellipsoid support for GJK, btConvexHullShape): their depths on a
+// plane against closed forms, and under NSC a cylinder resting on its radius and rolling down
+// an incline at 2/3 g sin(a), an ellipsoid resting on each semi-axis, a mesh cube on half its
+// edge; bad sizes and a missing mesh are errors with file, line and component.
+#include <gtest/gtest.h>
+#include <sinew/common/error.h>
+#include <sinew/contact/collision_contact_provider.h>
+#include <sinew/contact/collision_detection.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/nsc_integrator.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/opensim/parser.h>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "contact/contact_models.h"
+
+namespace sinew::contact {
+namespace {
+
+constexpr double kG = 9.80665;
+// Beside tests/data/sinew/cube.obj, so that the mesh is found as a visual mesh would be.
+const std::string kModelFile = std::string(SINEW_TEST_DATA_DIR) + "/sinew/shapes.osim";
+// Half the edge of cube.obj: the file's 0.1 as meshes are read, in single precision.
+const double kHalfEdge = static_cast<double>(0.1f);
+
+// A free body "body" with the contact geometry `geometry` (named "shape", on /bodyset/body)
+// above the ground ContactHalfSpace "floor" (the solid y < 0).
+std::string OneShapeModel(double mass, const Vec3& inertia, const Vec3& gravity,
+                          const std::string& geometry) {
+  return testing::FreeBodyModel(mass, inertia, gravity, geometry, "");
+}
+
+std::string Cylinder(double radius) {
+  std::ostringstream g;
+  g << "<ContactCylinder name=\"shape\"><socket_frame>/bodyset/body</socket_frame><radius>"
+    << radius << "</radius></ContactCylinder>";
+  return g.str();
+}
+std::string Ellipsoid(const Vec3& radii) {
+  std::ostringstream g;
+  g.precision(17);
+  g << "<ContactEllipsoid name=\"shape\"><socket_frame>/bodyset/body</socket_frame><radii>"
+    << radii.transpose() << "</radii></ContactEllipsoid>";
+  return g.str();
+}
+std::string Mesh(const std::string& file) {
+  return "<ContactMesh name=\"shape\"><socket_frame>/bodyset/body</socket_frame><filename>" +
+         file + "</filename></ContactMesh>";
+}
+
+struct Scene {
+  std::unique_ptr<engine::System> system;
+  CollisionModel model;
+  engine::State state;
+};
+
+Scene Parse(const std::string& text) {
+  Scene scene;
+  opensim::OpenSimParser parser;
+  parser.EnableCollision();
+  const model::ModelSpec spec = io::ReadOsimString(text, kModelFile);
+  scene.system = std::make_unique<engine::System>(spec.gravity);
+  parser.ParseSpec(*scene.system, spec);
+  scene.system->Finalize();
+  scene.model = parser.GetCollisionModel();
+  scene.state = engine::MakeDefaultState(*scene.system);
+  return scene;
+}
+
+// The contacts of the model at the body pose X_GB of "body" (body 1).
+std::vector<CollisionContact> ContactsAt(const CollisionModel& model, const Transform& X_GB) {
+  const CollisionDetector detector(model, std::nullopt);
+  std::vector<CollisionContact> out;
+  detector.FindContacts({Transform(), X_GB}, [&](const CollisionContact& c) { out.push_back(c); });
+  return out;
+}
+
+Mat3 Rotation(double angle, const Vec3& axis) {
+  return Eigen::AngleAxisd(angle, axis).toRotationMatrix();
+}
+
+TEST(CollisionShapesTest, DepthsOnAPlaneAreTheClosedForms) {
+  // The lowest point of each shape 5 mm below the floor: depth 5 mm, exactly (support points).
+  constexpr double kDepth = 5e-3, kR = 0.1;
+  // Cylinder (axis z, 4 radii long) lying: its two cap rims touch; standing on a cap: its rim's
+  // lowest point is the cap's centre plane, 2 r below the centre.
+  const Scene cylinder = Parse(OneShapeModel(1, Vec3::Ones(), Vec3::Zero(), Cylinder(kR)));
+  ASSERT_EQ(cylinder.model.geometry.size(), 2u);
+  std::vector<CollisionContact> c =
+      ContactsAt(cylinder.model, Transform::Translation(Vec3(0, kR - kDepth, 0)));
+  ASSERT_EQ(c.size(), 2u);
+  for (const CollisionContact& k : c) {
+    EXPECT_NEAR(k.depth, kDepth, 1e-15);
+    EXPECT_NEAR(std::abs(k.p_G.z()), 2 * kR, 1e-15);  // one at each end
+  }
+  const Mat3 upright = Rotation(std::numbers::pi / 2, Vec3::UnitX());  // z onto -y
+  c = ContactsAt(cylinder.model, Transform(upright, Vec3(0, 2 * kR - kDepth, 0)));
+  ASSERT_FALSE(c.empty());
+  for (const CollisionContact& k : c) EXPECT_NEAR(k.depth, kDepth, 1e-15);
+  // Ellipsoid (0.1, 0.2, 0.3): on each semi-axis, and turned 30 degrees about z, where its
+  // lowest point is sqrt(a^2 sin^2 + b^2 cos^2) below its centre.
+  const Vec3 radii(0.1, 0.2, 0.3);
+  const Scene ellipsoid = Parse(OneShapeModel(1, Vec3::Ones(), Vec3::Zero(), Ellipsoid(radii)));
+  const double angle = std::numbers::pi / 6;
+  const struct {
+    Mat3 R;
+    double half_height;
+  } poses[] = {{Mat3::Identity(), radii.y()},
+               {Rotation(std::numbers::pi / 2, Vec3::UnitZ()), radii.x()},
+               {Rotation(std::numbers::pi / 2, Vec3::UnitX()), radii.z()},
+               {Rotation(angle, Vec3::UnitZ()),
+                std::hypot(radii.x() * std::sin(angle), radii.y() * std::cos(angle))}};
+  for (const auto& pose : poses) {
+    c = ContactsAt(ellipsoid.model, Transform(pose.R, Vec3(0, pose.half_height - kDepth, 0)));
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_NEAR(c[0].depth, kDepth, 1e-12) << pose.half_height;
+  }
+  // The cube mesh (edge 0.2 m) on a face: its four lower corners.
+  const Scene cube = Parse(OneShapeModel(1, Vec3::Ones(), Vec3::Zero(), Mesh("cube.obj")));
+  c = ContactsAt(cube.model, Transform::Translation(Vec3(0, kHalfEdge - kDepth, 0)));
+  ASSERT_EQ(c.size(), 4u);
+  for (const CollisionContact& k : c) EXPECT_NEAR(k.depth, kDepth, 1e-15);
+}
+
+TEST(CollisionShapesTest, ShapesMeetEachOtherThroughGjk) {
+  // Two shapes against each other (GJK/EPA): an ellipsoid (0.1, 0.2, 0.3) fixed to ground
+  // 5 mm into the top face of the cube mesh (y = 0.1) from above, its b axis vertical.
+  const std::string text = OneShapeModel(1, Vec3::Ones(), Vec3::Zero(), Mesh("cube.obj"));
+  Scene scene = Parse(text);
+  CollisionGeometry ellipsoid;
+  ellipsoid.name = "e";
+  ellipsoid.kind = CollisionShapeKind::kEllipsoid;
+  ellipsoid.body = 0;  // fixed to ground, above the origin
+  ellipsoid.radii = Vec3(0.1, 0.2, 0.3);
+  ellipsoid.X_BS = Transform::Translation(Vec3(0, 0.1 + 0.2 - 5e-3, 0));
+  scene.model.geometry = {scene.model.geometry[1], ellipsoid};  // the cube and the ellipsoid
+  const std::vector<CollisionContact> c = ContactsAt(scene.model, Transform());
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_NEAR(c[0].depth, 5e-3, 1e-6);  // EPA's accuracy
+  EXPECT_NEAR(std::abs(c[0].n_G.y()), 1.0, 1e-6);
+}
+
+// Runs `scene` under NSC (friction `mu`, no restitution, h = 1 ms, tight solver) to `t_end`.
+void RunNsc(Scene& scene, double mu, double t_end) {
+  std::vector<Transform> X_GB;
+  GatherBodyPoses(scene.state, X_GB);
+  auto provider = std::make_shared<CollisionContactProvider>(
+      scene.model, std::nullopt, NscMaterial{.friction = mu, .restitution = 0.0}, X_GB);
+  engine::IntegratorSettings settings;
+  settings.step = 1e-3;
+  engine::NscSettings nsc;
+  nsc.solver.max_iterations = 1000;
+  nsc.solver.tolerance = 1e-12;
+  engine::NscIntegrator integrator(*scene.system, provider, settings, nsc);
+  integrator.StepTo(scene.state, t_end);
+}
+
+TEST(CollisionShapesTest, CylinderRestsOnItsRadiusAndRollsDownAnInclineAtTwoThirdsGSin) {
+  // A solid cylinder (m = 1 kg, r = 0.1 m, length 4 r: I about its axis m r^2 / 2) lying on
+  // the floor, axis along z. On the level it rests with its centre at r (the envelope is exact:
+  // the stepper stops it where it meets the floor). On an incline of 20 degrees (gravity turned:
+  // downhill is +x) with mu = 0.5 > tan(a) / 3 it rolls without slipping at
+  // a = g sin(a) / (1 + I / (m r^2)) = 2/3 g sin(a), from rest: exactly per step (each step's
+  // impulses are the continuous law's over the step), to the solver's tolerance.
+  constexpr double kM = 1.0, kR = 0.1, kL = 4 * kR;
+  const Vec3 inertia(kM * (3 * kR * kR + kL * kL) / 12, kM * (3 * kR * kR + kL * kL) / 12,
+                     kM * kR * kR / 2);
+  Scene level = Parse(OneShapeModel(kM, inertia, Vec3(0, -kG, 0), Cylinder(kR)));
+  engine::SetCoordinateValue(*level.system, level.state, "ty", kR + 0.01);
+  RunNsc(level, 0.5, 0.5);
+  EXPECT_NEAR(level.state.bodies[1].p_GB.y(), kR, 1e-9);
+  EXPECT_NEAR(level.state.bodies[1].v_GB.norm(), 0.0, 1e-9);
+  const double a = 20.0 * std::numbers::pi / 180.0;
+  Scene incline = Parse(
+      OneShapeModel(kM, inertia, kG * Vec3(std::sin(a), -std::cos(a), 0), Cylinder(kR)));
+  engine::SetCoordinateValue(*incline.system, incline.state, "ty", kR);
+  constexpr double kT = 0.5;
+  RunNsc(incline, 0.5, kT);
+  const engine::BodyState& body = incline.state.bodies[1];
+  const double closed = 2.0 / 3.0 * kG * std::sin(a) * kT;
+  EXPECT_NEAR(body.v_GB.x(), closed, 1e-9 * closed);
+  EXPECT_NEAR(body.v_GB.x() + body.w_GB.z() * kR, 0.0, 1e-9);  // rolls: no slip
+  EXPECT_NEAR(body.p_GB.y(), kR, 1e-9);
+  std::cout << "cylinder: rests at " << level.state.bodies[1].p_GB.y() << " m (r = " << kR
+            << "); rolls at " << body.v_GB.x() << " m/s after " << kT << " s (closed form "
+            << closed << ", relative " << body.v_GB.x() / closed - 1 << "), slip "
+            << body.v_GB.x() + body.w_GB.z() * kR << " m/s\n";
+}
+
+TEST(CollisionShapesTest, EllipsoidRestsOnEachSemiAxisAndCubeMeshOnHalfItsEdge) {
+  // Dropped 1 cm with a principal axis vertical (an equilibrium: the lowest point below the
+  // centre), inelastic: each comes to rest with its centre at that semi-axis above the floor.
+  const Vec3 radii(0.1, 0.2, 0.3);
+  const Vec3 inertia = 0.2 * Vec3(radii.y() * radii.y() + radii.z() * radii.z(),
+                                  radii.x() * radii.x() + radii.z() * radii.z(),
+                                  radii.x() * radii.x() + radii.y() * radii.y());
+  const struct {
+    const char* coordinate;  // the rotation putting the axis vertical
+    double angle;
+    double half_height;
+  } poses[] = {{"rx", 0.0, radii.y()},
+               {"rz", std::numbers::pi / 2, radii.x()},
+               {"rx", std::numbers::pi / 2, radii.z()}};
+  for (const auto& pose : poses) {
+    Scene scene = Parse(OneShapeModel(1, inertia, Vec3(0, -kG, 0), Ellipsoid(radii)));
+    engine::SetCoordinateValue(*scene.system, scene.state, pose.coordinate, pose.angle);
+    engine::SetCoordinateValue(*scene.system, scene.state, "ty", pose.half_height + 0.01);
+    RunNsc(scene, 0.5, 0.5);
+    EXPECT_NEAR(scene.state.bodies[1].p_GB.y(), pose.half_height, 1e-9);
+    EXPECT_NEAR(scene.state.bodies[1].v_GB.norm(), 0.0, 1e-9);
+    std::cout << "ellipsoid: rests at " << scene.state.bodies[1].p_GB.y() << " m (semi-axis "
+              << pose.half_height << ")\n";
+  }
+  Scene cube = Parse(OneShapeModel(1, Vec3::Constant(1.0 / 6 * 0.04), Vec3(0, -kG, 0),
+                                   Mesh("cube.obj")));
+  engine::SetCoordinateValue(*cube.system, cube.state, "ty", 0.11);
+  RunNsc(cube, 0.5, 0.5);
+  EXPECT_NEAR(cube.state.bodies[1].p_GB.y(), kHalfEdge, 1e-9);
+  EXPECT_NEAR(cube.state.bodies[1].v_GB.norm(), 0.0, 1e-9);
+  std::cout << "cube mesh: rests " << cube.state.bodies[1].p_GB.y() - kHalfEdge
+            << " m from half its edge\n";
+}
+
+TEST(CollisionShapesTest, BadSizesAndMissingMeshesAreErrorsWithFileLineAndComponent) {
+  for (const auto& [geometry, what] :
+       {std::pair<std::string, std::string>{Cylinder(-0.1), "radius > 0"},
+        {Ellipsoid(Vec3(0.1, 0.0, 0.3)), "three radii > 0"},
+        {Mesh("no_such_mesh.obj"), "not found"}}) {
+    try {
+      Parse(OneShapeModel(1, Vec3::Ones(), Vec3::Zero(), geometry));
+      FAIL() << "expected an error for " << geometry;
+    } catch (const Error& error) {
+      EXPECT_EQ(error.where().file, kModelFile);
+      EXPECT_GT(error.where().line, 0);
+      EXPECT_EQ(error.component(), "/contactgeometryset/shape");
+      EXPECT_NE(std::string(error.what()).find(what), std::string::npos) << error.what();
+    }
+  }
+  // Through the C++ API: a mesh without vertices.
+  CollisionModel model;
+  CollisionGeometry empty;
+  empty.name = "empty";
+  empty.kind = CollisionShapeKind::kConvexMesh;
+  model.geometry.push_back(empty);
+  EXPECT_THROW(CollisionDetector(model, std::nullopt), Error);
+}
+
+}  // namespace
+}  // namespace sinew::contact
