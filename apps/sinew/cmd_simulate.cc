@@ -12,8 +12,8 @@
 // columns, OpenSim's ForceReporter layout), DIR/contacts.sto when the model has contact forces
 // or collides with NSC (each one's force and torque per body and its active contacts) and, when
 // asked, DIR/constraints.sto (the forces of the model's constraints, OpenSim's record labels),
-// all streamed as rows are computed. SIGINT or SIGTERM stops the run cleanly: the rows so far are kept,
-// in files whose header says status=partial, and the exit code is 128 + the signal.
+// all streamed as rows are computed. SIGINT or SIGTERM stops the run cleanly: the rows so far are
+// kept, in files whose header says status=partial, and the exit code is 128 + the signal.
 #include <sinew/contact/collision_contact_provider.h>
 #include <sinew/contact/contact_force.h>
 #include <sinew/contact/nsc_contact_table.h>
