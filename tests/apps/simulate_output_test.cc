@@ -50,12 +50,13 @@ TEST_F(SimulateOutputTest, CompleteRunSaysSoInItsHeader) {
 }
 
 TEST_F(SimulateOutputTest, InterruptKeepsTheRowsComputedSoFar) {
-  // A run of 10^6 s cannot end in the 1.5 s before SIGINT arrives: once swinging (many short
+  // A run of 10^6 s cannot end in the 3 s before SIGINT arrives (long enough for rows to be
+  // written on a loaded machine, even under sanitizers): once swinging (many short
   // steps), once at rest (rk45's steps grow huge, each holding many report times).
   const std::string swing = " --initial-states " + kResources + "SinglePin_InitialStates.sto";
   for (const std::string& start : {swing, std::string()}) {
     std::filesystem::remove_all(Path("out"));
-    const std::string command = "timeout --preserve-status -s INT 1.5 " +
+    const std::string command = "timeout --preserve-status -s INT 3 " +
                                 std::string(SINEW_CLI_PATH) + " simulate " + kSinglePin + start +
                                 " --duration 1e6 --report-interval 0.5 --quiet --out " +
                                 Path("out") + " 2>" + Path("err.txt");

@@ -94,6 +94,22 @@ TEST(OpenSimParserTest, ActuatorsOfABareForceSetFileActOppositeToTheirWrittenAxi
                 kAngleTolerance)
         << file;
   }
+  // A bad value in the ForceSet file is reported at that file's line, not the model's.
+  std::ofstream(bare)
+      << "<ForceSet name=\"extra\"><objects>\n<TorqueActuator name=\"twist\">\n"
+         "<bodyA>rod1</bodyA><bodyB>ground</bodyB><optimal_force>strong</optimal_force>\n"
+         "</TorqueActuator></objects></ForceSet>\n";
+  const model::ModelSpec spec =
+      io::ReadOsim(kChronoDir + "torque-actuator.osim", io::ForceSetFiles{{bare}, false});
+  opensim::OpenSimParser parser;
+  engine::System system(spec.gravity);
+  try {
+    parser.ParseSpec(system, spec);
+    ADD_FAILURE() << "a non-numeric optimal_force was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(bare + ":3: /forceset/twist"), std::string::npos)
+        << e.what();
+  }
   std::filesystem::remove_all(dir);
 }
 

@@ -1,5 +1,6 @@
 #include <sinew/common/error.h>
 #include <sinew/model/element_values.h>
+#include <sinew/model/force_source.h>
 #include <sinew/muscles/degroote_fregly2016_spec.h>
 #include <sinew/muscles/internal/muscle_base_properties.h>
 
@@ -7,7 +8,7 @@ namespace sinew::muscles {
 
 DeGrooteFregly2016Muscle ReadDeGrooteFregly2016Muscle(const model::ModelSpec& spec,
                                                       const model::ForceSpec& force) {
-  const model::ElementValues v(force.element, spec.file, force.path);
+  const model::ElementValues v(force.element, model::SourceFile(spec, force), force.path);
   DeGrooteFregly2016Parameters p;
   p.name = force.path;
   if (v.Double("optimal_force", 1.0) != 1.0) {

@@ -1,5 +1,6 @@
 #include <sinew/common/error.h>
 #include <sinew/model/element_values.h>
+#include <sinew/model/force_source.h>
 #include <sinew/muscles/internal/muscle_base_properties.h>
 #include <sinew/muscles/millard2012_spec.h>
 
@@ -27,7 +28,7 @@ void ReadCurve(const model::ForceSpec& force, const std::string& file, const cha
 
 Millard2012Parameters ReadMillard2012Parameters(const model::ModelSpec& spec,
                                                 const model::ForceSpec& force) {
-  const std::string& file = spec.file;
+  const std::string& file = model::SourceFile(spec, force);
   const model::ElementValues v(force.element, file, force.path);
   Millard2012Parameters p;
   p.name = force.path;
@@ -100,7 +101,8 @@ Millard2012Muscle ReadMillard2012Muscle(const model::ModelSpec& spec,
   try {
     return Millard2012Muscle(parameters);
   } catch (const Error& error) {
-    throw Error(SourceLocation{spec.file, force.element.line}, force.path, error.message());
+    throw Error(SourceLocation{model::SourceFile(spec, force), force.element.line}, force.path,
+                error.message());
   }
 }
 

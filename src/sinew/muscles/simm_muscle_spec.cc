@@ -1,4 +1,5 @@
 #include <sinew/common/error.h>
+#include <sinew/model/force_source.h>
 #include <sinew/muscles/simm_muscle_spec.h>
 
 #include <string>
@@ -45,7 +46,7 @@ MuscleParameters ReadMuscleParameters(int version, const model::ElementValues& v
 
 Schutte1993Muscle ReadSchutte1993Muscle(const model::ModelSpec& spec,
                                         const model::ForceSpec& force) {
-  const model::ElementValues v(force.element, spec.file, force.path);
+  const model::ElementValues v(force.element, model::SourceFile(spec, force), force.path);
   // OpenSim's ActivationFiberLengthMuscle_Deprecated throws for either flag.
   for (const char* flag : {"ignore_tendon_compliance", "ignore_activation_dynamics"}) {
     if (v.Bool(flag, false)) {
@@ -69,7 +70,7 @@ Schutte1993Muscle ReadSchutte1993Muscle(const model::ModelSpec& spec,
 
 RigidTendonMuscle ReadRigidTendonMuscle(const model::ModelSpec& spec,
                                         const model::ForceSpec& force) {
-  const model::ElementValues v(force.element, spec.file, force.path);
+  const model::ElementValues v(force.element, model::SourceFile(spec, force), force.path);
   RigidTendonParameters p;
   p.muscle = ReadMuscleParameters(force.version, v);
   p.active_force_length_curve = CurveOf(force, "active_force_length_curve");

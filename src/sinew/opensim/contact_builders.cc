@@ -5,6 +5,7 @@
 #include <sinew/contact/hunt_crossley_force.h>
 #include <sinew/contact/smooth_sphere_half_space_force.h>
 #include <sinew/model/element_values.h>
+#include <sinew/model/force_source.h>
 #include <sinew/opensim/internal/contact_mesh.h>
 #include <sinew/opensim/internal/force_registry.h>
 
@@ -97,7 +98,7 @@ std::vector<const model::Element*> ContactParameters(const model::Element& force
 
 ContactSet ReadContactSet(const ForceBuildInput& in) {
   ContactSet set;
-  const std::string& file = in.spec.file;
+  const std::string& file = model::SourceFile(in.spec, in.force);
   for (const model::Element* params : ContactParameters(in.force.element)) {
     const model::ElementValues v(*params, file, in.force.path);
     contact::ContactMaterial m;

@@ -3,6 +3,7 @@
 #include <sinew/forces/point_to_point_spring.h>
 #include <sinew/forces/spring_generalized_force.h>
 #include <sinew/model/element_values.h>
+#include <sinew/model/force_source.h>
 #include <sinew/opensim/internal/external_force_builder.h>
 #include <sinew/opensim/internal/force_registry.h>
 
@@ -146,7 +147,7 @@ std::shared_ptr<engine::ForceElement> BuildForce(
     const model::ModelSpec& spec, const model::ForceSpec& force, const std::vector<int>& body_map,
     const std::vector<int>& coordinate_map, const io::ExternalLoads* external_loads,
     Diagnostics* notes, bool equilibrate_muscles, paths::CylinderRefinement cylinder_refinement) {
-  const std::string& file = external_loads ? external_loads->file : spec.file;
+  const std::string& file = model::SourceFile(spec, force);
   const model::ElementValues values(force.element, file, force.path);
   const ForceType* type = FindForceType(force.type);
   if (!type) values.Fail("'" + force.type + "' is not a force type Sinew simulates");
