@@ -108,8 +108,8 @@ class Integrator {
 };
 
 /// Makes the integrator named `name` ("rk45", "cvode", "cvode-gmres", "euler" or
-/// "implicit-euler"; aliases
-/// "dopri5" and "semi-implicit-euler"). Throws sinew::Error for another name.
+/// "implicit-euler"; aliases "dopri5" and "semi-implicit-euler"). Throws sinew::Error for
+/// another name.
 std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System& system,
                                            const IntegratorSettings& settings);
 
