@@ -6,6 +6,7 @@
 #include <sinew/engine/pose.h>
 #include <sinew/kinematics/body_kinematics.h>
 #include <sinew/muscles/path_actuator.h>
+#include <sinew/opensim/collision_settings.h>
 #include <sinew/opensim/constraint_forces_table.h>
 #include <sinew/opensim/states_table.h>
 #include <unistd.h>
@@ -48,9 +49,7 @@ BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options)
   if (options.contact.collision) {
     shown = spec;
     std::erase_if(shown.contact_geometry, [](const model::ContactGeometrySpec& g) {
-      return g.type == "ContactSphere" || g.type == "ContactHalfSpace" ||
-             g.type == "ContactCylinder" || g.type == "ContactEllipsoid" ||
-             g.type == "ContactMesh";
+      return opensim::IsCollisionShapeClass(g.type);
     });
   }
   WarnNotSimulated(options.contact.collision ? shown : spec, options.model_path, options.strict,

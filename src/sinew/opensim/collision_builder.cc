@@ -10,9 +10,16 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <iterator>
 #include <set>
+#include <string_view>
 
 namespace sinew::opensim::internal {
+
+// The OpenSim contact geometry classes that collide (IsCollisionShapeClass).
+constexpr std::string_view kCollisionShapeClasses[] = {
+    "ContactHalfSpace", "ContactSphere", "ContactCylinder", "ContactEllipsoid", "ContactMesh"};
+
 namespace {
 
 // The contact geometry names the file's simulated contact forces use (any text of theirs that
@@ -209,3 +216,13 @@ void AddSmoothContact(engine::System& system, const model::ModelSpec& spec,
 }
 
 }  // namespace sinew::opensim::internal
+
+namespace sinew::opensim {
+
+bool IsCollisionShapeClass(std::string_view opensim_class) {
+  return std::find(std::begin(internal::kCollisionShapeClasses),
+                   std::end(internal::kCollisionShapeClasses),
+                   opensim_class) != std::end(internal::kCollisionShapeClasses);
+}
+
+}  // namespace sinew::opensim

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -23,5 +24,10 @@ struct CollisionSettings {
   std::vector<std::pair<std::string, contact::CollisionMaterial>> overrides;
   double slip_speed = 1e-3;  ///< SMC friction regularization (m/s)
 };
+
+/// True for the OpenSim contact geometry classes that collide when collision is enabled
+/// (ContactHalfSpace, ContactSphere, ContactCylinder, ContactEllipsoid, ContactMesh); the
+/// parser warns about any other class and leaves it out.
+bool IsCollisionShapeClass(std::string_view opensim_class);
 
 }  // namespace sinew::opensim
