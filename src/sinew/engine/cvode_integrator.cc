@@ -5,6 +5,7 @@
 #include <sinew/common/text.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/cvode_integrator.h>
+#include <sinew/engine/dynamics.h>
 #include <sinew/engine/projection.h>
 #include <sinew/engine/state_vector.h>
 #include <sundials/sundials_context.h>
@@ -135,6 +136,9 @@ int CvodeIntegrator::Rhs(double t, N_Vector y, N_Vector ydot, void* self) {
     // A non-finite derivative (e.g. a trial state far outside a muscle's curves): recoverable,
     // CVODE retries with a smaller step.
     return yd.allFinite() ? 0 : 1;
+  } catch (const NonFiniteForceError& e) {
+    me.message_ = e.what();  // recoverable too; named if CVODE gives up
+    return 1;
   } catch (...) {
     me.callback_error_ = std::current_exception();
     return -1;

@@ -1,8 +1,10 @@
+#include <sinew/common/text.h>
 #include <sinew/engine/direct_joint.h>
 #include <sinew/engine/dynamics.h>
 #include <sinew/engine/joint_values.h>
 #include <sinew/engine/pose.h>
 
+#include <string>
 #include <vector>
 
 namespace sinew::engine {
@@ -57,6 +59,11 @@ void CalcStateVariableDerivatives(const System& system, const State& state, Eige
     const int begin = system.StateVariableBegin(static_cast<int>(k));
     forces[k]->CalcStateVariableDerivatives(system.MakeForceContext(static_cast<int>(k), state),
                                             zdot.segment(begin, n));
+    if (!zdot.segment(begin, n).allFinite()) {
+      throw NonFiniteForceError(
+          {}, forces[k]->name(),
+          "its state-variable derivatives are not finite at t = " + FormatNumber(state.t) + " s");
+    }
   }
 }
 
@@ -69,8 +76,28 @@ Data::Data(const System& system, KktSolver::Method method)
 }
 
 namespace {
+// Names the first source of a right-hand side that is not finite at `state`: a force element
+// (each evaluated alone, only on this failure path), else the state, a constraint or the
+// external loads.
+[[noreturn]] void ThrowNonFiniteLoads(const System& system, const State& state,
+                                      const Loads* external) {
+  const std::string at = " at t = " + FormatNumber(state.t) + " s";
+  const auto& forces = system.force_elements();
+  for (size_t k = 0; k < forces.size(); ++k) {
+    Loads alone(system.num_bodies(), system.num_coordinates());
+    forces[k]->AddLoads(system.MakeForceContext(static_cast<int>(k), state), alone);
+    bool finite = alone.mobility.allFinite();
+    for (const SpatialVec& load : alone.body) finite = finite && load.allFinite();
+    if (!finite) throw NonFiniteForceError({}, forces[k]->name(), "its loads are not finite" + at);
+  }
+  throw NonFiniteForceError("engine: the equations of motion are not finite" + at +
+                            ", though every force element's loads are: the state, a constraint" +
+                            (external ? " or the external loads" : "") + " is not finite");
+}
+
 // The accelerations for data.loads with data.kkt factorized at `state`.
-const Accelerations& SolveAccelerations(const System& system, const State& state, Data& data) {
+const Accelerations& SolveAccelerations(const System& system, const State& state,
+                                        const Loads* external, Data& data) {
   const Loads& loads = data.loads;
   const KktSolver& kkt = data.kkt;
   const int nv = kkt.num_velocities();
@@ -99,6 +126,7 @@ const Accelerations& SolveAccelerations(const System& system, const State& state
     constraints[k]->CalcAccelerationRhs(
         system, state, rhs.segment(nv + kkt.EquationRow(k), constraints[k]->NumEquations()));
   }
+  if (!rhs.allFinite()) ThrowNonFiniteLoads(system, state, external);
   kkt.Solve(rhs, data.solution);
   data.accelerations.vdot = data.solution.head(nv);
   data.accelerations.lambda = data.solution.tail(kkt.num_equations());
@@ -110,14 +138,14 @@ const Accelerations& CalcAccelerations(const System& system, const State& state,
                                        const Loads* external, Data& data) {
   CalcLoads(system, state, external, data.loads);
   data.kkt.Factorize(state);
-  return SolveAccelerations(system, state, data);
+  return SolveAccelerations(system, state, external, data);
 }
 
 const Accelerations& CalcAccelerationsReusingFactorization(const System& system, const State& state,
                                                            const Loads* external, Data& data) {
   CalcLoads(system, state, external, data.loads);
   if (!data.kkt.IsFactorizedAt(state)) data.kkt.Factorize(state);
-  return SolveAccelerations(system, state, data);
+  return SolveAccelerations(system, state, external, data);
 }
 
 }  // namespace sinew::engine

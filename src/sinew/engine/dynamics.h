@@ -2,6 +2,7 @@
 // then the KKT solve for body accelerations, joint-speed derivatives and constraint multipliers.
 #pragma once
 
+#include <sinew/common/error.h>
 #include <sinew/engine/kkt.h>
 #include <sinew/engine/loads.h>
 #include <sinew/engine/state.h>
@@ -17,6 +18,14 @@ struct Accelerations {
   VecX lambda;
 };
 
+/// Thrown by an evaluation when a force element's loads or state-variable derivatives are not
+/// finite (say, at an integrator's trial state far outside a muscle's curves); component() names
+/// the force. Error-controlled integrators take it as a failed step and retry a smaller one.
+class NonFiniteForceError : public Error {
+ public:
+  using Error::Error;
+};
+
 /// Turns generalized forces on coordinates of direct Cartesian joints into the body torques they
 /// are (along the columns of H_FM, in F: tau on the child, -tau on the parent).
 void MapDirectJointForces(const System& system, const State& state, Loads& loads);
@@ -26,6 +35,7 @@ void MapDirectJointForces(const System& system, const State& state, Loads& loads
 void CalcLoads(const System& system, const State& state, const Loads* external, Loads& loads);
 
 /// dz/dt of every auxiliary state variable at `state` (System::num_state_variables() entries).
+/// Throws NonFiniteForceError naming the first force whose derivatives are not finite.
 void CalcStateVariableDerivatives(const System& system, const State& state, Eigen::Ref<VecX> zdot);
 
 /// The workspace of one thread's evaluations of a System: what an evaluation computes, kept so
@@ -44,7 +54,8 @@ struct Data {
 };
 
 /// The accelerations of `state` under the loads of CalcLoads, into data.accelerations (also
-/// returned). `data` must belong to `system`. Throws sinew::Error for a singular system.
+/// returned). `data` must belong to `system`. Throws NonFiniteForceError naming the force when
+/// the loads are not finite, and sinew::Error for a singular system.
 const Accelerations& CalcAccelerations(const System& system, const State& state,
                                        const Loads* external, Data& data);
 

@@ -91,8 +91,10 @@ class RungeKutta45 final : public Integrator {
                     FormatNumber(settings_.min_step) + " s at t = " + FormatNumber(state.t) +
                     " s (" + std::to_string(stats_.rejected) + " steps rejected, " +
                     std::to_string(stats_.projection_failures) +
-                    " of them because the position projection did not converge): the motion "
-                    "may be singular there; try a looser accuracy or check the model");
+                    " of them because the position projection did not converge)" +
+                    (last_failure_.empty() ? "" : "; last failed trial: " + last_failure_) +
+                    ": the motion may be singular there; try a looser accuracy or check the "
+                    "model");
       }
     }
   }
@@ -105,6 +107,23 @@ class RungeKutta45 final : public Integrator {
     const Accelerations& acc = Evaluate(scratch, zdot_);
     ydot.resize(vector_.size());
     vector_.Derivative(y, scratch, acc.vdot, zdot_, ydot);
+  }
+
+  // Eval at a stage of a trial step. False when the stage's state is not finite or a force's
+  // loads or derivatives are not (a trial step far too long for a stiff muscle): the step fails
+  // and is retried shorter, as for a large error estimate.
+  bool TryEval(const VecX& y, double t, State& scratch, VecX& ydot) {
+    if (!y.allFinite()) {
+      last_failure_ = "a trial state was not finite at t = " + FormatNumber(t) + " s";
+      return false;
+    }
+    try {
+      Eval(y, t, scratch, ydot);
+    } catch (const NonFiniteForceError& e) {
+      last_failure_ = e.what();
+      return false;
+    }
+    return true;
   }
 
   // One attempt; on success `state` advances and h_ is updated for the next step.
@@ -131,7 +150,11 @@ class RungeKutta45 final : public Integrator {
       for (int j = 0; j < s; ++j) {
         if (a[s][j] != 0.0) y += (h * a[s][j]) * k[j];
       }
-      Eval(y, s == 6 ? t_new : state.t + c[s] * h, scratch, k[s]);
+      if (!TryEval(y, s == 6 ? t_new : state.t + c[s] * h, scratch, k[s])) {
+        h_ = 0.2 * h;
+        just_rejected_ = true;
+        return false;
+      }
     }
     // y holds the fifth-order solution (the last stage is evaluated at it).
     VecX err = VecX::Zero(y0.size());
@@ -200,6 +223,7 @@ class RungeKutta45 final : public Integrator {
   VecX k_[7];  // the stages' derivatives
   double h_ = 0.0;
   bool just_rejected_ = false;
+  std::string last_failure_;  ///< why the last trial stage failed (for the step-size error)
 };
 
 void RungeKutta45::Interpolate(double t, State& out) {
