@@ -29,17 +29,6 @@
 namespace sinew::muscles {
 namespace {
 
-// The reference's value of column `label` at time t, by linear interpolation between rows.
-double ReferenceAt(const io::Storage& reference, const std::string& label, double t) {
-  const int c = reference.FindColumn(label);
-  EXPECT_GE(c, 0) << label;
-  const auto it = std::lower_bound(reference.time.begin(), reference.time.end(), t);
-  const int i =
-      std::clamp(static_cast<int>(it - reference.time.begin()), 1, reference.NumRows() - 1);
-  const double w = (t - reference.time[i - 1]) / (reference.time[i] - reference.time[i - 1]);
-  return (1 - w) * reference.Value(i - 1, c) + w * reference.Value(i, c);
-}
-
 // BICshort has no wrap object, so its musculotendon length is exact without wrapping. Along
 // OpenSim's own trajectory (the reference's q(t), Hermite-interpolated with its speeds), its
 // activation and fiber length, integrated from the controls by RK4, follow OpenSim's.
@@ -151,36 +140,14 @@ TEST(Arm26ForwardTest, StartAccelerationsAreOpenSimsFirstStepWithItsCylinderRule
 TEST(Arm26ForwardTest, ReproducesOpenSimsForwardRun) {
   auto arm = LoadArm26();
   const io::Storage reference = io::ReadStorage(kArm26Dir + "std_arm26_states.sto");
-  auto integrator = engine::MakeIntegrator("rk45", *arm->system, {.accuracy = 1e-7});
-  integrator->SetController(arm->parser.GetController());
-  const std::vector<std::string> labels = opensim::StatesLabels(*arm->system);
-  std::vector<double> row;
   double worst = 0;
   std::string worst_label;
-  engine::SimulationOptions run;
-  run.duration = 1.0;
-  run.report_interval = 0.01;
-  engine::Simulate(*integrator, arm->state, run, [&](const engine::State& state) {
-    opensim::StatesRow(*arm->system, state, row);
-    for (size_t i = 0; i < labels.size(); ++i) {
-      // "/jointset/r_elbow/r_elbow_flex/value" -> "r_elbow_flex", ".../speed" -> "..._u",
-      // "/forceset/BRA/activation" -> "BRA.activation".
-      std::string label = labels[i];
-      if (label.starts_with("/jointset/")) {
-        const size_t last = label.rfind('/'), before = label.rfind('/', last - 1);
-        const std::string name = label.substr(before + 1, last - before - 1);
-        label = label.ends_with("/speed") ? name + "_u" : name;
-      } else {
-        label = label.substr(std::string("/forceset/").size());
-        label[label.find('/')] = '.';
-      }
-      const double error = std::abs(row[i] - ReferenceAt(reference, label, state.t));
-      if (error > worst) {
-        worst = error;
-        worst_label = label + " at t = " + std::to_string(state.t);
-      }
-    }
-  });
+  CompareWithReference(*arm, reference, 1e-7, 0.01,
+                       [&](double t, const std::string& label, double value, double expected) {
+                         if (std::abs(value - expected) <= worst) return;
+                         worst = std::abs(value - expected);
+                         worst_label = label + " at t = " + std::to_string(t);
+                       });
   std::printf("arm26 forward vs std_arm26_states.sto: worst %.3e (%s)\n", worst,
               worst_label.c_str());
   EXPECT_LT(worst, 5e-3);  // OpenSim's own test tolerance
