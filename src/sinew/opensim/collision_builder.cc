@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <map>
 #include <iterator>
+#include <map>
 #include <set>
 #include <string_view>
 
@@ -43,8 +43,8 @@ std::set<std::string> GeometryUsedByForces(const model::ModelSpec& spec,
     const bool contact_force = f.type == "HuntCrossleyForce" ||
                                f.type == "ElasticFoundationForce" ||
                                f.type == "SmoothSphereHalfSpaceForce";
-    const bool disabled = std::find(disabled_forces.begin(), disabled_forces.end(), f.name) !=
-                          disabled_forces.end();
+    const bool disabled =
+        std::find(disabled_forces.begin(), disabled_forces.end(), f.name) != disabled_forces.end();
     if (contact_force && f.applies_force && !disabled && IsForceSimulated(f)) scan(f.element);
   }
   return used;
@@ -93,9 +93,8 @@ std::optional<contact::CollisionGeometry> MakeGeometry(const model::ModelSpec& s
   } else if (g.type == "ContactEllipsoid") {
     shape.kind = contact::CollisionShapeKind::kEllipsoid;
     const std::vector<double> radii = Numbers(g, "radii");
-    if (radii.size() != 3 || !std::all_of(radii.begin(), radii.end(), [](double r) {
-          return r > 0.0 && std::isfinite(r);
-        }))
+    if (radii.size() != 3 || !std::all_of(radii.begin(), radii.end(),
+                                          [](double r) { return r > 0.0 && std::isfinite(r); }))
       fail("ContactEllipsoid needs three radii > 0");
     shape.radii = Vec3(radii[0], radii[1], radii[2]);
   } else if (g.type == "ContactMesh") {
