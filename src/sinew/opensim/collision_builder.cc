@@ -56,6 +56,20 @@ std::vector<double> Numbers(const model::ContactGeometrySpec& g, const char* key
   return it == g.dimensions.end() ? std::vector<double>{} : it->second;
 }
 
+// True when `body` is ground or joined to it through WeldJoints only (the environment).
+bool FixedToGround(const model::ModelSpec& spec, int body) {
+  for (size_t hops = 0; body != model::kGroundIndex; ++hops) {
+    const auto joint =
+        std::find_if(spec.joints.begin(), spec.joints.end(),
+                     [&](const model::JointSpec& j) { return j.child_body == body; });
+    if (joint == spec.joints.end() || joint->kind != model::JointType::kWeld ||
+        hops > spec.joints.size())
+      return false;
+    body = joint->parent_body;
+  }
+  return true;
+}
+
 // The collision geometry of an OpenSim ContactHalfSpace, ContactSphere, ContactCylinder,
 // ContactEllipsoid or ContactMesh, or nullopt (with a Report warning) for another class.
 // Throws sinew::Error at the geometry's line for a size that is not positive or a mesh that
@@ -98,9 +112,19 @@ std::optional<contact::CollisionGeometry> MakeGeometry(const model::ModelSpec& s
       fail("ContactEllipsoid needs three radii > 0");
     shape.radii = Vec3(radii[0], radii[1], radii[2]);
   } else if (g.type == "ContactMesh") {
-    shape.kind = contact::CollisionShapeKind::kConvexMesh;
     const std::shared_ptr<const contact::ShapeMesh> mesh = ReadContactMesh(spec, g);
-    shape.vertices = std::shared_ptr<const std::vector<Vec3>>(mesh, &mesh->vertices);
+    if (FixedToGround(spec, g.body)) {
+      // The environment: its triangles exactly, concave or not.
+      shape.kind = contact::CollisionShapeKind::kTriangleMesh;
+      shape.mesh = mesh;
+    } else {
+      shape.kind = contact::CollisionShapeKind::kConvexMesh;
+      shape.vertices = std::shared_ptr<const std::vector<Vec3>>(mesh, &mesh->vertices);
+      report.AddWarning({g.where, component,
+                         "ContactMesh on a moving body collides as its convex hull (a concave "
+                         "mesh is filled in); only a mesh fixed to ground collides as its "
+                         "triangles"});
+    }
   } else {
     report.AddWarning({g.where, component,
                        g.type + " is not a collision shape (ContactHalfSpace, ContactSphere, "
