@@ -197,5 +197,43 @@ TEST(CollisionMeshTest, MeshOnAMovingBodyCollidesAsItsHullAndTheReportSaysSo) {
   EXPECT_TRUE(warned);
 }
 
+TEST(CollisionMeshTest, ContactMeshFilesAreSearchedInTheGeometryDirsAndMissingOnesNamed) {
+  // The model read as if from a folder without the mesh: only the parser's geometry folder
+  // (the CLI's --geometry-dir) has it, for the collision shape and for an
+  // ElasticFoundationForce alike; without that folder the error names the file, the component
+  // and every folder searched.
+  const std::string elsewhere = std::string(SINEW_TEST_DATA_DIR) + "/no_such_folder/model.osim";
+  const std::string meshes = std::string(SINEW_TEST_DATA_DIR) + "/sinew";
+  const std::string foundation =
+      "<ElasticFoundationForce name=\"foundation\"><ElasticFoundationForce::"
+      "ContactParametersSet><objects><ElasticFoundationForce::ContactParameters><geometry>"
+      "groove ball</geometry><stiffness>1e6</stiffness><dissipation>0</dissipation>"
+      "</ElasticFoundationForce::ContactParameters></objects></ElasticFoundationForce::"
+      "ContactParametersSet></ElasticFoundationForce>";
+  for (const std::string& forces : {std::string(), foundation}) {
+    const Scene found =
+        Parse(Groove("/ground"), ContactMethod::kNsc, {}, forces, elsewhere, {meshes});
+    if (forces.empty()) {
+      EXPECT_TRUE(std::any_of(found.model.geometry.begin(), found.model.geometry.end(),
+                              [](const CollisionGeometry& g) { return g.name == "groove"; }));
+    } else {
+      EXPECT_EQ(found.system->force_elements().size(), 1u);
+    }
+    try {
+      Parse(Groove("/ground"), ContactMethod::kNsc, {}, forces, elsewhere, {"/no/such/dir"});
+      FAIL() << "expected the mesh not to be found";
+    } catch (const Error& error) {
+      const std::string message = error.what();
+      EXPECT_EQ(error.where().file, elsewhere);
+      EXPECT_GT(error.where().line, 0);
+      EXPECT_EQ(error.component(), "/contactgeometryset/groove");
+      for (const std::string& part : {std::string("'v_groove.obj' not found"),
+                                      std::string(SINEW_TEST_DATA_DIR) + "/no_such_folder/Geometry",
+                                      std::string("/no/such/dir"), std::string("--geometry-dir")})
+        EXPECT_NE(message.find(part), std::string::npos) << message << "\nlacks " << part;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace sinew::contact

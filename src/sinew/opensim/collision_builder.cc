@@ -74,9 +74,9 @@ bool FixedToGround(const model::ModelSpec& spec, int body) {
 // ContactEllipsoid or ContactMesh, or nullopt (with a Report warning) for another class.
 // Throws sinew::Error at the geometry's line for a size that is not positive or a mesh that
 // cannot be read.
-std::optional<contact::CollisionGeometry> MakeGeometry(const model::ModelSpec& spec,
-                                                       const model::ContactGeometrySpec& g,
-                                                       Report& report) {
+std::optional<contact::CollisionGeometry> MakeGeometry(
+    const model::ModelSpec& spec, const model::ContactGeometrySpec& g,
+    const std::vector<std::string>& geometry_dirs, Report& report) {
   contact::CollisionGeometry shape;
   shape.name = g.name;
   shape.body = g.body;
@@ -112,7 +112,7 @@ std::optional<contact::CollisionGeometry> MakeGeometry(const model::ModelSpec& s
       fail("ContactEllipsoid needs three radii > 0");
     shape.radii = Vec3(radii[0], radii[1], radii[2]);
   } else if (g.type == "ContactMesh") {
-    const std::shared_ptr<const contact::ShapeMesh> mesh = ReadContactMesh(spec, g);
+    const std::shared_ptr<const contact::ShapeMesh> mesh = ReadContactMesh(spec, g, geometry_dirs);
     if (FixedToGround(spec, g.body)) {
       // The environment: its triangles exactly, concave or not.
       shape.kind = contact::CollisionShapeKind::kTriangleMesh;
@@ -170,6 +170,7 @@ void AssignMaterials(const model::ModelSpec& spec, const CollisionSettings& sett
 contact::CollisionModel BuildCollision(const model::ModelSpec& spec,
                                        const CollisionSettings& settings,
                                        const std::vector<std::string>& disabled_forces,
+                                       const std::vector<std::string>& geometry_dirs,
                                        Report& report) {
   contact::CheckMaterial(settings.material, {spec.file, 0}, "default contact material");
   contact::CollisionModel model = contact::BuildCollisionModel(
@@ -183,7 +184,8 @@ contact::CollisionModel BuildCollision(const model::ModelSpec& spec,
                          "also a collision shape"});
       continue;
     }
-    if (std::optional<contact::CollisionGeometry> shape = MakeGeometry(spec, g, report))
+    if (std::optional<contact::CollisionGeometry> shape =
+            MakeGeometry(spec, g, geometry_dirs, report))
       model.geometry.push_back(*shape);
   }
   if (settings.ground_plane) contact::AddGroundPlane(model, *settings.ground_plane);

@@ -51,7 +51,8 @@ contact::ContactShape MakeShape(const ForceBuildInput& in, const model::ContactG
     if (!(shape.radius > 0.0)) FailAtGeometry(in.spec, g, "ContactSphere needs a radius > 0");
   } else if (g.type == "ContactMesh") {
     shape.kind = contact::ShapeKind::kMesh;
-    shape.mesh = ReadContactMesh(in.spec, g);
+    shape.mesh = ReadContactMesh(in.spec, g,
+                                 in.geometry_dirs ? *in.geometry_dirs : std::vector<std::string>{});
   } else {
     FailAtGeometry(in.spec, g,
                    g.type +
