@@ -95,3 +95,34 @@ def test_run_without_contact_has_an_empty_contacts_table():
     result = sinew.load(BALL).simulate(0.1, report_interval=0.05)
     assert result.contact_labels == []
     assert result.contacts.shape == (len(result.time), 0)
+
+
+def test_contact_mesh_found_in_geometry_dirs_and_ball_rests_in_the_groove(tmp_path):
+    # The ball model with a ground ContactMesh (tests/data/sinew/v_groove.obj: an open V groove
+    # whose walls rise at slope 1/2) copied where the mesh is not: load finds the mesh only
+    # through geometry_dirs (as --geometry-dir), and without it the error names the file, the
+    # component and the folders searched. The ground mesh collides as its triangles: dropped
+    # from 0.3 m, the ball (r = 0.1 m) comes to rest on both walls with its centre at
+    # r / cos(a) = r sqrt(5) / 2, centred (NSC stops a shape where it meets another, to the
+    # solver's 1e-6 m/s over a 1 ms step: 1e-9 m; measured 2e-11 m), where the groove's convex
+    # hull would have buried it.
+    text = BALL.read_text().replace(
+        '<ContactSphere name="sphere">',
+        '<ContactMesh name="groove"><socket_frame>/ground</socket_frame>'
+        '<filename>v_groove.obj</filename></ContactMesh>\n<ContactSphere name="sphere">')
+    model_file = tmp_path / "groove.osim"
+    model_file.write_text(text)
+    try:
+        sinew.load(model_file, collision=True)
+        raise AssertionError("the mesh should not be found")
+    except sinew.Error as error:
+        assert error.component == "/contactgeometryset/groove"
+        assert "'v_groove.obj' not found" in error.message
+        assert str(tmp_path / "Geometry") in error.message
+    model = sinew.load(model_file, collision=True, contact="nsc",
+                       geometry_dirs=[DATA / "sinew"])
+    result = model.simulate(1.0, report_interval=0.5)
+    ty = result.q[-1, result.coordinates.index("ty")]
+    tx = result.q[-1, result.coordinates.index("tx")]
+    assert abs(ty - 0.1 * math.sqrt(5.0) / 2.0) < 1e-9, ty
+    assert abs(tx) < 1e-9, tx
