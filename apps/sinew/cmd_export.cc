@@ -46,7 +46,7 @@ void RunExport(const ExportArgs& args) {
   options.visual.geometry_dirs = args.geometry_dirs;
   options.max_fps = args.fps;
   options.paths = !args.no_paths;
-  if (args.collision) options.collision_parts = ModelCollisionParts(spec);
+  if (args.collision) options.collision_parts = ModelCollisionParts(spec, args.geometry_dirs);
   viz::BodyMotion motion;
   io::Storage table, contacts;
   const std::string& table_file = args.motion.empty() ? args.states : args.motion;

@@ -1,5 +1,6 @@
 // `sinew render MODEL.osim [--motion FILE | --states FILE] [--time T] [--no-paths]
-//  [--collision] [--verbose] --out FILE.png`: a still picture made by the built-in software renderer (no display or GPU
+//  [--collision] [--verbose] --out FILE.png`: a still picture made by the built-in software
+//  renderer (no display or GPU
 // needed).
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
@@ -16,9 +17,9 @@
 #include <string>
 #include <vector>
 
+#include "apps/sinew/collision_drawing.h"
 #include "apps/sinew/commands.h"
 #include "apps/sinew/notices.h"
-#include "apps/sinew/collision_drawing.h"
 #include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
@@ -68,7 +69,7 @@ void RunRender(const RenderArgs& args) {
   }
   const std::vector<Transform>& X_GB = frame.X_GB[0];
   viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
-  if (args.collision) viz::AddCollisionParts(ModelCollisionParts(spec), scene);
+  if (args.collision) viz::AddCollisionParts(ModelCollisionParts(spec, args.geometry_dirs), scene);
   std::vector<std::vector<Vec3>> lines;
   std::vector<Vec3> line_colors;
   if (!args.no_paths) {

@@ -110,7 +110,8 @@ void RunSimulate(const SimulateOptions& options) {
              .equilibrate_muscles = options.equilibrate_muscles,
              .renamed_force_classes = options.renamed_classes,
              .cylinder_refinement = CylinderRefinementOption(options.cylinder_refinement),
-             .contact = options.contact});
+             .contact = options.contact,
+             .geometry_dirs = options.geometry_dirs});
   const engine::System& system = *built.system;
   engine::State state =
       MakeStartState(system, initial ? &*initial : nullptr, options.equilibrate_muscles,
@@ -230,7 +231,7 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--vis", options->vis, "Visualization for --export: mesh (default), primitives")
       ->check(CLI::IsMember({"primitives", "mesh"}));
   cmd->add_option("--geometry-dir", options->geometry_dirs,
-                  "Extra folder to search for mesh files (repeatable)");
+                  "Extra folder to search for mesh files, visual and ContactMesh (repeatable)");
   cmd->add_flag("--verbose", options->verbose,
                 "With --export: list every missing mesh file, not just how many");
   AddMuscleOptions(cmd, options->equilibrate_muscles, options->renamed_classes,

@@ -68,6 +68,7 @@ BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options)
     }
     parser.RenameForceClass(rename.substr(0, eq), rename.substr(eq + 1));
   }
+  for (const std::string& dir : options.geometry_dirs) parser.AddGeometryDir(dir);
   for (const std::string& file : options.external_loads) parser.AddExternalLoads(file);
   for (const std::string& name : options.disabled_forces) parser.DisableForce(name);
   ApplyContactOptions(options.contact, parser);

@@ -44,6 +44,8 @@ struct ModelOptions {
   /// When cylinders refine their tangent points (`--cylinder-refinement`).
   paths::CylinderRefinement cylinder_refinement = paths::CylinderRefinement::kSeveralWraps;
   ContactOptions contact;  ///< --collision, --contact, --ground-plane, the material
+  /// Folders searched for mesh files (ContactMesh files too) after the model's (--geometry-dir).
+  std::vector<std::string> geometry_dirs;
 };
 
 /// A parsed model: the parser (its Report, its controller) and the finalized system.

@@ -64,7 +64,8 @@ Excitation = Union[float, Function, Callable[[float], float]]
 
 def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool = False,
          contact: str = "nsc", strict: bool = False,
-         parameters: Optional[Mapping[str, Union[float, Sequence[float]]]] = None) -> "Model":
+         parameters: Optional[Mapping[str, Union[float, Sequence[float]]]] = None,
+         geometry_dirs: Sequence[PathLike] = ()) -> "Model":
     """Reads an OpenSim model (.osim, every version 1.9 to 4.6) and builds what Sinew simulates.
 
     visualization: None/"none", "primitives" or "mesh" (visual assets of the bodies).
@@ -80,8 +81,11 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
     numeric property written directly in their element in the file (max_isometric_force,
     stiffness, optimal_force, ...). Joints, frames, path points, constraints, markers and
     controllers cannot be overridden yet.
+    geometry_dirs: folders searched for mesh files (ContactMesh files too) after the model's
+    folder and its Geometry/ folder, as `sinew simulate --geometry-dir`.
     Raises sinew.Error with file, line, component (also for an unknown or ambiguous component,
-    a property it lacks, or a wrong value).
+    a property it lacks, a wrong value, or a ContactMesh file not found: the message lists the
+    folders searched).
     """
 
 

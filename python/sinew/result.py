@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import os
-from typing import Any, Dict, List
+from typing import Any, Dict, List, Optional
 
 import numpy as np
 
@@ -14,12 +14,18 @@ class Result:
     `coordinates`. z: [n, state variables], in the order of `state_variables`. states: the
     states table as `sinew simulate` writes it to states.sto, columns named by `labels`.
     final_state: the sinew.State at the end. statistics: the integrator's steps, rejected steps
-    and evaluations.
+    and evaluations. contacts: the contacts table as `sinew simulate` writes it to contacts.sto
+    ([n, contact_labels]; no columns when the run has no contact): per contact force (and an
+    NSC run's "nsc_contact") the net force (N) and torque about the body's origin (N m) on each
+    body, in ground, "<force>.<body>.force.X|Y|Z" and ".torque.X|Y|Z", then the number of
+    active contacts, in all and per body pair (docs/contact.md).
     """
 
     def __init__(self, *, time: np.ndarray, q: np.ndarray, u: np.ndarray, z: np.ndarray,
                  coordinates: List[str], state_variables: List[str], labels: List[str],
-                 states: np.ndarray, final_state: Any, statistics: Dict[str, int]) -> None:
+                 states: np.ndarray, final_state: Any, statistics: Dict[str, int],
+                 contact_labels: Optional[List[str]] = None,
+                 contacts: Optional[np.ndarray] = None) -> None:
         self.time = time
         self.q = q
         self.u = u
@@ -30,6 +36,9 @@ class Result:
         self.states = states
         self.final_state = final_state
         self.statistics = dict(statistics)
+        self.contact_labels = list(contact_labels or [])
+        self.contacts = (np.asarray(contacts) if contacts is not None
+                         else np.zeros((len(time), len(self.contact_labels))))
 
     def __getstate__(self) -> Dict[str, Any]:
         # A sinew.State holds its model and does not pickle: keep the arrays only.
@@ -48,6 +57,14 @@ class Result:
         """Writes the states table as `sinew simulate` writes states.sto (byte for byte)."""
         from ._sinew import write_table
         write_table(os.fspath(path), "states", self.labels, self.time, self.states)
+
+    def contacts_to_sto(self, path: "os.PathLike[str] | str") -> None:
+        """Writes the contacts table as `sinew simulate` writes contacts.sto (byte for byte).
+        Raises ValueError when the run has no contact columns (the CLI writes no file then)."""
+        if not self.contact_labels:
+            raise ValueError("this run has no contacts table (no contact force or collision)")
+        from ._sinew import write_table
+        write_table(os.fspath(path), "Contacts", self.contact_labels, self.time, self.contacts)
 
     def to_pandas(self) -> Any:
         """The states table as a pandas DataFrame indexed by time (needs pandas)."""

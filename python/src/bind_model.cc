@@ -101,8 +101,11 @@ void BindModel(py::module_& m) {
       "load",
       [](const std::filesystem::path& path, const std::optional<std::string>& visualization,
          bool collision, const std::string& contact, bool strict,
-         const std::optional<py::dict>& parameters) {
+         const std::optional<py::dict>& parameters,
+         const std::vector<std::filesystem::path>& geometry_dirs) {
         LoadOptions options;
+        for (const std::filesystem::path& dir : geometry_dirs)
+          options.geometry_dirs.push_back(dir.string());
         options.visualization = visualization.value_or("none");
         options.collision = collision;
         options.contact = contact;
@@ -113,8 +116,10 @@ void BindModel(py::module_& m) {
       py::arg("path"), py::kw_only(), py::arg("visualization") = py::none(),
       py::arg("collision") = false, py::arg("contact") = "nsc", py::arg("strict") = false,
       py::arg("parameters") = py::none(),
+      py::arg("geometry_dirs") = std::vector<std::filesystem::path>{},
       "Reads an OpenSim model (.osim) and builds what Sinew simulates of it, with `parameters` "
-      "({'<component>/<property>': number or sequence}) overriding the file's values.");
+      "({'<component>/<property>': number or sequence}) overriding the file's values; "
+      "ContactMesh files are also searched in `geometry_dirs`.");
 
   py::class_<ModelHandle, ModelPtr>(m, "Model", "A parsed OpenSim model (sinew.load makes one).")
       .def_property_readonly("path", &ModelHandle::path, "The .osim file it was read from.")

@@ -1,11 +1,16 @@
 // Model.simulate: engine::Simulate (the loop `sinew simulate` runs) over a model built as the
-// CLI builds it, recording every reported state into NumPy arrays, and write_table, which
-// writes a table with io::StorageWriter (states.sto byte for byte as the CLI writes it).
+// CLI builds it, recording every reported state into NumPy arrays, with the contacts table
+// (contacts.sto's columns: contact::ContactTableLabels, then an NSC run's
+// contact::NscContactTable), and write_table, which writes a table with io::StorageWriter
+// (states.sto byte for byte as the CLI writes it).
 // The GIL is released while the engine runs; Ctrl-C (KeyboardInterrupt) stops the run between
 // steps through the driver's stop flag.
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
+#include <sinew/contact/contact_table.h>
+#include <sinew/contact/nsc_contact_table.h>
 #include <sinew/engine/integrator.h>
+#include <sinew/engine/nsc_integrator.h>
 #include <sinew/engine/simulation.h>
 #include <sinew/functions/constant.h>
 #include <sinew/io/storage_writer.h>
@@ -67,8 +72,22 @@ py::object Simulate(const ModelPtr& model, double duration, double accuracy,
       opensim::MakeRunIntegrator(integrator_name, system, setup.model->parser(), settings);
   integrator->SetController(setup.controller);
 
+  // The contacts table, as `sinew simulate` writes contacts.sto: the contact force elements'
+  // columns, then (NSC) the stepper's contact impulses per step length.
+  std::optional<contact::NscContactTable> nsc_table;
+  if (const auto* nsc = dynamic_cast<const engine::NscIntegrator*>(integrator.get())) {
+    if (const auto* provider =
+            dynamic_cast<const contact::CollisionContactProvider*>(nsc->provider().get()))
+      nsc_table.emplace(system, *nsc, *provider);
+  }
+  std::vector<std::string> contact_labels = contact::ContactTableLabels(system);
+  if (nsc_table) {
+    contact_labels.insert(contact_labels.end(), nsc_table->labels().begin(),
+                          nsc_table->labels().end());
+  }
+
   const size_t nc = system.num_coordinates(), nz = system.num_state_variables();
-  std::vector<double> time, q, u, z, table, row;
+  std::vector<double> time, q, u, z, table, row, contacts, nsc_row;
   auto record = [&](const engine::State& s) {
     time.push_back(s.t);
     q.insert(q.end(), s.q.data(), s.q.data() + nc);
@@ -76,6 +95,14 @@ py::object Simulate(const ModelPtr& model, double duration, double accuracy,
     z.insert(z.end(), s.z.data(), s.z.data() + nz);
     opensim::StatesRow(system, s, row);
     table.insert(table.end(), row.begin(), row.end());
+    if (!contact_labels.empty()) {
+      contact::ContactTableRow(system, s, row);
+      contacts.insert(contacts.end(), row.begin(), row.end());
+      if (nsc_table) {
+        nsc_table->Row(nsc_row);
+        contacts.insert(contacts.end(), nsc_row.begin(), nsc_row.end());
+      }
+    }
   };
   std::atomic<bool> stop = false;
   engine::SimulationOptions run;
@@ -98,13 +125,15 @@ py::object Simulate(const ModelPtr& model, double duration, double accuracy,
   py::dict statistics(py::arg("steps") = stats.steps, py::arg("rejected") = stats.rejected,
                       py::arg("evaluations") = stats.evaluations);
   py::object result_type = py::module_::import("sinew.result").attr("Result");
-  return result_type(
-      py::arg("time") = time_array, py::arg("q") = ToMatrix(q, n, nc),
-      py::arg("u") = ToMatrix(u, n, nc), py::arg("z") = ToMatrix(z, n, nz),
-      py::arg("coordinates") = setup.model->CoordinateNames(),
-      py::arg("state_variables") = system.state_variable_names(), py::arg("labels") = labels,
-      py::arg("states") = ToMatrix(table, n, labels.size()),
-      py::arg("final_state") = StateHandle{setup.model, state}, py::arg("statistics") = statistics);
+  return result_type(py::arg("time") = time_array, py::arg("q") = ToMatrix(q, n, nc),
+                     py::arg("u") = ToMatrix(u, n, nc), py::arg("z") = ToMatrix(z, n, nz),
+                     py::arg("coordinates") = setup.model->CoordinateNames(),
+                     py::arg("state_variables") = system.state_variable_names(),
+                     py::arg("labels") = labels,
+                     py::arg("states") = ToMatrix(table, n, labels.size()),
+                     py::arg("final_state") = StateHandle{setup.model, state},
+                     py::arg("statistics") = statistics, py::arg("contact_labels") = contact_labels,
+                     py::arg("contacts") = ToMatrix(contacts, n, contact_labels.size()));
 }
 
 // Writes a storage file with io::StorageWriter: header `name`, `labels`, then one row per time.

@@ -36,6 +36,7 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
                                                    : opensim::ContactMethod::kNsc);
   parser.SetStrict(options.strict);
   parser.SetControlsFile(options.controls_file);
+  for (const std::string& dir : options.geometry_dirs) parser.AddGeometryDir(dir);
   handle->system_ = std::make_unique<engine::System>();
   parser.ParseSpec(*handle->system_, std::move(spec));
   handle->system_->Finalize();

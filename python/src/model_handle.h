@@ -23,6 +23,9 @@ struct LoadOptions {
   std::string contact = "nsc";  ///< "nsc" or "smc"
   bool strict = false;
   std::string controls_file;  ///< an OpenSim ControlSet file, "" for none
+  /// Folders searched for mesh files (ContactMesh files too) after the model's own, as
+  /// `--geometry-dir` (OpenSimParser::AddGeometryDir).
+  std::vector<std::string> geometry_dirs;
   /// Property overrides applied to the spec before the System is built
   /// (model::ApplyParameterOverrides), in the order given.
   std::vector<model::ParameterOverride> parameters;

@@ -56,3 +56,73 @@ def test_nsc_simulator_steps_as_simulate_does():
     assert np.allclose(simulator.state.q, result.q[-1], rtol=0.0, atol=1e-12)
     ty = simulator.state.q[model.coordinates.index("ty")]
     assert abs(ty - 0.1) < 1e-9  # resting on its radius (the envelope is exact for spheres)
+
+
+def test_contacts_table_is_contacts_sto_and_carries_the_weight_at_rest(cli, tmp_path):
+    # Result.contacts holds what `sinew simulate` writes to contacts.sto (same labels, times and
+    # values, bit for bit, for SMC and NSC), and Result.contacts_to_sto writes that file byte
+    # for byte. At rest the floor carries the 1 kg ball: its contact force is (0, m g, 0) with
+    # no torque about its centre, and ground takes the opposite (SMC: to the 1 um Hertz depth's
+    # settling, 1e-4 relative; NSC: to the solver's 1e-6 m/s tolerance over h = 1 ms, m 1e-6 /
+    # 1e-3 = 1e-3 N).
+    weight = 1.0 * 9.80665
+    for contact, tolerance in (("smc", 1e-4 * weight), ("nsc", 1e-3)):
+        states = cli([BALL, "--collision", "--contact", contact, "--duration", 1.5,
+                      "--report-interval", 0.05], tmp_path / contact)
+        result = sinew.load(BALL, collision=True, contact=contact).simulate(
+            1.5, report_interval=0.05)
+        labels, time, values = read_sto(states.parent / "contacts.sto")
+        assert result.contact_labels == labels
+        assert np.array_equal(result.time, time)
+        assert np.array_equal(result.contacts, values)
+        assert result.contacts.shape == (len(result.time), len(labels))
+        name = "smc_contact" if contact == "smc" else "nsc_contact"
+        column = {label: result.contacts[-1, k] for k, label in enumerate(labels)}
+        assert abs(column[f"{name}.ball.force.Y"] - weight) < tolerance
+        assert abs(column[f"{name}.ball.force.X"]) < tolerance
+        assert abs(column[f"{name}.ball.force.Z"]) < tolerance
+        assert abs(column[f"{name}.ground.force.Y"] + weight) < tolerance
+        for axis in "XYZ":  # about the centre, where the contact force's line passes
+            assert abs(column[f"{name}.ball.torque.{axis}"]) < 0.1 * tolerance
+        assert column[f"{name}.active_contacts"] == 1
+        assert column[f"{name}.ground-ball.active_contacts"] == 1
+        written = tmp_path / f"{contact}_contacts.sto"
+        result.contacts_to_sto(written)
+        assert written.read_bytes() == (states.parent / "contacts.sto").read_bytes()
+
+
+def test_run_without_contact_has_an_empty_contacts_table():
+    result = sinew.load(BALL).simulate(0.1, report_interval=0.05)
+    assert result.contact_labels == []
+    assert result.contacts.shape == (len(result.time), 0)
+
+
+def test_contact_mesh_found_in_geometry_dirs_and_ball_rests_in_the_groove(tmp_path):
+    # The ball model with a ground ContactMesh (tests/data/sinew/v_groove.obj: an open V groove
+    # whose walls rise at slope 1/2) copied where the mesh is not: load finds the mesh only
+    # through geometry_dirs (as --geometry-dir), and without it the error names the file, the
+    # component and the folders searched. The ground mesh collides as its triangles: dropped
+    # from 0.3 m, the ball (r = 0.1 m) comes to rest on both walls with its centre at
+    # r / cos(a) = r sqrt(5) / 2, centred (NSC stops a shape where it meets another, to the
+    # solver's 1e-6 m/s over a 1 ms step: 1e-9 m; measured 2e-11 m), where the groove's convex
+    # hull would have buried it.
+    text = BALL.read_text().replace(
+        '<ContactSphere name="sphere">',
+        '<ContactMesh name="groove"><socket_frame>/ground</socket_frame>'
+        '<filename>v_groove.obj</filename></ContactMesh>\n<ContactSphere name="sphere">')
+    model_file = tmp_path / "groove.osim"
+    model_file.write_text(text)
+    try:
+        sinew.load(model_file, collision=True)
+        raise AssertionError("the mesh should not be found")
+    except sinew.Error as error:
+        assert error.component == "/contactgeometryset/groove"
+        assert "'v_groove.obj' not found" in error.message
+        assert str(tmp_path / "Geometry") in error.message
+    model = sinew.load(model_file, collision=True, contact="nsc",
+                       geometry_dirs=[DATA / "sinew"])
+    result = model.simulate(1.0, report_interval=0.5)
+    ty = result.q[-1, result.coordinates.index("ty")]
+    tx = result.q[-1, result.coordinates.index("tx")]
+    assert abs(ty - 0.1 * math.sqrt(5.0) / 2.0) < 1e-9, ty
+    assert abs(tx) < 1e-9, tx

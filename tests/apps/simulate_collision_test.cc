@@ -150,6 +150,36 @@ TEST_F(SimulateCollisionTest, BadCollisionShapesAreRefusedWithFileLineAndCompone
   }
 }
 
+// A ContactMesh file that is neither beside the model nor in its Geometry/ folder is found in
+// --geometry-dir, as visual meshes are; without it the error names the file, the component and
+// the folders searched.
+TEST_F(SimulateCollisionTest, ContactMeshIsFoundInTheGeometryDir) {
+  std::ifstream in(kBall);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string model = text.str();
+  const std::string anchor = "<ContactSphere name=\"sphere\">";
+  ASSERT_NE(model.find(anchor), std::string::npos);
+  model.insert(model.find(anchor),
+               "<ContactMesh name=\"groove\"><socket_frame>/ground</socket_frame>"
+               "<filename>v_groove.obj</filename></ContactMesh>\n");
+  std::ofstream(Path("groove.osim")) << model;
+  const std::string meshes = std::string(SINEW_TEST_DATA_DIR) + "/sinew";
+  for (const std::string contact : {"smc", "nsc"}) {
+    const CliRun found =
+        Run("simulate " + Path("groove.osim") + " --collision --contact " + contact +
+            " --geometry-dir " + meshes + " --duration 0.01 --quiet --out " + Path("out"));
+    EXPECT_EQ(found.exit_code, 0) << found.err;
+  }
+  const CliRun missing = Run("simulate " + Path("groove.osim") +
+                             " --collision --duration 0.01 --quiet --out " + Path("out"));
+  EXPECT_EQ(missing.exit_code, 2) << missing.err;
+  for (const std::string& part :
+       {std::string("groove.osim:"), std::string("/contactgeometryset/groove"),
+        std::string("'v_groove.obj' not found"), Path("Geometry")})
+    EXPECT_NE(missing.err.find(part), std::string::npos) << missing.err << "\nlacks " << part;
+}
+
 TEST_F(SimulateCollisionTest, BadContactOptionsAreRefused) {
   for (const auto& [options, what] :
        {std::pair<std::string, std::string>{"--collision --friction -0.1", "friction -0.1"},

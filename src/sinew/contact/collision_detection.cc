@@ -1,7 +1,11 @@
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/CollisionShapes/btCylinderShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
+#include <BulletCollision/CollisionShapes/btTriangleCallback.h>
+#include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
+#include <BulletCollision/CollisionShapes/btTriangleShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
@@ -32,7 +36,16 @@ Mat3 RotationYTo(const Vec3& u) {
   return Eigen::Quaterniond::FromTwoVectors(Vec3::UnitY(), u).toRotationMatrix();
 }
 
-enum class Kind { kCylinder, kSphere, kBox, kHalfSpace, kEllipsoid, kHull };
+enum class Kind { kCylinder, kSphere, kBox, kHalfSpace, kEllipsoid, kHull, kTriangleMesh };
+
+// A triangle mesh for Bullet: the arrays its btTriangleIndexVertexArray points into, and the
+// bounding-volume hierarchy over its triangles (btBvhTriangleMeshShape, built once).
+struct BulletTriangleMesh {
+  std::vector<int> indices;
+  std::vector<btScalar> coordinates;
+  std::unique_ptr<btTriangleIndexVertexArray> arrays;
+  std::unique_ptr<btBvhTriangleMeshShape> shape;
+};
 
 struct Shape {
   int body = 0;
@@ -42,7 +55,8 @@ struct Shape {
   int material = 0;
   // Bullet's shape, inflated by half the envelope (its margin) for GJK; null for a half-space.
   std::unique_ptr<btConvexShape> bt;
-  std::vector<Vec3> hull;  // kHull: its distinct points, in S
+  std::vector<Vec3> hull;                    // kHull, kTriangleMesh: its distinct points, in S
+  std::unique_ptr<BulletTriangleMesh> mesh;  // kTriangleMesh (bt is null)
 };
 
 // Calls visit(p_S) for each point of the convex `shape` (in its frame S, not inflated) that can
@@ -71,6 +85,7 @@ void ForEachCandidate(const Shape& shape, const Vec3& d_S, Visit&& visit) {
       visit(FromBt(shape.bt->localGetSupportingVertexWithoutMargin(ToBt(d_S))));
       break;
     case Kind::kHull:  // its points (each one inside the half-space is a contact)
+    case Kind::kTriangleMesh:
       for (const Vec3& p : shape.hull) visit(p);
       break;
     case Kind::kHalfSpace:
@@ -157,9 +172,79 @@ Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
       s.bt = std::move(hull);
       break;
     }
+    case CollisionShapeKind::kTriangleMesh: {
+      s.kind = Kind::kTriangleMesh;
+      s.radius = 0.0;  // flat faces: the other shape's curvature decides
+      if (!g.mesh || g.mesh->triangles.empty())
+        throw Error("contact: the mesh '" + g.name + "' has no triangles");
+      s.hull = DistinctPoints(g.mesh->vertices);
+      auto mesh = std::make_unique<BulletTriangleMesh>();
+      const int num_vertices = static_cast<int>(g.mesh->vertices.size());
+      for (const std::array<int, 3>& t : g.mesh->triangles) {
+        for (const int v : t) {
+          if (v < 0 || v >= num_vertices)
+            throw Error("contact: the mesh '" + g.name + "' has a triangle with no vertex " +
+                        std::to_string(v));
+          mesh->indices.push_back(v);
+        }
+      }
+      for (const Vec3& v : g.mesh->vertices) {
+        for (int k = 0; k < 3; ++k) mesh->coordinates.push_back(v[k]);
+      }
+      mesh->arrays = std::make_unique<btTriangleIndexVertexArray>(
+          static_cast<int>(g.mesh->triangles.size()), mesh->indices.data(), 3 * sizeof(int),
+          num_vertices, mesh->coordinates.data(), 3 * sizeof(btScalar));
+      mesh->shape = std::make_unique<btBvhTriangleMeshShape>(mesh->arrays.get(),
+                                                             /*useQuantizedAabbCompression=*/true);
+      s.mesh = std::move(mesh);
+      break;
+    }
   }
   return s;
 }
+
+// The point of the triangle (a, b, c) closest to p (by the region of p: a vertex, an edge or
+// the face).
+Vec3 ClosestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + d1 / (d1 - d3) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
+    return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  const double denom = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+// Two contact points closer than this (m) are one point of the mesh (Bullet's EPA is accurate
+// to about 1e-7 m on these shapes).
+constexpr double kMeshPointTolerance = 1e-6;
+
+// Calls `visit` with the three vertices of each triangle Bullet reports.
+template <class Visit>
+struct TriangleVisitor : btTriangleCallback {
+  explicit TriangleVisitor(Visit& v) : visit(v) {}
+  void processTriangle(btVector3* triangle, int, int) override { visit(triangle); }
+  Visit& visit;
+};
+
+// A contact of a convex shape with one triangle of a mesh, before the filter of
+// CollideWithMesh: the contact, and where it touches the triangle (unmoved by the envelope).
+struct TriangleContact {
+  CollisionContact contact;
+  Vec3 p_mesh_G;
+  std::array<Vec3, 3> triangle_G;
+};
 
 // The distance between the segments [p1, q1] and [p2, q2] (closest points of two segments, the
 // clamped solution of the two-parameter least-squares problem).
@@ -212,10 +297,15 @@ struct CollisionDetector::Impl {
   // Bullet's deepest contact of the convex shapes p.i and p.j, if they overlap.
   template <class Visit>
   void CollideConvex(const Pair& p, const std::vector<Transform>& X_GB, Visit&& visit) const;
+  // The contacts of the convex shape p.j with the triangles of the mesh p.i.
+  template <class Visit>
+  void CollideWithMesh(const Pair& p, const std::vector<Transform>& X_GB, Visit&& visit) const;
   template <class Visit>
   void Collide(const Pair& p, const std::vector<Transform>& X_GB, Visit&& visit) const {
     if (shapes[p.i].kind == Kind::kHalfSpace)
       CollideWithHalfSpace(p, X_GB, visit);
+    else if (shapes[p.i].kind == Kind::kTriangleMesh)
+      CollideWithMesh(p, X_GB, visit);
     else
       CollideConvex(p, X_GB, visit);
   }
@@ -223,8 +313,7 @@ struct CollisionDetector::Impl {
 
 CollisionDetector::CollisionDetector(const CollisionModel& model,
                                      std::optional<double> ground_height,
-                                     const std::vector<Transform>& X_GB_rest,
-                                     double envelope)
+                                     const std::vector<Transform>& X_GB_rest, double envelope)
     : impl_(std::make_unique<Impl>()) {
   if (!(envelope >= 0.0) || !std::isfinite(envelope))
     throw Error("contact: the collision envelope must be a finite length >= 0");
@@ -247,10 +336,17 @@ CollisionDetector::CollisionDetector(const CollisionModel& model,
       const Shape& a = shapes[i];
       const Shape& b = shapes[j];
       if (a.kind == Kind::kHalfSpace && b.kind == Kind::kHalfSpace) continue;
+      // Triangle meshes are the environment: two never meet.
+      if (a.kind == Kind::kTriangleMesh && b.kind == Kind::kTriangleMesh) continue;
       if (!model.CanCollide(a.body, b.body)) continue;
+      // First a half-space (against whose solid the other's points are tested), else a
+      // triangle mesh (against whose triangles the other, convex, is tested).
+      const auto rank = [](Kind k) {
+        return k == Kind::kHalfSpace ? 0 : k == Kind::kTriangleMesh ? 1 : 2;
+      };
       Pair p;
-      p.i = b.kind == Kind::kHalfSpace ? j : i;
-      p.j = b.kind == Kind::kHalfSpace ? i : j;
+      p.i = rank(b.kind) < rank(a.kind) ? j : i;
+      p.j = rank(b.kind) < rank(a.kind) ? i : j;
       p.radius = a.radius > 0.0 && b.radius > 0.0 ? a.radius * b.radius / (a.radius + b.radius)
                                                   : std::max(a.radius, b.radius);
       const auto material_of = [&](int m) {
@@ -354,6 +450,81 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   c.radius = p.radius;
   c.material = p.material;
   visit(c);
+}
+
+template <class Visit>
+void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<Transform>& X_GB,
+                                              Visit&& visit) const {
+  const Shape& m = shapes[p.i];
+  const Shape& s = shapes[p.j];
+  const Transform X_GM = X_GB[m.body] * m.X_BS;
+  const Transform X_GS = X_GB[s.body] * s.X_BS;
+  // Broad phase: the triangles whose bounding boxes meet the convex shape's, both in M (the
+  // mesh's hierarchy of boxes, btBvhTriangleMeshShape::processAllTriangles).
+  // The shape's box is grown by the triangles' margin (half the envelope).
+  const double inflation = 0.5 * envelope;
+  btVector3 min_M, max_M;
+  s.bt->getAabb(ToBt(X_GM.Inverse() * X_GS), min_M, max_M);
+  min_M -= btVector3(inflation, inflation, inflation);
+  max_M += btVector3(inflation, inflation, inflation);
+  thread_local std::vector<TriangleContact> found;
+  found.clear();
+  const btTransform bt_X_GM = ToBt(X_GM);
+  const btTransform bt_X_GS = ToBt(X_GS);
+  // Narrow phase per triangle: GJK and EPA between the convex shape (A) and the triangle (B),
+  // each grown by half the envelope, as CollideConvex.
+  const auto on_triangle = [&](const btVector3* v) {
+    btTriangleShape triangle(v[0], v[1], v[2]);
+    triangle.setMargin(inflation);
+    btVoronoiSimplexSolver simplex;
+    btGjkEpaPenetrationDepthSolver epa;
+    btGjkPairDetector gjk(s.bt.get(), &triangle, &simplex, &epa);
+    btGjkPairDetector::ClosestPointInput input;
+    input.m_transformA = bt_X_GS;
+    input.m_transformB = bt_X_GM;
+    btPointCollector output;
+    gjk.getClosestPoints(input, output, nullptr);
+    if (!output.m_hasResult || !(output.m_distance < 0.0)) return;
+    TriangleContact t;
+    CollisionContact& c = t.contact;
+    c.body1 = m.body;
+    c.body2 = s.body;
+    c.n_G = FromBt(output.m_normalOnBInWorld).normalized();  // from the triangle to the shape
+    const double inflated_depth = -output.m_distance;
+    if (!c.n_G.allFinite() || !std::isfinite(inflated_depth)) return;
+    c.depth = inflated_depth - envelope;
+    c.p_G = FromBt(output.m_pointInWorld) - 0.5 * inflated_depth * c.n_G;
+    c.radius = p.radius;
+    c.material = p.material;
+    t.p_mesh_G = FromBt(output.m_pointInWorld) - inflation * c.n_G;
+    for (int k = 0; k < 3; ++k) t.triangle_G[k] = X_GM * FromBt(v[k]);
+    found.push_back(t);
+  };
+  TriangleVisitor<decltype(on_triangle)> callback(on_triangle);
+  m.mesh->shape->processAllTriangles(&callback, min_M, max_M);
+  // A shape overlapping a surface of triangles overlaps the neighbours of the one it dents
+  // too, each at its point nearest the shape: keep only the contacts that are local extremes
+  // of the overlap over the surface. A contact is dropped when a triangle that holds its point
+  // (a shared edge or vertex) overlaps more (the neighbour of the dented triangle), or when an
+  // earlier contact has the same point (a contact on an edge or vertex, found by each triangle
+  // there). So a sphere on a flat mesh touches once, in a V groove once per side.
+  for (size_t k = 0; k < found.size(); ++k) {
+    const TriangleContact& t = found[k];
+    bool keep = true;
+    for (size_t i = 0; i < found.size() && keep; ++i) {
+      if (i == k) continue;
+      const TriangleContact& o = found[i];
+      const std::array<Vec3, 3>& v = o.triangle_G;
+      const bool holds =
+          (ClosestPointOnTriangle(t.p_mesh_G, v[0], v[1], v[2]) - t.p_mesh_G).norm() <=
+          kMeshPointTolerance;
+      if (holds && o.contact.depth > t.contact.depth + kMeshPointTolerance) keep = false;
+      if (i < k && (o.p_mesh_G - t.p_mesh_G).norm() <= kMeshPointTolerance &&
+          std::abs(o.contact.depth - t.contact.depth) <= kMeshPointTolerance)
+        keep = false;
+    }
+    if (keep) visit(t.contact);
+  }
 }
 
 void CollisionDetector::FindContacts(

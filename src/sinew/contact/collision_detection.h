@@ -1,9 +1,11 @@
 // Collision detection between a collision model's shapes (contact::CollisionModel: the seed's
 // cylinders, OpenSim's ContactSphere, ContactHalfSpace, ContactCylinder, ContactEllipsoid and
-// ContactMesh (its convex hull), environment boxes and planes) through Bullet's collision
-// library: its bounding boxes as the broad phase, GJK/EPA as the narrow phase between convex
-// shapes, and the shapes' support vertices against half-spaces (what Bullet's convex-plane
-// algorithm does; several points per pair for boxes, cylinders and hulls).
+// ContactMesh (on a moving body its convex hull, fixed to ground its triangles), environment
+// boxes and planes) through Bullet's collision library: its bounding boxes as the broad phase,
+// GJK/EPA as the narrow phase between convex shapes and between a convex shape and each
+// triangle of a ground mesh near it (found through the mesh's btBvhTriangleMeshShape), and the
+// shapes' support vertices against half-spaces (what Bullet's convex-plane algorithm does;
+// several points per pair for boxes, cylinders and hulls).
 // Stateless per query (no contact caching), so one detector can be shared by threads and by the
 // stages of a Runge-Kutta step.
 #pragma once
@@ -52,7 +54,8 @@ class CollisionDetector {
   /// with a negative depth (the gap) until they overlap. Exact for every pair: GJK and EPA work
   /// on each convex shape grown by half the envelope (Bullet's margin), whose overlap is the
   /// true one plus the envelope; against a half-space the shape's own points are measured.
-  /// Throws sinew::Error for a negative envelope or a mesh without vertices.
+  /// Throws sinew::Error for a negative envelope, a mesh without vertices or triangles, or a
+  /// triangle naming a vertex the mesh does not have.
   CollisionDetector(const CollisionModel& model, std::optional<double> ground_height,
                     const std::vector<Transform>& X_GB_rest = {}, double envelope = 0.0);
   ~CollisionDetector();
@@ -62,7 +65,10 @@ class CollisionDetector {
   /// Calls `visit` for every contact at the body poses `X_GB` (one per body, ground first):
   /// one point per pair of convex shapes (Bullet's deepest point); against a half-space, a
   /// sphere's or an ellipsoid's deepest point, each of a cylinder's two cap rims' deepest
-  /// points and each box corner or hull vertex that lies inside it.
+  /// points and each box corner or hull vertex that lies inside it; against a triangle mesh
+  /// (kTriangleMesh), one point per local extreme of the overlap over its surface (a sphere in
+  /// a V groove touches each side once; a contact found by several triangles at a shared edge
+  /// or vertex counts once).
   void FindContacts(const std::vector<Transform>& X_GB,
                     const std::function<void(const CollisionContact&)>& visit) const;
   /// The number of shape pairs tested.

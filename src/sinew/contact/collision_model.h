@@ -5,6 +5,7 @@
 #pragma once
 
 #include <sinew/contact/collision_material.h>
+#include <sinew/contact/contact_shape.h>
 #include <sinew/math/transform.h>
 #include <sinew/math/types.h>
 #include <sinew/model/model_spec.h>
@@ -37,12 +38,16 @@ struct CollisionCylinder {
 
 /// The kinds of collision geometry besides the seed's cylinders.
 enum class CollisionShapeKind {
-  kSphere,     ///< OpenSim's ContactSphere: centred at S's origin, `radius`.
-  kBox,        ///< a box centred at S's origin, `half_extents` along S's axes.
-  kHalfSpace,  ///< OpenSim's ContactHalfSpace convention: the solid x > 0 of S, outward normal -x.
-  kCylinder,   ///< OpenSim's ContactCylinder: axis S's z, `radius`, from -half_length to +.
-  kEllipsoid,  ///< OpenSim's ContactEllipsoid: semi-axes `radii` along S's x, y, z.
-  kConvexMesh, ///< OpenSim's ContactMesh: the convex hull of `vertices` (in S).
+  kSphere,      ///< OpenSim's ContactSphere: centred at S's origin, `radius`.
+  kBox,         ///< a box centred at S's origin, `half_extents` along S's axes.
+  kHalfSpace,   ///< OpenSim's ContactHalfSpace convention: the solid x > 0 of S, outward normal -x.
+  kCylinder,    ///< OpenSim's ContactCylinder: axis S's z, `radius`, from -half_length to +.
+  kEllipsoid,   ///< OpenSim's ContactEllipsoid: semi-axes `radii` along S's x, y, z.
+  kConvexMesh,  ///< OpenSim's ContactMesh on a moving body: the convex hull of `vertices` (in S).
+  /// OpenSim's ContactMesh fixed to ground (the environment): its triangles `mesh` (in S)
+  /// exactly, concave or not (Bullet's btBvhTriangleMeshShape); each triangle is a two-sided
+  /// sheet.
+  kTriangleMesh,
 };
 
 /// The half length of an OpenSim ContactCylinder as a collision shape, in radii: Simbody's
@@ -62,6 +67,7 @@ struct CollisionGeometry {
   double half_length = 0.0;          ///< kCylinder: m
   Vec3 radii = Vec3::Zero();         ///< kEllipsoid: m
   std::shared_ptr<const std::vector<Vec3>> vertices = nullptr;  ///< kConvexMesh: in S, m
+  std::shared_ptr<const ShapeMesh> mesh = nullptr;              ///< kTriangleMesh: in S, m
 };
 
 /// Shapes, families and excluded pairs of a model.

@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <map>
 #include <iterator>
+#include <map>
 #include <set>
 #include <string_view>
 
@@ -43,8 +43,8 @@ std::set<std::string> GeometryUsedByForces(const model::ModelSpec& spec,
     const bool contact_force = f.type == "HuntCrossleyForce" ||
                                f.type == "ElasticFoundationForce" ||
                                f.type == "SmoothSphereHalfSpaceForce";
-    const bool disabled = std::find(disabled_forces.begin(), disabled_forces.end(), f.name) !=
-                          disabled_forces.end();
+    const bool disabled =
+        std::find(disabled_forces.begin(), disabled_forces.end(), f.name) != disabled_forces.end();
     if (contact_force && f.applies_force && !disabled && IsForceSimulated(f)) scan(f.element);
   }
   return used;
@@ -56,13 +56,27 @@ std::vector<double> Numbers(const model::ContactGeometrySpec& g, const char* key
   return it == g.dimensions.end() ? std::vector<double>{} : it->second;
 }
 
+// True when `body` is ground or joined to it through WeldJoints only (the environment).
+bool FixedToGround(const model::ModelSpec& spec, int body) {
+  for (size_t hops = 0; body != model::kGroundIndex; ++hops) {
+    const auto joint =
+        std::find_if(spec.joints.begin(), spec.joints.end(),
+                     [&](const model::JointSpec& j) { return j.child_body == body; });
+    if (joint == spec.joints.end() || joint->kind != model::JointType::kWeld ||
+        hops > spec.joints.size())
+      return false;
+    body = joint->parent_body;
+  }
+  return true;
+}
+
 // The collision geometry of an OpenSim ContactHalfSpace, ContactSphere, ContactCylinder,
 // ContactEllipsoid or ContactMesh, or nullopt (with a Report warning) for another class.
 // Throws sinew::Error at the geometry's line for a size that is not positive or a mesh that
 // cannot be read.
-std::optional<contact::CollisionGeometry> MakeGeometry(const model::ModelSpec& spec,
-                                                       const model::ContactGeometrySpec& g,
-                                                       Report& report) {
+std::optional<contact::CollisionGeometry> MakeGeometry(
+    const model::ModelSpec& spec, const model::ContactGeometrySpec& g,
+    const std::vector<std::string>& geometry_dirs, Report& report) {
   contact::CollisionGeometry shape;
   shape.name = g.name;
   shape.body = g.body;
@@ -93,15 +107,24 @@ std::optional<contact::CollisionGeometry> MakeGeometry(const model::ModelSpec& s
   } else if (g.type == "ContactEllipsoid") {
     shape.kind = contact::CollisionShapeKind::kEllipsoid;
     const std::vector<double> radii = Numbers(g, "radii");
-    if (radii.size() != 3 || !std::all_of(radii.begin(), radii.end(), [](double r) {
-          return r > 0.0 && std::isfinite(r);
-        }))
+    if (radii.size() != 3 || !std::all_of(radii.begin(), radii.end(),
+                                          [](double r) { return r > 0.0 && std::isfinite(r); }))
       fail("ContactEllipsoid needs three radii > 0");
     shape.radii = Vec3(radii[0], radii[1], radii[2]);
   } else if (g.type == "ContactMesh") {
-    shape.kind = contact::CollisionShapeKind::kConvexMesh;
-    const std::shared_ptr<const contact::ShapeMesh> mesh = ReadContactMesh(spec, g);
-    shape.vertices = std::shared_ptr<const std::vector<Vec3>>(mesh, &mesh->vertices);
+    const std::shared_ptr<const contact::ShapeMesh> mesh = ReadContactMesh(spec, g, geometry_dirs);
+    if (FixedToGround(spec, g.body)) {
+      // The environment: its triangles exactly, concave or not.
+      shape.kind = contact::CollisionShapeKind::kTriangleMesh;
+      shape.mesh = mesh;
+    } else {
+      shape.kind = contact::CollisionShapeKind::kConvexMesh;
+      shape.vertices = std::shared_ptr<const std::vector<Vec3>>(mesh, &mesh->vertices);
+      report.AddWarning({g.where, component,
+                         "ContactMesh on a moving body collides as its convex hull (a concave "
+                         "mesh is filled in); only a mesh fixed to ground collides as its "
+                         "triangles"});
+    }
   } else {
     report.AddWarning({g.where, component,
                        g.type + " is not a collision shape (ContactHalfSpace, ContactSphere, "
@@ -147,6 +170,7 @@ void AssignMaterials(const model::ModelSpec& spec, const CollisionSettings& sett
 contact::CollisionModel BuildCollision(const model::ModelSpec& spec,
                                        const CollisionSettings& settings,
                                        const std::vector<std::string>& disabled_forces,
+                                       const std::vector<std::string>& geometry_dirs,
                                        Report& report) {
   contact::CheckMaterial(settings.material, {spec.file, 0}, "default contact material");
   contact::CollisionModel model = contact::BuildCollisionModel(
@@ -160,7 +184,8 @@ contact::CollisionModel BuildCollision(const model::ModelSpec& spec,
                          "also a collision shape"});
       continue;
     }
-    if (std::optional<contact::CollisionGeometry> shape = MakeGeometry(spec, g, report))
+    if (std::optional<contact::CollisionGeometry> shape =
+            MakeGeometry(spec, g, geometry_dirs, report))
       model.geometry.push_back(*shape);
   }
   if (settings.ground_plane) contact::AddGroundPlane(model, *settings.ground_plane);

@@ -29,10 +29,11 @@ std::vector<viz::CollisionPart> CollisionPartsOf(const contact::CollisionModel& 
         break;
       case contact::CollisionShapeKind::kCylinder:  // the drawn cylinder's axis is y, OpenSim's z
         part.shape = Shape::kCylinder;
-        part.X_BS = g.X_BS * Transform(Eigen::Quaterniond::FromTwoVectors(Vec3::UnitY(),
-                                                                          Vec3::UnitZ())
-                                           .toRotationMatrix(),
-                                       Vec3::Zero());
+        part.X_BS =
+            g.X_BS *
+            Transform(
+                Eigen::Quaterniond::FromTwoVectors(Vec3::UnitY(), Vec3::UnitZ()).toRotationMatrix(),
+                Vec3::Zero());
         part.half_size = Vec3(g.radius, g.half_length, g.radius);
         break;
       case contact::CollisionShapeKind::kEllipsoid:
@@ -40,6 +41,7 @@ std::vector<viz::CollisionPart> CollisionPartsOf(const contact::CollisionModel& 
         part.half_size = g.radii;
         break;
       case contact::CollisionShapeKind::kConvexMesh:
+      case contact::CollisionShapeKind::kTriangleMesh:
         continue;  // the scene draws the ContactMesh itself (its triangles, not its hull)
     }
     parts.push_back(part);

@@ -28,8 +28,10 @@ const model::ContactGeometrySpec& FindGeometry(const ForceBuildInput& in,
   for (const model::ContactGeometrySpec& g : in.spec.contact_geometry) {
     if (g.name == wanted) return g;
   }
-  values.Fail("names contact geometry '" + name + "', which the model's ContactGeometrySet "
-              "does not have", line);
+  values.Fail("names contact geometry '" + name +
+                  "', which the model's ContactGeometrySet "
+                  "does not have",
+              line);
 }
 
 // The shape of a geometry: its kind, body (engine index), pose and size; fails at the
@@ -44,18 +46,19 @@ contact::ContactShape MakeShape(const ForceBuildInput& in, const model::ContactG
   } else if (g.type == "ContactSphere") {
     shape.kind = contact::ShapeKind::kSphere;
     const auto radius = g.dimensions.find("radius");
-    shape.radius = radius == g.dimensions.end() || radius->second.size() != 1
-                       ? 0.0
-                       : radius->second[0];
+    shape.radius =
+        radius == g.dimensions.end() || radius->second.size() != 1 ? 0.0 : radius->second[0];
     if (!(shape.radius > 0.0)) FailAtGeometry(in.spec, g, "ContactSphere needs a radius > 0");
   } else if (g.type == "ContactMesh") {
     shape.kind = contact::ShapeKind::kMesh;
-    shape.mesh = ReadContactMesh(in.spec, g);
+    shape.mesh = ReadContactMesh(in.spec, g,
+                                 in.geometry_dirs ? *in.geometry_dirs : std::vector<std::string>{});
   } else {
     FailAtGeometry(in.spec, g,
-                   g.type + " is not a contact geometry Sinew's contact forces handle (they take "
-                            "ContactHalfSpace, ContactSphere and, for ElasticFoundationForce, "
-                            "ContactMesh)");
+                   g.type +
+                       " is not a contact geometry Sinew's contact forces handle (they take "
+                       "ContactHalfSpace, ContactSphere and, for ElasticFoundationForce, "
+                       "ContactMesh)");
   }
   return shape;
 }
@@ -85,8 +88,7 @@ struct ContactSet {
 std::vector<const model::Element*> ContactParameters(const model::Element& force) {
   std::vector<const model::Element*> out;
   for (const model::Element& child : force.children) {
-    if (!child.tag.ends_with("ContactParametersSet") && child.tag != "contact_parameters")
-      continue;
+    if (!child.tag.ends_with("ContactParametersSet") && child.tag != "contact_parameters") continue;
     const model::Element* objects = child.Child("objects");
     if (!objects) continue;
     for (const model::Element& p : objects->children) {
@@ -114,9 +116,9 @@ ContactSet ReadContactSet(const ForceBuildInput& in) {
           FindGeometry(in, v, name, geometry ? geometry->line : params->line);
       set.shapes.push_back(MakeShape(in, g));
       set.materials.push_back(m);
-      set.groups.push_back({g.frame.empty() ? in.spec.bodies[g.body].name
-                                            : LastPathSegment(g.frame),
-                            set.shapes.back().body});
+      set.groups.push_back(
+          {g.frame.empty() ? in.spec.bodies[g.body].name : LastPathSegment(g.frame),
+           set.shapes.back().body});
     }
   }
   if (set.shapes.empty()) in.values.Fail("names no contact geometry in its contact parameters");
@@ -129,13 +131,14 @@ std::shared_ptr<engine::ForceElement> BuildHuntCrossleyForce(const ForceBuildInp
   ContactSet set = ReadContactSet(in);
   for (const contact::ContactShape& s : set.shapes) {
     if (s.kind == contact::ShapeKind::kMesh) {
-      in.values.Fail("contact geometry '" + s.name + "' is a ContactMesh: HuntCrossleyForce acts "
+      in.values.Fail("contact geometry '" + s.name +
+                     "' is a ContactMesh: HuntCrossleyForce acts "
                      "between spheres and half-spaces only (Simbody ignores meshes there; use "
                      "ElasticFoundationForce)");
     }
   }
-  const double transition = NonNegative(in.values, in.force.element, "transition_velocity",
-                                        0.01, true);
+  const double transition =
+      NonNegative(in.values, in.force.element, "transition_velocity", 0.01, true);
   return std::make_shared<contact::HuntCrossleyForce>(in.force.name, std::move(set.shapes),
                                                       std::move(set.materials), transition,
                                                       std::move(set.groups));
@@ -148,21 +151,23 @@ std::shared_ptr<engine::ForceElement> BuildElasticFoundationForce(const ForceBui
     if (set.shapes[i].kind != contact::ShapeKind::kMesh) continue;
     ++meshes;
     for (size_t j = 0; j < i; ++j) {
-      if (set.shapes[j].kind == contact::ShapeKind::kMesh && set.shapes[j].body != set.shapes[i].body)
+      if (set.shapes[j].kind == contact::ShapeKind::kMesh &&
+          set.shapes[j].body != set.shapes[i].body)
         in.values.Fail("meshes '" + set.shapes[j].name + "' and '" + set.shapes[i].name +
                        "' would touch each other: mesh-to-mesh elastic foundation contact is not "
                        "simulated yet");
     }
   }
   if (meshes == 0) {
-    in.values.Fail("names no ContactMesh: an ElasticFoundationForce acts only through the springs "
-                   "of its meshes (OpenSim applies no force here either)");
+    in.values.Fail(
+        "names no ContactMesh: an ElasticFoundationForce acts only through the springs "
+        "of its meshes (OpenSim applies no force here either)");
   }
-  const double transition = NonNegative(in.values, in.force.element, "transition_velocity",
-                                        0.01, true);
-  return std::make_shared<contact::ElasticFoundationForce>(
-      in.force.name, std::move(set.shapes), std::move(set.materials), transition,
-      std::move(set.groups));
+  const double transition =
+      NonNegative(in.values, in.force.element, "transition_velocity", 0.01, true);
+  return std::make_shared<contact::ElasticFoundationForce>(in.force.name, std::move(set.shapes),
+                                                           std::move(set.materials), transition,
+                                                           std::move(set.groups));
 }
 
 std::shared_ptr<engine::ForceElement> BuildSmoothSphereHalfSpaceForce(const ForceBuildInput& in) {
@@ -178,8 +183,8 @@ std::shared_ptr<engine::ForceElement> BuildSmoothSphereHalfSpaceForce(const Forc
     }
     return shape;
   };
-  contact::ContactShape sphere = socket("socket_sphere", contact::ShapeKind::kSphere,
-                                        "ContactSphere");
+  contact::ContactShape sphere =
+      socket("socket_sphere", contact::ShapeKind::kSphere, "ContactSphere");
   contact::ContactShape half_space =
       socket("socket_half_space", contact::ShapeKind::kHalfSpace, "ContactHalfSpace");
   contact::SmoothContactParameters p;
@@ -191,11 +196,10 @@ std::shared_ptr<engine::ForceElement> BuildSmoothSphereHalfSpaceForce(const Forc
   p.transition_velocity = NonNegative(v, e, "transition_velocity", p.transition_velocity, true);
   p.constant_contact_force = NonNegative(v, e, "constant_contact_force", p.constant_contact_force);
   p.hertz_smoothing = NonNegative(v, e, "hertz_smoothing", p.hertz_smoothing);
-  p.hunt_crossley_smoothing = NonNegative(v, e, "hunt_crossley_smoothing",
-                                          p.hunt_crossley_smoothing);
+  p.hunt_crossley_smoothing =
+      NonNegative(v, e, "hunt_crossley_smoothing", p.hunt_crossley_smoothing);
   return std::make_shared<contact::SmoothSphereHalfSpaceForce>(in.force.name, std::move(sphere),
                                                                std::move(half_space), p);
 }
-
 
 }  // namespace sinew::opensim::internal

@@ -146,13 +146,15 @@ const ForceType* FindForceType(const std::string& opensim_class) {
 std::shared_ptr<engine::ForceElement> BuildForce(
     const model::ModelSpec& spec, const model::ForceSpec& force, const std::vector<int>& body_map,
     const std::vector<int>& coordinate_map, const io::ExternalLoads* external_loads,
-    Diagnostics* notes, bool equilibrate_muscles, paths::CylinderRefinement cylinder_refinement) {
+    Diagnostics* notes, bool equilibrate_muscles, paths::CylinderRefinement cylinder_refinement,
+    const std::vector<std::string>* geometry_dirs) {
   const std::string& file = model::SourceFile(spec, force);
   const model::ElementValues values(force.element, file, force.path);
   const ForceType* type = FindForceType(force.type);
   if (!type) values.Fail("'" + force.type + "' is not a force type Sinew simulates");
   return type->build(ForceBuildInput{spec, force, values, body_map, coordinate_map, external_loads,
-                                     notes, equilibrate_muscles, cylinder_refinement});
+                                     notes, equilibrate_muscles, cylinder_refinement,
+                                     geometry_dirs});
 }
 
 }  // namespace sinew::opensim::internal

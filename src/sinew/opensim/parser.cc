@@ -108,7 +108,8 @@ void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
   BuildForces(system, map.bodies, map.coordinates);
   AssignExcitations();
   if (collision_enabled_) {
-    collision_ = internal::BuildCollision(spec_, collision_settings_, disabled_forces_, report_);
+    collision_ = internal::BuildCollision(spec_, collision_settings_, disabled_forces_,
+                                          geometry_dirs_, report_);
     if (contact_method_ == ContactMethod::kSmc) {
       internal::AddSmoothContact(system, spec_, collision_, map.bodies,
                                  collision_settings_.slip_speed, report_);
@@ -176,8 +177,9 @@ void OpenSimParser::BuildOneForce(engine::System& system, const model::ForceSpec
     info.disabled = "appliesForce false in the file";
   } else if (IsForceSimulated(force)) {
     Diagnostics notes;
-    auto element = internal::BuildForce(spec_, force, body_map, coordinate_map, external_loads,
-                                        &notes, equilibrate_muscles_, cylinder_refinement_);
+    auto element =
+        internal::BuildForce(spec_, force, body_map, coordinate_map, external_loads, &notes,
+                             equilibrate_muscles_, cylinder_refinement_, &geometry_dirs_);
     for (Diagnostic& note : notes) report_.AddWarning(std::move(note));
     const int k = system.AddForceElement(element);
     info.load = element;

@@ -37,8 +37,8 @@ class OpenSimParser {
   /// Visual assets to make for the parsed bodies (default NONE): see GetVisualScene().
   void SetVisualizationType(VisType type) { vis_type_ = type; }
   VisType GetVisualizationType() const { return vis_type_; }
-  /// A folder searched for mesh files after the model's folder and its Geometry/ subfolder
-  /// (then $SINEW_GEOMETRY_PATH). May be called several times.
+  /// A folder searched for mesh files (visual meshes and ContactMesh files) after the model's
+  /// folder and its Geometry/ subfolder (then $SINEW_GEOMETRY_PATH). May be called several times.
   void AddGeometryDir(const std::string& dir) { geometry_dirs_.push_back(dir); }
   /// Creates collision shapes (cylinders along each body's segments, as in PRIMITIVES, and the
   /// model's ContactSphere, ContactHalfSpace, ContactCylinder, ContactEllipsoid and ContactMesh)

@@ -17,11 +17,14 @@
 namespace sinew::opensim::internal {
 
 /// The collision model of `spec` (spec body indices). Contact geometry a simulated contact
-/// force of the file names (unless the force is in `disabled_forces`) is left to that force, other geometry kinds are Report warnings.
-/// Throws sinew::Error (file, line, component) for a bad material or an unknown override name.
+/// force of the file names (unless the force is in `disabled_forces`) is left to that force, other
+/// geometry kinds are Report warnings. A ContactMesh's file is searched as ReadContactMesh says,
+/// `geometry_dirs` after the model's folders. Throws sinew::Error (file, line, component) for a bad
+/// material or an unknown override name.
 contact::CollisionModel BuildCollision(const model::ModelSpec& spec,
                                        const opensim::CollisionSettings& settings,
                                        const std::vector<std::string>& disabled_forces,
+                                       const std::vector<std::string>& geometry_dirs,
                                        Report& report);
 
 /// Adds the SMC force element "smc_contact" over `model` (spec indices, mapped through

@@ -35,6 +35,9 @@ struct ForceBuildInput {
   bool equilibrate_muscles = false;
   /// Which OpenSim's rule path forces' cylinders follow (OpenSimParser::SetCylinderRefinement).
   paths::CylinderRefinement cylinder_refinement = paths::CylinderRefinement::kSeveralWraps;
+  /// Folders searched for a ContactMesh's file after the model's own (the parser's
+  /// AddGeometryDir); may be null.
+  const std::vector<std::string>* geometry_dirs = nullptr;
 };
 
 /// How one OpenSim force class is built.
@@ -108,13 +111,14 @@ std::shared_ptr<engine::ForceElement> BuildSmoothSphereHalfSpaceForce(const Forc
 const ForceType* FindForceType(const std::string& opensim_class);
 
 /// The engine element of `force`, whose class must have a registry entry.
-/// `external_loads`, `notes`, `equilibrate_muscles` and `cylinder_refinement` as in
-/// ForceBuildInput.
+/// `external_loads`, `notes`, `equilibrate_muscles`, `cylinder_refinement` and
+/// `geometry_dirs` as in ForceBuildInput.
 std::shared_ptr<engine::ForceElement> BuildForce(
     const model::ModelSpec& spec, const model::ForceSpec& force, const std::vector<int>& body_map,
     const std::vector<int>& coordinate_map, const io::ExternalLoads* external_loads = nullptr,
     Diagnostics* notes = nullptr, bool equilibrate_muscles = false,
-    paths::CylinderRefinement cylinder_refinement = paths::CylinderRefinement::kSeveralWraps);
+    paths::CylinderRefinement cylinder_refinement = paths::CylinderRefinement::kSeveralWraps,
+    const std::vector<std::string>* geometry_dirs = nullptr);
 
 /// The last segment of a socket path ("/bodyset/rod1" -> "rod1"), or the name itself.
 std::string LastPathSegment(const std::string& path);
