@@ -64,7 +64,8 @@ Excitation = Union[float, Function, Callable[[float], float]]
 
 def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool = False,
          contact: str = "nsc", strict: bool = False,
-         parameters: Optional[Mapping[str, Union[float, Sequence[float]]]] = None) -> "Model":
+         parameters: Optional[Mapping[str, Union[float, Sequence[float]]]] = None,
+         cylinder_refinement: str = "several-wraps") -> "Model":
     """Reads an OpenSim model (.osim, every version 1.9 to 4.6) and builds what Sinew simulates.
 
     visualization: None/"none", "primitives" or "mesh" (visual assets of the bodies).
@@ -80,6 +81,9 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
     numeric property written directly in their element in the file (max_isometric_force,
     stiffness, optimal_force, ...). Joints, frames, path points, constraints, markers and
     controllers cannot be overridden yet.
+    cylinder_refinement: when a WrapCylinder refines its tangent points, as `sinew simulate
+    --cylinder-refinement`: "several-wraps" (OpenSim 4.4 and later: only on paths with two or
+    more wrap objects) or "always" (every OpenSim before 4.4, to compare with results it wrote).
     Raises sinew.Error with file, line, component (also for an unknown or ambiguous component,
     a property it lacks, or a wrong value).
     """

@@ -101,18 +101,19 @@ void BindModel(py::module_& m) {
       "load",
       [](const std::filesystem::path& path, const std::optional<std::string>& visualization,
          bool collision, const std::string& contact, bool strict,
-         const std::optional<py::dict>& parameters) {
+         const std::optional<py::dict>& parameters, const std::string& cylinder_refinement) {
         LoadOptions options;
         options.visualization = visualization.value_or("none");
         options.collision = collision;
         options.contact = contact;
         options.strict = strict;
+        options.cylinder_refinement = cylinder_refinement;
         if (parameters) options.parameters = ToParameterOverrides(path.string(), *parameters);
         return ModelHandle::Load(path.string(), options);
       },
       py::arg("path"), py::kw_only(), py::arg("visualization") = py::none(),
       py::arg("collision") = false, py::arg("contact") = "nsc", py::arg("strict") = false,
-      py::arg("parameters") = py::none(),
+      py::arg("parameters") = py::none(), py::arg("cylinder_refinement") = "several-wraps",
       "Reads an OpenSim model (.osim) and builds what Sinew simulates of it, with `parameters` "
       "({'<component>/<property>': number or sequence}) overriding the file's values.");
 
