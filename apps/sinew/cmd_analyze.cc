@@ -1,4 +1,5 @@
-// `sinew analyze MODEL.osim --motion F.mot --out DIR [--coordinates a,b]`: OpenSim
+// `sinew analyze MODEL.osim --motion F.mot --out DIR [--coordinates a,b]
+//  [--cylinder-refinement several-wraps|always]`: OpenSim
 // MuscleAnalysis-style tables of every geometry path (muscles, path springs, ligaments) over a
 // motion: Length.sto, LengtheningSpeed.sto and MomentArm_<coordinate>.sto; and, when the file
 // is a states file holding muscles' activation and fiber_length, FiberLength.sto,
@@ -25,6 +26,7 @@
 #include "apps/sinew/commands.h"
 #include "apps/sinew/muscle_tables.h"
 #include "apps/sinew/notices.h"
+#include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/tables.h"
 
@@ -36,6 +38,7 @@ struct Options {
   std::string motion;
   std::string out;
   std::vector<std::string> coordinates;
+  std::string cylinder_refinement = "several-wraps";
 };
 
 // The coordinates to write moment arms about: those named by --coordinates, or every coordinate
@@ -90,7 +93,7 @@ void Run(const Options& options) {
   UseStandIns(spec, options.model);
   const kinematics::KinematicTree tree(spec);
   const kinematics::CoordinateCouplers couplers(spec);
-  const paths::PathSet paths(spec);
+  const paths::PathSet paths(spec, CylinderRefinementOption(options.cylinder_refinement));
   if (paths.paths().empty()) {
     throw Error({options.model, 0}, "", "the model has no geometry path to analyze");
   }
@@ -183,6 +186,7 @@ void AddAnalyzeCommand(CLI::App& app) {
   cmd->add_option("--coordinates", options->coordinates,
                   "Coordinates for the moment arms (default: every one not locked or coupled)")
       ->delimiter(',');
+  AddCylinderRefinementOption(cmd, options->cylinder_refinement);
   cmd->callback([options] { Run(*options); });
 }
 

@@ -33,18 +33,34 @@ const char* MotionName(model::MotionType type) {
   return "?";
 }
 
-// One force's geometry path as inspect shows it.
+// One force's path as inspect shows it: a GeometryPath's points and wraps, or a
+// FunctionBasedPath's coordinates and functions.
 struct PathSummary {
   std::string name;
   int points = 0, conditional = 0, moving = 0;
   std::vector<std::string> wrap_objects;
+  std::string type = "GeometryPath";
+  std::vector<std::string> coordinates;  // FunctionBasedPath
+  std::string functions;                 // FunctionBasedPath: which functions it has
 };
+
+PathSummary SummarizeFunctionPath(const model::ModelSpec& spec, const model::ForceSpec& f) {
+  const model::FunctionBasedPathSpec& path = *f.function_based_path;
+  PathSummary summary{f.name, 0, 0, 0, {}, "FunctionBasedPath", {}, {}};
+  for (int c : path.coordinates) summary.coordinates.push_back(spec.coordinates[c].name);
+  summary.functions = "length " + path.length_function->TypeName();
+  if (!path.moment_arm_functions.empty()) summary.functions += ", moment arm functions";
+  if (path.lengthening_speed_function) summary.functions += ", lengthening speed function";
+  return summary;
+}
 
 std::vector<PathSummary> SummarizePaths(const model::ModelSpec& spec) {
   std::vector<PathSummary> out;
   for (const model::ForceSpec& f : spec.forces) {
+    if (f.function_based_path && !f.geometry_path) out.push_back(SummarizeFunctionPath(spec, f));
     if (!f.geometry_path) continue;
-    PathSummary path{f.name, static_cast<int>(f.geometry_path->points.size()), 0, 0, {}};
+    PathSummary path{
+        f.name, static_cast<int>(f.geometry_path->points.size()), 0, 0, {}, "GeometryPath", {}, {}};
     for (const model::PathPointSpec& point : f.geometry_path->points) {
       path.conditional += point.type == "ConditionalPathPoint";
       path.moving += point.type == "MovingPathPoint";
@@ -121,7 +137,15 @@ nlohmann::json ToJson(const model::ModelSpec& spec) {
   out["forces"] = forces;
   json paths = json::array();
   for (const PathSummary& p : SummarizePaths(spec)) {
+    if (p.type == "FunctionBasedPath") {
+      paths.push_back({{"name", p.name},
+                       {"type", p.type},
+                       {"coordinates", p.coordinates},
+                       {"functions", p.functions}});
+      continue;
+    }
     paths.push_back({{"name", p.name},
+                     {"type", p.type},
                      {"points", p.points},
                      {"conditional_points", p.conditional},
                      {"moving_points", p.moving},
@@ -188,6 +212,14 @@ void PrintText(const model::ModelSpec& spec, std::ostream& os) {
   const std::vector<PathSummary> paths = SummarizePaths(spec);
   os << "\npaths (" << paths.size() << "):\n";
   for (const PathSummary& p : paths) {
+    if (p.type == "FunctionBasedPath") {
+      os << "  " << p.name << "  FunctionBasedPath of";
+      for (size_t k = 0; k < p.coordinates.size(); ++k) {
+        os << (k ? ", " : " ") << p.coordinates[k];
+      }
+      os << " (" << p.functions << "; no points: not drawn)\n";
+      continue;
+    }
     os << "  " << p.name << "  " << p.points << " points (" << p.conditional << " conditional, "
        << p.moving << " moving), " << p.wrap_objects.size() << " wraps";
     for (size_t k = 0; k < p.wrap_objects.size(); ++k) {

@@ -46,6 +46,14 @@ paths::CylinderRefinement CylinderRefinementOption(const std::string& text) {
                           : paths::CylinderRefinement::kSeveralWraps;
 }
 
+void AddCylinderRefinementOption(CLI::App* cmd, std::string& cylinder_refinement) {
+  cmd->add_option("--cylinder-refinement", cylinder_refinement,
+                  "When a WrapCylinder refines its tangent points: several-wraps (OpenSim 4.4 "
+                  "and later: only on paths with two or more wrap objects; the default) or "
+                  "always (every OpenSim before 4.4, to compare with results it wrote)")
+      ->check(CLI::IsMember({"several-wraps", "always"}));
+}
+
 void AddMuscleOptions(CLI::App* cmd, bool& equilibrate, std::vector<std::string>& renames,
                       std::string& cylinder_refinement) {
   cmd->add_flag("--equilibrate-muscles", equilibrate,
@@ -55,11 +63,7 @@ void AddMuscleOptions(CLI::App* cmd, bool& equilibrate, std::vector<std::string>
   cmd->add_option("--rename-force-class", renames,
                   "OLD=NEW: read forces of class OLD as class NEW (OpenSim's renameType; "
                   "OpenSim's forward tests read Thelen2003Muscle=Thelen2003Muscle_Deprecated)");
-  cmd->add_option("--cylinder-refinement", cylinder_refinement,
-                  "When a WrapCylinder refines its tangent points: several-wraps (OpenSim 4.4 "
-                  "and later: only on paths with two or more wrap objects; the default) or "
-                  "always (every OpenSim before 4.4, to compare with results it wrote)")
-      ->check(CLI::IsMember({"several-wraps", "always"}));
+  AddCylinderRefinementOption(cmd, cylinder_refinement);
 }
 
 }  // namespace sinew::cli

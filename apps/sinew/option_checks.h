@@ -30,6 +30,10 @@ void CheckSimulationSize(double duration, double report_interval, double step);
 /// The rule --cylinder-refinement names ("always" or "several-wraps").
 paths::CylinderRefinement CylinderRefinementOption(const std::string& text);
 
+/// Adds --cylinder-refinement several-wraps|always (into `cylinder_refinement`, checked), as
+/// `simulate`, `forward` and `analyze` take it.
+void AddCylinderRefinementOption(CLI::App* cmd, std::string& cylinder_refinement);
+
 /// Adds the muscle options `simulate` and `forward` share: --equilibrate-muscles (into
 /// `equilibrate`), the repeatable --rename-force-class OLD=NEW (into `renames`) and
 /// --cylinder-refinement several-wraps|always (into `cylinder_refinement`, checked).

@@ -65,7 +65,8 @@ Excitation = Union[float, Function, Callable[[float], float]]
 def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool = False,
          contact: str = "nsc", strict: bool = False,
          parameters: Optional[Mapping[str, Union[float, Sequence[float]]]] = None,
-         geometry_dirs: Sequence[PathLike] = ()) -> "Model":
+         geometry_dirs: Sequence[PathLike] = (),
+         cylinder_refinement: str = "several-wraps") -> "Model":
     """Reads an OpenSim model (.osim, every version 1.9 to 4.6) and builds what Sinew simulates.
 
     visualization: None/"none", "primitives" or "mesh" (visual assets of the bodies).
@@ -83,6 +84,9 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
     controllers cannot be overridden yet.
     geometry_dirs: folders searched for mesh files (ContactMesh files too) after the model's
     folder and its Geometry/ folder, as `sinew simulate --geometry-dir`.
+    cylinder_refinement: when a WrapCylinder refines its tangent points, as `sinew simulate
+    --cylinder-refinement`: "several-wraps" (OpenSim 4.4 and later: only on paths with two or
+    more wrap objects) or "always" (every OpenSim before 4.4, to compare with results it wrote).
     Raises sinew.Error with file, line, component (also for an unknown or ambiguous component,
     a property it lacks, a wrong value, or a ContactMesh file not found: the message lists the
     folders searched).

@@ -102,7 +102,8 @@ void BindModel(py::module_& m) {
       [](const std::filesystem::path& path, const std::optional<std::string>& visualization,
          bool collision, const std::string& contact, bool strict,
          const std::optional<py::dict>& parameters,
-         const std::vector<std::filesystem::path>& geometry_dirs) {
+         const std::vector<std::filesystem::path>& geometry_dirs,
+         const std::string& cylinder_refinement) {
         LoadOptions options;
         for (const std::filesystem::path& dir : geometry_dirs)
           options.geometry_dirs.push_back(dir.string());
@@ -110,6 +111,7 @@ void BindModel(py::module_& m) {
         options.collision = collision;
         options.contact = contact;
         options.strict = strict;
+        options.cylinder_refinement = cylinder_refinement;
         if (parameters) options.parameters = ToParameterOverrides(path.string(), *parameters);
         return ModelHandle::Load(path.string(), options);
       },
@@ -117,6 +119,7 @@ void BindModel(py::module_& m) {
       py::arg("collision") = false, py::arg("contact") = "nsc", py::arg("strict") = false,
       py::arg("parameters") = py::none(),
       py::arg("geometry_dirs") = std::vector<std::filesystem::path>{},
+      py::arg("cylinder_refinement") = "several-wraps",
       "Reads an OpenSim model (.osim) and builds what Sinew simulates of it, with `parameters` "
       "({'<component>/<property>': number or sequence}) overriding the file's values; "
       "ContactMesh files are also searched in `geometry_dirs`.");

@@ -25,6 +25,11 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
     throw Error({path, 0}, "",
                 "contact must be \"nsc\" or \"smc\", not \"" + options.contact + "\"");
   }
+  if (options.cylinder_refinement != "several-wraps" && options.cylinder_refinement != "always") {
+    throw Error({path, 0}, "",
+                "cylinder_refinement must be \"several-wraps\" or \"always\", not \"" +
+                    options.cylinder_refinement + "\"");
+  }
   auto handle = std::shared_ptr<ModelHandle>(new ModelHandle());
   handle->path_ = path;
   handle->options_ = options;
@@ -35,6 +40,9 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
   parser.SetContactMethod(options.contact == "smc" ? opensim::ContactMethod::kSmc
                                                    : opensim::ContactMethod::kNsc);
   parser.SetStrict(options.strict);
+  parser.SetCylinderRefinement(options.cylinder_refinement == "always"
+                                   ? paths::CylinderRefinement::kAlways
+                                   : paths::CylinderRefinement::kSeveralWraps);
   parser.SetControlsFile(options.controls_file);
   for (const std::string& dir : options.geometry_dirs) parser.AddGeometryDir(dir);
   handle->system_ = std::make_unique<engine::System>();

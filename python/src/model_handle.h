@@ -22,6 +22,9 @@ struct LoadOptions {
   bool collision = false;
   std::string contact = "nsc";  ///< "nsc" or "smc"
   bool strict = false;
+  /// When cylinders refine their tangent points: "several-wraps" (OpenSim 4.4+) or "always"
+  /// (paths::CylinderRefinement), as `sinew simulate --cylinder-refinement`.
+  std::string cylinder_refinement = "several-wraps";
   std::string controls_file;  ///< an OpenSim ControlSet file, "" for none
   /// Folders searched for mesh files (ContactMesh files too) after the model's own, as
   /// `--geometry-dir` (OpenSimParser::AddGeometryDir).

@@ -163,3 +163,20 @@ def test_overrides_survive_initial_states_and_numpy_values():
     b = plain.simulate(0.2, initial_states=initial)
     assert a.q[0, 0] == b.q[0, 0]
     assert not np.array_equal(a.q, b.q)
+
+
+def test_cylinder_refinement_is_a_load_option_that_changes_arm26():
+    # arm26's BRA crosses the elbow over one WrapCylinder. OpenSim 4.4's rule (the default)
+    # does not refine the tangent points of a path with one wrap object; every earlier OpenSim
+    # did ("always"): BRA's elbow moment arm differs by 2.2e-4 m at full extension
+    # (docs/wrapping.md), and arm26's start is far from equilibrium (BRA pulls 7 kN), so the
+    # accelerations differ by about 1.5% (docs/forward.md) and the runs part by far more than
+    # the integration error at accuracy 1e-8.
+    runs = {rule: sinew.load(ARM26, cylinder_refinement=rule).simulate(0.05, accuracy=1e-8)
+            for rule in ("several-wraps", "always")}
+    default = sinew.load(ARM26).simulate(0.05, accuracy=1e-8)
+    np.testing.assert_array_equal(default.u, runs["several-wraps"].u)
+    assert np.max(np.abs(runs["always"].u - runs["several-wraps"].u)) > 1e-4
+    # Anything else is refused by name.
+    with pytest.raises(sinew.Error, match="cylinder_refinement"):
+        sinew.load(ARM26, cylinder_refinement="sometimes")

@@ -114,6 +114,85 @@ TEST_F(AnalyzeCliTest, WrapsNotAppliedAreNamedOnStderr) {
   EXPECT_TRUE(std::filesystem::exists(Path("out/Length.sto")));
 }
 
+TEST_F(AnalyzeCliTest, FunctionBasedPathsGetTheirTables) {
+  // tests/data/sinew/function_based_paths.osim: the spring's length is the polynomial
+  // L = 0.3 + 0.02 q2 - 0.01 q2^2 - 0.04 q1 + 0.015 q1 q2 + 0.005 q1^2 of its coordinates; the
+  // actuator's length 0.2 q1 + 0.01 with the moment arm function 0.1 q1 - 0.05. A motion of
+  // polynomials q1 = 0.5 t, q2 = -0.3 t (radians) over 11 rows: the quintic spline reproduces
+  // them and their speeds 0.5 and -0.3 rad/s (to its fit, ~1e-12 here).
+  const std::string motion = Path("swing.mot");
+  {
+    std::ofstream out(motion);
+    out << "swing\nversion=1\nnRows=11\nnColumns=3\ninDegrees=no\nendheader\ntime\tq1\tq2\n";
+    for (int k = 0; k <= 10; ++k) {
+      const double t = 0.1 * k;
+      out << t << "\t" << 0.5 * t << "\t" << -0.3 * t << "\n";
+    }
+  }
+  const CliRun r = Analyze(std::string(SINEW_TEST_DATA_DIR) + "/sinew/function_based_paths.osim" +
+                           " --motion " + motion + " --out " + Path("out"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const StoTable lengths = ReadStoTable(Path("out/Length.sto"));
+  const StoTable speeds = ReadStoTable(Path("out/LengtheningSpeed.sto"));
+  const StoTable arm1 = ReadStoTable(Path("out/MomentArm_q1.sto"));
+  const StoTable arm2 = ReadStoTable(Path("out/MomentArm_q2.sto"));
+  ASSERT_EQ(lengths.rows.size(), 11u);
+  const int spring = lengths.Column("spring"), act = lengths.Column("act");
+  ASSERT_GE(spring, 0);
+  ASSERT_GE(act, 0);
+  for (size_t row = 0; row < lengths.rows.size(); ++row) {
+    const double t = lengths.rows[row][0], q1 = 0.5 * t, q2 = -0.3 * t;
+    const double dL1 = -0.04 + 0.015 * q2 + 0.01 * q1, dL2 = 0.02 - 0.02 * q2 + 0.015 * q1;
+    // The table's numbers are written with enough digits for 1e-12.
+    EXPECT_NEAR(lengths.rows[row][spring],
+                0.3 + 0.02 * q2 - 0.01 * q2 * q2 - 0.04 * q1 + 0.015 * q1 * q2 + 0.005 * q1 * q1,
+                1e-12);
+    EXPECT_NEAR(speeds.rows[row][spring], dL1 * 0.5 + dL2 * -0.3, 1e-9) << t;
+    EXPECT_NEAR(arm1.rows[row][spring], -dL1, 1e-12);
+    EXPECT_NEAR(arm2.rows[row][spring], -dL2, 1e-12);
+    EXPECT_NEAR(lengths.rows[row][act], 0.2 * q1 + 0.01, 1e-12);
+    EXPECT_NEAR(arm1.rows[row][act], 0.1 * q1 - 0.05, 1e-12);
+    EXPECT_EQ(arm2.rows[row][act], 0.0);
+  }
+}
+
+TEST_F(AnalyzeCliTest, CylinderRefinementOptionChangesOnlyPathsOverOneCylinder) {
+  // arm26 at the elbow's full extension (docs/wrapping.md): BRA (one WrapCylinder) is refined
+  // only under "always", so its elbow moment arm differs between the rules (by 2.2e-4 m);
+  // TRIlong (three wrap objects) is refined under both rules and BIClong, BICshort (no
+  // cylinder) never: those are identical.
+  const std::string motion = Path("arm.mot");
+  {
+    std::ofstream out(motion);
+    out << "arm\nversion=1\nnRows=1\nnColumns=3\ninDegrees=yes\nendheader\n"
+           "time\tr_shoulder_elev\tr_elbow_flex\n0\t0\t0\n";
+  }
+  StoTable arms[3];
+  const char* rules[3] = {"", " --cylinder-refinement several-wraps",
+                          " --cylinder-refinement always"};
+  for (int k = 0; k < 3; ++k) {
+    const std::string out = Path("out" + std::to_string(k));
+    const CliRun r = Analyze(kArm26 + " --motion " + motion + " --out " + out + rules[k]);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    arms[k] = ReadStoTable(out + "/MomentArm_r_elbow_flex.sto");
+    ASSERT_EQ(arms[k].rows.size(), 1u);
+  }
+  const int bra = arms[0].Column("BRA");
+  ASSERT_GE(bra, 0);
+  EXPECT_EQ(arms[0].rows[0], arms[1].rows[0]);  // the default is several-wraps
+  EXPECT_GT(std::abs(arms[2].rows[0][bra] - arms[1].rows[0][bra]), 1e-4);
+  for (const char* same : {"TRIlong", "BIClong", "BICshort"}) {
+    const int c = arms[0].Column(same);
+    ASSERT_GE(c, 0) << same;
+    EXPECT_EQ(arms[2].rows[0][c], arms[1].rows[0][c]) << same;
+  }
+  const CliRun bad = Analyze(kArm26 + " --motion " + motion + " --out " + Path("bad") +
+                             " --cylinder-refinement sometimes");
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+  EXPECT_NE(bad.err.find("--cylinder-refinement"), std::string::npos) << bad.err;
+}
+
 TEST_F(AnalyzeCliTest, UnknownCoordinateIsAnErrorNamingIt) {
   const CliRun r = Analyze(kGait1018 + " --motion " + kGait1018Motion + " --out " + Path("out") +
                            " --coordinates knee_angle_x");

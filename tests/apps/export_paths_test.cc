@@ -82,6 +82,21 @@ std::pair<int, int> RedAndBluePixels(const viz::Image& image) {
   return {red, blue};
 }
 
+TEST_F(SimulateExportPathsTest, FunctionBasedPathsAreLeftOutWithOneWarning) {
+  // Two FunctionBasedPaths (tests/data/sinew/function_based_paths.osim): they simulate, and the
+  // export says once, naming both, that they have no points to draw.
+  const std::string model = std::string(SINEW_TEST_DATA_DIR) + "/sinew/function_based_paths.osim";
+  const testing::CliRun run = Run("simulate " + model + " --duration 0.05 --out " + Path("sim") +
+                                  " --export " + Path("sim.glb"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(testing::CountOccurrences(run.err,
+                                      "so they are not drawn: /forceset/spring, "
+                                      "/forceset/act"),
+            1)
+      << run.err;
+  EXPECT_EQ(testing::CountOccurrences(run.err, "FunctionBasedPath"), 1) << run.err;
+}
+
 TEST_F(SimulateExportPathsTest, RenderShadesMusclesByTheStatesActivations) {
   // Every arm26 muscle at activation 0 (blue) or 1 (red), in OpenSim 4 labels.
   auto render = [&](const std::string& activation) {

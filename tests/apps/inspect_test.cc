@@ -71,6 +71,29 @@ TEST_F(Inspect, PathsAreListedWithTheirPointsAndWrapsAndWhatIsNotComputed) {
   EXPECT_EQ(j["paths_not_computed"].size(), 0u);
 }
 
+TEST_F(Inspect, FunctionBasedPathsAreListedWithTheirCoordinatesAndFunctions) {
+  const std::string model = std::string(SINEW_TEST_DATA_DIR) + "/sinew/function_based_paths.osim";
+  const CliRun run = Run("inspect " + model);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("paths (2):"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("  spring  FunctionBasedPath of q1, q2 (length "
+                         "MultivariatePolynomialFunction; no points: not drawn)\n"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("  act  FunctionBasedPath of q1 (length PolynomialFunction, moment arm "
+                         "functions, lengthening speed function; no points: not drawn)\n"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("path parts not computed (0):"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("not simulated (0):"), std::string::npos) << run.out;
+  const CliRun json = Run("inspect --json " + model);
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  ASSERT_EQ(j["paths"].size(), 2u);
+  EXPECT_EQ(j["paths"][0]["type"], "FunctionBasedPath");
+  EXPECT_EQ(j["paths"][0]["coordinates"], nlohmann::json({"q1", "q2"}));
+}
+
 TEST_F(Inspect, JsonFields) {
   const CliRun run = Run("inspect --json " + kArm26);
   ASSERT_EQ(run.exit_code, 0) << run.err;

@@ -153,7 +153,7 @@ TEST(CorpusSimulateTest, EveryModelSimulatesWithItsForcesAndConstraints) {
        "/forceset/ADD_BREV_PROS_1_R: tendon_slack_length must be greater than zero"},
       {"opensim-creator_382_repro.osim", "body 'femur_r' is not connected to ground"},
       {"Scholz2015GeometryPathExample.osim",
-       "/forceset/scholz_muscle: has no GeometryPath (FunctionBasedPath and other path kinds"},
+       "/forceset/scholz_muscle: has no GeometryPath or FunctionBasedPath"},
       {"opensim-creator_515-3_repro.osim",
        "couples 'rx' of FreeJoint freejoint, whose speed is an angular velocity"},
       {"opensim-creator_515_repro.osim", "has no coupled_coordinates_function"},

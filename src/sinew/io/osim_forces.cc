@@ -4,7 +4,9 @@
 #include <sinew/io/internal/osim_context.h>
 #include <sinew/io/internal/read_function.h>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string_view>
 
 namespace sinew::io::internal {
@@ -169,6 +171,74 @@ pugi::xml_node FindPathOwner(const pugi::xml_node& force) {
   return {};
 }
 
+// A force's FunctionBasedPath (4.5+): directly, or inside a <path> wrapper.
+pugi::xml_node FindFunctionBasedPath(const pugi::xml_node& force) {
+  if (pugi::xml_node path = force.child("FunctionBasedPath")) return path;
+  if (pugi::xml_node wrapper = force.child("path")) return wrapper.child("FunctionBasedPath");
+  return {};
+}
+
+// OpenSim's FunctionBasedPath with the checks of its extendFinalizeFromProperties: a length
+// function, at least one coordinate and no coordinate twice, and functions taking as many
+// arguments as there are coordinates (twice as many for the lengthening speed).
+model::FunctionBasedPathSpec ReadFunctionBasedPath(ReadContext& ctx, const pugi::xml_node& node,
+                                                   const std::string& component) {
+  const XmlDocument& doc = ctx.doc();
+  model::FunctionBasedPathSpec path;
+  path.name = NameOf(node);
+  path.where = doc.Where(node);
+  pugi::xml_node coordinates = node.child("coordinate_paths");
+  std::istringstream names(coordinates ? std::string(XmlDocument::Text(coordinates)) : "");
+  for (std::string name; names >> name;) {
+    const int c = ResolveCoordinateName(ctx, coordinates, name, component);
+    if (std::find(path.coordinates.begin(), path.coordinates.end(), c) != path.coordinates.end()) {
+      doc.Fail(coordinates, component, "coordinate '" + name + "' is listed more than once");
+    }
+    path.coordinates.push_back(c);
+  }
+  if (path.coordinates.empty()) {
+    doc.Fail(coordinates ? coordinates : node, component,
+             "FunctionBasedPath lists no coordinate in <coordinate_paths>");
+  }
+  const int n = static_cast<int>(path.coordinates.size());
+  auto check_arguments = [&](const pugi::xml_node& where, const functions::Function& f,
+                             const std::string& what, int expected) {
+    if (f.NumArguments() != expected) {
+      doc.Fail(where, component,
+               what + " takes " + std::to_string(f.NumArguments()) + " argument(s), but " +
+                   std::to_string(expected) + " are expected (" + std::to_string(n) +
+                   " coordinate(s) in <coordinate_paths>)");
+    }
+  };
+  pugi::xml_node length = FindFunctionProperty(node, "length_function");
+  if (length) path.length_function = ReadFunctionProperty(doc, length, component);
+  if (!path.length_function) {
+    doc.Fail(length ? length : node, component, "FunctionBasedPath has no <length_function>");
+  }
+  check_arguments(length, *path.length_function, "<length_function>", n);
+  if (pugi::xml_node arms = node.child("moment_arm_functions")) {
+    for (pugi::xml_node child : arms.children()) {
+      if (child.type() != pugi::node_element) continue;
+      path.moment_arm_functions.push_back(ReadFunction(doc, child, component));
+      check_arguments(child, *path.moment_arm_functions.back(), "a moment arm function", n);
+    }
+    if (!path.moment_arm_functions.empty() &&
+        static_cast<int>(path.moment_arm_functions.size()) != n) {
+      doc.Fail(arms, component,
+               "<moment_arm_functions> has " + std::to_string(path.moment_arm_functions.size()) +
+                   " function(s) but there are " + std::to_string(n) + " coordinate(s)");
+    }
+  }
+  if (pugi::xml_node speed = FindFunctionProperty(node, "lengthening_speed_function")) {
+    path.lengthening_speed_function = ReadFunctionProperty(doc, speed, component);
+    if (path.lengthening_speed_function) {
+      check_arguments(speed, *path.lengthening_speed_function, "<lengthening_speed_function>",
+                      2 * n);
+    }
+  }
+  return path;
+}
+
 }  // namespace
 
 void ReadForces(ReadContext& ctx, const pugi::xml_node& model) {
@@ -188,8 +258,13 @@ void ReadForceSet(ReadContext& ctx, const pugi::xml_node& force_set, int version
       std::string name = owner == node ? "geometrypath" : NameOf(owner);
       if (name.empty()) name = "geometrypath";
       force.geometry_path = ReadGeometryPath(ctx, owner, force.path + "/" + name);
+    } else if (pugi::xml_node function_path = FindFunctionBasedPath(node)) {
+      std::string name = NameOf(function_path);
+      if (name.empty()) name = "path";
+      force.function_based_path =
+          ReadFunctionBasedPath(ctx, function_path, force.path + "/" + name);
     } else {
-      // Other path kinds (4.6 Scholz2015GeometryPath, FunctionBasedPath): kept, not read.
+      // Other path kinds (4.6 Scholz2015GeometryPath): kept, not read.
       for (pugi::xml_node child : node.children()) {
         const std::string_view tag = child.name();
         if (child.type() == pugi::node_element && tag.size() >= 4 &&

@@ -168,6 +168,21 @@ struct GeometryPathSpec {
   std::vector<PathWrapSpec> wraps;
 };
 
+/// A FunctionBasedPath (OpenSim 4.5+): the path's length as a function of coordinates, with no
+/// points. The functions take the coordinates' values in `coordinates` order (the lengthening
+/// speed function: those values, then the coordinates' speeds).
+struct FunctionBasedPathSpec {
+  std::string name;              ///< The path's name ("path").
+  std::vector<int> coordinates;  ///< coordinate_paths, as indices into ModelSpec::coordinates.
+  functions::FunctionPtr length_function;  ///< L(q) in m; never null.
+  /// moment_arm_functions: r_i(q), one per coordinate; empty when the file gives none (then
+  /// r_i = -dL/dq_i).
+  std::vector<functions::FunctionPtr> moment_arm_functions;
+  /// lengthening_speed_function(q, u); null when the file gives none (then -sum r_i qdot_i).
+  functions::FunctionPtr lengthening_speed_function;
+  SourceLocation where;
+};
+
 /// A frame a force is attached to through one of its sockets, resolved to its body.
 struct ForceFrameSpec {
   std::string path;         ///< The frame's absolute path ("/forceset/bushing/ball_offset").
@@ -182,6 +197,8 @@ struct ForceSpec {
   std::string type;  ///< OpenSim class name
   bool applies_force = true;
   std::optional<GeometryPathSpec> geometry_path;
+  /// Its FunctionBasedPath, when it has one instead of a GeometryPath.
+  std::optional<FunctionBasedPathSpec> function_based_path;
   /// Frames named by the force's frame sockets, by socket name: "frame1" and "frame2" (4.x
   /// socket_frame1/2, or 3.x body_1/body_2 offset by location_body_i/orientation_body_i as
   /// OpenSim's upgrade does), "frame" (socket_frame).

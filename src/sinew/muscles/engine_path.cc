@@ -41,6 +41,9 @@ EnginePath::EnginePath(paths::GeometryPath path, int num_spec_bodies, int num_sp
     for (int c : point.coordinates) map_coordinate(c);
   }
   for (const paths::PathWrap& wrap : path_.wraps()) map_body(wrap.body);
+  if (const model::FunctionBasedPathSpec* f = path_.function_path()) {
+    for (int c : f->coordinates) map_coordinate(c);
+  }
 }
 
 PathScratch& EnginePath::Scratch() {

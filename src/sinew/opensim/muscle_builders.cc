@@ -20,10 +20,13 @@
 namespace sinew::opensim::internal {
 namespace {
 
-// The force's path on the engine system; a path force without a GeometryPath is an error.
+// The force's path on the engine system; a path force without a GeometryPath or a
+// FunctionBasedPath is an error.
 muscles::EnginePath MakeEnginePath(const ForceBuildInput& in) {
-  if (!in.force.geometry_path) {
-    in.values.Fail("has no GeometryPath (FunctionBasedPath and other path kinds are not read)");
+  if (!in.force.geometry_path && !in.force.function_based_path) {
+    in.values.Fail(
+        "has no GeometryPath or FunctionBasedPath (other path kinds, such as "
+        "Scholz2015GeometryPath, are not simulated)");
   }
   return muscles::EnginePath(paths::GeometryPath(in.spec, in.force, in.cylinder_refinement),
                              static_cast<int>(in.spec.bodies.size()),

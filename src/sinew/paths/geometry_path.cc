@@ -35,6 +35,19 @@ const model::WrapObjectSpec* FindWrapObject(const model::ModelSpec& spec, const 
 GeometryPath::GeometryPath(const model::ModelSpec& spec, const model::ForceSpec& owner,
                            CylinderRefinement refinement)
     : name_(owner.name), component_(owner.path), where_(owner.where), refinement_(refinement) {
+  if (!owner.geometry_path && owner.function_based_path) {
+    function_path_ = owner.function_based_path;
+    const size_t n = function_path_->coordinates.size();
+    if (!function_path_->length_function || n == 0 ||
+        (!function_path_->moment_arm_functions.empty() &&
+         function_path_->moment_arm_functions.size() != n)) {
+      throw Error(where_, component_, "malformed FunctionBasedPath");
+    }
+    return;
+  }
+  if (!owner.geometry_path) {
+    throw Error(where_, component_, "has no GeometryPath or FunctionBasedPath");
+  }
   const model::GeometryPathSpec& path = owner.geometry_path.value();
   if (path.points.size() < 2) {
     throw Error(where_, component_,
@@ -76,9 +89,41 @@ void GeometryPath::ConnectWrapSurface(int wrap, std::shared_ptr<const WrapSurfac
   wraps_.at(static_cast<size_t>(wrap)).surface = std::move(surface);
 }
 
+// OpenSim's FunctionBasedPath: L = f(q) of its coordinates; dL/dq_i = -r_i, with r_i its
+// moment arm function when given, else -df/dq_i (exact partial derivatives).
+void GeometryPath::CalcFunctionState(std::span<const double> q, PathState& state) const {
+  const model::FunctionBasedPathSpec& f = *function_path_;
+  const size_t n = f.coordinates.size();
+  state.speed_arguments.resize(2 * n);
+  for (size_t i = 0; i < n; ++i) state.speed_arguments[i] = q[f.coordinates[i]];
+  const std::span<const double> x(state.speed_arguments.data(), n);
+  state.length = f.length_function->CalcN(x);
+  state.slopes.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    state.slopes[i].coordinate = f.coordinates[i];
+    if (f.moment_arm_functions.empty()) {
+      const int wrt = static_cast<int>(i);
+      state.slopes[i].dL_dq = f.length_function->CalcPartialN(x, std::span<const int>(&wrt, 1));
+    } else {
+      state.slopes[i].dL_dq = -f.moment_arm_functions[i]->CalcN(x);
+    }
+  }
+  state.speed_function = f.lengthening_speed_function.get();
+}
+
 void GeometryPath::CalcState(std::span<const double> q, std::span<const Transform> X_GB,
                              PathState& state, bool with_arc_points) const {
   state.points.clear();
+  state.slopes.clear();
+  state.speed_function = nullptr;
+  state.stale_tangent_points = 0;
+  if (function_path_) {
+    state.e_G.clear();
+    state.segment_length.clear();
+    state.arc_G.clear();
+    CalcFunctionState(q, state);
+    return;
+  }
   state.arc_G.resize(with_arc_points ? wraps_.size() : 0);
   for (std::vector<Vec3>& arc : state.arc_G) arc.clear();
   for (size_t i = 0; i < points_.size(); ++i) {

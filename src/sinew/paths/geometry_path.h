@@ -10,6 +10,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -46,6 +47,12 @@ struct PathPointState {
   double arc_length_to_next = -1.0;
 };
 
+/// dL/dq of a FunctionBasedPath about one coordinate it depends on.
+struct LengthSlope {
+  int coordinate = model::kNone;  ///< Index into ModelSpec::coordinates.
+  double dL_dq = 0.0;             ///< m per rad or m per m: minus OpenSim's moment arm.
+};
+
 /// A path at one pose. Segment i joins points[i] and points[i + 1].
 struct PathState {
   std::vector<PathPointState> points;
@@ -63,6 +70,15 @@ struct PathState {
   /// pass did: OpenSim's length keeps a point's first location in ground (docs/paths.md), and
   /// Sinew reproduces it. Zero for a path with one wrap object.
   int stale_tangent_points = 0;
+  /// FunctionBasedPath (no points, segments or arcs): per coordinate of its coordinate_paths,
+  /// in that order, dL/dq (minus its moment arm function when the file gives them). Empty for
+  /// a GeometryPath.
+  std::vector<LengthSlope> slopes;
+  /// FunctionBasedPath with a lengthening_speed_function: that function, and its arguments
+  /// (q, then u, of its coordinates) with q filled by CalcState and u by CalcLengtheningSpeed.
+  /// Null for every other path.
+  const functions::Function* speed_function = nullptr;
+  mutable std::vector<double> speed_arguments;
 };
 
 /// When OpenSim's WrapCylinder refines its tangent points toward tangency with the helix
@@ -80,10 +96,13 @@ inline constexpr int kMaxWrapPasses = 8;
 /// ... until the path length changes by less than this between passes (m).
 inline constexpr double kWrapPassTolerance = 0.0005;
 
-/// A GeometryPath. Immutable once built, apart from connecting wrap surfaces before use.
+/// A force's path: a GeometryPath (points, wraps) or a FunctionBasedPath (a length function of
+/// coordinates; function_path() non-null, points() and wraps() empty). Immutable once built,
+/// apart from connecting wrap surfaces before use.
 class GeometryPath {
  public:
-  /// Compiles the path of `owner` (a force with a geometry_path) and connects the wrap surface
+  /// Compiles the path of `owner` (a force with a geometry_path or a function_based_path) and
+  /// connects the wrap surface
   /// of every PathWrap whose wrap object is of a type MakeWrapSurface builds (the others stay
   /// unconnected: the path goes straight past them, and PathSet::ListOmissions names them).
   /// Throws sinew::Error (file, line, component) for a path with fewer than two points, a
@@ -99,6 +118,10 @@ class GeometryPath {
   const SourceLocation& where() const { return where_; }
   const std::vector<PathPoint>& points() const { return points_; }
   const std::vector<PathWrap>& wraps() const { return wraps_; }
+  /// The FunctionBasedPath, or null for a GeometryPath.
+  const model::FunctionBasedPathSpec* function_path() const {
+    return function_path_ ? &*function_path_ : nullptr;
+  }
 
   /// Connects (or, with nullptr, disconnects) the surface that implements wrap `wrap` (index
   /// into wraps()), replacing the one the constructor connected.
@@ -109,6 +132,7 @@ class GeometryPath {
   /// GeometryPath::applyWrapObjects does (docs/paths.md). Reuses `state`'s buffers. Throws
   /// sinew::Error naming the path when fewer than two of its points are active. With
   /// `with_arc_points`, also fills PathState::arc_G (sampling arcs costs more than wrapping).
+  /// A FunctionBasedPath fills only the length, PathState::slopes and the speed function.
   void CalcState(std::span<const double> q, std::span<const Transform> X_GB, PathState& state,
                  bool with_arc_points = false) const;
 
@@ -138,12 +162,14 @@ class GeometryPath {
                  bool with_arc_points) const;
   static void RemoveTangentPoints(int wrap, PathState& state);
   static void CalcSegments(PathState& state);
+  void CalcFunctionState(std::span<const double> q, PathState& state) const;
 
   std::string name_, component_;
   SourceLocation where_;
   std::vector<PathPoint> points_;
   std::vector<PathWrap> wraps_;
   CylinderRefinement refinement_;
+  std::optional<model::FunctionBasedPathSpec> function_path_;
 };
 
 }  // namespace sinew::paths

@@ -42,6 +42,19 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
     lengths_[p] = state_.length;
     speeds_[p] = CalcLengtheningSpeed(state_, X_GB_, V_GB_, u);
     if (!moment_arms) continue;
+    if (!state_.slopes.empty()) {
+      // A FunctionBasedPath: OpenSim reads its moment arm about each of its own coordinates
+      // (zero about any other) without the MomentArmSolver, so coupled coordinates do not
+      // move along.
+      for (size_t k = 0; k < coordinates_.size(); ++k) {
+        double r = 0.0;
+        for (const LengthSlope& s : state_.slopes) {
+          if (s.coordinate == coordinates_[k]) r = -s.dL_dq;
+        }
+        moment_arms_[k * num_paths + p] = r;
+      }
+      continue;
+    }
     CalcLengthGradient(state_, X_GB_, columns_, loads_, dL_du_);
     for (size_t k = 0; k < coordinates_.size(); ++k) {
       double r = 0.0;

@@ -32,7 +32,8 @@ class PathAnalysis {
   const std::vector<double>& lengths() const { return lengths_; }
   const std::vector<double>& lengthening_speeds() const { return speeds_; }
   /// Moment arm (m, or dimensionless about a translational coordinate) of path p about the
-  /// k-th coordinate of the list: -c . dL/du with c OpenSim's coupling vector.
+  /// k-th coordinate of the list: -c . dL/du with c OpenSim's coupling vector; for a
+  /// FunctionBasedPath, as OpenSim, -dL/dq_k alone (0 about a coordinate it does not list).
   double moment_arm(size_t k, size_t p) const { return moment_arms_[k * lengths_.size() + p]; }
   const std::vector<int>& coordinates() const { return coordinates_; }
 

@@ -35,6 +35,10 @@ void CalcPathLoads(const PathState& state, std::span<const Transform> X_GB, doub
           {p.coordinates[axis], f_G.dot(X_GB[p.body].R * p.dp_BP_dq[axis])});
     }
   }
+  // A FunctionBasedPath: generalized forces only (OpenSim: tension times the moment arm).
+  for (const LengthSlope& s : state.slopes) {
+    loads.coordinate_forces.push_back({s.coordinate, -tension * s.dL_dq});
+  }
 }
 
 void AddGeneralizedForces(const PathLoads& loads, std::span<const Transform> X_GB,
@@ -81,7 +85,14 @@ void CalcLengthGradient(const PathState& state, std::span<const Transform> X_GB,
 
 double CalcLengtheningSpeed(const PathState& state, std::span<const Transform> X_GB,
                             std::span<const SpatialVec> V_GB, std::span<const double> u) {
+  // A FunctionBasedPath: its lengthening_speed_function(q, u) when given, else sum dL/dq u.
+  if (state.speed_function) {
+    const size_t n = state.slopes.size();
+    for (size_t i = 0; i < n; ++i) state.speed_arguments[n + i] = u[state.slopes[i].coordinate];
+    return state.speed_function->CalcN(state.speed_arguments);
+  }
   double speed = 0.0;
+  for (const LengthSlope& s : state.slopes) speed += s.dL_dq * u[s.coordinate];
   Vec3 v_previous = Vec3::Zero();
   for (size_t i = 0; i < state.points.size(); ++i) {
     const PathPointState& p = state.points[i];

@@ -36,7 +36,8 @@ struct PathLoads {
 /// on either side; none over a wrap surface), and at a moving point that same force dotted with
 /// R_GB dp_BP/dq on each of its coordinates. Unlike OpenSim's GeometryPath::produceForces, the
 /// forces of a segment between two points of one body are kept: they cancel on a rigid body,
-/// and they carry a moving point's generalized force, which OpenSim drops there.
+/// and they carry a moving point's generalized force, which OpenSim drops there. A
+/// FunctionBasedPath has no point forces: -tension dL/dq on each of its coordinates.
 void CalcPathLoads(const PathState& state, std::span<const Transform> X_GB, double tension,
                    PathLoads& loads);
 
@@ -52,7 +53,9 @@ void CalcLengthGradient(const PathState& state, std::span<const Transform> X_GB,
 
 /// The lengthening speed dL/dt (m/s): the sum over straight segments of e_i . (v_(i+1) - v_i),
 /// with each point's velocity in ground from its body's V_GB (kinematics::CalcBodyVelocities)
-/// plus, for moving points, R_GB dp_BP/dq u of its coordinates.
+/// plus, for moving points, R_GB dp_BP/dq u of its coordinates. A FunctionBasedPath: its
+/// lengthening_speed_function(q, u) if it has one, else sum_i dL/dq_i u_i (OpenSim uses qdot
+/// there, which differs from u only for Ball and Free joint rotations).
 double CalcLengtheningSpeed(const PathState& state, std::span<const Transform> X_GB,
                             std::span<const SpatialVec> V_GB, std::span<const double> u);
 

@@ -4,16 +4,18 @@
 
 namespace sinew::paths {
 
-PathSet::PathSet(const model::ModelSpec& spec) {
+PathSet::PathSet(const model::ModelSpec& spec, CylinderRefinement refinement) {
   for (const model::ForceSpec& force : spec.forces) {
-    if (force.geometry_path) paths_.emplace_back(spec, force);
+    if (force.geometry_path || force.function_based_path) {
+      paths_.emplace_back(spec, force, refinement);
+    }
   }
 }
 
 Diagnostics PathSet::ListOmissions(const model::ModelSpec& spec) const {
   Diagnostics out;
   for (const model::ForceSpec& force : spec.forces) {
-    if (force.geometry_path) continue;
+    if (force.geometry_path || force.function_based_path) continue;
     // The reader keeps other path kinds (a child element whose tag ends in "Path") unread.
     for (const model::Element& child : force.element.children) {
       const std::string_view tag = child.tag;

@@ -10,17 +10,20 @@
 
 namespace sinew::paths {
 
-/// The GeometryPaths of a model's forces (muscles, path springs, ligaments), in ForceSet order.
+/// The paths (GeometryPath and FunctionBasedPath) of a model's forces (muscles, path springs,
+/// ligaments), in ForceSet order.
 class PathSet {
  public:
   /// Throws sinew::Error (file, line, component) for a path that cannot be computed as written.
-  explicit PathSet(const model::ModelSpec& spec);
+  /// `refinement`: which OpenSim's cylinder rule the paths follow (CylinderRefinement).
+  explicit PathSet(const model::ModelSpec& spec,
+                   CylinderRefinement refinement = CylinderRefinement::kSeveralWraps);
 
   const std::vector<GeometryPath>& paths() const { return paths_; }
   std::vector<GeometryPath>& mutable_paths() { return paths_; }
 
-  /// What is left out, one Diagnostic each: paths of kinds not computed (FunctionBasedPath,
-  /// Scholz2015GeometryPath: their owners have no path here) and PathWraps whose wrapping
+  /// What is left out, one Diagnostic each: paths of kinds not computed
+  /// (Scholz2015GeometryPath: their owners have no path here) and PathWraps whose wrapping
   /// surface is not connected (those paths are computed straight past the wrap object).
   /// Computed when asked, so connecting surfaces shortens the list.
   Diagnostics ListOmissions(const model::ModelSpec& spec) const;

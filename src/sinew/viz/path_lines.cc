@@ -2,6 +2,7 @@
 #include <sinew/viz/path_lines.h>
 
 #include <set>
+#include <string>
 
 namespace sinew::viz {
 
@@ -38,16 +39,30 @@ PathLines CalcPathLines(const model::ModelSpec& spec, const BodyMotion& motion,
     warn("", std::string("paths not drawn: ") + e.what());
     return lines;
   }
-  for (const paths::GeometryPath& path : set->paths()) lines.names.push_back(path.component());
+  // A FunctionBasedPath has a length but no points: nothing to draw.
+  std::vector<const paths::GeometryPath*> drawn;
+  std::string undrawn;
+  for (const paths::GeometryPath& path : set->paths()) {
+    if (path.function_path()) {
+      undrawn += (undrawn.empty() ? "" : ", ") + path.component();
+      continue;
+    }
+    drawn.push_back(&path);
+    lines.names.push_back(path.component());
+  }
+  if (!undrawn.empty()) {
+    warn("",
+         "FunctionBasedPaths have no points (only a length), so they are not drawn: " + undrawn);
+  }
   paths::PathState state;
   std::vector<Vec3> p_GP;
   std::vector<int> arc_of;
   std::set<size_t> failed;
   lines.vertices.resize(motion.q.size());
   for (size_t k = 0; k < motion.q.size(); ++k) {
-    lines.vertices[k].resize(set->paths().size());
-    for (size_t i = 0; i < set->paths().size(); ++i) {
-      const paths::GeometryPath& path = set->paths()[i];
+    lines.vertices[k].resize(drawn.size());
+    for (size_t i = 0; i < drawn.size(); ++i) {
+      const paths::GeometryPath& path = *drawn[i];
       try {
         path.CalcState(motion.q[k], motion.X_GB[k], state, /*with_arc_points=*/true);
       } catch (const Error& e) {

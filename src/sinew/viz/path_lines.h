@@ -43,7 +43,8 @@ std::vector<Vec3> PathPolyline(const std::vector<Vec3>& p_GP, const std::vector<
 /// paths::GeometryPath::CalcState does, with arc points. Needs motion.q (one coordinate vector
 /// per frame); without it, or for a model without paths, gives no paths. A path that cannot
 /// be computed at a frame (fewer than two active points), or at all, is left out there with
-/// one warning per path in `warnings` (when not null).
+/// one warning per path in `warnings` (when not null); so are FunctionBasedPaths (they have no
+/// points to draw), with one warning naming them all.
 PathLines CalcPathLines(const model::ModelSpec& spec, const BodyMotion& motion,
                         Diagnostics* warnings);
 
