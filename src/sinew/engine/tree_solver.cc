@@ -89,9 +89,8 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
 
 void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& mass,
                               const std::vector<MatX>& jacobian) {
+  // Every entry outside the mass block and the constraint entries stays zero from construction.
   for (Node& node : nodes_) {
-    node.K.setZero();
-    node.C.setZero();
     node.K.topLeftCorner<6, 6>() = mass[node.body];
     for (size_t i = 0; i < node.constraints.size(); ++i) {
       const MatX& J = jacobian[node.constraints[i]];
@@ -110,10 +109,23 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
   for (auto it = nodes_.rbegin(); it != nodes_.rend(); ++it) {
     Node& node = *it;
     FactorizeNode(node);
-    if (node.parent >= 0) {
+    if (node.parent < 0) continue;
+    auto parent_block = nodes_[node.parent].K.topLeftCorner<6, 6>();
+    if (node.use_pivot) {
+      // Closed form: C is J_P in the joint rows and zero elsewhere.
+      const Eigen::Matrix<double, 6, 6> J_P = node.C.middleRows<6>(6 + node.num_speeds);
+      Eigen::Matrix<double, 6, 6> CtW;
+      node.pivot.SolveCoupling(J_P, node.W, CtW);
+      parent_block -= CtW;
+    } else {
       node.W = node.C;
       SolveNode(node, node.W);
-      nodes_[node.parent].K.topLeftCorner<6, 6>().noalias() -= node.C.transpose() * node.W;
+      // C is zero in the twist and speed rows; a coefficient-wise product on the constraint
+      // rows instead of Eigen's blocked GEMM, which these small sizes do not repay.
+      const int first = 6 + node.num_speeds;
+      const int rows = static_cast<int>(node.global.size()) - first;
+      parent_block.noalias() -=
+          node.C.bottomRows(rows).transpose().lazyProduct(node.W.bottomRows(rows));
     }
   }
 }
