@@ -71,6 +71,23 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
         entries.push_back(e);
       }
     }
+    // Runs of columns, from the first row's entries (every row maps its columns alike).
+    Placement placement;
+    placement.first_row = first_row;
+    for (const Entry& e : entries) {
+      if (e.jac_row != 0) break;
+      if (!placement.runs.empty()) {
+        ColumnRun& last = placement.runs.back();
+        const bool same_side = (last.col >= 0) == (e.col >= 0);
+        const int next = last.col >= 0 ? last.col + last.width : last.col - last.width;
+        if (same_side && e.jac_col == last.jac_col + last.width && e.col == next) {
+          ++last.width;
+          continue;
+        }
+      }
+      placement.runs.push_back({e.jac_col, e.col, 1});
+    }
+    node.placements.push_back(std::move(placement));
     node.entries.push_back(std::move(entries));
   }
   for (int j = 0; j < num_joints; ++j) {
@@ -94,13 +111,16 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
     node.K.topLeftCorner<6, 6>() = mass[node.body];
     for (size_t i = 0; i < node.constraints.size(); ++i) {
       const MatX& J = jacobian[node.constraints[i]];
-      for (const Entry& e : node.entries[i]) {
-        const double value = J(e.jac_row, e.jac_col);
-        if (e.col >= 0) {
-          node.K(e.row, e.col) = value;
-          node.K(e.col, e.row) = value;
+      const Placement& placement = node.placements[i];
+      const int rows = static_cast<int>(J.rows());
+      for (const ColumnRun& run : placement.runs) {
+        const auto block = J.middleCols(run.jac_col, run.width);
+        if (run.col >= 0) {
+          node.K.block(placement.first_row, run.col, rows, run.width) = block;
+          node.K.block(run.col, placement.first_row, run.width, rows) = block.transpose();
         } else {
-          node.C(e.row, -1 - e.col) = value;
+          // Inboard columns run downwards from -1 - col.
+          node.C.block(placement.first_row, -1 - run.col, rows, run.width) = block;
         }
       }
     }
