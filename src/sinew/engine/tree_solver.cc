@@ -142,8 +142,7 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
       SolveNode(node, node.W);
       // C is zero in the twist and speed rows; a coefficient-wise product on the constraint
       // rows instead of Eigen's blocked GEMM, which these small sizes do not repay.
-      const int first = 6 + node.num_speeds;
-      const int rows = static_cast<int>(node.global.size()) - first;
+      const int rows = NumConstraintRows(node);
       parent_block.noalias() -=
           node.C.bottomRows(rows).transpose().lazyProduct(node.W.bottomRows(rows));
     }
@@ -199,13 +198,17 @@ void TreeKktSolver::Solve(const VecX& rhs, VecX& x) const {
   for (size_t k = nodes_.size(); k-- > 0;) {
     SolveNode(nodes_[k], r[k]);
     if (nodes_[k].parent >= 0) {
-      r[nodes_[k].parent].head<6>().noalias() -= nodes_[k].C.transpose() * r[k];
+      const int rows = NumConstraintRows(nodes_[k]);
+      r[nodes_[k].parent].head<6>().noalias() -=
+          nodes_[k].C.bottomRows(rows).transpose().lazyProduct(r[k].tail(rows));
     }
   }
   // Backward: x_k = z_k - W_k x_parent.
   x.resize(rhs.size());
   for (size_t k = 0; k < nodes_.size(); ++k) {
-    if (nodes_[k].parent >= 0) r[k].noalias() -= nodes_[k].W * r[nodes_[k].parent].head<6>();
+    if (nodes_[k].parent >= 0) {
+      r[k].noalias() -= nodes_[k].W.lazyProduct(r[nodes_[k].parent].head<6>());
+    }
     for (size_t i = 0; i < nodes_[k].global.size(); ++i) x[nodes_[k].global[i]] = r[k][i];
   }
 }
@@ -230,7 +233,9 @@ void TreeKktSolver::SolveUnitLoadResponses(int source, const std::vector<int>& t
     const int parent = nodes_[k].parent;
     if (parent >= 0) {
       blocks_[parent].setZero(nodes_[parent].global.size(), 6);
-      blocks_[parent].topRows<6>().noalias() -= nodes_[k].C.transpose() * blocks_[k];
+      const int rows = NumConstraintRows(nodes_[k]);
+      blocks_[parent].topRows<6>().noalias() -=
+          nodes_[k].C.bottomRows(rows).transpose().lazyProduct(blocks_[k].bottomRows(rows));
     }
     k = parent;
   }
@@ -246,7 +251,8 @@ void TreeKktSolver::SolveUnitLoadResponses(int source, const std::vector<int>& t
       const int j = stack_[i];
       if (forward_mark_[j] != call) blocks_[j].setZero(nodes_[j].global.size(), 6);
       const int parent = nodes_[j].parent;
-      if (parent >= 0) blocks_[j].noalias() -= nodes_[j].W * blocks_[parent].topRows<6>();
+      if (parent >= 0)
+        blocks_[j].noalias() -= nodes_[j].W.lazyProduct(blocks_[parent].topRows<6>());
       backward_mark_[j] = call;
     }
     out.block<6, 6>(6 * static_cast<Eigen::Index>(t), 0) =

@@ -95,6 +95,10 @@ class TreeKktSolver {
   // Whether node's block has the articulated layout: a parameterized joint's 6 rows first, then
   // rows on the joint speeds only.
   bool FitsArticulatedPivot(const Node& node, int joint) const;
+  // The node's constraint rows, its last rows: the coupling C is zero above them.
+  static int NumConstraintRows(const Node& node) {
+    return static_cast<int>(node.global.size()) - 6 - node.num_speeds;
+  }
   // Factorizes one node's block (the articulated pivot where it applies, else the LU).
   void FactorizeNode(Node& node);
   // x = K^-1 x with node's factorization.
