@@ -14,6 +14,15 @@
 // is a small KKT system on the joint speeds (at most 12 x 12):
 //   [ D  N^T ] [u ]   [ r_u + S^T (r_V - M_A a) ]
 //   [ N  0   ] [mu] = [ r_mu                    ],   D = S^T M_A S.
+// The block couples to the parent's twist only through the joint rows (their block J_P on it), so
+// W = K^-1 C and the parent's update C^T W follow in closed form: with the shift
+// A = J_B^-1 J_P (V = S u - A V_P when the joint rows' right-hand side is zero),
+//   Z = [D N^T; N 0]^-1 [-S^T M_A A; 0],   W = [A + S Z_u; Z_u; J_B^-T (-M_A A - M_A S Z_u); Z_mu],
+//   C^T W = -(A^T M_A A + (S^T M_A A)^T Z_u) = -T^T (M_A - M_A S P S^T M_A) T,
+// T = -A and P the speeds' block of the small system's inverse (D^-1 without coordinate rows):
+// the parent gains the body's articulated inertia seen through the rigid shift, as in the
+// articulated-body algorithm, with one 6-column solve of the small system instead of six solves
+// of the whole block.
 // J_B of a parameterized joint is block lower triangular, [R^T 0; -R^T [r]x R^T] in 3 x 3
 // blocks (also when the joint is reversed), so J_B^-1 takes two 3 x 3 inverses.
 #pragma once
@@ -41,16 +50,66 @@ class ArticulatedPivot {
   template <typename Rhs>
   void SolveInPlace(Eigen::MatrixBase<Rhs>& x) const;
 
+  /// For a coupling C to the parent's twist that is zero outside the joint rows, where it is
+  /// `J_P` (6 x 6): W = K^-1 C into `W` (K's rows, 6 columns) and C^T W into `CtW`, in closed
+  /// form (above). Same result as SolveInPlace on C, without its six solves of the whole block.
+  template <typename WMatrix>
+  void SolveCoupling(const Eigen::Matrix<double, 6, 6>& J_P, Eigen::MatrixBase<WMatrix>& W,
+                     Eigen::Matrix<double, 6, 6>& CtW) const;
+
  private:
   using Six = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
   using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12>;
   using SmallRhs = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 6>;
+  using SixRows = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6>;
   int nu_ = 0, nc_ = 0;
   Eigen::Matrix<double, 6, 6> M_ = Eigen::Matrix<double, 6, 6>::Zero();     // M_A
   Eigen::Matrix<double, 6, 6> Jinv_ = Eigen::Matrix<double, 6, 6>::Zero();  // J_B^-1
   Six S_, MS_;                                                              // S and M_A S
   Eigen::PartialPivLU<Small> small_;                                        // [D N^T; N 0]
+  // y = [D N^T; N 0]^-1 y in place with small_'s factors (substitution written out: Eigen's
+  // blocked triangular solves cost more than the arithmetic on these few rows).
+  template <typename Y>
+  void SolveSmallInPlace(Y& y) const;
 };
+
+template <typename Y>
+void ArticulatedPivot::SolveSmallInPlace(Y& y) const {
+  const int n = nu_ + nc_;
+  if (n == 0) return;
+  y = small_.permutationP() * y;
+  const Small& LU = small_.matrixLU();
+  for (int i = 1; i < n; ++i) {
+    for (int k = 0; k < i; ++k) y.row(i) -= LU(i, k) * y.row(k);
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    for (int k = i + 1; k < n; ++k) y.row(i) -= LU(i, k) * y.row(k);
+    y.row(i) /= LU(i, i);
+  }
+}
+
+template <typename WMatrix>
+void ArticulatedPivot::SolveCoupling(const Eigen::Matrix<double, 6, 6>& J_P,
+                                     Eigen::MatrixBase<WMatrix>& W,
+                                     Eigen::Matrix<double, 6, 6>& CtW) const {
+  using Mat6 = Eigen::Matrix<double, 6, 6>;
+  const Mat6 A = Jinv_ * J_P;
+  const Mat6 MA = M_ * A;
+  const SixRows Y = MS_.transpose() * A;  // S^T M_A A
+  SmallRhs Z(nu_ + nc_, 6);
+  Z.topRows(nu_) = -Y;
+  Z.bottomRows(nc_).setZero();
+  SolveSmallInPlace(Z);
+  CtW.noalias() = -A.transpose() * MA;
+  CtW.noalias() -= Y.transpose() * Z.topRows(nu_);
+  W.template topRows<6>() = A;
+  W.template topRows<6>().noalias() += S_ * Z.topRows(nu_);
+  W.middleRows(6, nu_) = Z.topRows(nu_);
+  Mat6 r = -MA;
+  r.noalias() -= MS_ * Z.topRows(nu_);
+  W.middleRows(6 + nu_, 6).noalias() = Jinv_.transpose() * r;
+  W.bottomRows(nc_) = Z.bottomRows(nc_);
+}
 
 template <typename Rhs>
 void ArticulatedPivot::SolveInPlace(Eigen::MatrixBase<Rhs>& x) const {
@@ -61,10 +120,7 @@ void ArticulatedPivot::SolveInPlace(Eigen::MatrixBase<Rhs>& x) const {
   y.topRows(nu_) = x.middleRows(6, nu_);
   y.topRows(nu_).noalias() += S_.transpose() * t;
   y.bottomRows(nc_) = x.bottomRows(nc_);
-  if (nu_ + nc_ > 0) {
-    const SmallRhs z = small_.solve(y);
-    y = z;
-  }
+  SolveSmallInPlace(y);
   x.template topRows<6>() = a;
   x.template topRows<6>().noalias() += S_ * y.topRows(nu_);
   Six r = t;

@@ -71,6 +71,23 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
         entries.push_back(e);
       }
     }
+    // Runs of columns, from the first row's entries (every row maps its columns alike).
+    Placement placement;
+    placement.first_row = first_row;
+    for (const Entry& e : entries) {
+      if (e.jac_row != 0) break;
+      if (!placement.runs.empty()) {
+        ColumnRun& last = placement.runs.back();
+        const bool same_side = (last.col >= 0) == (e.col >= 0);
+        const int next = last.col >= 0 ? last.col + last.width : last.col - last.width;
+        if (same_side && e.jac_col == last.jac_col + last.width && e.col == next) {
+          ++last.width;
+          continue;
+        }
+      }
+      placement.runs.push_back({e.jac_col, e.col, 1});
+    }
+    node.placements.push_back(std::move(placement));
     node.entries.push_back(std::move(entries));
   }
   for (int j = 0; j < num_joints; ++j) {
@@ -89,19 +106,21 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
 
 void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& mass,
                               const std::vector<MatX>& jacobian) {
+  // Every entry outside the mass block and the constraint entries stays zero from construction.
   for (Node& node : nodes_) {
-    node.K.setZero();
-    node.C.setZero();
     node.K.topLeftCorner<6, 6>() = mass[node.body];
     for (size_t i = 0; i < node.constraints.size(); ++i) {
       const MatX& J = jacobian[node.constraints[i]];
-      for (const Entry& e : node.entries[i]) {
-        const double value = J(e.jac_row, e.jac_col);
-        if (e.col >= 0) {
-          node.K(e.row, e.col) = value;
-          node.K(e.col, e.row) = value;
+      const Placement& placement = node.placements[i];
+      const int rows = static_cast<int>(J.rows());
+      for (const ColumnRun& run : placement.runs) {
+        const auto block = J.middleCols(run.jac_col, run.width);
+        if (run.col >= 0) {
+          node.K.block(placement.first_row, run.col, rows, run.width) = block;
+          node.K.block(run.col, placement.first_row, run.width, rows) = block.transpose();
         } else {
-          node.C(e.row, -1 - e.col) = value;
+          // Inboard columns run downwards from -1 - col.
+          node.C.block(placement.first_row, -1 - run.col, rows, run.width) = block;
         }
       }
     }
@@ -110,10 +129,22 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
   for (auto it = nodes_.rbegin(); it != nodes_.rend(); ++it) {
     Node& node = *it;
     FactorizeNode(node);
-    if (node.parent >= 0) {
+    if (node.parent < 0) continue;
+    auto parent_block = nodes_[node.parent].K.topLeftCorner<6, 6>();
+    if (node.use_pivot) {
+      // Closed form: C is J_P in the joint rows and zero elsewhere.
+      const Eigen::Matrix<double, 6, 6> J_P = node.C.middleRows<6>(6 + node.num_speeds);
+      Eigen::Matrix<double, 6, 6> CtW;
+      node.pivot.SolveCoupling(J_P, node.W, CtW);
+      parent_block -= CtW;
+    } else {
       node.W = node.C;
       SolveNode(node, node.W);
-      nodes_[node.parent].K.topLeftCorner<6, 6>().noalias() -= node.C.transpose() * node.W;
+      // C is zero in the twist and speed rows; a coefficient-wise product on the constraint
+      // rows instead of Eigen's blocked GEMM, which these small sizes do not repay.
+      const int rows = NumConstraintRows(node);
+      parent_block.noalias() -=
+          node.C.bottomRows(rows).transpose().lazyProduct(node.W.bottomRows(rows));
     }
   }
 }
@@ -167,13 +198,17 @@ void TreeKktSolver::Solve(const VecX& rhs, VecX& x) const {
   for (size_t k = nodes_.size(); k-- > 0;) {
     SolveNode(nodes_[k], r[k]);
     if (nodes_[k].parent >= 0) {
-      r[nodes_[k].parent].head<6>().noalias() -= nodes_[k].C.transpose() * r[k];
+      const int rows = NumConstraintRows(nodes_[k]);
+      r[nodes_[k].parent].head<6>().noalias() -=
+          nodes_[k].C.bottomRows(rows).transpose().lazyProduct(r[k].tail(rows));
     }
   }
   // Backward: x_k = z_k - W_k x_parent.
   x.resize(rhs.size());
   for (size_t k = 0; k < nodes_.size(); ++k) {
-    if (nodes_[k].parent >= 0) r[k].noalias() -= nodes_[k].W * r[nodes_[k].parent].head<6>();
+    if (nodes_[k].parent >= 0) {
+      r[k].noalias() -= nodes_[k].W.lazyProduct(r[nodes_[k].parent].head<6>());
+    }
     for (size_t i = 0; i < nodes_[k].global.size(); ++i) x[nodes_[k].global[i]] = r[k][i];
   }
 }
@@ -198,7 +233,9 @@ void TreeKktSolver::SolveUnitLoadResponses(int source, const std::vector<int>& t
     const int parent = nodes_[k].parent;
     if (parent >= 0) {
       blocks_[parent].setZero(nodes_[parent].global.size(), 6);
-      blocks_[parent].topRows<6>().noalias() -= nodes_[k].C.transpose() * blocks_[k];
+      const int rows = NumConstraintRows(nodes_[k]);
+      blocks_[parent].topRows<6>().noalias() -=
+          nodes_[k].C.bottomRows(rows).transpose().lazyProduct(blocks_[k].bottomRows(rows));
     }
     k = parent;
   }
@@ -214,7 +251,8 @@ void TreeKktSolver::SolveUnitLoadResponses(int source, const std::vector<int>& t
       const int j = stack_[i];
       if (forward_mark_[j] != call) blocks_[j].setZero(nodes_[j].global.size(), 6);
       const int parent = nodes_[j].parent;
-      if (parent >= 0) blocks_[j].noalias() -= nodes_[j].W * blocks_[parent].topRows<6>();
+      if (parent >= 0)
+        blocks_[j].noalias() -= nodes_[j].W.lazyProduct(blocks_[parent].topRows<6>());
       backward_mark_[j] = call;
     }
     out.block<6, 6>(6 * static_cast<Eigen::Index>(t), 0) =

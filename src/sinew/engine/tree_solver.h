@@ -55,6 +55,15 @@ class TreeKktSolver {
     int row, col;  // local row and local column (col < 0: inboard body column -1 - col)
     int jac_row, jac_col;
   };
+  // Consecutive Jacobian columns of one constraint that land in consecutive local columns (or
+  // inboard body columns): copied into the node block as one block, rows and transpose.
+  struct ColumnRun {
+    int jac_col, col, width;  // col as in Entry
+  };
+  struct Placement {
+    int first_row = 0;  // local row of the constraint's first equation
+    std::vector<ColumnRun> runs;
+  };
   // Node blocks never exceed 24 rows (6 twist + 6 speeds + 6 joint rows + 6 coordinate rows):
   // fixed-capacity matrices keep them off the heap.
   static constexpr int kMaxNode = 24;
@@ -76,6 +85,7 @@ class TreeKktSolver {
     std::vector<int> global;   // global index of each local variable
     std::vector<int> constraints;
     std::vector<std::vector<Entry>> entries;  // per constraint: where its J entries go
+    std::vector<Placement> placements;        // the same, by runs of columns
     NodeMatrix K;                             // pivot block (n x n)
     NodeCoupling C;                           // coupling to the inboard body's twist (n x 6)
     NodeCoupling W;                           // K^-1 C
@@ -85,6 +95,10 @@ class TreeKktSolver {
   // Whether node's block has the articulated layout: a parameterized joint's 6 rows first, then
   // rows on the joint speeds only.
   bool FitsArticulatedPivot(const Node& node, int joint) const;
+  // The node's constraint rows, its last rows: the coupling C is zero above them.
+  static int NumConstraintRows(const Node& node) {
+    return static_cast<int>(node.global.size()) - 6 - node.num_speeds;
+  }
   // Factorizes one node's block (the articulated pivot where it applies, else the LU).
   void FactorizeNode(Node& node);
   // x = K^-1 x with node's factorization.
