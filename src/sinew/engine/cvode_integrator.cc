@@ -66,6 +66,8 @@ class CvodeIntegrator final : public Integrator {
       throw Error("integrator '" + name_ + "': CVODE could not be set up (out of memory)");
     }
     zdot_.resize(vector_.num_state_variables());
+    last_end_.resize(n);
+    packed_.resize(n);
     if (preconditioned_) LayOutBlocks();
   }
   ~CvodeIntegrator() override { Release(); }
@@ -111,7 +113,7 @@ class CvodeIntegrator final : public Integrator {
 
   // (Re)starts CVODE at `state`.
   void Restart(const State& state);
-  bool IsWhereLastStepEnded(const State& state) const;
+  bool IsWhereLastStepEnded(const State& state);
   void Check(int flag, const char* call);
   [[noreturn]] void Fail(const char* call, int flag);
   void Release();
@@ -130,6 +132,7 @@ class CvodeIntegrator final : public Integrator {
   VecX zdot_;         // the state variables' derivatives of one evaluation
   State step_start_;  // the state the last step started from (inputs, angle branches)
   VecX last_end_;     // Pack of the state the last step returned, and its inputs
+  VecX packed_;       // Pack of the state passed in (preallocated: steps do not allocate)
   VecX last_inputs_;
   double last_t_ = 0.0;
   long counted_rejections_ = 0;  // CVODE's failure counters since the last restart
@@ -359,10 +362,11 @@ void CvodeIntegrator::Restart(const State& state) {
   counted_preconditioner_setups_ = 0;
 }
 
-bool CvodeIntegrator::IsWhereLastStepEnded(const State& state) const {
+bool CvodeIntegrator::IsWhereLastStepEnded(const State& state) {
   if (!initialized_ || state.t != last_t_) return false;
   if (!controller_ && state.inputs != last_inputs_) return false;
-  return vector_.Pack(state) == last_end_;
+  vector_.PackInto(state, packed_);
+  return packed_ == last_end_;
 }
 
 void CvodeIntegrator::TakeStep(State& state, double t_limit) {
@@ -399,7 +403,7 @@ void CvodeIntegrator::TakeStep(State& state, double t_limit) {
   ++stats_.steps;
   vector_.Unpack(View(y_), t_reached, state);
   last_t_ = t_reached;
-  last_end_ = vector_.Pack(state);
+  vector_.PackInto(state, last_end_);
   last_inputs_ = state.inputs;
 }
 
