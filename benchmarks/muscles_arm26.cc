@@ -54,10 +54,14 @@ void BM_Arm26Thelen2003Cvode(benchmark::State& bench) {
 void BM_Arm26Thelen2003CvodeGmres(benchmark::State& bench) {
   RunArm26(bench, false, bench.range(0) * 1e-7, "cvode-gmres");
 }
+void BM_Arm26Thelen2003CvodeGmresBd(benchmark::State& bench) {
+  RunArm26(bench, false, bench.range(0) * 1e-7, "cvode-gmres-bd");
+}
 // range(0) * 1e-7 is the accuracy: 100 -> 1e-5, 1 -> 1e-7.
 BENCHMARK(BM_Arm26Thelen2003)->Arg(100)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Arm26Thelen2003Deprecated)->Arg(100)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Arm26Thelen2003Cvode)->Arg(100)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Arm26Thelen2003CvodeGmres)->Arg(100)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Arm26Thelen2003CvodeGmresBd)->Arg(100)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -54,13 +54,21 @@ void BM_Rajagopal2016MillardExcitedOneSecond(benchmark::State& bench) {
 void BM_Rajagopal2016MillardExcitedOneSecondCvodeGmres(benchmark::State& bench) {
   RunRajagopal(bench, "cvode-gmres", 0.2);
 }
-BENCHMARK(BM_Rajagopal2016MillardOneSecond)->Unit(benchmark::kMillisecond);
+void BM_Rajagopal2016MillardExcitedOneSecondCvodeGmresBd(benchmark::State& bench) {
+  RunRajagopal(bench, "cvode-gmres-bd", 0.2);
+}
 void BM_Rajagopal2016MillardOneSecondCvodeGmres(benchmark::State& bench) {
   RunRajagopal(bench, "cvode-gmres");
 }
+void BM_Rajagopal2016MillardOneSecondCvodeGmresBd(benchmark::State& bench) {
+  RunRajagopal(bench, "cvode-gmres-bd");
+}
+BENCHMARK(BM_Rajagopal2016MillardOneSecond)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Rajagopal2016MillardOneSecondCvode)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Rajagopal2016MillardOneSecondCvodeGmres)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Rajagopal2016MillardOneSecondCvodeGmresBd)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Rajagopal2016MillardExcitedOneSecond)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Rajagopal2016MillardExcitedOneSecondCvodeGmres)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Rajagopal2016MillardExcitedOneSecondCvodeGmresBd)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -17,7 +17,7 @@ inline void RunOneSecond(benchmark::State& bench, const sinew::engine::System& s
                          std::shared_ptr<const sinew::engine::Controller> controller,
                          const sinew::engine::State& start, double accuracy,
                          const std::string& integrator_name = "rk45") {
-  double simulated = 0.0, steps = 0.0, evaluations = 0.0;
+  double simulated = 0.0, steps = 0.0, evaluations = 0.0, linear_iterations = 0.0;
   for (auto _ : bench) {
     sinew::engine::State state = start;
     auto integrator =
@@ -27,10 +27,15 @@ inline void RunOneSecond(benchmark::State& bench, const sinew::engine::System& s
     simulated += 1.0;
     steps += static_cast<double>(integrator->stats().steps);
     evaluations += static_cast<double>(integrator->stats().evaluations);
+    linear_iterations += static_cast<double>(integrator->stats().linear_iterations);
   }
   bench.counters["sim_s_per_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
   bench.counters["steps"] = benchmark::Counter(steps, benchmark::Counter::kAvgIterations);
   bench.counters["evals"] = benchmark::Counter(evaluations, benchmark::Counter::kAvgIterations);
+  if (linear_iterations > 0.0) {
+    bench.counters["lin_iters"] =
+        benchmark::Counter(linear_iterations, benchmark::Counter::kAvgIterations);
+  }
   // The length of the integrated vector (cvode's Jacobian has as many columns).
   const sinew::engine::KktSolver kkt(system);
   bench.counters["n"] = sinew::engine::StateVector(system, kkt).size();

@@ -1,6 +1,6 @@
 // `sinew forward SETUP.xml [--model F.osim] [--out DIR] [--report-interval DT] [--strict]
 //  [--equilibrate-muscles] [--rename-force-class OLD=NEW] [--cylinder-refinement RULE]
-//  [--integrator rk45|cvode|cvode-gmres] [--disable-force NAME]... [--quiet]`:
+//  [--integrator rk45|cvode|cvode-gmres|cvode-gmres-bd] [--disable-force NAME]... [--quiet]`:
 //  runs an OpenSim ForwardTool setup file (io::ReadForwardSetup; docs/forward.md):
 // the model with the setup's force set files, initial states, controls and external loads,
 // integrated from initial_time to final_time at the setup's accuracy. Writes <name>_states.sto,
@@ -139,9 +139,10 @@ void AddForwardCommand(CLI::App& app) {
                 "approximated, not simulated or not used");
   AddMuscleOptions(cmd, options->equilibrate_muscles, options->renamed_classes,
                    options->cylinder_refinement);
-  cmd->add_option("--integrator", options->integrator,
-                  "rk45 (explicit, default), cvode or cvode-gmres (implicit BDF for stiff "
-                  "muscles; see `simulate`), at the setup's error tolerance and step bounds");
+  cmd->add_option(
+      "--integrator", options->integrator,
+      "rk45 (explicit, default), cvode, cvode-gmres or cvode-gmres-bd (implicit BDF for stiff "
+      "muscles; see `simulate`), at the setup's error tolerance and step bounds");
   cmd->add_option("--disable-force", options->disabled_forces,
                   "Leave out the force of this name (model, force set files or external loads; "
                   "repeatable)");

@@ -199,7 +199,8 @@ void AddSimulateCommand(CLI::App& app) {
       "--integrator", options->integrator,
       "rk45 (error-controlled, explicit, default), cvode (error-controlled, implicit BDF: "
       "stiff muscles, dense Jacobian: small models), cvode-gmres (the same, matrix-free: large "
-      "models), euler or implicit-euler (fixed step)");
+      "models), cvode-gmres-bd (the same, preconditioned by the muscles' own activation and "
+      "fiber Jacobians: fibers far from equilibrium), euler or implicit-euler (fixed step)");
   cmd->add_option("--step", options->step,
                   "Fixed step for euler; largest step for rk45 and cvode(-gmres) (s)")
       ->check(FiniteNumber(0.0));

@@ -129,8 +129,8 @@ class Model:
         """Forward simulation over `duration` s, what `sinew simulate` runs (same arrays bit for
         bit, Result.to_sto writes its states.sto byte for byte).
 
-        integrator: "rk45" (error-controlled, accuracy), "cvode" or "cvode-gmres" (implicit,
-        error-controlled, for stiff muscles), "euler" or "implicit-euler" (fixed `step`); for
+        integrator: "rk45" (error-controlled, accuracy), "cvode", "cvode-gmres" or
+        "cvode-gmres-bd" (implicit, error-controlled, for stiff muscles), "euler" or "implicit-euler" (fixed `step`); for
         the error-controlled ones, step bounds the step. Reports at every multiple of report_interval
         and at the end. initial_states: a State, or a states table (.sto) whose first row
         gives the coordinates as OpenSim's Forward tool takes it. excitations: actuator name ->

@@ -131,7 +131,7 @@ TEST_P(CvodeTest, FailureNamesTheTimeAndCvodesFlag) {
   EXPECT_LT(state.t, 0.5 + 1e-9);
 }
 
-INSTANTIATE_TEST_SUITE_P(LinearSolvers, CvodeTest, ::testing::Values("cvode", "cvode-gmres"));
+INSTANTIATE_TEST_SUITE_P(LinearSolvers, CvodeTest, ::testing::Values("cvode", "cvode-gmres", "cvode-gmres-bd"));
 
 TEST(CvodeNamesTest, AreListedAmongTheIntegrators) {
   const System system = testing::MakeChain(1);

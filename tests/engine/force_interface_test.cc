@@ -150,7 +150,7 @@ TEST(ForceInterfaceTest, CvodeIntegratesAStiffLagInFewSteps) {
   auto rk45 = MakeIntegrator("rk45", system, settings);
   rk45->StepTo(explicit_state, 1.0);
   EXPECT_GT(rk45->stats().steps, static_cast<long>(1.0 / (3.3 * tau)));
-  for (const char* name : {"cvode", "cvode-gmres"}) {
+  for (const char* name : {"cvode", "cvode-gmres", "cvode-gmres-bd"}) {
     State state = MakeDefaultState(system);
     state.inputs[0] = r;
     auto integrator = MakeIntegrator(name, system, settings);
@@ -193,7 +193,7 @@ TEST(ForceInterfaceTest, CvodeRestartsFromAStateChangedBetweenSteps) {
   const double tau = 0.05, k = 1.0, x0 = 0.0, r1 = 1.0, r2 = -2.0, t1 = 0.3;
   const System system = MakeLaggedSlider(tau, k, x0);
   const double x1 = LagValue(t1, tau, x0, r1);
-  for (const char* name : {"cvode", "cvode-gmres"}) {
+  for (const char* name : {"cvode", "cvode-gmres", "cvode-gmres-bd"}) {
     State state = MakeDefaultState(system);
     state.inputs[0] = r1;
     auto integrator = MakeIntegrator(name, system, {.accuracy = 1e-9});
@@ -260,7 +260,8 @@ TEST(ForceInterfaceTest, ControllerSetsInputsAtEveryEvaluation) {
   const System system = MakeLaggedSlider(1.0, 1.0, 0.0);
   // rk45 bounds each component's local error by accuracy, cvode their RMS (4 x per component).
   for (const auto& [name, norm_factor] :
-       {std::pair{"rk45", 1.0}, std::pair{"cvode", 4.0}, std::pair{"cvode-gmres", 4.0}}) {
+       {std::pair{"rk45", 1.0}, std::pair{"cvode", 4.0}, std::pair{"cvode-gmres", 4.0},
+        std::pair{"cvode-gmres-bd", 4.0}}) {
     State state = MakeDefaultState(system);
     IntegratorSettings settings;
     settings.accuracy = 1e-10;

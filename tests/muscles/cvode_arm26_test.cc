@@ -31,7 +31,7 @@ TEST(CvodeArm26Test, AgreesWithRk45AtTightAccuracy) {
   const engine::KktSolver kkt(system);
   const double size = engine::StateVector(system, kkt).size();
   const double accuracy = 1e-8;
-  for (const char* name : {"cvode", "cvode-gmres"}) {
+  for (const char* name : {"cvode", "cvode-gmres", "cvode-gmres-bd"}) {
     state = arm->state;
     auto cvode = engine::MakeIntegrator(name, system, {.accuracy = accuracy});
     cvode->SetController(arm->parser.GetController());

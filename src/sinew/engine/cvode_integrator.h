@@ -8,6 +8,15 @@
 //  - "cvode-gmres": matrix-free by GMRES without a preconditioner (each product J v is one
 //    difference-quotient evaluation), no Jacobian is ever formed: best for large models
 //    (Rajagopal2016, PushUpToesOnGroundWithMuscles), whose stiff modes are few and isolated.
+//  - "cvode-gmres-bd": the same GMRES, preconditioned on the right by P = I - gamma J_zz on the
+//    auxiliary states z (identity on positions and velocities), J_zz block-diagonal with one
+//    n_k x n_k block per force element (a muscle's activation and fiber length: 2 x 2), each by
+//    forward differences of that element's own CalcStateVariableDerivatives over its own z
+//    (n_k calls of one element, no full evaluation), recomputed only when CVODE says the kept
+//    one is stale (its jok), refactored for every new gamma. Faster than "cvode-gmres" where
+//    fibers are far from equilibrium (PushUpToesOnGroundWithMuscles, arm26), slower where the
+//    Newton iteration already needs about one GMRES iteration (Rajagopal2016 from
+//    equilibrium): docs/benchmarks.md.
 //
 // It integrates the same vector as rk45 (see state_vector.h) with rtol = atol = accuracy (rk45's
 // unit absolute floor; CVODE weighs errors in the RMS norm, rk45 in the max norm). After each
@@ -27,10 +36,14 @@
 namespace sinew::engine {
 
 /// How Newton's linear systems are solved (see above).
-enum class CvodeLinearSolver { kDense, kGmres };
+enum class CvodeLinearSolver {
+  kDense,                    ///< "cvode"
+  kGmres,                    ///< "cvode-gmres"
+  kGmresBlockPreconditioned  ///< "cvode-gmres-bd"
+};
 
-/// Makes the "cvode" (kDense) or "cvode-gmres" (kGmres) integrator. Throws sinew::Error when
-/// CVODE cannot be set up.
+/// Makes the "cvode" (kDense), "cvode-gmres" (kGmres) or "cvode-gmres-bd" integrator. Throws
+/// sinew::Error when CVODE cannot be set up.
 std::unique_ptr<Integrator> MakeCvodeIntegrator(const System& system,
                                                 const IntegratorSettings& settings,
                                                 CvodeLinearSolver linear_solver);

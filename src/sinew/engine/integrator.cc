@@ -352,6 +352,7 @@ constexpr struct {
     {"dopri5", &Make<RungeKutta45>},
     {"cvode", &MakeCvode<CvodeLinearSolver::kDense>},
     {"cvode-gmres", &MakeCvode<CvodeLinearSolver::kGmres>},
+    {"cvode-gmres-bd", &MakeCvode<CvodeLinearSolver::kGmresBlockPreconditioned>},
     {"euler", &Make<SemiImplicitEuler>},
     {"semi-implicit-euler", &Make<SemiImplicitEuler>},
     {"implicit-euler", &Make<LinearizedImplicitEuler>},
@@ -365,7 +366,7 @@ std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System
     if (name == entry.name) return entry.make(system, settings);
   }
   throw Error("unknown integrator '" + name +
-              "' (known: rk45, cvode, cvode-gmres, euler, implicit-euler)");
+              "' (known: rk45, cvode, cvode-gmres, cvode-gmres-bd, euler, implicit-euler)");
 }
 
 }  // namespace sinew::engine

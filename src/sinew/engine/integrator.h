@@ -4,10 +4,11 @@
 //  - "rk45": Dormand-Prince 5(4) with error control on positions and velocities and, after each
 //    accepted step, projection of positions (Newton) and velocities (least squares) onto the
 //    constraints. Used to match OpenSim's results.
-//  - "cvode", "cvode-gmres": SUNDIALS CVODE's implicit BDF (orders 1-5, Newton; dense
-//    difference-quotient Jacobian, or matrix-free GMRES) with the same error control target
-//    and projection (cvode_integrator.h): for stiff models (stiff tendons, fibers far from
-//    equilibrium) where rk45's steps are bounded by stability.
+//  - "cvode", "cvode-gmres", "cvode-gmres-bd": SUNDIALS CVODE's implicit BDF (orders 1-5,
+//    Newton; dense difference-quotient Jacobian, or matrix-free GMRES, optionally
+//    preconditioned by the auxiliary states' own block-diagonal Jacobian) with the same error
+//    control target and projection (cvode_integrator.h): for stiff models (stiff tendons, fibers
+//    far from equilibrium) where rk45's steps are bounded by stability.
 //  - "euler": fixed-step semi-implicit (symplectic) Euler: the new velocities solve the
 //    velocity-level KKT system M (v+ - v) = h f + J^T lambda, J v+ = c; positions then move
 //    with v+ and are projected. First order, robust, one factorization per step (the velocity
@@ -52,6 +53,8 @@ struct IntegratorStats {
   long projection_factorizations = 0;  ///< KKT factorizations of the position projections
   long factorizations = 0;             ///< every KKT factorization (evaluations and projections)
   long projection_failures = 0;        ///< steps rejected because the projection did not converge
+  long linear_iterations = 0;          ///< Krylov iterations of the Newton systems (cvode-gmres)
+  long preconditioner_setups = 0;      ///< preconditioner evaluations (cvode-gmres-bd)
 };
 
 /// Advances a State of one System in time. Keeps a reference to the System: the System must
@@ -107,7 +110,7 @@ class Integrator {
   IntegratorStats stats_;
 };
 
-/// Makes the integrator named `name` ("rk45", "cvode", "cvode-gmres", "euler" or
+/// Makes the integrator named `name` ("rk45", "cvode", "cvode-gmres", "cvode-gmres-bd", "euler" or
 /// "implicit-euler"; aliases "dopri5" and "semi-implicit-euler"). Throws sinew::Error for
 /// another name.
 std::unique_ptr<Integrator> MakeIntegrator(const std::string& name, const System& system,
