@@ -408,6 +408,34 @@ void CollisionDetector::Impl::CollideWithHalfSpace(const Pair& p,
   });
 }
 
+namespace {
+// GJK, and EPA for the penetration, between convex shapes A and B, each inflated by half the
+// envelope (the overlap of the inflated shapes is the true one plus the envelope, and its
+// midway point is the true one's). On overlap sets c's normal (Bullet's, from B towards A),
+// depth and midway point, and `p_on_B_G` (if given) to Bullet's point, on inflated B.
+bool Penetrate(const btConvexShape* A, const btTransform& X_GA, const btConvexShape* B,
+               const btTransform& X_GB, double envelope, CollisionContact& c,
+               Vec3* p_on_B_G = nullptr) {
+  btVoronoiSimplexSolver simplex;
+  btGjkEpaPenetrationDepthSolver epa;
+  btGjkPairDetector gjk(A, B, &simplex, &epa);
+  btGjkPairDetector::ClosestPointInput input;
+  input.m_transformA = X_GA;
+  input.m_transformB = X_GB;
+  btPointCollector output;
+  gjk.getClosestPoints(input, output, nullptr);
+  if (!output.m_hasResult || !(output.m_distance < 0.0)) return false;
+  c.n_G = FromBt(output.m_normalOnBInWorld).normalized();
+  const double inflated_depth = -output.m_distance;
+  // EPA may fail on deep or degenerate overlaps: no usable normal, no contact.
+  if (!c.n_G.allFinite() || !std::isfinite(inflated_depth)) return false;
+  c.depth = inflated_depth - envelope;
+  c.p_G = FromBt(output.m_pointInWorld) - 0.5 * inflated_depth * c.n_G;
+  if (p_on_B_G) *p_on_B_G = FromBt(output.m_pointInWorld);
+  return true;
+}
+}  // namespace
+
 template <class Visit>
 void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Transform>& X_GB,
                                             Visit&& visit) const {
@@ -426,27 +454,10 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   b.bt->getAabb(X_GBs, min_b, max_b);
   if (!TestAabbAgainstAabb2(min_a, max_a, min_b, max_b)) return;
   // Narrow phase: GJK, and EPA for the penetration.
-  btVoronoiSimplexSolver simplex;
-  btGjkEpaPenetrationDepthSolver epa;
-  btGjkPairDetector gjk(a.bt.get(), b.bt.get(), &simplex, &epa);
-  btGjkPairDetector::ClosestPointInput input;
-  input.m_transformA = X_GA;
-  input.m_transformB = X_GBs;
-  btPointCollector output;
-  gjk.getClosestPoints(input, output, nullptr);
-  if (!output.m_hasResult || !(output.m_distance < 0.0)) return;
-  // Bullet's normal points from B towards A, its point lies on B (both shapes inflated by half
-  // the envelope: the overlap of the inflated shapes is the true one plus the envelope, and its
-  // midway point is the true one's).
   CollisionContact c;
+  if (!Penetrate(a.bt.get(), X_GA, b.bt.get(), X_GBs, envelope, c)) return;
   c.body1 = b.body;
   c.body2 = a.body;
-  c.n_G = FromBt(output.m_normalOnBInWorld).normalized();
-  const double inflated_depth = -output.m_distance;
-  // EPA may fail on deep or degenerate overlaps: no usable normal, no contact.
-  if (!c.n_G.allFinite() || !std::isfinite(inflated_depth)) return;
-  c.depth = inflated_depth - envelope;
-  c.p_G = FromBt(output.m_pointInWorld) - 0.5 * inflated_depth * c.n_G;
   c.radius = p.radius;
   c.material = p.material;
   visit(c);
@@ -476,27 +487,15 @@ void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<T
   const auto on_triangle = [&](const btVector3* v) {
     btTriangleShape triangle(v[0], v[1], v[2]);
     triangle.setMargin(inflation);
-    btVoronoiSimplexSolver simplex;
-    btGjkEpaPenetrationDepthSolver epa;
-    btGjkPairDetector gjk(s.bt.get(), &triangle, &simplex, &epa);
-    btGjkPairDetector::ClosestPointInput input;
-    input.m_transformA = bt_X_GS;
-    input.m_transformB = bt_X_GM;
-    btPointCollector output;
-    gjk.getClosestPoints(input, output, nullptr);
-    if (!output.m_hasResult || !(output.m_distance < 0.0)) return;
     TriangleContact t;
-    CollisionContact& c = t.contact;
+    CollisionContact& c = t.contact;  // its normal from the triangle to the shape
+    Vec3 p_inflated_G;
+    if (!Penetrate(s.bt.get(), bt_X_GS, &triangle, bt_X_GM, envelope, c, &p_inflated_G)) return;
     c.body1 = m.body;
     c.body2 = s.body;
-    c.n_G = FromBt(output.m_normalOnBInWorld).normalized();  // from the triangle to the shape
-    const double inflated_depth = -output.m_distance;
-    if (!c.n_G.allFinite() || !std::isfinite(inflated_depth)) return;
-    c.depth = inflated_depth - envelope;
-    c.p_G = FromBt(output.m_pointInWorld) - 0.5 * inflated_depth * c.n_G;
     c.radius = p.radius;
     c.material = p.material;
-    t.p_mesh_G = FromBt(output.m_pointInWorld) - inflation * c.n_G;
+    t.p_mesh_G = p_inflated_G - inflation * c.n_G;
     for (int k = 0; k < 3; ++k) t.triangle_G[k] = X_GM * FromBt(v[k]);
     found.push_back(t);
   };
