@@ -89,6 +89,7 @@ KktSolver::KktSolver(const System& system, Method method) : system_(system), met
                                         tree_row_, columns_, method_ == Method::kTree);
     G_ = MatX::Zero(ne_, nv_);
     Y_ = MatX::Zero(nv_ + nc_tree_, ne_);
+    S_ = MatX::Zero(ne_, ne_);
   }
 }
 
@@ -148,12 +149,24 @@ void KktSolver::FactorizeMatrices(const State& state) {
     tree_->Solve(tree_rhs_, y_);
     Y_.col(i) = y_;
   }
+  S_.noalias() = G_ * Y_.topRows(nv_);
   schur_.setThreshold(kSchurThreshold);
-  schur_.compute(G_ * Y_.topRows(nv_));
-  schur_inverse_ = schur_.pseudoInverse();
+  schur_.compute(S_);
   // Redundant extra constraints: the multipliers are least-squares ones, exact only when the
-  // right-hand side is consistent; the residual tells.
+  // right-hand side is consistent; the residual tells. A full-rank S is inverted through an LU
+  // whose buffers are reused (the pseudo-inverse allocates).
   residual_check_ = schur_.rank() < ne_;
+  if (residual_check_) {
+    schur_inverse_ = schur_.pseudoInverse();
+  } else {
+    // S^-1 = U^-1 L^-1 P, from the permutation matrix P (P S = L U) by two solves in place.
+    schur_lu_.compute(S_);
+    schur_inverse_.setZero(ne_, ne_);
+    const auto& p = schur_lu_.permutationP().indices();
+    for (int i = 0; i < ne_; ++i) schur_inverse_(p[i], i) = 1.0;
+    schur_lu_.matrixLU().triangularView<Eigen::UnitLower>().solveInPlace(schur_inverse_);
+    schur_lu_.matrixLU().triangularView<Eigen::Upper>().solveInPlace(schur_inverse_);
+  }
 }
 
 void KktSolver::GatherTreeRhs(const VecX& rhs, VecX& tree_rhs) const {

@@ -122,9 +122,10 @@ class KktSolver {
   // Schur part: the extra constraints, G (ne x nv), Y = K_T^-1 G^T, S = G Y.
   std::vector<int> extra_constraints_, extra_row_;  // extra_row_ per constraint (-1: tree)
   int ne_ = 0;
-  MatX G_, Y_;
-  Eigen::CompleteOrthogonalDecomposition<MatX> schur_;
-  MatX schur_inverse_;          // the pseudo-inverse of S (ne x ne, small)
+  MatX G_, Y_, S_;
+  Eigen::CompleteOrthogonalDecomposition<MatX> schur_;  // tells S's rank
+  Eigen::PartialPivLU<MatX> schur_lu_;                  // inverts a full-rank S in place
+  MatX schur_inverse_;  // S^-1, or its pseudo-inverse when S is rank-deficient (ne x ne, small)
   bool residual_check_ = true;  // CheckSolution computes the residual (see there)
   // The positions of the last successful Factorize and a buffer to compare them with.
   bool factorized_ = false;
