@@ -163,7 +163,9 @@ TEST(EvaluationAllocationTest, CvodeRightHandSideDoesNotAllocate) {
   // not: the three linear solvers make different numbers of evaluations in those steps and
   // the same number of mallocs.
   const auto system = MakeArm26WithoutWraps();
+#ifdef SINEW_COUNTS_MALLOC
   long first_mallocs = -1, first_evaluations = -1;
+#endif
   for (const char* name : {"cvode", "cvode-gmres", "cvode-gmres-bd"}) {
     State state = MakeDefaultState(*system);
     state.inputs.setConstant(0.3);  // held (no controller): the muscles pull
