@@ -9,12 +9,16 @@
 #include <sinew/io/osim_reader.h>
 #include <sinew/opensim/build_system.h>
 #include <sinew/opensim/parser.h>
+#include <sinew/paths/wrap_cylinder.h>
+#include <sinew/paths/wrap_cylinder_obst.h>
+#include <sinew/paths/wrap_ellipsoid.h>
+#include <sinew/paths/wrap_sphere.h>
+#include <sinew/paths/wrap_sphere_obst.h>
+#include <sinew/paths/wrap_torus.h>
 
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <new>
 #include <string>
@@ -107,36 +111,18 @@ TEST(EvaluationAllocationTest, ChainWithCouplersEvaluatesWithoutHeapUse) {
   EXPECT_EQ(AllocationsPerEvaluations(system, state, 10), 0);
 }
 
-// arm26's six Thelen2003Muscles on their paths without the PathWraps (wrapping still allocates:
-// 310 allocations over 10 evaluations of arm26's 7 PathWraps; docs/muscles.md).
-std::unique_ptr<System> MakeArm26WithoutWraps() {
-  const std::string file =
-      std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-models/Models/Arm26/arm26.osim";
-  std::ifstream in(file);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (size_t at = text.find("<PathWrapSet"); at != std::string::npos;
-       at = text.find("<PathWrapSet", at)) {
-    const std::string end = "</PathWrapSet>";
-    const size_t close = text.find(end, at);
-    const size_t self_closing = text.find("/>", at);
-    const size_t stop = self_closing < text.find('>', at) + 1 ? self_closing + 2
-                        : close == std::string::npos          ? text.size()
-                                                              : close + end.size();
-    text.erase(at, stop - at);
-  }
-  EXPECT_EQ(text.find("<PathWrap "), std::string::npos);
-  const model::ModelSpec spec = io::ReadOsimString(text, file);
+// arm26: six Thelen2003Muscles on paths wrapped by 7 PathWraps over 2 cylinders and 2
+// ellipsoids.
+std::unique_ptr<System> MakeArm26() {
   opensim::OpenSimParser parser;
-  auto system = std::make_unique<System>(spec.gravity);
-  parser.ParseSpec(*system, spec);
-  system->Finalize();
-  return system;
+  return parser.Parse(std::string(SINEW_TEST_DATA_DIR) +
+                      "/opensim-org/opensim-models/Models/Arm26/arm26.osim");
 }
 
 TEST(EvaluationAllocationTest, MusclesOnPathsEvaluateWithoutHeapUse) {
   // Each evaluation computes the muscles' paths (thread-local buffers) and tensions, and their
   // state derivatives.
-  const auto system = MakeArm26WithoutWraps();
+  const auto system = MakeArm26();
   ASSERT_EQ(system->num_state_variables(), 12);
   State state = MakeDefaultState(*system);
   state.u.setConstant(0.5);
@@ -153,42 +139,95 @@ TEST(EvaluationAllocationTest, MusclesOnPathsEvaluateWithoutHeapUse) {
   EXPECT_EQ(g_allocations.load() + g_mallocs.load(), 0);
 }
 
-TEST(EvaluationAllocationTest, CvodeRightHandSideDoesNotAllocate) {
+TEST(EvaluationAllocationTest, WrappedMusclePathsEvaluateWithoutHeapUse) {
+  // At the default pose and with the elbow flexed, arm26's paths wrap and unwrap.
+  const auto system = MakeArm26();
+  for (const double elbow : {0.0, 1.2, 2.2}) {
+    State state = MakeDefaultState(*system);
+    SetCoordinateValue(*system, state, "r_elbow_flex", elbow);
+    PlaceBodies(*system, state);
+    state.u.setConstant(0.5);
+    state.inputs.setConstant(0.3);
+    EXPECT_EQ(AllocationsPerEvaluations(*system, state, 10), 0) << "elbow " << elbow;
+  }
+}
+
+TEST(EvaluationAllocationTest, EveryWrapSurfaceWrapsWithoutHeapUse) {
+  // Each surface type wraps a segment that crosses it (arc points, for drawing, are not asked
+  // for); the cylinder also with OpenSim's tangency refinement (a path with several wraps).
+  using namespace paths;
+  const Vec3 p(-0.05, 0.01, 0.01), s(0.05, 0.01, -0.01);  // crosses every surface at 1 cm
+  const WrapCylinder cylinder(0.02, 0.2, {});
+  const WrapSphere sphere(0.02, {});
+  const WrapEllipsoid ellipsoid({0.02, 0.03, 0.04}, {});
+  const WrapTorus torus(0.035, 0.08, {});  // P and S straddle its tube at (0.08, 0, 0)
+  const WrapCylinderObst cylinder_obstacle(0.02, WrapCylinderObst::Direction::kLeftHand);
+  const WrapSphereObst sphere_obstacle(0.02);
+  const struct {
+    const char* name;
+    const WrapSurface& surface;
+    Vec3 p, s;
+    bool single_wrap;
+  } cases[] = {{"WrapCylinder", cylinder, p, s, true},
+               {"WrapCylinder refined", cylinder, p, s, false},
+               {"WrapSphere", sphere, p, s, true},
+               {"WrapEllipsoid", ellipsoid, p, s, true},
+               {"WrapTorus", torus, {0.07, 0.0, -0.06}, {0.07, 0.0, 0.06}, true},
+               {"WrapCylinderObst", cylinder_obstacle, p, s, true},
+               {"WrapSphereObst", sphere_obstacle, p, s, true}};
+  for (const auto& c : cases) {
+    WrapOptions options;
+    options.single_wrap = c.single_wrap;
+    g_allocations = 0;
+    g_mallocs = 0;
+    g_counting = true;
+    const WrapResult result = c.surface.Wrap(c.p, c.s, options);
+    g_counting = false;
+    EXPECT_TRUE(result.wrapped) << c.name;
+    EXPECT_GT(result.arc_length, 0.0) << c.name;
+    EXPECT_EQ(g_allocations.load() + g_mallocs.load(), 0) << c.name;
+  }
+}
+
+// Heap allocations made by `steps` further steps of `integrator` (each Advance is one step).
+long AllocationsPerSteps(Integrator& integrator, State& state, int steps) {
+  g_allocations = 0;
+  g_mallocs = 0;
+  g_counting = true;
+  for (int i = 0; i < steps; ++i) integrator.Advance(state, 1.0);
+  g_counting = false;
+  return g_allocations.load() + g_mallocs.load();
+}
+
+TEST(EvaluationAllocationTest, CvodeStepsWithoutHeapUse) {
   // CVODE's right-hand side (unpack into the scratch State, evaluate, write CVODE's vector in
-  // place), the block-diagonal preconditioner (setup and solve) and each step's bookkeeping
-  // reuse their buffers: after a few steps that size them, 20 further steps make no
-  // operator-new allocation. malloc (Eigen's temporaries) is still called per
-  // step, 8 times on this model, by the position and velocity projections (CalcPositionErrors,
-  // ProjectVelocities, KktSolver::Solve) and GatherVelocities; the evaluations themselves do
-  // not: the three linear solvers make different numbers of evaluations in those steps and
-  // the same number of mallocs.
-  const auto system = MakeArm26WithoutWraps();
-#ifdef SINEW_COUNTS_MALLOC
-  long first_mallocs = -1, first_evaluations = -1;
-#endif
+  // place), the block-diagonal preconditioner (setup and solve), the projections onto the
+  // constraints and each step's bookkeeping reuse their buffers: after a few steps that size
+  // them, 20 further steps allocate nothing.
+  const auto system = MakeArm26();
   for (const char* name : {"cvode", "cvode-gmres", "cvode-gmres-bd"}) {
     State state = MakeDefaultState(*system);
     state.inputs.setConstant(0.3);  // held (no controller): the muscles pull
     auto integrator = MakeIntegrator(name, *system, {.accuracy = 1e-6});
     for (int i = 0; i < 5; ++i) integrator->Advance(state, 1.0);
     const long evaluations = integrator->stats().evaluations;
-    g_allocations = 0;
-    g_mallocs = 0;
-    g_counting = true;
-    for (int i = 0; i < 20; ++i) integrator->Advance(state, 1.0);
-    g_counting = false;
-    const long window = integrator->stats().evaluations - evaluations;
-    EXPECT_GT(window, 20) << name;
-    EXPECT_EQ(g_allocations.load(), 0) << name;
-#ifdef SINEW_COUNTS_MALLOC
-    if (first_mallocs < 0) {
-      first_mallocs = g_mallocs.load();
-      first_evaluations = window;
-    } else {
-      EXPECT_NE(window, first_evaluations) << name;  // else the comparison shows nothing
-      EXPECT_EQ(g_mallocs.load(), first_mallocs) << name;
-    }
-#endif
+    EXPECT_EQ(AllocationsPerSteps(*integrator, state, 20), 0) << name;
+    EXPECT_GT(integrator->stats().evaluations - evaluations, 20) << name;
+  }
+}
+
+TEST(EvaluationAllocationTest, EulerStepsWithoutHeapUse) {
+  // Semi-implicit Euler's step (evaluation, velocity solve, position and velocity
+  // projections) on arm26's muscles and on a chain whose couplers need projecting.
+  const auto arm26 = MakeArm26();
+  const System chain = testing::MakeChain(20, JointForm::kParameterized, 3);
+  for (const System* system : {static_cast<const System*>(arm26.get()), &chain}) {
+    State state = MakeDefaultState(*system);
+    state.inputs.setConstant(0.3);
+    auto integrator = MakeIntegrator("euler", *system, {.step = 1e-3});
+    for (int i = 0; i < 5; ++i) integrator->Advance(state, 1.0);
+    EXPECT_EQ(AllocationsPerSteps(*integrator, state, 20), 0) << system->num_bodies();
+    EXPECT_EQ(integrator->stats().steps, 25);
   }
 }
 

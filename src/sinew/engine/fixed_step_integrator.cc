@@ -58,7 +58,8 @@ bool FixedStepIntegrator::ProjectWithStartFactorization(State& later) {
   const int nv = kkt_.num_velocities();
   double previous = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration <= kMaxIterations; ++iteration) {
-    const VecX phi = CalcPositionErrors(system_, later);
+    VecX& phi = phi_;
+    CalcPositionErrors(system_, later, phi);
     const double error = phi.size() == 0 ? 0.0 : phi.lpNorm<Eigen::Infinity>();
     if (error <= ConstraintTolerance()) return true;
     if (!(error < 0.1 * previous)) {

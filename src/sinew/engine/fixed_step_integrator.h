@@ -49,7 +49,7 @@ class FixedStepIntegrator : public Integrator {
   std::string name_;
   int steps_without_start_factorization_ = 0;
   State before_;                // the positions before the last start-factorization iteration
-  VecX rhs_, solution_, step_;  // buffers of ProjectWithStartFactorization
+  VecX phi_, rhs_, solution_, step_;  // buffers of ProjectWithStartFactorization
 };
 
 }  // namespace sinew::engine

@@ -263,25 +263,34 @@ class SemiImplicitEuler final : public FixedStepIntegrator {
   void Step(State& state, double h, double t_new) override {
     const int nv = kkt_.num_velocities();
     // Accelerations' right-hand side f at (x, v); the same matrix serves the velocity solve.
-    VecX zdot(system_.num_state_variables());
-    const Accelerations& acc = Evaluate(state, zdot);
+    zdot_.resize(system_.num_state_variables());
+    const Accelerations& acc = Evaluate(state, zdot_);
     // M vdot + J^T lambda = f  =>  f = M vdot + J^T lambda; the new velocities solve
     // M v+ + J^T (h lambda+) = M v + h f, J v+ = c(t+h).
-    const VecX v0 = GatherVelocities(system_, kkt_, state);
-    VecX rhs(nv + kkt_.num_equations());
-    rhs.head(nv) = kkt_.MultiplyMass(v0 + h * acc.vdot);
-    State later = state;
-    later.t = t_new;
-    SetVelocityRhs(later, rhs);
+    v_.resize(nv);
+    GatherVelocities(system_, kkt_, state, v_);
+    v_ += h * acc.vdot;
+    rhs_.resize(nv + kkt_.num_equations());
+    kkt_.MultiplyMass(v_, mv_);
+    rhs_.head(nv) = mv_;
+    later_ = state;  // copies into the buffers of the previous step's state
+    later_.t = t_new;
+    SetVelocityRhs(later_, rhs_);
     // h * J^T lambda of the acceleration solve is replaced by the new impulse.
-    const VecX v1 = kkt_.Solve(rhs).head(nv);
+    kkt_.Solve(rhs_, solution_);
+    v_ = solution_.head(nv);
     // Positions move with the new velocities.
-    ScatterVelocities(system_, kkt_, v1, later);
-    ApplyPositionDisplacement(system_, kkt_, h * v1, later);
-    later.z += h * zdot;
-    ProjectAfterStep(later, state.t);
-    state = std::move(later);
+    ScatterVelocities(system_, kkt_, v_, later_);
+    v_ *= h;
+    ApplyPositionDisplacement(system_, kkt_, v_, later_);
+    later_.z += h * zdot_;
+    ProjectAfterStep(later_, state.t);
+    std::swap(state, later_);
   }
+
+  // Buffers reused from step to step (no heap use once sized).
+  VecX zdot_, v_, mv_, rhs_, solution_;
+  State later_;
 };
 
 // Linearized implicit Euler (fixed step): the applied loads f(x, v) are linearized about the

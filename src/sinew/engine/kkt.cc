@@ -256,11 +256,16 @@ void KktSolver::ThrowSingular(double residual) const {
 }
 
 VecX KktSolver::MultiplyMass(const VecX& x) const {
-  VecX y = VecX::Zero(nv_);
+  VecX y;
+  MultiplyMass(x, y);
+  return y;
+}
+
+void KktSolver::MultiplyMass(const VecX& x, VecX& y) const {
+  y.setZero(nv_);
   for (int b = 1; b < system_.num_bodies(); ++b) {
     y.segment<6>(BodyColumn(b)) = mass_[b] * x.segment<6>(BodyColumn(b));
   }
-  return y;
 }
 
 VecX KktSolver::MultiplyJacobian(const VecX& x) const {
@@ -305,6 +310,12 @@ VecX KktSolver::MultiplyJacobianTranspose(const VecX& y) const {
 
 VecX GatherVelocities(const System& system, const KktSolver& kkt, const State& state) {
   VecX v(kkt.num_velocities());
+  GatherVelocities(system, kkt, state, v);
+  return v;
+}
+
+void GatherVelocities(const System& system, const KktSolver& kkt, const State& state,
+                      Eigen::Ref<VecX> v) {
   for (int b = 1; b < system.num_bodies(); ++b) {
     v.segment<3>(kkt.BodyColumn(b)) = state.bodies[b].w_GB;
     v.segment<3>(kkt.BodyColumn(b) + 3) = state.bodies[b].v_GB;
@@ -312,7 +323,6 @@ VecX GatherVelocities(const System& system, const KktSolver& kkt, const State& s
   for (int c = 0; c < system.num_coordinates(); ++c) {
     if (system.IsIntegrated(c)) v[kkt.SpeedColumn(c)] = state.u[c];
   }
-  return v;
 }
 
 void ScatterVelocities(const System& system, const KktSolver& kkt, Eigen::Ref<const VecX> v,

@@ -89,6 +89,8 @@ class KktSolver {
 
   /// M * x (x has nv entries) with the M of the last Factorize.
   VecX MultiplyMass(const VecX& x) const;
+  /// The same into `y`, not `x` (resized; no heap use once it has the size).
+  void MultiplyMass(const VecX& x, VecX& y) const;
   /// J * x with the J of the last Factorize.
   VecX MultiplyJacobian(const VecX& x) const;
   /// The dense matrix [M J^T; J 0] of the last Factorize (small systems; implicit schemes).
@@ -140,6 +142,9 @@ class KktSolver {
 
 /// Packs the velocity unknowns of `state` (body twists, integrated speeds) in KKT order.
 VecX GatherVelocities(const System& system, const KktSolver& kkt, const State& state);
+/// The same into `v`, of size KktSolver::num_velocities() (no heap use).
+void GatherVelocities(const System& system, const KktSolver& kkt, const State& state,
+                      Eigen::Ref<VecX> v);
 /// Writes velocity unknowns back into `state` (body twists, integrated speeds).
 void ScatterVelocities(const System& system, const KktSolver& kkt, Eigen::Ref<const VecX> v,
                        State& state);

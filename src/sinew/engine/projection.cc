@@ -8,17 +8,35 @@
 #include <vector>
 
 namespace sinew::engine {
+namespace {
+
+// The projections' buffers, one set per thread (a System serves many threads).
+struct ProjectionBuffers {
+  VecX phi, rhs, solution, v, mv;
+  std::vector<double> q, du, dq;  // one parameterized joint's coordinates
+};
+ProjectionBuffers& Buffers() {
+  thread_local ProjectionBuffers buffers;
+  return buffers;
+}
+
+}  // namespace
 
 VecX CalcPositionErrors(const System& system, const State& state) {
+  VecX phi;
+  CalcPositionErrors(system, state, phi);
+  return phi;
+}
+
+void CalcPositionErrors(const System& system, const State& state, VecX& phi) {
   int n = 0;
   for (const auto& c : system.constraints()) n += c->NumEquations();
-  VecX phi(n);
+  phi.resize(n);
   int row = 0;
   for (const auto& c : system.constraints()) {
     c->CalcPositionError(system, state, phi.segment(row, c->NumEquations()));
     row += c->NumEquations();
   }
-  return phi;
 }
 
 VecX CalcVelocityErrors(const System& system, const State& state, KktSolver& kkt) {
@@ -40,10 +58,15 @@ void ApplyPositionDisplacement(const System& system, const KktSolver& kkt, const
     s.quat_GB = (QuatFromRotationVector(dx.segment<3>(kkt.BodyColumn(b))) * s.quat_GB).normalized();
     s.p_GB += dx.segment<3>(kkt.BodyColumn(b) + 3);
   }
+  std::vector<double>& q = Buffers().q;
+  std::vector<double>& du = Buffers().du;
+  std::vector<double>& dq = Buffers().dq;
   for (const Joint& joint : system.joints()) {
     if (joint.form != JointForm::kParameterized || joint.coordinates.empty()) continue;
     const size_t n = joint.coordinates.size();
-    std::vector<double> q(n), du(n), dq(n);
+    q.resize(n);
+    du.resize(n);
+    dq.resize(n);
     for (size_t i = 0; i < n; ++i) {
       q[i] = state.q[joint.coordinates[i]];
       du[i] = dx[kkt.SpeedColumn(joint.coordinates[i])];
@@ -56,9 +79,11 @@ void ApplyPositionDisplacement(const System& system, const KktSolver& kkt, const
 bool ProjectPositions(const System& system, State& state, double tolerance, KktSolver& kkt,
                       int max_iterations, long* factorizations) {
   const int nv = kkt.num_velocities();
+  ProjectionBuffers& buffers = Buffers();
+  VecX& phi = buffers.phi;
   double previous = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration <= max_iterations; ++iteration) {
-    const VecX phi = CalcPositionErrors(system, state);
+    CalcPositionErrors(system, state, phi);
     const double error = phi.size() == 0 ? 0.0 : phi.lpNorm<Eigen::Infinity>();
     if (error <= tolerance) return true;
     if (iteration == max_iterations) break;
@@ -74,9 +99,11 @@ bool ProjectPositions(const System& system, State& state, double tolerance, KktS
       if (factorizations) ++*factorizations;
     }
     previous = error;
-    VecX rhs = VecX::Zero(nv + phi.size());
-    rhs.tail(phi.size()) = -phi;
-    ApplyPositionDisplacement(system, kkt, kkt.Solve(rhs).head(nv), state);
+    buffers.rhs.setZero(nv + phi.size());
+    buffers.rhs.tail(phi.size()) = -phi;
+    kkt.Solve(buffers.rhs, buffers.solution);
+    buffers.v = buffers.solution.head(nv);
+    ApplyPositionDisplacement(system, kkt, buffers.v, state);
   }
   return false;
 }
@@ -84,15 +111,20 @@ bool ProjectPositions(const System& system, State& state, double tolerance, KktS
 void ProjectVelocities(const System& system, State& state, KktSolver& kkt) {
   const int nv = kkt.num_velocities();
   kkt.Factorize(state);
-  const VecX v0 = GatherVelocities(system, kkt, state);
-  VecX rhs(nv + kkt.num_equations());
-  rhs.head(nv) = kkt.MultiplyMass(v0);
+  ProjectionBuffers& buffers = Buffers();
+  buffers.v.resize(nv);
+  GatherVelocities(system, kkt, state, buffers.v);
+  VecX& rhs = buffers.rhs;
+  rhs.resize(nv + kkt.num_equations());
+  kkt.MultiplyMass(buffers.v, buffers.mv);
+  rhs.head(nv) = buffers.mv;
   const auto& constraints = system.constraints();
   for (size_t k = 0; k < constraints.size(); ++k) {
     constraints[k]->CalcVelocityRhs(
         system, state, rhs.segment(nv + kkt.EquationRow(k), constraints[k]->NumEquations()));
   }
-  ScatterVelocities(system, kkt, kkt.Solve(rhs).head(nv), state);
+  kkt.Solve(rhs, buffers.solution);
+  ScatterVelocities(system, kkt, buffers.solution.head(nv), state);
 }
 
 void ProjectState(const System& system, State& state, double tolerance) {

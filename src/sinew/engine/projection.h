@@ -1,5 +1,6 @@
 // Projection of a state onto the constraint manifold: positions by Newton iterations, then
-// velocities by a mass-weighted least-squares correction (both through the KKT matrix).
+// velocities by a mass-weighted least-squares correction (both through the KKT matrix). Their
+// buffers are one set per thread: once sized, a projection makes no heap allocation.
 #pragma once
 
 #include <sinew/engine/kkt.h>
@@ -10,6 +11,8 @@ namespace sinew::engine {
 
 /// All constraint position errors phi (in KktSolver equation order).
 VecX CalcPositionErrors(const System& system, const State& state);
+/// The same into `phi` (resized; no heap use once it has the size).
+void CalcPositionErrors(const System& system, const State& state, VecX& phi);
 /// All constraint velocity errors J v - c.
 VecX CalcVelocityErrors(const System& system, const State& state, KktSolver& kkt);
 

@@ -27,7 +27,7 @@ void StateVector::PackInto(const State& state, Eigen::Ref<VecX> y) const {
   for (int c = 0; c < system_.num_coordinates(); ++c) {
     if (system_.IsIntegrated(c)) y[7 * nb_ + system_.SpeedIndex(c)] = state.q[c];
   }
-  y.segment(np_, nv_) = GatherVelocities(system_, kkt_, state);
+  GatherVelocities(system_, kkt_, state, y.segment(np_, nv_));
   y.tail(nz_) = state.z;
 }
 

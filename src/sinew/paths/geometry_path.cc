@@ -124,6 +124,7 @@ void GeometryPath::CalcState(std::span<const double> q, std::span<const Transfor
     CalcFunctionState(q, state);
     return;
   }
+  state.points.reserve(points_.size() + 2 * wraps_.size());  // room for every tangent point
   state.arc_G.resize(with_arc_points ? wraps_.size() : 0);
   for (std::vector<Vec3>& arc : state.arc_G) arc.clear();
   for (size_t i = 0; i < points_.size(); ++i) {
@@ -254,13 +255,15 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
   return true;
 }
 
-GeometryPath::TangentPointReads::TangentPointReads(int num_wraps)
-    : read(static_cast<size_t>(num_wraps)),
-      p_BP_read(static_cast<size_t>(num_wraps)),
-      p_GP_read(static_cast<size_t>(num_wraps)),
-      p_GP_current(static_cast<size_t>(num_wraps)) {}
+void TangentPointReads::Reset(int num_wraps) {
+  const size_t n = static_cast<size_t>(num_wraps);
+  read.assign(n, {false, false});
+  p_BP_read.resize(n);
+  p_GP_read.resize(n);
+  p_GP_current.resize(n);
+}
 
-void GeometryPath::TangentPointReads::Read(PathPointState& point) {
+void TangentPointReads::Read(PathPointState& point) {
   if (point.wrap < 0) return;
   const size_t w = static_cast<size_t>(point.wrap);
   const size_t which = point.arc_length_to_next >= 0.0 ? 0 : 1;
@@ -273,7 +276,7 @@ void GeometryPath::TangentPointReads::Read(PathPointState& point) {
   point.p_GP = p_GP_read[w][which];
 }
 
-void GeometryPath::TangentPointReads::Place(PathPointState& point) {
+void TangentPointReads::Place(PathPointState& point) {
   const size_t w = static_cast<size_t>(point.wrap);
   const size_t which = point.arc_length_to_next >= 0.0 ? 0 : 1;
   p_GP_current[w][which] = point.p_GP;
@@ -283,7 +286,7 @@ void GeometryPath::TangentPointReads::Place(PathPointState& point) {
   }
 }
 
-Vec3 GeometryPath::TangentPointReads::CurrentLocation(const PathPointState& point) const {
+Vec3 TangentPointReads::CurrentLocation(const PathPointState& point) const {
   if (point.wrap < 0) return point.p_GP;
   const size_t which = point.arc_length_to_next >= 0.0 ? 0 : 1;
   return p_GP_current[static_cast<size_t>(point.wrap)][which];
@@ -308,10 +311,13 @@ void GeometryPath::ApplyWraps(std::span<const double> q, std::span<const Transfo
   state.stale_tangent_points = 0;
   const int num_wraps = static_cast<int>(wraps_.size());
   if (num_wraps == 0) return;
-  std::vector<int> order(static_cast<size_t>(num_wraps));
+  std::vector<int>& order = state.wrap_passes.order;
+  order.resize(static_cast<size_t>(num_wraps));
   for (int i = 0; i < num_wraps; ++i) order[static_cast<size_t>(i)] = i;
-  std::vector<WrapOutcome> outcomes(static_cast<size_t>(num_wraps), WrapOutcome::kNoWrap);
-  TangentPointReads reads(num_wraps);
+  std::vector<WrapOutcome>& outcomes = state.wrap_passes.outcomes;
+  outcomes.assign(static_cast<size_t>(num_wraps), WrapOutcome::kNoWrap);
+  TangentPointReads& reads = state.wrap_passes.reads;
+  reads.Reset(num_wraps);
   const int max_passes = num_wraps < 2 ? 1 : kMaxWrapPasses;
   double last_length = std::numeric_limits<double>::infinity();
   for (int pass = 0; pass < max_passes; ++pass) {

@@ -53,6 +53,35 @@ struct LengthSlope {
   double dL_dq = 0.0;             ///< m per rad or m per m: minus OpenSim's moment arm.
 };
 
+/// What wrapping one object over its range gave (OpenSim's WrapAction, for its reordering).
+enum class WrapOutcome { kNoWrap, kPointInside, kWrapped };
+
+/// OpenSim caches a point's location in ground the first time it is read in an evaluation;
+/// moving a tangent point in a later pass does not refresh that cache, so the path's straight
+/// segments (its length) keep the location first read, while the surfaces wrap the point where
+/// it is now (docs/paths.md). Per wrap, for T1 and T2: whether read, the location read (in the
+/// body and in ground), and where the point is now.
+struct TangentPointReads {
+  /// Forgets every read, for `num_wraps` wraps (keeps the buffers).
+  void Reset(int num_wraps);
+  /// Reads `point`: the first read of a tangent point keeps its location, later reads give it.
+  void Read(PathPointState& point);
+  /// A tangent point just placed: remembers where it is, and takes the location read, if any.
+  void Place(PathPointState& point);
+  /// Where a path point is now (for the surfaces), in ground.
+  Vec3 CurrentLocation(const PathPointState& point) const;
+  std::vector<std::array<bool, 2>> read;
+  std::vector<std::array<Vec3, 2>> p_BP_read, p_GP_read, p_GP_current;
+};
+
+/// The bookkeeping of GeometryPath's wrapping passes, kept with the PathState so that a path
+/// evaluated again reuses its buffers (no heap use once they are sized).
+struct WrapPasses {
+  std::vector<int> order;  ///< the wraps in the order they are applied
+  std::vector<WrapOutcome> outcomes;
+  TangentPointReads reads;
+};
+
 /// A path at one pose. Segment i joins points[i] and points[i + 1].
 struct PathState {
   std::vector<PathPointState> points;
@@ -79,6 +108,8 @@ struct PathState {
   /// Null for every other path.
   const functions::Function* speed_function = nullptr;
   mutable std::vector<double> speed_arguments;
+  /// Scratch of the wrapping passes (GeometryPath::CalcState's own).
+  WrapPasses wrap_passes;
 };
 
 /// When OpenSim's WrapCylinder refines its tangent points toward tangency with the helix
@@ -137,24 +168,6 @@ class GeometryPath {
                  bool with_arc_points = false) const;
 
  private:
-  // What wrapping one object over its range gave (OpenSim's WrapAction, for its reordering).
-  enum class WrapOutcome { kNoWrap, kPointInside, kWrapped };
-  // OpenSim caches a point's location in ground the first time it is read in an evaluation;
-  // moving a tangent point in a later pass does not refresh that cache, so the path's
-  // straight segments (its length) keep the location first read, while the surfaces wrap the
-  // point where it is now (docs/paths.md). Per wrap, for T1 and T2: whether read, the location
-  // read (in the body and in ground), and where the point is now.
-  struct TangentPointReads {
-    explicit TangentPointReads(int num_wraps);
-    // Reads `point`: the first read of a tangent point keeps its location, later reads give it.
-    void Read(PathPointState& point);
-    // A tangent point just placed: remembers where it is, and takes the location read, if any.
-    void Place(PathPointState& point);
-    // Where a path point is now (for the surfaces), in ground.
-    Vec3 CurrentLocation(const PathPointState& point) const;
-    std::vector<std::array<bool, 2>> read;
-    std::vector<std::array<Vec3, 2>> p_BP_read, p_GP_read, p_GP_current;
-  };
   void ApplyWraps(std::span<const double> q, std::span<const Transform> X_GB, PathState& state,
                   bool with_arc_points) const;
   bool ApplyWrap(int wrap, std::span<const double> q, std::span<const Transform> X_GB,

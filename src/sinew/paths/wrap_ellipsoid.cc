@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 namespace sinew::paths {
 namespace {
@@ -100,19 +101,25 @@ PlanePoint ChoosePlanePoint(const Vec3& a, const Vec3& p1p2, const Vec3& r1, con
 // OpenSim's path over the ellipsoid from r1 to r2 in the plane n . x + d = 0 (scaled
 // coordinates; `factor` scales metres to them): a polyline of about 1 mm chords whose interior
 // points are where rays from a0 (the plane's point on the axis most normal to it) at evenly
-// turned angles leave the ellipsoid. The short way from r1 to r2, or the long way.
+// turned angles leave the ellipsoid. The short way from r1 to r2, or the long way. Only the
+// length and the points next to the ends are kept (no heap use); `points`, when given, gets
+// them all.
 struct Arc {
-  std::vector<Vec3> points;
   double length = 0.0;
+  int num_points = 2;  ///< r1, the interior points, r2
+  Vec3 after_r1 = Vec3::Zero(), before_r2 = Vec3::Zero();  ///< second and second-to-last
 };
 
 Arc CalcArc(const Vec3& r1, const Vec3& r2, const Vec3& a, const Vec3& n, double d,
-            bool long_way, double factor) {
+            bool long_way, double factor, std::vector<Vec3>* points) {
   Arc arc;
+  arc.after_r1 = r2;
+  arc.before_r2 = r1;
+  if (points) *points = {r1};
   const double chord = (r1 - r2).norm() / factor;
   if (chord < kChordLength) {
-    arc.points = {r1, r2};
     arc.length = (r1 - r2).norm();
+    if (points) points->push_back(r2);
     return arc;
   }
   const int segments = std::min(static_cast<int>(chord / kChordLength), kMaxChords);
@@ -130,8 +137,8 @@ Arc CalcArc(const Vec3& r1, const Vec3& r2, const Vec3& a, const Vec3& n, double
   const Vec3 normal = NormalizedOrZero(u1.cross(u2));
   const Vec3 across = normal.cross(u1);
   const Vec3 a0_scaled = a0.cwiseQuotient(a);
-  arc.points.reserve(static_cast<size_t>(segments) + 1);
-  arc.points.push_back(r1);
+  if (points) points->reserve(static_cast<size_t>(segments) + 1);
+  Vec3 previous = r1;
   for (int i = 1; i < segments; ++i) {
     const double phi = i * step;
     const Vec3 ray = std::cos(phi) * u1 + std::sin(phi) * across;
@@ -141,12 +148,16 @@ Arc CalcArc(const Vec3& r1, const Vec3& r2, const Vec3& a, const Vec3& n, double
     const double qb = 2.0 * ray_scaled.dot(a0_scaled);
     const double qc = a0_scaled.squaredNorm() - 1.0;
     const double s = (-qb + std::sqrt(qb * qb - 4.0 * qa * qc)) / (2.0 * qa);
-    arc.points.push_back(a0 + s * ray);
+    const Vec3 point = a0 + s * ray;
+    if (i == 1) arc.after_r1 = point;
+    arc.before_r2 = point;
+    arc.length += (point - previous).norm();
+    if (points) points->push_back(point);
+    previous = point;
   }
-  arc.points.push_back(r2);
-  for (size_t i = 0; i + 1 < arc.points.size(); ++i) {
-    arc.length += (arc.points[i + 1] - arc.points[i]).norm();
-  }
+  arc.length += (r2 - previous).norm();
+  arc.num_points = segments + 1;
+  if (points) points->push_back(r2);
   return arc;
 }
 
@@ -209,15 +220,14 @@ WrapResult WrapEllipsoid::Wrap(const Vec3& p_WP, const Vec3& p_WS,
   SolveEllipsoidTangentPoint(a, p1, p1_level, n, d, r1);
   SolveEllipsoidTangentPoint(a, p2, p2_level, n, d, r2);
 
-  Arc arc = CalcArc(r1, r2, a, n, d, false, factor);
+  std::vector<Vec3>* points = options.with_arc_points ? &result.arc_points : nullptr;
+  Arc arc = CalcArc(r1, r2, a, n, d, false, factor, points);
   // Under a quadrant, a path whose first or last chord turns back toward P or S goes the long
   // way round instead.
-  if (quadrant_.constrained() && arc.points.size() > 2) {
-    const Vec3& w1 = arc.points[1];
-    const Vec3& w2 = arc.points[arc.points.size() - 2];
-    if (NormalizedOrZero(p1 - r1).dot(NormalizedOrZero(w1 - r1)) > 0.0 ||
-        NormalizedOrZero(p2 - r2).dot(NormalizedOrZero(w2 - r2)) > 0.0) {
-      arc = CalcArc(r1, r2, a, n, d, true, factor);
+  if (quadrant_.constrained() && arc.num_points > 2) {
+    if (NormalizedOrZero(p1 - r1).dot(NormalizedOrZero(arc.after_r1 - r1)) > 0.0 ||
+        NormalizedOrZero(p2 - r2).dot(NormalizedOrZero(arc.before_r2 - r2)) > 0.0) {
+      arc = CalcArc(r1, r2, a, n, d, true, factor, points);
     }
   }
   result.wrapped = true;
@@ -225,10 +235,7 @@ WrapResult WrapEllipsoid::Wrap(const Vec3& p_WP, const Vec3& p_WS,
   result.p_WT1 = r1 / factor;
   result.p_WT2 = r2 / factor;
   result.arc_length = arc.length / factor;
-  if (options.with_arc_points) {
-    result.arc_points.reserve(arc.points.size());
-    for (const Vec3& point : arc.points) result.arc_points.push_back(point / factor);
-  }
+  for (Vec3& point : result.arc_points) point /= factor;
   return result;
 }
 
