@@ -14,6 +14,7 @@ constexpr double kPi = std::numbers::pi;
 // helix leave the cylinder's axis at angles within 0.1 degree, restarting at most 100 times; it
 // tests tangency at the helix's second sample, the helix being sampled every 2 mm.
 constexpr double kTangencyTolerance = 0.1 * kPi / 180.0;
+const double kCosTangencyTolerance = std::cos(kTangencyTolerance);
 constexpr int kMaxRefinements = 100;
 constexpr double kHelixSampleSpacing = 0.002;
 // Arc points returned for drawing: at most this many segments.
@@ -114,7 +115,10 @@ void SlideToApexPlane(const Vec3& p_WP, const Vec3& p_WS, double radius, bool fa
 struct Helix {
   double turn;
   double rise;
-  double Length(double radius) const { return std::hypot(radius * turn, rise); }
+  double Length(double radius) const {
+    const double arc = radius * turn;
+    return std::sqrt(arc * arc + rise * rise);
+  }
   // T1 turned by s turn about z and raised by s rise.
   Vec3 PointAt(const Vec3& p_WT1, double s) const {
     const double c = std::cos(s * turn), n = std::sin(s * turn);
@@ -131,13 +135,51 @@ Helix CalcHelix(const TangentPair& pair, bool long_way) {
   return {turn, pair.t2.z() - pair.t1.z()};
 }
 
+// The helix's samples next to its ends (at s = 1 / samples and 1 - 1 / samples) during the
+// tangency refinement. The refinement moves T1 and T2 along their generators only, so the
+// helix's turn and T1's radial position stay: a sample's position about the axis changes only
+// with the number of samples, and is recomputed only then; its height follows T1 and the rise.
+class HelixSamplesNearEnds {
+ public:
+  HelixSamplesNearEnds(const Helix& helix, const Vec3& p_WT1) : helix_(helix), p_WT1_(p_WT1) {}
+  // Sets the number of samples (>= 2) and the current rise.
+  void Update(int samples, double rise) {
+    helix_.rise = rise;
+    if (samples == samples_) return;
+    samples_ = samples;
+    s_ = 1.0 / samples;
+    after_t1_ = helix_.PointAt(p_WT1_, s_);
+    before_t2_ = helix_.PointAt(p_WT1_, 1.0 - s_);
+  }
+  // The samples for T1 at height z1 (as Helix::PointAt from T1 there).
+  Vec3 AfterT1(double z1) const { return {after_t1_.x(), after_t1_.y(), z1 + s_ * helix_.rise}; }
+  Vec3 BeforeT2(double z1) const {
+    return {before_t2_.x(), before_t2_.y(), z1 + (1.0 - s_) * helix_.rise};
+  }
+
+ private:
+  Helix helix_;
+  Vec3 p_WT1_;
+  int samples_ = -1;
+  double s_ = 0.0;
+  Vec3 after_t1_ = Vec3::Zero(), before_t2_ = Vec3::Zero();
+};
+
+// Whether the segment along d1 and the helix's start along d2 leave the cylinder's axis at
+// angles a1, a2 (in [0, pi]) within the tolerance: |a1 - a2| <= tol exactly when
+// cos(a1 - a2) = cos a1 cos a2 + sin a1 sin a2 >= cos tol (no arc cosines).
+bool WithinTangencyTolerance(const Vec3& d1, const Vec3& d2) {
+  // Both sides times |d1| |d2|.
+  const double radial = std::sqrt(Radial(d1).squaredNorm() * Radial(d2).squaredNorm());
+  return d1.z() * d2.z() + radial >=
+         kCosTangencyTolerance * std::sqrt(d1.squaredNorm() * d2.squaredNorm());
+}
+
 // OpenSim's tangency refinement of one tangent point T (from path point X): when the segment
 // X-T and the helix's start T-W leave the axis at angles differing by more than the tolerance,
 // T moves along its generator 1.5 times toward where the line X-W passes it. True if it moved.
 bool RefineTangentPoint(const Vec3& p_WX, const Vec3& p_WW, Vec3* p_WT) {
-  const double segment_angle = std::acos(std::clamp((*p_WT - p_WX).normalized().z(), -1.0, 1.0));
-  const double helix_angle = std::acos(std::clamp((p_WW - *p_WT).normalized().z(), -1.0, 1.0));
-  if (std::abs(segment_angle - helix_angle) <= kTangencyTolerance) return false;
+  if (WithinTangencyTolerance(*p_WT - p_WX, p_WW - *p_WT)) return false;
   const Vec3 e = p_WW - p_WX;
   const double radial_squared = Radial(e).squaredNorm();
   if (radial_squared <= 0.0) return false;
@@ -202,15 +244,16 @@ WrapResult WrapCylinder::Wrap(const Vec3& p_WP, const Vec3& p_WS,
   if (std::abs(pair.t1.z()) > half_length && std::abs(pair.t2.z()) > half_length) return result;
 
   Helix helix = CalcHelix(pair, long_way);
+  HelixSamplesNearEnds near_ends(helix, pair.t1);
   for (int refinement = 0; !options.single_wrap && refinement < kMaxRefinements; ++refinement) {
     const int samples = static_cast<int>(helix.Length(radius_) / kHelixSampleSpacing);
     if (samples < 2) break;
-    const double s = 1.0 / samples;
+    near_ends.Update(samples, helix.rise);
     // As OpenSim does, T2's check uses the helix of the previous T2 started at the new T1.
-    const bool moved_t1 = RefineTangentPoint(p_WP, helix.PointAt(pair.t1, s), &pair.t1);
-    const bool moved_t2 = RefineTangentPoint(p_WS, helix.PointAt(pair.t1, 1.0 - s), &pair.t2);
+    const bool moved_t1 = RefineTangentPoint(p_WP, near_ends.AfterT1(pair.t1.z()), &pair.t1);
+    const bool moved_t2 = RefineTangentPoint(p_WS, near_ends.BeforeT2(pair.t1.z()), &pair.t2);
     if (!moved_t1 && !moved_t2) break;
-    helix = CalcHelix(pair, long_way);
+    helix.rise = pair.t2.z() - pair.t1.z();  // the turn stays (radial positions unchanged)
   }
 
   result.wrapped = true;
