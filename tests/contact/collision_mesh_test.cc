@@ -4,7 +4,8 @@
 // closed-form depth, in any pose of the groove, and comes to rest down in the groove under NSC
 // (on the closed-form height) and SMC (lower by its Hertz dents), where the hull would hold it
 // on top; on a cart that slides on a rail it does so with the cart, which moves as the
-// conserved momentum says. Against another mesh one of the two is its convex hull, exact for a
+// conserved momentum says; the groove upside down as a falling roof rests on a ground ball on
+// both walls. Against another mesh one of the two is its convex hull, exact for a
 // closed convex mesh and otherwise a Report warning.
 #include <gtest/gtest.h>
 #include <sinew/contact/collision_detection.h>
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -169,22 +171,26 @@ size_t RunNsc(Scene& scene, double t_end) {
   return testing::RunCollisionNsc(*scene.system, scene.state, scene.model, 0.5, t_end);
 }
 
-// Runs `scene` (SMC) to `t_end` with rk45 at accuracy 1e-9.
-void RunSmc(Scene& scene, double t_end) {
+// Runs `scene` (SMC) to `t_end` with rk45 at accuracy 1e-9 and steps up to `max_step` (s; 0: no
+// bound).
+void RunSmc(Scene& scene, double t_end, double max_step = 0.0) {
   engine::IntegratorSettings settings;
   settings.accuracy = 1e-9;
+  settings.step = max_step;
   auto integrator = engine::MakeIntegrator("rk45", *scene.system, settings);
   integrator->StepTo(scene.state, t_end);
 }
 
 // The height (m) of the ball's centre above the groove's bottom at rest under SMC (Hertz with
-// `material` on both shapes): each wall carries N = m g / (2 cos(a)) (no friction: the ball is
-// centred), dented by d = (N / (4/3 E* sqrt(r)))^(2/3) with E* = E / (2 (1 - nu^2)) and the
-// ball's radius (the walls are flat): (r - d) / cos(a).
-double SmcRestHeight(const CollisionMaterial& material, double* dent_out = nullptr) {
+// `material` on both shapes) when the two press together with the weight of `mass` (kg): each
+// wall carries N = mass g / (2 cos(a)) (no friction: the ball is centred), dented by
+// d = (N / (4/3 E* sqrt(r)))^(2/3) with E* = E / (2 (1 - nu^2)) and the ball's radius (the
+// walls are flat): (r - d) / cos(a).
+double SmcRestHeight(const CollisionMaterial& material, double mass = kM,
+                     double* dent_out = nullptr) {
   const double modulus =
       material.young_modulus / (2.0 * (1.0 - material.poisson_ratio * material.poisson_ratio));
-  const double load = kM * kG / (2.0 * kCos);
+  const double load = mass * kG / (2.0 * kCos);
   const double dent = std::pow(load / (4.0 / 3.0 * modulus * std::sqrt(kR)), 2.0 / 3.0);
   if (dent_out) *dent_out = dent;
   return (kR - dent) / kCos;
@@ -256,7 +262,7 @@ TEST(CollisionMeshTest, BallDroppedIntoAGroundGrooveSettlesOnItsHertzDentsWithSm
   engine::SetCoordinateValue(*scene.system, scene.state, "ty", 0.2);
   RunSmc(scene, 3.0);
   double dent = 0.0;
-  const double closed = SmcRestHeight(material, &dent);
+  const double closed = SmcRestHeight(material, kM, &dent);
   const engine::BodyState& ball = scene.state.bodies[1];
   // The residual bounce decays with the Hertz damping; at 3 s it is below 1e-8 m.
   EXPECT_NEAR(ball.p_GB.y(), closed, 1e-8);
@@ -344,6 +350,66 @@ TEST(CollisionMeshTest, BallDroppedIntoAGrooveOnACartSettlesOnItsHertzDentsWithS
             << ball.p_GB.x() - cart.p_GB.x() << " m off its axis; cart at " << cart.p_GB.x()
             << " m (closed form " << cart_x << ", error " << cart.p_GB.x() - cart_x << "); speeds "
             << ball.v_GB.norm() << ", " << cart.v_GB.norm() << " m/s\n";
+}
+
+// A roof "roof" (kCartMass, the groove upside down: its ContactMesh turned +90 degrees about z,
+// so that it opens towards -x) on a rail along x (coordinate "roof_x", from 0.3 m), gravity -x,
+// above a ground ContactSphere "post" (radius kR) at the origin. Bodies: ground 0, roof 1.
+std::string RoofModel() {
+  std::ostringstream m;
+  m.precision(17);
+  m << R"(<OpenSimDocument Version="40000"><Model name="roof_on_post">
+<gravity>)"
+    << -kG << R"( 0 0</gravity><Ground name="ground"/><BodySet><objects>
+<Body name="roof"><mass>)"
+    << kCartMass << R"(</mass><inertia>1 1 1 0 0 0</inertia></Body>
+</objects></BodySet><JointSet><objects><SliderJoint name="rail">
+<socket_parent_frame>/ground</socket_parent_frame><socket_child_frame>/bodyset/roof</socket_child_frame>
+<coordinates><Coordinate name="roof_x"><default_value>0.3</default_value></Coordinate></coordinates>
+</SliderJoint></objects></JointSet><ContactGeometrySet><objects>
+<ContactSphere name="post"><socket_frame>/ground</socket_frame><radius>)"
+    << kR << R"(</radius>
+</ContactSphere><ContactMesh name="groove"><socket_frame>/bodyset/roof</socket_frame>
+<orientation>0 0 )"
+    << std::numbers::pi / 2 << R"(</orientation><filename>v_groove.obj</filename>
+</ContactMesh></objects></ContactGeometrySet></Model></OpenSimDocument>)";
+  return m.str();
+}
+
+TEST(CollisionMeshTest, ConcaveRoofDroppedOnAPostRestsOnBothWalls) {
+  // The 10 kg roof falls (along -x) onto the ground ball until both its inner walls rest on
+  // it: its ridge r / cos(a) from the ball's centre under NSC, (r - d) / cos(a) under SMC with
+  // the dents of the roof's weight (SmcRestHeight). Its hull would stop with its flat side on
+  // the ball, the ridge r + 0.25 m from its centre.
+  const CollisionMaterial material;
+  for (const ContactMethod method : {ContactMethod::kNsc, ContactMethod::kSmc}) {
+    Scene scene = ParseText(RoofModel(), method, material);
+    ASSERT_EQ(scene.system->bodies()[1].name, "roof");
+    const std::vector<Transform> X_GB_hull_rest = {
+        Transform(), Transform::Translation(Vec3(kR + kHullTop, 0, 0))};
+    double closed = kRestHeight;
+    if (method == ContactMethod::kNsc) {
+      EXPECT_EQ(RunNsc(scene, 1.0), 2u);
+      // The hull at its own rest: touching (depth 0 to EPA's accuracy).
+      const std::vector<CollisionContact> hull =
+          ContactsAtPoses(WithGrooveHull(scene.model), X_GB_hull_rest);
+      ASSERT_EQ(hull.size(), 1u);
+      EXPECT_NEAR(hull[0].depth, 0.0, 1e-6);
+    } else {
+      // Free fall is a parabola, which rk45 integrates exactly, so its steps grow; unbounded,
+      // the roof went through the post (a wall is a sheet: a step that carries the post's
+      // centre past it pushes the post out the far side).
+      RunSmc(scene, 3.0, 1e-3);
+      closed = SmcRestHeight(material, kCartMass);
+    }
+    const engine::BodyState& roof = scene.state.bodies[1];
+    EXPECT_NEAR(roof.p_GB.x(), closed, method == ContactMethod::kNsc ? 1e-9 : 1e-8);
+    EXPECT_LT(roof.v_GB.norm(), method == ContactMethod::kNsc ? 1e-9 : 1e-6);
+    std::cout << (method == ContactMethod::kNsc ? "NSC" : "SMC") << " roof on a post: ridge at "
+              << roof.p_GB.x() << " m (closed form " << closed << ", error "
+              << roof.p_GB.x() - closed << "; its hull's " << kR + kHullTop << "), speed "
+              << roof.v_GB.norm() << " m/s\n";
+  }
 }
 
 // A cube of half edge `h` centred at the origin, its 12 triangles counter-clockwise from
