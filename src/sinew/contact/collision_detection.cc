@@ -58,6 +58,7 @@ struct Shape {
   std::vector<Vec3> hull;                    // kHull, kTriangleMesh: its distinct points, in S
   std::unique_ptr<BulletTriangleMesh> mesh;  // kTriangleMesh (bt is its convex hull)
   MeshPairSide mesh_side;                    // kTriangleMesh: for MeshPairHull
+  std::shared_ptr<const ShapeMesh> source;   // kTriangleMesh: the mesh it was built from
 };
 
 // Calls visit(p_S) for each point of the convex `shape` (in its frame S, not inflated) that can
@@ -206,7 +207,7 @@ Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
       // Its hull, for a pair with another mesh (MeshPairHull).
       s.bt = ConvexHull(s.hull, inflation);
       s.mesh_side.moves = g.body != model::kGroundIndex && !g.fixed_to_ground;
-      s.mesh_side.closed_convex = IsClosedConvex(*g.mesh);
+      s.source = g.mesh;  // IsClosedConvex is left to the detector: it matters for mesh pairs
       break;
     }
   }
@@ -339,6 +340,14 @@ CollisionDetector::CollisionDetector(const CollisionModel& model,
     CollisionModel environment;
     AddGroundPlane(environment, *ground_height);
     shapes.push_back(MakeGeometry(environment.geometry.front(), inflation));
+  }
+  // Whether a mesh is closed and convex (time linear in triangles times vertices) matters only
+  // against another mesh (MeshPairHull).
+  const auto is_mesh = [](const Shape& s) { return s.kind == Kind::kTriangleMesh; };
+  if (std::count_if(shapes.begin(), shapes.end(), is_mesh) >= 2) {
+    for (Shape& s : shapes) {
+      if (is_mesh(s)) s.mesh_side.closed_convex = IsClosedConvex(*s.source);
+    }
   }
   const int n = static_cast<int>(shapes.size());
   for (int i = 0; i < n; ++i) {

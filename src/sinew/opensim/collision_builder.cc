@@ -163,10 +163,12 @@ void WarnAboutMeshPairs(const model::ModelSpec& spec, const contact::CollisionMo
   std::vector<const contact::CollisionGeometry*> meshes;
   std::vector<contact::MeshPairSide> sides;
   for (const contact::CollisionGeometry& g : model.geometry) {
-    if (g.kind != contact::CollisionShapeKind::kTriangleMesh || !g.mesh) continue;
-    meshes.push_back(&g);
+    if (g.kind == contact::CollisionShapeKind::kTriangleMesh && g.mesh) meshes.push_back(&g);
+  }
+  if (meshes.size() < 2) return;  // IsClosedConvex takes triangles times vertices
+  for (const contact::CollisionGeometry* g : meshes) {
     sides.push_back(
-        {g.body != model::kGroundIndex && !g.fixed_to_ground, contact::IsClosedConvex(*g.mesh)});
+        {g->body != model::kGroundIndex && !g->fixed_to_ground, contact::IsClosedConvex(*g->mesh)});
   }
   for (size_t i = 0; i < meshes.size(); ++i) {
     for (size_t j = i + 1; j < meshes.size(); ++j) {
