@@ -1,8 +1,10 @@
 // Small OpenSim 4 models written as text for the contact tests: one free body with contact
-// spheres above a ground half-space, and parsing them into a System.
+// spheres above a ground half-space, parsing them into a System, and running collision under NSC.
 #pragma once
 
+#include <sinew/contact/collision_contact_provider.h>
 #include <sinew/contact/contact_force.h>
+#include <sinew/engine/nsc_integrator.h>
 #include <sinew/engine/system.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/opensim/parser.h>
@@ -22,15 +24,18 @@ inline std::string FreeBodyModel(double mass, const Vec3& inertia, const Vec3& g
   std::ostringstream m;
   m.precision(17);
   m << R"(<OpenSimDocument Version="40000"><Model name="contact">
-<gravity>)" << gravity.transpose() << R"(</gravity><Ground name="ground"/>
-<BodySet><objects><Body name="body"><mass>)" << mass << "</mass><inertia>"
-    << inertia.transpose() << R"( 0 0 0</inertia></Body></objects></BodySet>
+<gravity>)"
+    << gravity.transpose() << R"(</gravity><Ground name="ground"/>
+<BodySet><objects><Body name="body"><mass>)"
+    << mass << "</mass><inertia>" << inertia.transpose()
+    << R"( 0 0 0</inertia></Body></objects></BodySet>
 <JointSet><objects><FreeJoint name="free"><socket_parent_frame>/ground</socket_parent_frame>
 <socket_child_frame>/bodyset/body</socket_child_frame><coordinates>
 <Coordinate name="rx"/><Coordinate name="ry"/><Coordinate name="rz"/>
 <Coordinate name="tx"/><Coordinate name="ty"/><Coordinate name="tz"/>
 </coordinates></FreeJoint></objects></JointSet>
-<ForceSet><objects>)" << forces << R"(</objects></ForceSet>
+<ForceSet><objects>)"
+    << forces << R"(</objects></ForceSet>
 <ContactGeometrySet><objects>
 <ContactHalfSpace name="floor"><socket_frame>/ground</socket_frame>
 <orientation>0 0 -1.5707963267948966</orientation></ContactHalfSpace>
@@ -91,6 +96,25 @@ inline const contact::ContactForce& FindContactForce(const engine::System& syste
     if (c && c->name() == name) return *c;
   }
   throw Error("no contact force " + name);
+}
+
+/// Runs `system` from `state` to `t_end` under NSC with the collision shapes `model` (friction
+/// `friction`, no restitution, the pairs overlapping at the start left out), h = 1 ms and a
+/// tight solver (1e-12, 1000 iterations); returns the number of contacts of the last step.
+inline size_t RunCollisionNsc(const engine::System& system, engine::State& state,
+                              const contact::CollisionModel& model, double friction, double t_end) {
+  std::vector<Transform> X_GB;
+  contact::GatherBodyPoses(state, X_GB);
+  auto provider = std::make_shared<contact::CollisionContactProvider>(
+      model, std::nullopt, contact::NscMaterial{.friction = friction, .restitution = 0.0}, X_GB);
+  engine::IntegratorSettings settings;
+  settings.step = 1e-3;
+  engine::NscSettings nsc;
+  nsc.solver.max_iterations = 1000;
+  nsc.solver.tolerance = 1e-12;
+  engine::NscIntegrator integrator(system, provider, settings, nsc);
+  integrator.StepTo(state, t_end);
+  return integrator.last_contacts().size();
 }
 
 }  // namespace sinew::testing

@@ -56,7 +56,9 @@ struct Shape {
   // Bullet's shape, inflated by half the envelope (its margin) for GJK; null for a half-space.
   std::unique_ptr<btConvexShape> bt;
   std::vector<Vec3> hull;                    // kHull, kTriangleMesh: its distinct points, in S
-  std::unique_ptr<BulletTriangleMesh> mesh;  // kTriangleMesh (bt is null)
+  std::unique_ptr<BulletTriangleMesh> mesh;  // kTriangleMesh (bt is its convex hull)
+  MeshPairSide mesh_side;                    // kTriangleMesh: for MeshPairHull
+  std::shared_ptr<const ShapeMesh> source;   // kTriangleMesh: the mesh it was built from
 };
 
 // Calls visit(p_S) for each point of the convex `shape` (in its frame S, not inflated) that can
@@ -126,6 +128,15 @@ std::vector<Vec3> DistinctPoints(const std::vector<Vec3>& points) {
   return sorted;
 }
 
+// Bullet's convex hull of `points`, grown by `inflation` (its margin).
+std::unique_ptr<btConvexShape> ConvexHull(const std::vector<Vec3>& points, double inflation) {
+  auto hull = std::make_unique<btConvexHullShape>();
+  for (const Vec3& p : points) hull->addPoint(ToBt(p), false);
+  hull->recalcLocalAabb();
+  hull->setMargin(inflation);
+  return hull;
+}
+
 Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
   Shape s;
   s.body = g.body;
@@ -165,11 +176,7 @@ Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
       s.radius = kFlatShapeRadius;
       if (g.vertices) s.hull = DistinctPoints(*g.vertices);
       if (s.hull.empty()) throw Error("contact: the mesh '" + g.name + "' has no vertices");
-      auto hull = std::make_unique<btConvexHullShape>();
-      for (const Vec3& p : s.hull) hull->addPoint(ToBt(p), false);
-      hull->recalcLocalAabb();
-      hull->setMargin(inflation);
-      s.bt = std::move(hull);
+      s.bt = ConvexHull(s.hull, inflation);
       break;
     }
     case CollisionShapeKind::kTriangleMesh: {
@@ -197,6 +204,10 @@ Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
       mesh->shape = std::make_unique<btBvhTriangleMeshShape>(mesh->arrays.get(),
                                                              /*useQuantizedAabbCompression=*/true);
       s.mesh = std::move(mesh);
+      // Its hull, for a pair with another mesh (MeshPairHull).
+      s.bt = ConvexHull(s.hull, inflation);
+      s.mesh_side.moves = g.body != model::kGroundIndex && !g.fixed_to_ground;
+      s.source = g.mesh;  // IsClosedConvex is left to the detector: it matters for mesh pairs
       break;
     }
   }
@@ -330,25 +341,40 @@ CollisionDetector::CollisionDetector(const CollisionModel& model,
     AddGroundPlane(environment, *ground_height);
     shapes.push_back(MakeGeometry(environment.geometry.front(), inflation));
   }
+  // Whether a mesh is closed and convex (time linear in triangles times vertices) matters only
+  // against another mesh (MeshPairHull).
+  const auto is_mesh = [](const Shape& s) { return s.kind == Kind::kTriangleMesh; };
+  if (std::count_if(shapes.begin(), shapes.end(), is_mesh) >= 2) {
+    for (Shape& s : shapes) {
+      if (is_mesh(s)) s.mesh_side.closed_convex = IsClosedConvex(*s.source);
+    }
+  }
   const int n = static_cast<int>(shapes.size());
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
       const Shape& a = shapes[i];
       const Shape& b = shapes[j];
       if (a.kind == Kind::kHalfSpace && b.kind == Kind::kHalfSpace) continue;
-      // Triangle meshes are the environment: two never meet.
-      if (a.kind == Kind::kTriangleMesh && b.kind == Kind::kTriangleMesh) continue;
       if (!model.CanCollide(a.body, b.body)) continue;
       // First a half-space (against whose solid the other's points are tested), else a
-      // triangle mesh (against whose triangles the other, convex, is tested).
+      // triangle mesh (against whose triangles the other, convex, is tested). Of two meshes,
+      // MeshPairHull's collides as its hull against the other's triangles.
       const auto rank = [](Kind k) {
         return k == Kind::kHalfSpace ? 0 : k == Kind::kTriangleMesh ? 1 : 2;
       };
+      bool swap = rank(b.kind) < rank(a.kind);
+      if (a.kind == Kind::kTriangleMesh && b.kind == Kind::kTriangleMesh) {
+        const int hull = MeshPairHull(a.mesh_side, b.mesh_side);
+        if (hull < 0) continue;  // neither moves
+        swap = hull == 0;
+      }
       Pair p;
-      p.i = rank(b.kind) < rank(a.kind) ? j : i;
-      p.j = rank(b.kind) < rank(a.kind) ? i : j;
+      p.i = swap ? j : i;
+      p.j = swap ? i : j;
       p.radius = a.radius > 0.0 && b.radius > 0.0 ? a.radius * b.radius / (a.radius + b.radius)
                                                   : std::max(a.radius, b.radius);
+      // Two flat shapes (a mesh's vertices on a half-space, a hull on a mesh): as a box's.
+      if (p.radius == 0.0) p.radius = kFlatShapeRadius;
       const auto material_of = [&](int m) {
         return m >= 0 && m < static_cast<int>(model.materials.size()) ? model.materials[m]
                                                                       : CollisionMaterial{};
@@ -505,21 +531,24 @@ void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<T
   // too, each at its point nearest the shape: keep only the contacts that are local extremes
   // of the overlap over the surface. A contact is dropped when a triangle that holds its point
   // (a shared edge or vertex) overlaps more (the neighbour of the dented triangle), or when an
-  // earlier contact has the same point (a contact on an edge or vertex, found by each triangle
-  // there). So a sphere on a flat mesh touches once, in a V groove once per side.
+  // earlier contact is the same one (a contact on an edge or vertex, found by each triangle
+  // there: as deep, and each point on the other's triangle, or the same point; EPA places a
+  // curved shape's point to about 1e-6 m, so the two may lie either side of the edge). So a
+  // sphere on a flat mesh touches once, in a V groove once per side.
+  const auto on = [](const Vec3& q, const std::array<Vec3, 3>& v) {
+    return (ClosestPointOnTriangle(q, v[0], v[1], v[2]) - q).norm() <= kMeshPointTolerance;
+  };
   for (size_t k = 0; k < found.size(); ++k) {
     const TriangleContact& t = found[k];
     bool keep = true;
     for (size_t i = 0; i < found.size() && keep; ++i) {
       if (i == k) continue;
       const TriangleContact& o = found[i];
-      const std::array<Vec3, 3>& v = o.triangle_G;
-      const bool holds =
-          (ClosestPointOnTriangle(t.p_mesh_G, v[0], v[1], v[2]) - t.p_mesh_G).norm() <=
-          kMeshPointTolerance;
+      const bool holds = on(t.p_mesh_G, o.triangle_G);
       if (holds && o.contact.depth > t.contact.depth + kMeshPointTolerance) keep = false;
-      if (i < k && (o.p_mesh_G - t.p_mesh_G).norm() <= kMeshPointTolerance &&
-          std::abs(o.contact.depth - t.contact.depth) <= kMeshPointTolerance)
+      const bool same = (o.p_mesh_G - t.p_mesh_G).norm() <= kMeshPointTolerance ||
+                        (holds && on(o.p_mesh_G, t.triangle_G));
+      if (i < k && same && std::abs(o.contact.depth - t.contact.depth) <= kMeshPointTolerance)
         keep = false;
     }
     if (keep) visit(t.contact);

@@ -1,11 +1,13 @@
 // Collision detection between a collision model's shapes (contact::CollisionModel: the seed's
 // cylinders, OpenSim's ContactSphere, ContactHalfSpace, ContactCylinder, ContactEllipsoid and
-// ContactMesh (on a moving body its convex hull, fixed to ground its triangles), environment
-// boxes and planes) through Bullet's collision library: its bounding boxes as the broad phase,
-// GJK/EPA as the narrow phase between convex shapes and between a convex shape and each
-// triangle of a ground mesh near it (found through the mesh's btBvhTriangleMeshShape), and the
-// shapes' support vertices against half-spaces (what Bullet's convex-plane algorithm does;
-// several points per pair for boxes, cylinders and hulls).
+// ContactMesh (its triangles, on ground or on a moving body), environment boxes and planes)
+// through Bullet's collision library: its bounding boxes as the broad phase, GJK/EPA as the
+// narrow phase between convex shapes and between a convex shape and each triangle of a mesh
+// near it (found through the mesh's btBvhTriangleMeshShape, in the mesh's current pose), and
+// the shapes' support vertices against half-spaces (what Bullet's convex-plane algorithm does;
+// several points per pair for boxes, cylinders, hulls and meshes). Of two meshes, one collides
+// as its convex hull against the other's triangles (MeshPairHull: exact when it is closed and
+// convex).
 // Stateless per query (no contact caching), so one detector can be shared by threads and by the
 // stages of a Runge-Kutta step.
 #pragma once
@@ -65,10 +67,11 @@ class CollisionDetector {
   /// Calls `visit` for every contact at the body poses `X_GB` (one per body, ground first):
   /// one point per pair of convex shapes (Bullet's deepest point); against a half-space, a
   /// sphere's or an ellipsoid's deepest point, each of a cylinder's two cap rims' deepest
-  /// points and each box corner or hull vertex that lies inside it; against a triangle mesh
-  /// (kTriangleMesh), one point per local extreme of the overlap over its surface (a sphere in
-  /// a V groove touches each side once; a contact found by several triangles at a shared edge
-  /// or vertex counts once).
+  /// points and each box corner, hull or mesh vertex that lies inside it; against a triangle
+  /// mesh (kTriangleMesh, fixed or moving), one point per local extreme of the overlap over its
+  /// surface (a sphere in a V groove touches each side once; a contact found by several
+  /// triangles at a shared edge or vertex counts once). Two flat shapes (mesh or hull vertices
+  /// on a half-space, a hull on a mesh) get the radius kFlatShapeRadius.
   void FindContacts(const std::vector<Transform>& X_GB,
                     const std::function<void(const CollisionContact&)>& visit) const;
   /// The number of shape pairs tested.

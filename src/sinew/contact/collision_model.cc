@@ -1,6 +1,8 @@
 #include <sinew/contact/collision_model.h>
 
 #include <algorithm>
+#include <map>
+#include <utility>
 
 namespace sinew::contact {
 namespace {
@@ -15,6 +17,46 @@ bool CollisionModel::CanCollide(int a, int b) const {
   return std::none_of(jointed.begin(), jointed.end(), [&](const std::pair<int, int>& p) {
     return (p.first == a && p.second == b) || (p.first == b && p.second == a);
   });
+}
+
+bool IsClosedConvex(const ShapeMesh& mesh) {
+  if (mesh.triangles.empty()) return false;
+  // Closed: each undirected edge in exactly two triangles.
+  std::map<std::pair<int, int>, int> edges;
+  const int num_vertices = static_cast<int>(mesh.vertices.size());
+  for (const std::array<int, 3>& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (a < 0 || a >= num_vertices) return false;
+      ++edges[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  if (std::any_of(edges.begin(), edges.end(), [](const auto& e) { return e.second != 2; }))
+    return false;
+  // Convex: each triangle's plane supports the vertices (all on one side of it).
+  Vec3 low = mesh.vertices.front(), high = low;
+  for (const Vec3& v : mesh.vertices) low = low.cwiseMin(v), high = high.cwiseMax(v);
+  const double tolerance = 1e-9 * (high - low).norm();
+  for (const std::array<int, 3>& t : mesh.triangles) {
+    const Vec3& a = mesh.vertices[t[0]];
+    const Vec3 n = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a);
+    if (n.norm() == 0.0) continue;  // a degenerate triangle has no plane of its own
+    const Vec3 u = n.normalized();
+    double above = 0.0, below = 0.0;
+    for (const Vec3& v : mesh.vertices) {
+      const double h = u.dot(v - a);
+      above = std::max(above, h), below = std::min(below, h);
+    }
+    if (above > tolerance && below < -tolerance) return false;
+  }
+  return true;
+}
+
+int MeshPairHull(const MeshPairSide& a, const MeshPairSide& b) {
+  if (!a.moves && !b.moves) return -1;
+  if (b.moves && b.closed_convex) return 1;
+  if (a.moves && a.closed_convex) return 0;
+  return b.moves ? 1 : 0;
 }
 
 void AddGroundPlane(CollisionModel& model, double height, int material) {

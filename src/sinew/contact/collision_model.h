@@ -43,10 +43,10 @@ enum class CollisionShapeKind {
   kHalfSpace,   ///< OpenSim's ContactHalfSpace convention: the solid x > 0 of S, outward normal -x.
   kCylinder,    ///< OpenSim's ContactCylinder: axis S's z, `radius`, from -half_length to +.
   kEllipsoid,   ///< OpenSim's ContactEllipsoid: semi-axes `radii` along S's x, y, z.
-  kConvexMesh,  ///< OpenSim's ContactMesh on a moving body: the convex hull of `vertices` (in S).
-  /// OpenSim's ContactMesh fixed to ground (the environment): its triangles `mesh` (in S)
-  /// exactly, concave or not (Bullet's btBvhTriangleMeshShape); each triangle is a two-sided
-  /// sheet.
+  kConvexMesh,  ///< the convex hull of `vertices` (in S): a concave mesh is filled in.
+  /// OpenSim's ContactMesh, on ground or on a moving body: its triangles `mesh` (in S) exactly,
+  /// concave or not (Bullet's btBvhTriangleMeshShape); each triangle is a two-sided sheet.
+  /// Against another triangle mesh one of the two collides as its convex hull (MeshPairHull).
   kTriangleMesh,
 };
 
@@ -68,7 +68,28 @@ struct CollisionGeometry {
   Vec3 radii = Vec3::Zero();         ///< kEllipsoid: m
   std::shared_ptr<const std::vector<Vec3>> vertices = nullptr;  ///< kConvexMesh: in S, m
   std::shared_ptr<const ShapeMesh> mesh = nullptr;              ///< kTriangleMesh: in S, m
+  /// kTriangleMesh: its body never moves relative to ground (welded to it). A shape on the
+  /// ground body itself never moves whatever this says.
+  bool fixed_to_ground = false;
 };
+
+/// True when the triangles of `mesh` close a convex solid: every edge is shared by exactly two
+/// triangles and every vertex lies on one side of each triangle's plane (within 1e-9 of the
+/// mesh's size). Then its convex hull is the mesh itself.
+bool IsClosedConvex(const ShapeMesh& mesh);
+
+/// One triangle mesh (kTriangleMesh) of a pair of meshes that may touch.
+struct MeshPairSide {
+  bool moves = false;          ///< neither on ground nor fixed_to_ground
+  bool closed_convex = false;  ///< IsClosedConvex
+};
+
+/// Which mesh of a pair of triangle meshes collides as its convex hull against the other's
+/// triangles (the detector never tests triangles against triangles): -1 when neither moves (no
+/// contact); else a moving closed convex mesh (its hull is exact), `b` first; else the moving
+/// mesh, `b` when both move (a concave mesh is then filled in: the parser's Report says so).
+/// Returns 0 for `a`, 1 for `b`.
+int MeshPairHull(const MeshPairSide& a, const MeshPairSide& b);
 
 /// Shapes, families and excluded pairs of a model.
 struct CollisionModel {

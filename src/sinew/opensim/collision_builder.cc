@@ -112,19 +112,10 @@ std::optional<contact::CollisionGeometry> MakeGeometry(
       fail("ContactEllipsoid needs three radii > 0");
     shape.radii = Vec3(radii[0], radii[1], radii[2]);
   } else if (g.type == "ContactMesh") {
-    const std::shared_ptr<const contact::ShapeMesh> mesh = ReadContactMesh(spec, g, geometry_dirs);
-    if (FixedToGround(spec, g.body)) {
-      // The environment: its triangles exactly, concave or not.
-      shape.kind = contact::CollisionShapeKind::kTriangleMesh;
-      shape.mesh = mesh;
-    } else {
-      shape.kind = contact::CollisionShapeKind::kConvexMesh;
-      shape.vertices = std::shared_ptr<const std::vector<Vec3>>(mesh, &mesh->vertices);
-      report.AddWarning({g.where, component,
-                         "ContactMesh on a moving body collides as its convex hull (a concave "
-                         "mesh is filled in); only a mesh fixed to ground collides as its "
-                         "triangles"});
-    }
+    // Its triangles exactly, concave or not, on ground or on a moving body.
+    shape.kind = contact::CollisionShapeKind::kTriangleMesh;
+    shape.mesh = ReadContactMesh(spec, g, geometry_dirs);
+    shape.fixed_to_ground = FixedToGround(spec, g.body);
   } else {
     report.AddWarning({g.where, component,
                        g.type + " is not a collision shape (ContactHalfSpace, ContactSphere, "
@@ -165,6 +156,39 @@ void AssignMaterials(const model::ModelSpec& spec, const CollisionSettings& sett
   }
 }
 
+// Warns about each pair of triangle meshes that may touch where one collides as its convex
+// hull (contact::MeshPairHull) and that hull is not the mesh itself.
+void WarnAboutMeshPairs(const model::ModelSpec& spec, const contact::CollisionModel& model,
+                        Report& report) {
+  std::vector<const contact::CollisionGeometry*> meshes;
+  std::vector<contact::MeshPairSide> sides;
+  for (const contact::CollisionGeometry& g : model.geometry) {
+    if (g.kind == contact::CollisionShapeKind::kTriangleMesh && g.mesh) meshes.push_back(&g);
+  }
+  if (meshes.size() < 2) return;  // IsClosedConvex takes triangles times vertices
+  for (const contact::CollisionGeometry* g : meshes) {
+    sides.push_back(
+        {g->body != model::kGroundIndex && !g->fixed_to_ground, contact::IsClosedConvex(*g->mesh)});
+  }
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    for (size_t j = i + 1; j < meshes.size(); ++j) {
+      if (!model.CanCollide(meshes[i]->body, meshes[j]->body)) continue;
+      const int side = contact::MeshPairHull(sides[i], sides[j]);
+      if (side < 0 || sides[side == 0 ? i : j].closed_convex) continue;
+      const contact::CollisionGeometry& hull = *meshes[side == 0 ? i : j];
+      const contact::CollisionGeometry& other = *meshes[side == 0 ? j : i];
+      SourceLocation where{spec.file, 0};
+      for (const model::ContactGeometrySpec& g : spec.contact_geometry) {
+        if (g.name == hull.name) where = g.where;
+      }
+      report.AddWarning({where, "/contactgeometryset/" + hull.name,
+                         "against the ContactMesh '" + other.name +
+                             "' it collides as its convex hull (a concave or open mesh is "
+                             "filled in): mesh against mesh is not tested triangle by triangle"});
+    }
+  }
+}
+
 }  // namespace
 
 contact::CollisionModel BuildCollision(const model::ModelSpec& spec,
@@ -191,6 +215,7 @@ contact::CollisionModel BuildCollision(const model::ModelSpec& spec,
   if (settings.ground_plane) contact::AddGroundPlane(model, *settings.ground_plane);
   for (const contact::CollisionGeometry& g : settings.environment) model.geometry.push_back(g);
   AssignMaterials(spec, settings, model);
+  WarnAboutMeshPairs(spec, model, report);
   for (const contact::CollisionMaterial& m : model.materials) {
     if (m.kt > 0.0) {
       report.AddWarning({SourceLocation{spec.file, 0}, "contact material",
