@@ -66,6 +66,35 @@ TEST(PathDerivativesTest, Rajagopal2016MomentArmsFollowTheCoupledPatellae) {
   EXPECT_LT(worst, 2e-3);
 }
 
+// The coupling vectors of every coordinate at once (one factorization shared by the free
+// coordinates; PathAnalysis's way) equal those computed one at a time, locked coordinates
+// (whose own lock is left out) included, at Rajagopal2016's poses.
+TEST(PathDerivativesTest, CouplingVectorsAtOnceEqualOneAtATime) {
+  const PathModel m(kDataDir + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim");
+  std::vector<int> all(m.spec.coordinates.size());
+  for (size_t c = 0; c < all.size(); ++c) all[c] = static_cast<int>(c);
+  int locked = 0, coupled = 0;
+  for (const std::vector<double>& q : MakePoses(m, 3)) {
+    std::vector<std::vector<double>> at_once;
+    CalcCouplingVectors(m.spec, m.couplers, q, all, at_once);
+    ASSERT_EQ(at_once.size(), all.size());
+    for (size_t k = 0; k < all.size(); ++k) {
+      const std::vector<double> alone = CalcCouplingVector(m.spec, m.couplers, q, all[k]);
+      locked += m.spec.coordinates[k].locked ? 1 : 0;
+      int moving = 0;
+      for (size_t c = 0; c < alone.size(); ++c) {
+        // The same matrix factorized twice: rounding of entries of order 1 (1e-15), with room
+        // for the conditioning of A A^T.
+        EXPECT_NEAR(at_once[k][c], alone[c], 1e-12) << k << " " << c;
+        moving += alone[c] != 0.0 ? 1 : 0;
+      }
+      coupled += moving > 1 ? 1 : 0;
+    }
+  }
+  EXPECT_GT(locked, 0);   // the locked branch ran
+  EXPECT_GT(coupled, 0);  // and some coordinate moves others (the knees their patellae)
+}
+
 // arm26 with its real surfaces: cylinders (one refined, with three wrap objects on TRIlong) and
 // ellipsoids. The analytic values are the derivatives of the path with its tangent points
 // carried by the bone (asserted inside); against the length wrapped afresh they differ by the

@@ -5,40 +5,88 @@
 #include <limits>
 
 namespace sinew::paths {
+namespace {
 
-std::vector<double> CalcCouplingVector(const model::ModelSpec& spec,
-                                       const kinematics::CoordinateCouplers& couplers,
-                                       std::span<const double> q, int j) {
+// The velocity constraints A u = 0 at q: every enforced coupler, and u_c = 0 for every locked
+// coordinate c but `free_coordinate` (-1: none).
+Eigen::MatrixXd ConstraintRows(const model::ModelSpec& spec,
+                               const kinematics::CoordinateCouplers& couplers,
+                               std::span<const double> q, int free_coordinate) {
   const size_t n = q.size();
   std::vector<std::vector<double>> rows;
   couplers.AppendVelocityRows(q, rows);
   for (size_t c = 0; c < spec.coordinates.size(); ++c) {
-    if (spec.coordinates[c].locked && static_cast<int>(c) != j) {
+    if (spec.coordinates[c].locked && static_cast<int>(c) != free_coordinate) {
       std::vector<double> row(n, 0.0);
       row[c] = 1.0;
       rows.push_back(std::move(row));
     }
   }
-  std::vector<double> coupling(n, 0.0);
-  coupling[static_cast<size_t>(j)] = 1.0;
-  if (rows.empty()) return coupling;
-  // u = e_j - A^T (A A^T)^+ A e_j: the nearest speeds to e_j that satisfy A u = 0.
   Eigen::MatrixXd A(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(n));
   for (size_t r = 0; r < rows.size(); ++r) {
-    for (size_t c = 0; c < n; ++c)
+    for (size_t c = 0; c < n; ++c) {
       A(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = rows[r][c];
+    }
   }
-  const Eigen::VectorXd Ae_j = A.col(j);
-  const Eigen::MatrixXd AAt = A * A.transpose();
-  const Eigen::VectorXd lambda = AAt.completeOrthogonalDecomposition().solve(Ae_j);
+  return A;
+}
+
+// The coupling vector from u = e_j - A^T lambda, with lambda = (A A^T)^+ A e_j: u / u_j, or all
+// NaN when u_j vanishes.
+std::vector<double> CouplingFrom(const Eigen::MatrixXd& A, const Eigen::VectorXd& lambda, int j) {
   Eigen::VectorXd u = -A.transpose() * lambda;
   u(j) += 1.0;
   const double u_j = u(j);
+  const size_t n = static_cast<size_t>(A.cols());
   if (!(std::abs(u_j) > 1e-12)) {
     return std::vector<double>(n, std::numeric_limits<double>::quiet_NaN());
   }
+  std::vector<double> coupling(n);
   for (size_t c = 0; c < n; ++c) coupling[c] = u(static_cast<Eigen::Index>(c)) / u_j;
   return coupling;
+}
+
+std::vector<double> Unit(size_t n, int j) {
+  std::vector<double> e(n, 0.0);
+  e[static_cast<size_t>(j)] = 1.0;
+  return e;
+}
+
+}  // namespace
+
+std::vector<double> CalcCouplingVector(const model::ModelSpec& spec,
+                                       const kinematics::CoordinateCouplers& couplers,
+                                       std::span<const double> q, int j) {
+  const Eigen::MatrixXd A = ConstraintRows(spec, couplers, q, j);
+  if (A.rows() == 0) return Unit(q.size(), j);
+  // u = e_j - A^T (A A^T)^+ A e_j: the nearest speeds to e_j that satisfy A u = 0.
+  const Eigen::MatrixXd AAt = A * A.transpose();
+  const Eigen::VectorXd Ae_j = A.col(j);
+  return CouplingFrom(A, AAt.completeOrthogonalDecomposition().solve(Ae_j), j);
+}
+
+void CalcCouplingVectors(const model::ModelSpec& spec,
+                         const kinematics::CoordinateCouplers& couplers,
+                         std::span<const double> q, std::span<const int> coordinates,
+                         std::vector<std::vector<double>>& out) {
+  out.resize(coordinates.size());
+  const Eigen::MatrixXd A = ConstraintRows(spec, couplers, q, -1);
+  // lambda for every e_j at once: (A A^T)^+ A, factorized once.
+  Eigen::MatrixXd lambdas;
+  if (A.rows() > 0) {
+    const Eigen::MatrixXd AAt = A * A.transpose();
+    lambdas = AAt.completeOrthogonalDecomposition().solve(A);
+  }
+  for (size_t k = 0; k < coordinates.size(); ++k) {
+    const int j = coordinates[k];
+    if (spec.coordinates[static_cast<size_t>(j)].locked) {
+      out[k] = CalcCouplingVector(spec, couplers, q, j);  // its own rows: j is free to move
+    } else if (A.rows() == 0) {
+      out[k] = Unit(q.size(), j);
+    } else {
+      out[k] = CouplingFrom(A, lambdas.col(j), j);
+    }
+  }
 }
 
 }  // namespace sinew::paths

@@ -27,8 +27,8 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
   const bool moment_arms = !coordinates_.empty();
   if (moment_arms) {
     CalcSpeedColumns(tree_, q, X_GB_, columns_);
+    CalcCouplingVectors(spec_, couplers_, q, coordinates_, couplings_);
     for (size_t k = 0; k < coordinates_.size(); ++k) {
-      couplings_[k] = CalcCouplingVector(spec_, couplers_, q, coordinates_[k]);
       // Only the coordinates that move along (one, or a few with couplers) enter the sums.
       coupled_[k].clear();
       for (size_t c = 0; c < couplings_[k].size(); ++c) {
