@@ -189,6 +189,37 @@ TEST(ForwardKinematicsTest, BodyVelocitiesMatchFiniteDifferencesOfPoses) {
   }
 }
 
+// The velocity columns (one unit speed at a time) are the velocities of those unit speeds, and
+// their combination with u the velocities of u, on the mixed chain and across a reversed joint.
+TEST(ForwardKinematicsTest, VelocityColumnsAreTheVelocitiesOfUnitSpeeds) {
+  for (const model::ModelSpec& spec : {MixedChain(), DoublePendulum(true)}) {
+    const kinematics::KinematicTree tree(spec);
+    const int nb = tree.num_bodies(), nq = tree.num_coordinates();
+    std::vector<double> q(nq), u(nq);
+    for (int i = 0; i < nq; ++i) {
+      q[i] = 0.5 * std::sin(1.7 * i + 0.3);
+      u[i] = 0.8 * std::cos(0.9 * i + 0.1);
+    }
+    std::vector<Transform> X(nb);
+    kinematics::CalcBodyPoses(tree, q, X);
+    std::vector<SpatialVec> columns(static_cast<size_t>(nb * nq)), V(nb), combined(nb);
+    kinematics::CalcBodyVelocityColumns(tree, q, X, columns);
+    for (auto& v : combined) v.setZero();
+    for (int k = 0; k < nq; ++k) {
+      std::vector<double> unit(nq, 0.0);
+      unit[k] = 1.0;
+      kinematics::CalcBodyVelocities(tree, q, unit, X, V);
+      for (int b = 0; b < nb; ++b) {
+        // The same sums in another order: rounding (velocities of order 1).
+        EXPECT_LT((columns[k * nb + b] - V[b]).norm(), 1e-14) << k << " " << b;
+        combined[b] += u[k] * columns[k * nb + b];
+      }
+    }
+    kinematics::CalcBodyVelocities(tree, q, u, X, V);
+    for (int b = 0; b < nb; ++b) EXPECT_LT((combined[b] - V[b]).norm(), 1e-14) << b;
+  }
+}
+
 TEST(ForwardKinematicsTest, MassCentresAndMarkers) {
   model::ModelSpec spec = DoublePendulum(false);
   spec.bodies[2].mass_center = Vec3(0.1, 0, 0);

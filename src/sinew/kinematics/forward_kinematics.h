@@ -24,6 +24,13 @@ void CalcBodyVelocities(const KinematicTree& tree, std::span<const double> q,
                         std::span<const double> u, std::span<const Transform> X_GB,
                         std::span<SpatialVec> V_GB);
 
+/// The columns of the same map: V_GB[k * num_bodies() + b] is body b's spatial velocity when
+/// u = e_k (CalcBodyVelocities with unit speed k), for every coordinate k. One joint velocity
+/// map per coordinate, then rigid transport outward. `V_GB` holds num_bodies() *
+/// num_coordinates() entries.
+void CalcBodyVelocityColumns(const KinematicTree& tree, std::span<const double> q,
+                             std::span<const Transform> X_GB, std::span<SpatialVec> V_GB);
+
 /// Ground position (m) of each body's mass centre.
 std::vector<Vec3> CalcMassCenterLocations(const model::ModelSpec& spec,
                                           std::span<const Transform> X_GB);

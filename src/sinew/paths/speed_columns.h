@@ -24,7 +24,7 @@ struct SpeedColumns {
 };
 
 /// Fills `columns` at q with body poses X_GB (kinematics::CalcBodyPoses at the same q): one
-/// velocity pass per coordinate.
+/// joint velocity map per coordinate (kinematics::CalcBodyVelocityColumns).
 void CalcSpeedColumns(const kinematics::KinematicTree& tree, std::span<const double> q,
                       std::span<const Transform> X_GB, SpeedColumns& columns);
 
