@@ -50,8 +50,8 @@ void AddGeneralizedForces(const PathLoads& loads, std::span<const Transform> X_G
     int body;
     Vec3 moment_G, force_G;
   };
-  std::vector<BodyWrench> wrenches;
-  wrenches.reserve(loads.point_forces.size());
+  thread_local std::vector<BodyWrench> wrenches;  // reused: no heap use once sized
+  wrenches.clear();
   for (const PointForce& f : loads.point_forces) {
     if (f.body == model::kGroundIndex) continue;
     const Vec3 moment_G = (X_GB[f.body].R * f.p_BP).cross(f.f_G);
@@ -64,13 +64,12 @@ void AddGeneralizedForces(const PathLoads& loads, std::span<const Transform> X_G
       same->force_G += f.f_G;
     }
   }
-  for (int k = 0; k < columns.num_coordinates; ++k) {
-    const std::span<const SpatialVec> V_GB = columns.Column(k);
-    double sum = 0.0;
-    for (const BodyWrench& w : wrenches) {
-      sum += w.moment_G.dot(V_GB[w.body].head<3>()) + w.force_G.dot(V_GB[w.body].tail<3>());
+  // Only the columns that move a body meet its wrench.
+  for (const BodyWrench& w : wrenches) {
+    for (const int k : columns.support[static_cast<size_t>(w.body)]) {
+      const SpatialVec& V = columns.V_GB[static_cast<size_t>(k) * columns.num_bodies + w.body];
+      Q[k] += w.moment_G.dot(V.head<3>()) + w.force_G.dot(V.tail<3>());
     }
-    Q[k] += sum;
   }
   for (const CoordinateForce& f : loads.coordinate_forces) Q[f.coordinate] += f.value;
 }

@@ -17,6 +17,9 @@ struct SpeedColumns {
   int num_bodies = 0;
   int num_coordinates = 0;
   std::vector<SpatialVec> V_GB;  ///< column k, body b at V_GB[k * num_bodies + b].
+  /// Per body: the coordinates whose columns can move it (those of the joints between it and
+  /// ground); every other column is zero at that body.
+  std::vector<std::vector<int>> support;
 
   std::span<const SpatialVec> Column(int k) const {
     return {V_GB.data() + static_cast<size_t>(k) * num_bodies, static_cast<size_t>(num_bodies)};
