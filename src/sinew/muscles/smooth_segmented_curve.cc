@@ -121,6 +121,8 @@ SmoothSegmentedCurve::SmoothSegmentedCurve(std::vector<QuinticBezierSegment> seg
       const double t = static_cast<double>(j) / (kGuessPoints - 1);
       poly.u_at_x[j] =
           SolveParameter(poly.x, seg.x[0] + t * (seg.x[5] - seg.x[0]), t, ParameterTolerance(seg));
+      const double slope = PolynomialSlope(poly.x, poly.u_at_x[j]);
+      poly.du_dx[j] = slope > 0.0 && std::isfinite(1.0 / slope) ? 1.0 / slope : 0.0;
     }
     polynomials_.push_back(poly);
   }
@@ -136,11 +138,21 @@ SmoothSegmentedCurve::SegmentParameter SmoothSegmentedCurve::Locate(double x) co
   }
   const QuinticBezierSegment& seg = segments_[s];
   const Polynomials& poly = polynomials_[s];
-  // First guess: the tabulated u, interpolated linearly in x.
+  // First guess: the tabulated u, interpolated in x by the cubic Hermite polynomial through
+  // the two neighbouring entries and their slopes du/dx (linearly where a slope is missing),
+  // kept between the two entries (u(x) increases).
   const double t =
       std::clamp((x - seg.x[0]) / (seg.x[5] - seg.x[0]), 0.0, 1.0) * (kGuessPoints - 1);
   const int j = std::min(static_cast<int>(t), kGuessPoints - 2);
-  const double guess = poly.u_at_x[j] + (t - j) * (poly.u_at_x[j + 1] - poly.u_at_x[j]);
+  const double w = t - j, u0 = poly.u_at_x[j], u1 = poly.u_at_x[j + 1];
+  double guess = u0 + w * (u1 - u0);
+  if (poly.du_dx[j] > 0.0 && poly.du_dx[j + 1] > 0.0) {
+    const double hx = (seg.x[5] - seg.x[0]) / (kGuessPoints - 1);
+    const double w2 = w * w, w3 = w2 * w;
+    guess = (2 * w3 - 3 * w2 + 1) * u0 + (w3 - 2 * w2 + w) * hx * poly.du_dx[j] +
+            (3 * w2 - 2 * w3) * u1 + (w3 - w2) * hx * poly.du_dx[j + 1];
+    guess = std::clamp(guess, u0, u1);
+  }
   return {s, SolveParameter(poly.x, x, guess, ParameterTolerance(seg))};
 }
 

@@ -71,11 +71,13 @@ class SmoothSegmentedCurve {
   double SegmentIntegral(int s, double u) const;
 
   // A segment in monomial form (x(u) and y(u) as polynomials in u, evaluated by Horner's rule),
-  // with u tabulated at evenly spaced x for Newton's first guess.
+  // with u and du/dx tabulated at evenly spaced x for Newton's first guess (cubic Hermite
+  // interpolation between them).
   static constexpr int kGuessPoints = 33;
   struct Polynomials {
     std::array<double, 6> x{}, y{};
     std::array<double, kGuessPoints> u_at_x{};
+    std::array<double, kGuessPoints> du_dx{};  ///< 1 / x'(u) there (0 where x' vanishes)
   };
 
   std::vector<QuinticBezierSegment> segments_;
