@@ -81,6 +81,22 @@ class ExportContactsTest : public testing::CliTest {
   ParsedGlb ReadGlb(const std::string& name) const {
     return viz::testing::ParseGlb(viz::ReadFileBytes(Path(name)));
   }
+  // `sinew export MODEL --states DIR/out/states.sto --contacts DIR/out/contacts.sto` draws, from
+  // the files, the same one arrow (the group found by the body's name) as `rest` at the end.
+  void ExpectTheSameArrowFromTheFiles(const std::string& model, const ArrowTrack& track) const {
+    const CliRun again =
+        Run("export " + model + " --states " + Path("out/states.sto") + " --contacts " +
+            Path("out/contacts.sto") + " -o " + Path("again.glb"));
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    const ParsedGlb other = ReadGlb("again.glb");
+    const nlohmann::json& arrows = other.doc["scenes"][0]["extras"]["contact_arrows"];
+    ASSERT_EQ(arrows["arrows"].size(), 1u);
+    EXPECT_EQ(arrows["arrows"][0]["body"], 1);
+    const ArrowTrack same = ReadArrow(other, arrows["arrows"][0]["node"]);
+    ASSERT_EQ(same.force.size(), track.force.size());
+    EXPECT_NEAR((same.force.back() - track.force.back()).norm(), 0.0, 1e-5 * kWeight);
+    EXPECT_NEAR((same.start.back() - track.start.back()).norm(), 0.0, 1e-6);
+  }
   // `sinew simulate MODEL OPTIONS --quiet --out DIR/out --export DIR/ball.glb`, checked to succeed.
   ParsedGlb SimulateAndExport(const std::string& model, const std::string& options) const {
     const CliRun run = Run("simulate " + model + " " + options + " --quiet --out " + Path("out") +
@@ -123,18 +139,43 @@ TEST_F(ExportContactsTest, BallAtRestHasAnArrowOfItsWeightFromItsContactOnTheFlo
   EXPECT_NEAR(track.start.back().x(), 0.0, 1e-6);
   EXPECT_NEAR(track.start.back().z(), 0.0, 1e-6);
 
-  // `sinew export --states --contacts` draws the same arrows from the files (the group found
-  // by the body's name).
-  const CliRun again = Run("export " + model + " --states " + Path("out/states.sto") +
-                           " --contacts " + Path("out/contacts.sto") + " -o " + Path("again.glb"));
-  ASSERT_EQ(again.exit_code, 0) << again.err;
-  const ParsedGlb other = ReadGlb("again.glb");
-  const nlohmann::json& other_arrows = other.doc["scenes"][0]["extras"]["contact_arrows"];
-  ASSERT_EQ(other_arrows["arrows"].size(), 1u);
-  EXPECT_EQ(other_arrows["arrows"][0]["body"], 1);
-  const ArrowTrack same = ReadArrow(other, other_arrows["arrows"][0]["node"]);
-  EXPECT_NEAR((same.force.back() - rest).norm(), 0.0, 1e-5 * kWeight);
-  EXPECT_NEAR((same.start.back() - track.start.back()).norm(), 0.0, 1e-6);
+  ExpectTheSameArrowFromTheFiles(model, track);
+}
+
+// The same ball settling through NSC (`--contact nsc`, its default 1 ms step): contacts.sto's
+// nsc_contact.ball group is drawn like SMC's. At rest the solver's tolerance (1e-6 m/s on the
+// contact velocities) bounds each impulse's error by m 1e-6 m/s, so the force (impulse / h) is
+// the weight to 1e-3 N and its sideways part below 1e-3 N; such a friction force at the
+// 0.1 m radius moves the line of action by at most 1e-4 N m / m g = 1e-5 m from the centre. The
+// floats of the .glb keep 1e-5 of the weight and 1e-6 m.
+TEST_F(ExportContactsTest, NscBallAtRestHasAnArrowOfItsWeightFromItsContactOnTheFloor) {
+  const std::string model = BallWithFloorAt(-0.1);
+  const ParsedGlb glb = SimulateAndExport(model, "--collision --contact nsc --duration 1.5");
+  ASSERT_FALSE(HasFailure());
+  const nlohmann::json& arrows = glb.doc["scenes"][0]["extras"]["contact_arrows"];
+  ASSERT_EQ(arrows["arrows"].size(), 1u);  // the ball's; ground's reaction is not drawn
+  EXPECT_EQ(arrows["arrows"][0]["name"], "nsc_contact.ball");
+  EXPECT_EQ(arrows["arrows"][0]["body"], 1);
+  const ArrowTrack track = ReadArrow(glb, arrows["arrows"][0]["node"]);
+  const auto contacts = engine::testing::ReadStoColumns(Path("out/contacts.sto"));
+  const auto states = engine::testing::ReadStoColumns(Path("out/states.sto"));
+  const std::vector<double>& time = contacts.at("time");
+  ASSERT_EQ(track.force.size(), time.size());
+  // In the air (it lands after sqrt(2 0.2 m / g) = 0.2 s): no arrow.
+  for (size_t k = 0; k < time.size() && time[k] < 0.15; ++k) {
+    EXPECT_EQ(track.force[k].norm(), 0.0) << "t = " << time[k];
+  }
+  const Vec3 rest = track.force.back();
+  EXPECT_NEAR(rest.y(), kWeight, 1e-3 + 1e-5 * kWeight);
+  EXPECT_NEAR(rest.y(), contacts.at("nsc_contact.ball.force.Y").back(), 1e-5 * kWeight);
+  EXPECT_NEAR(std::hypot(rest.x(), rest.z()), 0.0, 1e-3 + 1e-5 * kWeight);
+  const Vec3 centre(states.at("/jointset/free/tx/value").back(),
+                    states.at("/jointset/free/ty/value").back(),
+                    states.at("/jointset/free/tz/value").back());
+  EXPECT_NEAR(track.start.back().y(), -0.1, 1e-6);
+  EXPECT_NEAR(track.start.back().x(), centre.x(), 1e-5 + 1e-6);
+  EXPECT_NEAR(track.start.back().z(), centre.z(), 1e-5 + 1e-6);
+  ExpectTheSameArrowFromTheFiles(model, track);
 }
 
 // --ground-plane gives the floor when collision adds one.
