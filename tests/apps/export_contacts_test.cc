@@ -1,10 +1,11 @@
 // Contact forces in the viewer (docs/contact.md, "Seeing it"): `sinew simulate --export` draws
-// contacts.sto as arrows, and `sinew export --contacts` draws a contacts.sto again; a ball at rest
-// has an arrow of its weight from its contact point on the floor, the floor being the model's
-// ContactHalfSpace (or --ground-plane).
+// contacts.sto as arrows, `sinew export --contacts` draws a contacts.sto again and `sinew render
+// --contacts` draws one frame of it; a ball at rest has an arrow of its weight from its contact
+// point on the floor, the floor being the model's ContactHalfSpace (or --ground-plane).
 #include <gtest/gtest.h>
 #include <sinew/viz/image.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -178,6 +179,80 @@ TEST_F(ExportContactsTest, NscBallAtRestHasAnArrowOfItsWeightFromItsContactOnThe
   ExpectTheSameArrowFromTheFiles(model, track);
 }
 
+// The pixels of `image` that pass `is`, as (x, y).
+template <typename Test>
+std::vector<std::pair<int, int>> PixelsWhere(const viz::Image& image, Test is) {
+  std::vector<std::pair<int, int>> found;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const uint8_t* px = image.At(x, y);
+      if (is(px[0], px[1], px[2])) found.emplace_back(x, y);
+    }
+  }
+  return found;
+}
+
+bool IsGreen(int r, int g, int b) { return g > r + 40 && g > b + 40; }
+bool IsOrange(int r, int g, int b) { return r > g + 40 && r > b + 80; }  // the contact sphere
+
+// `sinew render --contacts` draws the arrow of the shown time, as the viewer does. The NSC ball
+// at rest on its floor at y = -0.1, seen from the front (8.5 degrees above): the arrow is the
+// only change to the picture, it stands on the ball's lowest point (its contact with the floor)
+// under its centre and, the weight being drawn half as long as the first pose's largest side
+// (the ball's 0.2 m diameter), it reaches the centre: one radius up (times cos 8.5 deg = 0.99).
+// In the air (t = 0.1 s) there is no force and the picture is the plain one.
+TEST_F(ExportContactsTest, RenderDrawsTheArrowOfTheShownTimeFromTheContactPoint) {
+  const std::string model = BallWithFloorAt(-0.1);
+  const CliRun run = Run("simulate " + model +
+                         " --collision --contact nsc --duration 1.5 --quiet --out " + Path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  auto render = [&](const std::string& options) {
+    const std::string png = Path("ball.png");
+    const CliRun r =
+        Run("render " + model + " --states " + Path("out/states.sto") +
+            " --vis primitives --view front --width 800 --height 800 " + options + " --out " + png);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return viz::DecodePng(viz::ReadFileBytes(png), png);
+  };
+  const std::string contacts = " --contacts " + Path("out/contacts.sto");
+  const viz::Image plain = render("--time 1.5");
+  const viz::Image arrow = render("--time 1.5" + contacts);
+  ASSERT_FALSE(HasFailure());
+  EXPECT_TRUE(PixelsWhere(plain, IsGreen).empty());
+  EXPECT_FALSE(PixelsWhere(arrow, IsGreen).empty());
+  EXPECT_EQ(render("--time 0.1" + contacts).rgb, render("--time 0.1").rgb);
+
+  // The arrow is what changed, and every changed pixel turned greener (its green over red rose:
+  // the arrow, or its antialiased edge, over the orange ball or the grey floor).
+  int x0 = arrow.width, x1 = -1, y0 = arrow.height, y1 = -1, changed = 0;
+  double arrow_x = 0;
+  for (int y = 0; y < arrow.height; ++y) {
+    for (int x = 0; x < arrow.width; ++x) {
+      const uint8_t *a = arrow.At(x, y), *p = plain.At(x, y);
+      if (std::equal(a, a + 3, p)) continue;
+      EXPECT_GT(a[1] - a[0], p[1] - p[0]) << x << ", " << y;
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      arrow_x += x, ++changed;
+    }
+  }
+  ASSERT_GT(changed, 40);  // an arrow some 25 pixels long and 2 wide
+  arrow_x /= changed;
+  // The ball in the plain picture: its centre column, its lowest row, its radius (pixels).
+  const auto ball = PixelsWhere(plain, IsOrange);
+  ASSERT_GT(ball.size(), 1000u);
+  int top = plain.height, bottom = -1;
+  double ball_x = 0;
+  for (const auto& [x, y] : ball) top = std::min(top, y), bottom = std::max(bottom, y), ball_x += x;
+  ball_x /= ball.size();
+  const double radius = 0.5 * (bottom - top + 1);
+  EXPECT_NEAR(arrow_x, ball_x, 1.0);  // under the centre
+  EXPECT_LE(x1 - x0, 6);              // upright: the head's width
+  EXPECT_NEAR(y1, bottom, 2.0);       // from the contact point, nothing below it
+  // Up to the centre: the head's tip narrower than the 0.5-pixel sample spacing (its first 1.4
+  // pixels) may cover no sample, and each row found is within a pixel.
+  EXPECT_NEAR(y0, bottom - 0.99 * radius, 3.0);
+}
+
 // --ground-plane gives the floor when collision adds one.
 TEST_F(ExportContactsTest, GroundPlaneOptionIsTheFloor) {
   const ParsedGlb glb =
@@ -209,10 +284,13 @@ TEST_F(ExportContactsTest, SmoothForceGroupsAreFoundThroughTheSockets) {
 
 TEST_F(ExportContactsTest, ContactsNeedAMotion) {
   std::ofstream(Path("contacts.sto")) << "Contacts\nendheader\ntime\n";
-  const CliRun run =
-      Run("export " + kBall + " --contacts " + Path("contacts.sto") + " -o " + Path("x.glb"));
-  EXPECT_NE(run.exit_code, 0);
-  EXPECT_NE(run.err.find("--contacts needs --motion or --states"), std::string::npos) << run.err;
+  for (const std::string out : {"x.glb", "x.png"}) {
+    const std::string command = out.ends_with(".png") ? "render " : "export ";
+    const CliRun run =
+        Run(command + kBall + " --contacts " + Path("contacts.sto") + " -o " + Path(out));
+    EXPECT_NE(run.exit_code, 0) << command;
+    EXPECT_NE(run.err.find("--contacts needs --motion or --states"), std::string::npos) << run.err;
+  }
 }
 
 }  // namespace
