@@ -35,35 +35,35 @@ void WarnNotes(const Diagnostics& notes, const std::string& what) {
   if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
 }
 
-// The table of `motion`: the path of a motion or states table, or a sinew.Result (its states).
-io::Storage TableOf(const py::object& motion) {
-  if (!py::hasattr(motion, "states") || !py::hasattr(motion, "labels")) {
-    return io::ReadStorage(py::str(py::module_::import("os").attr("fspath")(motion)));
+// The table `source` gives: the path of a table file, or a sinew.Result's table `values`
+// (the attribute holding it, [n, labels]) with its column names `labels`, over its `time`.
+io::Storage TableOf(const py::object& source, const char* name, const char* labels,
+                    const char* values) {
+  if (!py::hasattr(source, values) || !py::hasattr(source, labels)) {
+    return io::ReadStorage(py::str(py::module_::import("os").attr("fspath")(source)));
   }
   io::Storage table;
-  table.name = "states";
-  table.labels = motion.attr("labels").cast<std::vector<std::string>>();
-  const auto time = motion.attr("time").cast<DoubleArray>();
-  const auto states = motion.attr("states").cast<DoubleArray>();
+  table.name = name;
+  table.labels = source.attr(labels).cast<std::vector<std::string>>();
+  const auto time = source.attr("time").cast<DoubleArray>();
+  const auto data = source.attr(values).cast<DoubleArray>();
   table.time.assign(time.data(), time.data() + time.size());
-  table.values.assign(states.data(), states.data() + states.size());
+  table.values.assign(data.data(), data.data() + data.size());
   return table;
+}
+
+// The table of `motion`: the path of a motion or states table, or a sinew.Result (its states).
+io::Storage TableOf(const py::object& motion) {
+  return TableOf(motion, "states", "labels", "states");
 }
 
 // The table of `contacts`: the path of a contacts table (contacts.sto), or a sinew.Result (its
 // contacts, which must have columns).
 io::Storage ContactsTableOf(const py::object& contacts) {
-  if (!py::hasattr(contacts, "contacts") || !py::hasattr(contacts, "contact_labels")) {
-    return io::ReadStorage(py::str(py::module_::import("os").attr("fspath")(contacts)));
+  io::Storage table = TableOf(contacts, "Contacts", "contact_labels", "contacts");
+  if (table.labels.empty() && py::hasattr(contacts, "contact_labels")) {
+    throw Error("contacts: this run has no contacts table");
   }
-  io::Storage table;
-  table.name = "Contacts";
-  table.labels = contacts.attr("contact_labels").cast<std::vector<std::string>>();
-  if (table.labels.empty()) throw Error("contacts: this run has no contacts table");
-  const auto time = contacts.attr("time").cast<DoubleArray>();
-  const auto values = contacts.attr("contacts").cast<DoubleArray>();
-  table.time.assign(time.data(), time.data() + time.size());
-  table.values.assign(values.data(), values.data() + values.size());
   return table;
 }
 
