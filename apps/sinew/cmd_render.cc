@@ -1,9 +1,10 @@
-// `sinew render MODEL.osim [--motion FILE | --states FILE] [--time T] [--no-paths]
-//  [--collision] [--verbose] --out FILE.png`: a still picture made by the built-in software
-//  renderer (no display or GPU
-// needed).
+// `sinew render MODEL.osim [--motion FILE | --states FILE] [--time T] [--contacts FILE]
+//  [--no-paths] [--collision] [--verbose] --out FILE.png`: a still picture made by the built-in
+//  software renderer (no display or GPU needed), with the contact forces of a contacts.sto at
+//  the shown time as green arrows, as the viewer draws them.
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
+#include <sinew/viz/contact_arrows.h>
 #include <sinew/viz/gltf_writer.h>
 #include <sinew/viz/motion_poses.h>
 #include <sinew/viz/path_lines.h>
@@ -31,6 +32,7 @@ struct RenderArgs {
   std::string model;
   std::string motion;
   std::string states;
+  std::string contacts;
   double time = 0;
   bool has_time = false;
   std::string vis = "mesh";
@@ -59,6 +61,7 @@ void RunRender(const RenderArgs& args) {
   const std::string& table_file = args.motion.empty() ? args.states : args.motion;
   if (table_file.empty()) {
     if (args.has_time) throw Error("--time needs --states or --motion");
+    if (!args.contacts.empty()) throw Error("--contacts needs --motion or --states");
     frame = viz::DefaultPoseMotion(spec);
   } else {
     table = ReadTableFor(table_file, spec);
@@ -84,12 +87,16 @@ void RunRender(const RenderArgs& args) {
       lines = std::move(paths.vertices[0]);
     }
   }
-  PrintSceneWarnings(scene, args.verbose);
   viz::RenderOptions options;
   options.width = args.width;
   options.height = args.height;
   options.floor = !args.no_floor;
   options.floor_plane = viz::ViewFloor(spec, scene, frame);
+  if (!args.contacts.empty()) {
+    options.overlay = viz::ContactArrowPartsAt(spec, io::ReadStorage(args.contacts), table, frame,
+                                               scene, *options.floor_plane, &scene.warnings);
+  }
+  PrintSceneWarnings(scene, args.verbose);
   options.view_direction = viz::ParseViewDirection(args.view);
   viz::WriteFileBytes(args.out,
                       viz::EncodePng(viz::RenderFramed(scene, X_GB, options, lines, line_colors)));
@@ -105,6 +112,9 @@ void AddRenderCommand(CLI::App& app) {
   auto* motion = cmd->add_option("--motion", args->motion, "Coordinates over time (.mot/.sto)");
   auto* states = cmd->add_option("--states", args->states, "States over time (.sto)");
   motion->excludes(states);
+  cmd->add_option("--contacts", args->contacts,
+                  "Contact forces over time (a contacts.sto of `sinew simulate`), drawn at the "
+                  "shown time as green arrows, as in the viewer");
   cmd->add_option_function<double>(
          "--time", [args](double t) { args->time = t, args->has_time = true; },
          "Time (s) in the table to show (default: its first row)")

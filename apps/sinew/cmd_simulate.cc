@@ -45,9 +45,16 @@
 namespace sinew::cli {
 namespace {
 
-// The body of every column group "<force>.<group>" of the system's contact forces.
-viz::GroupBodies ContactGroupBodies(const engine::System& system) {
+// The body of every column group "<force>.<group>" of the system's contact forces and of NSC's
+// table, when there is one (engine body i is spec body i).
+viz::GroupBodies ContactGroupBodies(const engine::System& system,
+                                    const contact::NscContactTable* nsc) {
   viz::GroupBodies bodies;
+  if (nsc) {
+    for (const int b : nsc->bodies()) {
+      bodies[std::string(contact::kNscTableName) + "." + system.bodies()[b].name] = b;
+    }
+  }
   for (const auto& element : system.force_elements()) {
     const auto* force = dynamic_cast<const contact::ContactForce*>(element.get());
     if (!force) continue;
@@ -168,7 +175,7 @@ void RunSimulate(const SimulateOptions& options) {
     if (tables.writes_contacts()) {
       contacts = io::ReadStorage(files.contacts);
       export_options.contacts = &contacts;
-      export_options.contact_groups = ContactGroupBodies(system);
+      export_options.contact_groups = ContactGroupBodies(system, nsc_table ? &*nsc_table : nullptr);
     }
     PrintSceneWarnings(viz::ExportAnimation(spec, motion, options.export_file, export_options),
                        options.verbose);

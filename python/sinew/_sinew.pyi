@@ -149,17 +149,22 @@ class Model:
         """
     def export(self, path: PathLike, motion: Union[None, PathLike, Result] = None, *,
                visualization: str = "mesh", geometry_dirs: Sequence[str] = (),
-               fps: float = 0.0) -> None:
+               fps: float = 0.0, contacts: Union[None, PathLike, Result] = None) -> None:
         """Writes `motion` (as for kinematics) as a glTF file (.glb) or a self-contained HTML
         viewer (.html), byte for byte what `sinew export` writes. fps > 0 drops frames closer
-        than 1/fps s. Missing meshes are a UserWarning."""
+        than 1/fps s. contacts (a contacts.sto path, or a Result: its contacts table) adds the
+        contact forces as green arrows, as `sinew export --contacts` (needs a motion). Missing
+        meshes and contact groups that name no body are a UserWarning."""
     def render(self, path: PathLike, motion: Union[None, PathLike, Result] = None, *,
                time: Optional[float] = None, visualization: str = "mesh",
                geometry_dirs: Sequence[str] = (), width: int = 800, height: int = 800,
-               view: str = "iso", floor: bool = True) -> None:
+               view: str = "iso", floor: bool = True,
+               contacts: Union[None, PathLike, Result] = None) -> None:
         """Writes a PNG picture of the model at `time` (s) of `motion` (default: its first row;
         no motion: the default pose), byte for byte what `sinew render` writes. view: "iso",
-        "front", "back", "right", "left" or "top"."""
+        "front", "back", "right", "left" or "top". contacts (a contacts.sto path, or a Result:
+        its contacts table) draws the contact forces at `time` as green arrows, as `sinew
+        render --contacts` (needs a motion)."""
     def simulator(self, step: float, *, integrator: str = "euler", accuracy: float = 1e-6,
                   initial_states: Union[None, "State", PathLike] = None) -> "Simulator":
         """A Simulator that advances this model by `step` s per call."""

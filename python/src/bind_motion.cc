@@ -2,12 +2,14 @@
 // motion, its glTF/HTML export and a PNG picture, through the library's viz::MotionFromTable and
 // viz::PosesAtTime (coordinates by name or OpenSim 4 state path, degrees converted,
 // coupler-driven coordinates following their drivers), kinematics::CalcMarkerLocationRow,
-// viz::ExportAnimation and viz::RenderFramed, on the spec the model's System was built from
-// (stand-ins included), as `sinew kinematics`, `export` and `render` use them.
+// viz::ExportAnimation and viz::RenderFramed (with the contact arrows of a contacts table,
+// viz::ContactArrowPartsAt), on the spec the model's System was built from (stand-ins
+// included), as `sinew kinematics`, `export` and `render` use them.
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 #include <sinew/io/storage.h>
 #include <sinew/kinematics/body_kinematics.h>
+#include <sinew/viz/contact_arrows.h>
 #include <sinew/viz/export_animation.h>
 #include <sinew/viz/gltf_writer.h>
 #include <sinew/viz/image.h>
@@ -33,18 +35,35 @@ void WarnNotes(const Diagnostics& notes, const std::string& what) {
   if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
 }
 
-// The table of `motion`: the path of a motion or states table, or a sinew.Result (its states).
-io::Storage TableOf(const py::object& motion) {
-  if (!py::hasattr(motion, "states") || !py::hasattr(motion, "labels")) {
-    return io::ReadStorage(py::str(py::module_::import("os").attr("fspath")(motion)));
+// The table `source` gives: the path of a table file, or a sinew.Result's table `values`
+// (the attribute holding it, [n, labels]) with its column names `labels`, over its `time`.
+io::Storage TableOf(const py::object& source, const char* name, const char* labels,
+                    const char* values) {
+  if (!py::hasattr(source, values) || !py::hasattr(source, labels)) {
+    return io::ReadStorage(py::str(py::module_::import("os").attr("fspath")(source)));
   }
   io::Storage table;
-  table.name = "states";
-  table.labels = motion.attr("labels").cast<std::vector<std::string>>();
-  const auto time = motion.attr("time").cast<DoubleArray>();
-  const auto states = motion.attr("states").cast<DoubleArray>();
+  table.name = name;
+  table.labels = source.attr(labels).cast<std::vector<std::string>>();
+  const auto time = source.attr("time").cast<DoubleArray>();
+  const auto data = source.attr(values).cast<DoubleArray>();
   table.time.assign(time.data(), time.data() + time.size());
-  table.values.assign(states.data(), states.data() + states.size());
+  table.values.assign(data.data(), data.data() + data.size());
+  return table;
+}
+
+// The table of `motion`: the path of a motion or states table, or a sinew.Result (its states).
+io::Storage TableOf(const py::object& motion) {
+  return TableOf(motion, "states", "labels", "states");
+}
+
+// The table of `contacts`: the path of a contacts table (contacts.sto), or a sinew.Result (its
+// contacts, which must have columns).
+io::Storage ContactsTableOf(const py::object& contacts) {
+  io::Storage table = TableOf(contacts, "Contacts", "contact_labels", "contacts");
+  if (table.labels.empty() && py::hasattr(contacts, "contact_labels")) {
+    throw Error("contacts: this run has no contacts table");
+  }
   return table;
 }
 
@@ -88,11 +107,17 @@ py::dict Kinematics(const ModelPtr& model, const py::object& motion) {
 
 void Export(const ModelPtr& model, const std::filesystem::path& path, const py::object& motion,
             const std::string& visualization, const std::vector<std::string>& geometry_dirs,
-            double fps) {
+            double fps, const py::object& contacts) {
   viz::ExportOptions options;
   options.visual.mode = viz::ParseVisType(visualization);
   options.visual.geometry_dirs = geometry_dirs;
   options.max_fps = fps;
+  io::Storage contacts_table;
+  if (!contacts.is_none()) {
+    if (motion.is_none()) throw Error("export: contacts need a motion");
+    contacts_table = ContactsTableOf(contacts);
+    options.contacts = &contacts_table;  // groups found by name, as `sinew export --contacts`
+  }
   const viz::BodyMotion poses = MotionOf(*model, motion);
   WarnNotes(viz::ExportAnimation(model->spec(), poses, path.string(), options).warnings, "export");
 }
@@ -100,7 +125,7 @@ void Export(const ModelPtr& model, const std::filesystem::path& path, const py::
 void Render(const ModelPtr& model, const std::filesystem::path& path, const py::object& motion,
             std::optional<double> time, const std::string& visualization,
             const std::vector<std::string>& geometry_dirs, int width, int height,
-            const std::string& view, bool floor) {
+            const std::string& view, bool floor, const py::object& contacts) {
   viz::RenderOptions options;
   options.width = width;
   options.height = height;
@@ -109,11 +134,13 @@ void Render(const ModelPtr& model, const std::filesystem::path& path, const py::
   viz::CheckRenderSize(width, height);
   const model::ModelSpec& spec = model->spec();
   viz::BodyMotion frame;
+  io::Storage table;
   if (motion.is_none()) {
     if (time) throw Error("render: a time needs a motion");
+    if (!contacts.is_none()) throw Error("render: contacts need a motion");
     frame = viz::DefaultPoseMotion(spec);
   } else {
-    const io::Storage table = TableOf(motion);
+    table = TableOf(motion);
     Diagnostics notes;
     frame = viz::MotionAtTime(spec, table, time.value_or(table.time.empty() ? 0.0 : table.time[0]),
                               &notes);
@@ -122,9 +149,13 @@ void Render(const ModelPtr& model, const std::filesystem::path& path, const py::
   viz::VisualOptions visual;
   visual.mode = viz::ParseVisType(visualization);
   visual.geometry_dirs = geometry_dirs;
-  const viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
-  WarnNotes(scene.warnings, "render");
+  viz::VisualScene scene = viz::BuildVisualScene(spec, visual);
   options.floor_plane = viz::ViewFloor(spec, scene, frame);  // as `sinew render`
+  if (!contacts.is_none()) {
+    options.overlay = viz::ContactArrowPartsAt(spec, ContactsTableOf(contacts), table, frame, scene,
+                                               *options.floor_plane, &scene.warnings);
+  }
+  WarnNotes(scene.warnings, "render");
   viz::WriteFileBytes(path.string(),
                       viz::EncodePng(viz::RenderFramed(scene, frame.X_GB[0], options)));
 }
@@ -141,14 +172,18 @@ void BindMotion(py::module_& m) {
   model.def("export", &Export, py::arg("path"), py::arg("motion") = py::none(), py::kw_only(),
             py::arg("visualization") = "mesh",
             py::arg("geometry_dirs") = std::vector<std::string>{}, py::arg("fps") = 0.0,
+            py::arg("contacts") = py::none(),
             "Writes `motion` (as for kinematics) as a glTF (.glb) or a self-contained HTML "
-            "viewer (.html), as `sinew export` does.");
+            "viewer (.html), as `sinew export` does; `contacts` (a contacts.sto path or a "
+            "sinew.Result) adds the contact force arrows, as `sinew export --contacts`.");
   model.def("render", &Render, py::arg("path"), py::arg("motion") = py::none(), py::kw_only(),
             py::arg("time") = py::none(), py::arg("visualization") = "mesh",
             py::arg("geometry_dirs") = std::vector<std::string>{}, py::arg("width") = 800,
             py::arg("height") = 800, py::arg("view") = "iso", py::arg("floor") = true,
+            py::arg("contacts") = py::none(),
             "Writes a PNG picture of the model at `time` of `motion` (default: its first row; "
-            "no motion: the default pose), as `sinew render` does.");
+            "no motion: the default pose), as `sinew render` does; `contacts` (a contacts.sto "
+            "path or a sinew.Result) adds the contact force arrows, as `--contacts`.");
 }
 
 }  // namespace sinew::python

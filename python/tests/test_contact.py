@@ -1,8 +1,12 @@
 """Collision from Python: load(collision=True, contact="smc"|"nsc") makes the seed's collision
-shapes collide as `sinew simulate --collision --contact ...` does (docs/contact.md)."""
+shapes collide as `sinew simulate --collision --contact ...` does, and render/export draw its
+contact forces as `sinew render|export --contacts` do (docs/contact.md)."""
 import math
+import os
+import subprocess
 
 import numpy as np
+import pytest
 
 import sinew
 from conftest import DATA, read_sto
@@ -126,3 +130,48 @@ def test_contact_mesh_found_in_geometry_dirs_and_ball_rests_in_the_groove(tmp_pa
     tx = result.q[-1, result.coordinates.index("tx")]
     assert abs(ty - 0.1 * math.sqrt(5.0) / 2.0) < 1e-9, ty
     assert abs(tx) < 1e-9, tx
+
+
+def test_render_and_export_draw_contacts_as_the_cli_does(cli, tmp_path):
+    # Model.render(contacts=) and Model.export(contacts=) are `sinew render --contacts` and
+    # `sinew export --contacts` byte for byte, from a contacts.sto or from a Result (whose
+    # tables are the CLI's bit for bit, above). The NSC ball at rest at 1 s: the arrow changes
+    # the picture; in the air (0.1 s) the force is zero and the picture is the plain one.
+    program = os.environ["SINEW_CLI"]
+    states = cli([BALL, "--collision", "--contact", "nsc", "--duration", 1.0,
+                  "--report-interval", 0.01], tmp_path / "run")
+    contacts = states.parent / "contacts.sto"
+    result = sinew.load(BALL, collision=True, contact="nsc").simulate(1.0, report_interval=0.01)
+    model = sinew.load(BALL)
+    picture = ["--vis", "primitives", "--view", "front", "--width", "400", "--height", "400"]
+    for time in (1.0, 0.1):
+        subprocess.run([program, "render", BALL, "--states", states, "--contacts", contacts,
+                        "--time", str(time), *picture, "--out", tmp_path / "cli.png"],
+                       check=True, capture_output=True)
+        options = dict(time=time, visualization="primitives", view="front", width=400,
+                       height=400)
+        model.render(tmp_path / "path.png", states, contacts=contacts, **options)
+        model.render(tmp_path / "result.png", result, contacts=result, **options)
+        model.render(tmp_path / "plain.png", states, **options)
+        cli_png = (tmp_path / "cli.png").read_bytes()
+        assert (tmp_path / "path.png").read_bytes() == cli_png
+        assert (tmp_path / "result.png").read_bytes() == cli_png
+        assert ((tmp_path / "plain.png").read_bytes() == cli_png) == (time == 0.1)
+    subprocess.run([program, "export", BALL, "--states", states, "--contacts", contacts,
+                    "--vis", "primitives", "--out", tmp_path / "cli.glb"],
+                   check=True, capture_output=True)
+    model.export(tmp_path / "path.glb", states, visualization="primitives", contacts=contacts)
+    model.export(tmp_path / "result.glb", result, visualization="primitives", contacts=result)
+    model.export(tmp_path / "plain.glb", states, visualization="primitives")
+    cli_glb = (tmp_path / "cli.glb").read_bytes()
+    assert (tmp_path / "path.glb").read_bytes() == cli_glb
+    assert (tmp_path / "result.glb").read_bytes() == cli_glb
+    assert b"nsc_contact.ball" in cli_glb
+    assert b"nsc_contact.ball" not in (tmp_path / "plain.glb").read_bytes()
+    with pytest.raises(sinew.Error, match="contacts need a motion"):
+        model.render(tmp_path / "x.png", contacts=contacts)
+    with pytest.raises(sinew.Error, match="contacts need a motion"):
+        model.export(tmp_path / "x.glb", contacts=contacts)
+    with pytest.raises(sinew.Error, match="no contacts table"):
+        still = sinew.load(BALL).simulate(0.1)
+        model.render(tmp_path / "x.png", still, contacts=still)

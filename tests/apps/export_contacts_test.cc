@@ -1,10 +1,11 @@
 // Contact forces in the viewer (docs/contact.md, "Seeing it"): `sinew simulate --export` draws
-// contacts.sto as arrows, and `sinew export --contacts` draws a contacts.sto again; a ball at rest
-// has an arrow of its weight from its contact point on the floor, the floor being the model's
-// ContactHalfSpace (or --ground-plane).
+// contacts.sto as arrows, `sinew export --contacts` draws a contacts.sto again and `sinew render
+// --contacts` draws one frame of it; a ball at rest has an arrow of its weight from its contact
+// point on the floor, the floor being the model's ContactHalfSpace (or --ground-plane).
 #include <gtest/gtest.h>
 #include <sinew/viz/image.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -81,6 +82,22 @@ class ExportContactsTest : public testing::CliTest {
   ParsedGlb ReadGlb(const std::string& name) const {
     return viz::testing::ParseGlb(viz::ReadFileBytes(Path(name)));
   }
+  // `sinew export MODEL --states DIR/out/states.sto --contacts DIR/out/contacts.sto` draws, from
+  // the files, the same one arrow (the group found by the body's name) as `rest` at the end.
+  void ExpectTheSameArrowFromTheFiles(const std::string& model, const ArrowTrack& track) const {
+    const CliRun again =
+        Run("export " + model + " --states " + Path("out/states.sto") + " --contacts " +
+            Path("out/contacts.sto") + " -o " + Path("again.glb"));
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    const ParsedGlb other = ReadGlb("again.glb");
+    const nlohmann::json& arrows = other.doc["scenes"][0]["extras"]["contact_arrows"];
+    ASSERT_EQ(arrows["arrows"].size(), 1u);
+    EXPECT_EQ(arrows["arrows"][0]["body"], 1);
+    const ArrowTrack same = ReadArrow(other, arrows["arrows"][0]["node"]);
+    ASSERT_EQ(same.force.size(), track.force.size());
+    EXPECT_NEAR((same.force.back() - track.force.back()).norm(), 0.0, 1e-5 * kWeight);
+    EXPECT_NEAR((same.start.back() - track.start.back()).norm(), 0.0, 1e-6);
+  }
   // `sinew simulate MODEL OPTIONS --quiet --out DIR/out --export DIR/ball.glb`, checked to succeed.
   ParsedGlb SimulateAndExport(const std::string& model, const std::string& options) const {
     const CliRun run = Run("simulate " + model + " " + options + " --quiet --out " + Path("out") +
@@ -123,18 +140,117 @@ TEST_F(ExportContactsTest, BallAtRestHasAnArrowOfItsWeightFromItsContactOnTheFlo
   EXPECT_NEAR(track.start.back().x(), 0.0, 1e-6);
   EXPECT_NEAR(track.start.back().z(), 0.0, 1e-6);
 
-  // `sinew export --states --contacts` draws the same arrows from the files (the group found
-  // by the body's name).
-  const CliRun again = Run("export " + model + " --states " + Path("out/states.sto") +
-                           " --contacts " + Path("out/contacts.sto") + " -o " + Path("again.glb"));
-  ASSERT_EQ(again.exit_code, 0) << again.err;
-  const ParsedGlb other = ReadGlb("again.glb");
-  const nlohmann::json& other_arrows = other.doc["scenes"][0]["extras"]["contact_arrows"];
-  ASSERT_EQ(other_arrows["arrows"].size(), 1u);
-  EXPECT_EQ(other_arrows["arrows"][0]["body"], 1);
-  const ArrowTrack same = ReadArrow(other, other_arrows["arrows"][0]["node"]);
-  EXPECT_NEAR((same.force.back() - rest).norm(), 0.0, 1e-5 * kWeight);
-  EXPECT_NEAR((same.start.back() - track.start.back()).norm(), 0.0, 1e-6);
+  ExpectTheSameArrowFromTheFiles(model, track);
+}
+
+// The same ball settling through NSC (`--contact nsc`, its default 1 ms step): contacts.sto's
+// nsc_contact.ball group is drawn like SMC's. At rest the solver's tolerance (1e-6 m/s on the
+// contact velocities) bounds each impulse's error by m 1e-6 m/s, so the force (impulse / h) is
+// the weight to 1e-3 N and its sideways part below 1e-3 N; such a friction force at the
+// 0.1 m radius moves the line of action by at most 1e-4 N m / m g = 1e-5 m from the centre. The
+// floats of the .glb keep 1e-5 of the weight and 1e-6 m.
+TEST_F(ExportContactsTest, NscBallAtRestHasAnArrowOfItsWeightFromItsContactOnTheFloor) {
+  const std::string model = BallWithFloorAt(-0.1);
+  const ParsedGlb glb = SimulateAndExport(model, "--collision --contact nsc --duration 1.5");
+  ASSERT_FALSE(HasFailure());
+  const nlohmann::json& arrows = glb.doc["scenes"][0]["extras"]["contact_arrows"];
+  ASSERT_EQ(arrows["arrows"].size(), 1u);  // the ball's; ground's reaction is not drawn
+  EXPECT_EQ(arrows["arrows"][0]["name"], "nsc_contact.ball");
+  EXPECT_EQ(arrows["arrows"][0]["body"], 1);
+  const ArrowTrack track = ReadArrow(glb, arrows["arrows"][0]["node"]);
+  const auto contacts = engine::testing::ReadStoColumns(Path("out/contacts.sto"));
+  const auto states = engine::testing::ReadStoColumns(Path("out/states.sto"));
+  const std::vector<double>& time = contacts.at("time");
+  ASSERT_EQ(track.force.size(), time.size());
+  // In the air (it lands after sqrt(2 0.2 m / g) = 0.2 s): no arrow.
+  for (size_t k = 0; k < time.size() && time[k] < 0.15; ++k) {
+    EXPECT_EQ(track.force[k].norm(), 0.0) << "t = " << time[k];
+  }
+  const Vec3 rest = track.force.back();
+  EXPECT_NEAR(rest.y(), kWeight, 1e-3 + 1e-5 * kWeight);
+  EXPECT_NEAR(rest.y(), contacts.at("nsc_contact.ball.force.Y").back(), 1e-5 * kWeight);
+  EXPECT_NEAR(std::hypot(rest.x(), rest.z()), 0.0, 1e-3 + 1e-5 * kWeight);
+  const Vec3 centre(states.at("/jointset/free/tx/value").back(),
+                    states.at("/jointset/free/ty/value").back(),
+                    states.at("/jointset/free/tz/value").back());
+  EXPECT_NEAR(track.start.back().y(), -0.1, 1e-6);
+  EXPECT_NEAR(track.start.back().x(), centre.x(), 1e-5 + 1e-6);
+  EXPECT_NEAR(track.start.back().z(), centre.z(), 1e-5 + 1e-6);
+  ExpectTheSameArrowFromTheFiles(model, track);
+}
+
+// The pixels of `image` that pass `is`, as (x, y).
+template <typename Test>
+std::vector<std::pair<int, int>> PixelsWhere(const viz::Image& image, Test is) {
+  std::vector<std::pair<int, int>> found;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const uint8_t* px = image.At(x, y);
+      if (is(px[0], px[1], px[2])) found.emplace_back(x, y);
+    }
+  }
+  return found;
+}
+
+bool IsGreen(int r, int g, int b) { return g > r + 40 && g > b + 40; }
+bool IsOrange(int r, int g, int b) { return r > g + 40 && r > b + 80; }  // the contact sphere
+
+// `sinew render --contacts` draws the arrow of the shown time, as the viewer does. The NSC ball
+// at rest on its floor at y = -0.1, seen from the front (8.5 degrees above): the arrow is the
+// only change to the picture, it stands on the ball's lowest point (its contact with the floor)
+// under its centre and, the weight being drawn half as long as the first pose's largest side
+// (the ball's 0.2 m diameter), it reaches the centre: one radius up (times cos 8.5 deg = 0.99).
+// In the air (t = 0.1 s) there is no force and the picture is the plain one.
+TEST_F(ExportContactsTest, RenderDrawsTheArrowOfTheShownTimeFromTheContactPoint) {
+  const std::string model = BallWithFloorAt(-0.1);
+  const CliRun run = Run("simulate " + model +
+                         " --collision --contact nsc --duration 1.5 --quiet --out " + Path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  auto render = [&](const std::string& options) {
+    const std::string png = Path("ball.png");
+    const CliRun r =
+        Run("render " + model + " --states " + Path("out/states.sto") +
+            " --vis primitives --view front --width 800 --height 800 " + options + " --out " + png);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return viz::DecodePng(viz::ReadFileBytes(png), png);
+  };
+  const std::string contacts = " --contacts " + Path("out/contacts.sto");
+  const viz::Image plain = render("--time 1.5");
+  const viz::Image arrow = render("--time 1.5" + contacts);
+  ASSERT_FALSE(HasFailure());
+  EXPECT_TRUE(PixelsWhere(plain, IsGreen).empty());
+  EXPECT_FALSE(PixelsWhere(arrow, IsGreen).empty());
+  EXPECT_EQ(render("--time 0.1" + contacts).rgb, render("--time 0.1").rgb);
+
+  // The arrow is what changed, and every changed pixel turned greener (its green over red rose:
+  // the arrow, or its antialiased edge, over the orange ball or the grey floor).
+  int x0 = arrow.width, x1 = -1, y0 = arrow.height, y1 = -1, changed = 0;
+  double arrow_x = 0;
+  for (int y = 0; y < arrow.height; ++y) {
+    for (int x = 0; x < arrow.width; ++x) {
+      const uint8_t *a = arrow.At(x, y), *p = plain.At(x, y);
+      if (std::equal(a, a + 3, p)) continue;
+      EXPECT_GT(a[1] - a[0], p[1] - p[0]) << x << ", " << y;
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      arrow_x += x, ++changed;
+    }
+  }
+  ASSERT_GT(changed, 40);  // an arrow some 25 pixels long and 2 wide
+  arrow_x /= changed;
+  // The ball in the plain picture: its centre column, its lowest row, its radius (pixels).
+  const auto ball = PixelsWhere(plain, IsOrange);
+  ASSERT_GT(ball.size(), 1000u);
+  int top = plain.height, bottom = -1;
+  double ball_x = 0;
+  for (const auto& [x, y] : ball) top = std::min(top, y), bottom = std::max(bottom, y), ball_x += x;
+  ball_x /= ball.size();
+  const double radius = 0.5 * (bottom - top + 1);
+  EXPECT_NEAR(arrow_x, ball_x, 1.0);  // under the centre
+  EXPECT_LE(x1 - x0, 6);              // upright: the head's width
+  EXPECT_NEAR(y1, bottom, 2.0);       // from the contact point, nothing below it
+  // Up to the centre: the head's tip narrower than the 0.5-pixel sample spacing (its first 1.4
+  // pixels) may cover no sample, and each row found is within a pixel.
+  EXPECT_NEAR(y0, bottom - 0.99 * radius, 3.0);
 }
 
 // --ground-plane gives the floor when collision adds one.
@@ -168,10 +284,13 @@ TEST_F(ExportContactsTest, SmoothForceGroupsAreFoundThroughTheSockets) {
 
 TEST_F(ExportContactsTest, ContactsNeedAMotion) {
   std::ofstream(Path("contacts.sto")) << "Contacts\nendheader\ntime\n";
-  const CliRun run =
-      Run("export " + kBall + " --contacts " + Path("contacts.sto") + " -o " + Path("x.glb"));
-  EXPECT_NE(run.exit_code, 0);
-  EXPECT_NE(run.err.find("--contacts needs --motion or --states"), std::string::npos) << run.err;
+  for (const std::string out : {"x.glb", "x.png"}) {
+    const std::string command = out.ends_with(".png") ? "render " : "export ";
+    const CliRun run =
+        Run(command + kBall + " --contacts " + Path("contacts.sto") + " -o " + Path(out));
+    EXPECT_NE(run.exit_code, 0) << command;
+    EXPECT_NE(run.err.find("--contacts needs --motion or --states"), std::string::npos) << run.err;
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <sinew/viz/primitive_shapes.h>
 #include <sinew/viz/rasterizer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -78,6 +79,35 @@ TEST(RasterizerTest, NearerSurfaceHidesFartherOneAndBodiesFollowTheirPoses) {
       RenderScene(scene, {Transform(), Transform::Translation(Vec3(0, 0, -1))}, camera, options);
   EXPECT_GT(image.At(50, 50)[0], 100);
   EXPECT_LT(image.At(50, 50)[1], 10);
+}
+
+TEST(RasterizerTest, OverlayIsDrawnOverTheModelAndLeavesTheRestAlone) {
+  // A green sphere behind a red box (seen from +z), given as an overlay part in ground: it
+  // shows at the centre as the viewer's contact arrows do (over the model), and only the
+  // pixels it covers change.
+  VisualScene scene = OnePart(UnitBox(), Vec3::Constant(0.5), Vec3(1, 0, 0));
+  Camera camera;
+  camera.eye = Vec3(0, 0, 4);
+  RenderOptions options;
+  options.width = options.height = 100;
+  const Image plain = RenderScene(scene, {Transform()}, camera, options);
+  VisualPart ball;
+  ball.mesh = UnitSphere();
+  ball.scale = Vec3::Constant(0.2);
+  ball.color = Vec3(0, 1, 0);
+  ball.X_BG = Transform::Translation(Vec3(0, 0, -1));
+  options.overlay = {ball};
+  const Image over = RenderScene(scene, {Transform()}, camera, options);
+  EXPECT_GT(over.At(50, 50)[1], 100);  // green over the box
+  EXPECT_LT(over.At(50, 50)[0], 10);
+  // The sphere (radius 0.2 at 5 m) spans f 0.2 / 5 = 6.5 pixels either side of the centre, f =
+  // 50 / tan(0.3): the corners, farther than 10 pixels, are the plain picture's.
+  for (int y = 0; y < 100; ++y) {
+    for (int x = 0; x < 100; ++x) {
+      if (std::hypot(x + 0.5 - 50, y + 0.5 - 50) < 10) continue;
+      EXPECT_TRUE(std::equal(over.At(x, y), over.At(x, y) + 3, plain.At(x, y))) << x << ", " << y;
+    }
+  }
 }
 
 TEST(RasterizerTest, FramedCameraKeepsTheSceneInsideTheImage) {

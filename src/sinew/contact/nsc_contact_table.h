@@ -30,6 +30,10 @@ class NscContactTable {
   /// "nsc_contact.<body1>-<body2>.active_contacts".
   const std::vector<std::string>& labels() const { return labels_; }
 
+  /// The bodies with columns, in labels() order (engine body indices, 0 = ground): the body of
+  /// column group "nsc_contact.<name of bodies()[i]>".
+  const std::vector<int>& bodies() const { return bodies_; }
+
   /// The values of the integrator's last step in labels() order (`row` is resized): its
   /// contact impulses divided by its length, and the contacts whose normal impulse is > 0.
   /// Zero before the first step.

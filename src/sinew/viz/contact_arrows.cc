@@ -1,4 +1,6 @@
 #include <sinew/viz/contact_arrows.h>
+#include <sinew/viz/motion_poses.h>
+#include <sinew/viz/primitive_shapes.h>
 #include <sinew/viz/rasterizer.h>
 
 #include <algorithm>
@@ -178,6 +180,69 @@ ContactArrows ContactArrowsFromTable(const model::ModelSpec& spec, const io::Sto
     }
   }
   return arrows;
+}
+
+ArrowShape ArrowShapeAt(const ContactArrows& arrows, size_t frame, size_t i) {
+  ArrowShape shape;
+  shape.start = arrows.start[frame][i];
+  const Vec3& F = arrows.force[frame][i];
+  const double length = F.norm() * arrows.metres_per_newton;
+  if (!(length > 0)) return shape;
+  const double unit = arrows.unit_length;
+  const double head = 0.2 * unit, head_radius = 0.07 * unit;
+  shape.length = length;
+  shape.head_length = std::min(length, head);
+  shape.shaft_length = length - shape.head_length;
+  shape.shaft_radius = 0.025 * unit;
+  const double thin = shape.head_length / head;  // a short arrow's head shrinks with it
+  shape.head_radius = head_radius * thin;
+  shape.rotation = Quat::FromTwoVectors(Vec3::UnitY(), F);
+  shape.rotation.normalize();
+  return shape;
+}
+
+std::shared_ptr<const io::TriangleMesh> ArrowShaftMesh() {
+  static const std::shared_ptr<const io::TriangleMesh> shaft = [] {
+    auto mesh = std::make_shared<io::TriangleMesh>(*UnitCylinder());
+    for (io::Vec3f& p : mesh->positions) p.y() = 0.5f * (p.y() + 1.0f);  // moved up and halved
+    return mesh;
+  }();
+  return shaft;
+}
+
+std::vector<VisualPart> ContactArrowParts(const ContactArrows& arrows, size_t frame) {
+  std::vector<VisualPart> parts;
+  for (size_t i = 0; i < arrows.names.size(); ++i) {
+    const ArrowShape shape = ArrowShapeAt(arrows, frame, i);
+    if (!(shape.length > 0)) continue;
+    const Mat3 R = shape.rotation.toRotationMatrix();
+    VisualPart shaft;
+    shaft.name = "contact " + arrows.names[i];
+    shaft.mesh = ArrowShaftMesh();
+    shaft.X_BG = Transform(R, shape.start);
+    shaft.scale = Vec3(shape.shaft_radius, shape.shaft_length, shape.shaft_radius);
+    shaft.color = kContactArrowColor;
+    shaft.source = "contact arrow";
+    VisualPart head = shaft;
+    head.mesh = UnitCone();
+    head.X_BG.p = shape.start + R * Vec3(0, shape.shaft_length, 0);
+    head.scale = Vec3(shape.head_radius, shape.head_length, shape.head_radius);
+    if (shape.shaft_length > 0) parts.push_back(std::move(shaft));
+    parts.push_back(std::move(head));
+  }
+  return parts;
+}
+
+std::vector<VisualPart> ContactArrowPartsAt(const model::ModelSpec& spec,
+                                            const io::Storage& contacts, const io::Storage& table,
+                                            const BodyMotion& shown, const VisualScene& scene,
+                                            const FloorPlane& floor, Diagnostics* notes) {
+  if (shown.times.empty() || shown.X_GB.empty()) return {};
+  BodyMotion two;
+  const double first = table.time.empty() ? shown.times[0] : table.time.front();
+  two.times = {first, shown.times[0]};
+  two.X_GB = {PosesAtTime(spec, table, first), shown.X_GB[0]};
+  return ContactArrowParts(ContactArrowsFromTable(spec, contacts, two, scene, floor, {}, notes), 1);
 }
 
 }  // namespace sinew::viz

@@ -1,5 +1,6 @@
-// Contact forces as arrows for the viewer: per frame, each body's net contact force read from a
-// contacts table (`sinew simulate`'s contacts.sto) and the point its arrow starts at.
+// Contact forces as arrows for the viewer and `sinew render`: per frame, each body's net contact
+// force read from a contacts table (`sinew simulate`'s contacts.sto), the point its arrow starts
+// at, and the arrow's shape.
 #pragma once
 
 #include <sinew/common/error.h>
@@ -10,6 +11,7 @@
 #include <sinew/viz/visual_scene.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -53,5 +55,43 @@ ContactArrows ContactArrowsFromTable(const model::ModelSpec& spec, const io::Sto
                                      const BodyMotion& motion, const VisualScene& scene,
                                      const FloorPlane& floor, const GroupBodies& known,
                                      Diagnostics* notes);
+
+/// The arrows' green (RGB in [0, 1]), in the viewer and in `sinew render`.
+inline const Vec3 kContactArrowColor = Vec3(0.15, 0.75, 0.25);
+
+/// How one arrow is drawn at one frame: from `start` along the force (+y turned by
+/// `rotation`), `length` = |F| metres_per_newton long: a shaft (a cylinder of radius
+/// shaft_radius, shaft_length long) then a head (a cone of base radius head_radius,
+/// head_length long). The head is 0.2 unit_length long and 0.07 unit_length wide, the shaft
+/// 0.025 unit_length wide; an arrow shorter than its head is all head, narrowed in proportion.
+/// Without force, length is 0 and nothing is drawn.
+struct ArrowShape {
+  Vec3 start = Vec3::Zero();
+  Quat rotation = Quat::Identity();
+  double length = 0;
+  double shaft_length = 0, shaft_radius = 0;
+  double head_length = 0, head_radius = 0;
+};
+
+/// The shape of arrow `i` of `arrows` at `frame`.
+ArrowShape ArrowShapeAt(const ContactArrows& arrows, size_t frame, size_t i);
+
+/// A cylinder of radius 1 along y from y = 0 to y = 1: the arrows' shaft, scaled.
+std::shared_ptr<const io::TriangleMesh> ArrowShaftMesh();
+
+/// The arrows of `frame` as parts in ground (each part's X_BG is its pose in ground): per
+/// arrow with a force, its shaft (ArrowShaftMesh) and its head (UnitCone), in
+/// kContactArrowColor.
+std::vector<VisualPart> ContactArrowParts(const ContactArrows& arrows, size_t frame);
+
+/// The arrows `sinew render` draws at one time of a motion: ContactArrowsFromTable on the two
+/// frames {the first row of `table`, `shown`} (no known groups: every group found by name), so
+/// that the scale is the viewer's (from the motion's first frame), as parts at `shown`
+/// (ContactArrowParts). `shown` is one frame of `table` (MotionAtTime). For a model that weighs
+/// nothing the reference force is the larger of the two frames', not the whole motion's.
+std::vector<VisualPart> ContactArrowPartsAt(const model::ModelSpec& spec,
+                                            const io::Storage& contacts, const io::Storage& table,
+                                            const BodyMotion& shown, const VisualScene& scene,
+                                            const FloorPlane& floor, Diagnostics* notes);
 
 }  // namespace sinew::viz

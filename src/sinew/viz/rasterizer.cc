@@ -182,6 +182,11 @@ class Canvas {
     }
   }
 
+  // Forgets every depth drawn so far: what is drawn next lies over it.
+  void ClearDepth() {
+    std::fill(depth_.begin(), depth_.end(), std::numeric_limits<float>::infinity());
+  }
+
   // Averages each block of supersample x supersample samples into one pixel.
   Image Resolve(int width, int height, int supersample) const {
     Image image(width, height);
@@ -308,6 +313,16 @@ Image RenderScene(const VisualScene& scene, const std::vector<Transform>& X_GB,
     const Vec3& color = i < line_colors.size() ? line_colors[i] : options.line_color;
     for (size_t j = 1; j < line.size(); ++j) {
       canvas.DrawSegment(line[j - 1], line[j], color, options.line_width * kSupersample);
+    }
+  }
+  if (!options.overlay.empty()) canvas.ClearDepth();
+  for (const VisualPart& part : options.overlay) {
+    if (!part.mesh || part.mesh->empty()) continue;
+    const PosedPart posed = Pose(part, Transform::Identity());
+    for (const auto& t : part.mesh->triangles) {
+      const Vec3 p[3] = {posed.positions[t[0]], posed.positions[t[1]], posed.positions[t[2]]};
+      const Vec3 n[3] = {posed.normals[t[0]], posed.normals[t[1]], posed.normals[t[2]]};
+      canvas.DrawTriangle(p, n, part.color, part.opacity, true, key);
     }
   }
   return canvas.Resolve(options.width, options.height, kSupersample);

@@ -35,6 +35,10 @@ struct RenderOptions {
   std::optional<FloorPlane> floor_plane;
   Vec3 line_color = Vec3(0.8, 0.1, 0.1);  ///< RGB of the lines (muscle paths).
   double line_width = 2.0;                ///< Line width (pixels).
+  /// Parts in ground (X_BG is each one's pose in ground) drawn last, over the model and the
+  /// lines (depth-tested only among themselves), casting no shadow, as the viewer draws the
+  /// contact force arrows (ContactArrowParts). The camera's framing leaves them out.
+  std::vector<VisualPart> overlay;
 };
 
 /// Parses a view name: "front" (from +x), "back", "right" (from +z), "left", "top" or "iso".

@@ -5,16 +5,7 @@
 namespace sinew::viz::internal {
 namespace {
 
-const Vec3 kArrowColor(0.15, 0.75, 0.25);
-
 json ToJson(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
-
-// A cylinder of radius 1 from y = 0 to y = 1 (the unit cylinder moved up and halved).
-io::TriangleMesh ShaftMesh() {
-  io::TriangleMesh mesh = *UnitCylinder();
-  for (io::Vec3f& p : mesh.positions) p.y() = 0.5f * (p.y() + 1.0f);
-  return mesh;
-}
 
 // One arrow's node values at one frame.
 struct ArrowPose {
@@ -27,22 +18,15 @@ struct ArrowPose {
 };
 
 ArrowPose PoseOf(const ContactArrows& arrows, size_t frame, size_t i) {
+  const ArrowShape shape = ArrowShapeAt(arrows, frame, i);
   ArrowPose pose;
-  pose.start = arrows.start[frame][i];
-  const Vec3& F = arrows.force[frame][i];
-  const double length = F.norm() * arrows.metres_per_newton;
-  if (!(length > 0)) return pose;
-  const double unit = arrows.unit_length;
-  const double head = 0.2 * unit, head_radius = 0.07 * unit, shaft_radius = 0.025 * unit;
-  const double head_length = std::min(length, head);
-  const double shaft_length = length - head_length;
-  pose.rotation = Quat::FromTwoVectors(Vec3::UnitY(), F);
-  pose.rotation.normalize();
+  pose.start = shape.start;
+  if (!(shape.length > 0)) return pose;
+  pose.rotation = shape.rotation;
   pose.scale = 1;
-  pose.shaft_scale = Vec3(shaft_radius, shaft_length, shaft_radius);
-  pose.head_translation = Vec3(0, shaft_length, 0);
-  const double thin = head_length / head;  // a short arrow's head shrinks with it
-  pose.head_scale = Vec3(head_radius * thin, head_length, head_radius * thin);
+  pose.shaft_scale = Vec3(shape.shaft_radius, shape.shaft_length, shape.shaft_radius);
+  pose.head_translation = Vec3(0, shape.shaft_length, 0);
+  pose.head_scale = Vec3(shape.head_radius, shape.head_length, shape.head_radius);
   return pose;
 }
 
@@ -80,7 +64,8 @@ int AddArrowNodes(json& doc, BinaryBuilder& bin, const ContactArrows& arrows,
   doc["materials"].push_back(
       {{"name", "contact forces"},
        {"pbrMetallicRoughness",
-        {{"baseColorFactor", {kArrowColor.x(), kArrowColor.y(), kArrowColor.z(), 1.0}},
+        {{"baseColorFactor",
+          {kContactArrowColor.x(), kContactArrowColor.y(), kContactArrowColor.z(), 1.0}},
          {"metallicFactor", 0.0},
          {"roughnessFactor", 0.6}}}});
   const size_t material = doc["materials"].size() - 1;
@@ -90,7 +75,7 @@ int AddArrowNodes(json& doc, BinaryBuilder& bin, const ContactArrows& arrows,
     doc["meshes"].push_back({{"name", name}, {"primitives", json::array({primitive})}});
     return doc["meshes"].size() - 1;
   };
-  const size_t shaft_mesh = add_mesh("arrow shaft", ShaftMesh());
+  const size_t shaft_mesh = add_mesh("arrow shaft", *ArrowShaftMesh());
   const size_t head_mesh = add_mesh("arrow head", *UnitCone());
   auto add_node = [&](json node) {
     doc["nodes"].push_back(std::move(node));
