@@ -5,6 +5,7 @@
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/dynamics.h>
 #include <sinew/engine/integrator.h>
+#include <sinew/engine/nsc_integrator.h>
 #include <sinew/engine/system.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/opensim/build_system.h>
@@ -23,6 +24,8 @@
 #include <new>
 #include <string>
 
+#include "contact/contact_models.h"
+#include "contact/sphere_contact_provider.h"
 #include "engine/chain_model.h"
 
 namespace {
@@ -229,6 +232,23 @@ TEST(EvaluationAllocationTest, EulerStepsWithoutHeapUse) {
     EXPECT_EQ(AllocationsPerSteps(*integrator, state, 20), 0) << system->num_bodies();
     EXPECT_EQ(integrator->stats().steps, 25);
   }
+}
+
+TEST(EvaluationAllocationTest, NscStepsWithoutHeapUse) {
+  // The NSC stepper's own buffers (the free step, the State, the contact rows and the
+  // Delassus operator) are reused: a ball resting on the floor, one contact per step.
+  const auto system = sinew::testing::ParseContactModel(
+      sinew::testing::FreeBodyContactModel(1.0, Vec3::Constant(0.004), Vec3(0, -9.80665, 0), 0.1,
+                                    {Vec3::Zero()}, ""),
+      "nsc_ball.osim");
+  auto provider = std::make_shared<sinew::testing::SphereContactProvider>(
+      std::vector<sinew::testing::TestSphere>{{1, Vec3::Zero(), 0.1}}, true, 0.4, 0.0, 1e-3);
+  NscIntegrator integrator(*system, provider, {.step = 1e-3});
+  State state = MakeDefaultState(*system);
+  SetCoordinateValue(*system, state, "ty", 0.1);
+  for (int i = 0; i < 5; ++i) integrator.Advance(state, 1.0);
+  EXPECT_EQ(AllocationsPerSteps(integrator, state, 20), 0);
+  EXPECT_EQ(integrator.last_contacts().size(), 1u);  // it rests on the floor throughout
 }
 
 TEST(EvaluationAllocationTest, ContactForcesEvaluateWithoutHeapUse) {

@@ -30,7 +30,8 @@ class SphereContactProvider final : public engine::ContactProvider {
 
   void FindContacts(const engine::System&, const engine::State& state,
                     std::vector<engine::UnilateralContact>& contacts) const override {
-    std::vector<Vec3> centres;
+    std::vector<Vec3>& centres = centres_;  // reused: no heap use once sized
+    centres.clear();
     for (const TestSphere& s : spheres_) {
       const engine::BodyState& b = state.bodies[s.body];
       centres.push_back(b.p_GB + b.quat_GB * s.p_BC);
@@ -54,6 +55,7 @@ class SphereContactProvider final : public engine::ContactProvider {
   }
 
  private:
+  mutable std::vector<Vec3> centres_;
   std::vector<TestSphere> spheres_;
   bool ground_;
   double friction_, restitution_, envelope_;

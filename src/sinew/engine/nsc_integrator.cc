@@ -54,11 +54,14 @@ void NscIntegrator::Step(State& state, double h, double t_new) {
   const Accelerations& acc = Evaluate(state, zdot_);  // factorizes kkt_ at the step's start
   // 1. The step without contact: M v_free + J^T (h lambda) = M (v + h vdot) + J^T (h lambda_a),
   //    J v_free = c(t + h) (as "euler").
-  v0_ = GatherVelocities(system_, kkt_, state);
+  v0_.resize(nv);
+  GatherVelocities(system_, kkt_, state, v0_);
   rhs_.resize(nv + nc);
   v_free_ = v0_ + h * acc.vdot;
-  rhs_.head(nv) = kkt_.MultiplyMass(v_free_);
-  State later = state;
+  kkt_.MultiplyMass(v_free_, mv_);
+  rhs_.head(nv) = mv_;
+  State& later = later_;
+  later = state;
   later.t = t_new;
   SetVelocityRhs(later, rhs_);
   kkt_.Solve(rhs_, solution_);
@@ -73,10 +76,11 @@ void NscIntegrator::Step(State& state, double h, double t_new) {
     previous_contacts_.clear();
   }
   ScatterVelocities(system_, kkt_, v_free_, later);
-  ApplyPositionDisplacement(system_, kkt_, h * v_free_, later);
+  dx_ = h * v_free_;
+  ApplyPositionDisplacement(system_, kkt_, dx_, later);
   later.z += h * zdot_;
   ProjectAfterStep(later, state.t);
-  state = std::move(later);
+  std::swap(state, later);
 }
 
 void NscIntegrator::SolveContacts(const State& state, double h) {
