@@ -245,12 +245,23 @@ TEST_F(ExportContactsTest, RenderDrawsTheArrowOfTheShownTimeFromTheContactPoint)
   for (const auto& [x, y] : ball) top = std::min(top, y), bottom = std::max(bottom, y), ball_x += x;
   ball_x /= ball.size();
   const double radius = 0.5 * (bottom - top + 1);
+  // The camera is framed on the ball, not on the floor's slab (a stand-in for an unbounded
+  // half-space): the ball's bounding sphere (radius sqrt(3) r) fills the view with 5% margin,
+  // so the ball spans 1 / (1.05 sqrt(3)) = 55% of the picture's height.
+  EXPECT_GT(2.0 * radius, 0.5 * plain.height);
   EXPECT_NEAR(arrow_x, ball_x, 1.0);  // under the centre
-  EXPECT_LE(x1 - x0, 6);              // upright: the head's width
-  EXPECT_NEAR(y1, bottom, 2.0);       // from the contact point, nothing below it
+  // Upright: no wider than its head, 0.14 of the weight's drawn length (one radius), plus a
+  // pixel of antialiasing on each side.
+  EXPECT_LE(x1 - x0, 0.14 * radius + 2.0);
+  // From the contact point, nothing below it. The contact point is seen r (1 - cos 8.5 deg),
+  // 1.1% of the radius, above the silhouette's lowest row, and perspective widens the
+  // silhouette by 1 / cos(a) - 1 = 2.3% (the ball subtends a = 12 degrees from the camera):
+  // 4% of the radius, plus 2 pixels of sampling.
+  const double projection = 0.04 * radius;
+  EXPECT_NEAR(y1, bottom, projection + 2.0);
   // Up to the centre: the head's tip narrower than the 0.5-pixel sample spacing (its first 1.4
   // pixels) may cover no sample, and each row found is within a pixel.
-  EXPECT_NEAR(y0, bottom - 0.99 * radius, 3.0);
+  EXPECT_NEAR(y0, bottom - 0.99 * radius, projection + 3.0);
 }
 
 // --ground-plane gives the floor when collision adds one.

@@ -38,6 +38,7 @@ void AddCollisionParts(const std::vector<CollisionPart>& parts, VisualScene& sce
         part.mesh = UnitBox();
         part.X_BG = c.X_BS * Transform::Translation(Vec3(kSlabHalfThickness, 0, 0));
         part.scale = Vec3(kSlabHalfThickness, kSlabHalfWidth, kSlabHalfWidth);
+        part.unbounded = true;
         break;
     }
     scene.bodies[c.body].parts.push_back(std::move(part));

@@ -49,20 +49,23 @@ Vec3 ParseViewDirection(const std::string& view) {
 
 std::pair<Vec3, Vec3> SceneBounds(const VisualScene& scene, const std::vector<Transform>& X_GB,
                                   bool with_ground) {
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const VisualBody& body : scene.bodies) {
-    if (body.body >= static_cast<int>(X_GB.size())) continue;
-    if (!with_ground && body.body == model::kGroundIndex) continue;
-    for (const VisualPart& part : body.parts) {
-      if (!part.mesh) continue;
-      for (const Vec3& p : Pose(part, X_GB[body.body]).positions) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
+  // The unbounded shapes' stand-ins only when nothing else is there.
+  for (const bool with_unbounded : {false, true}) {
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const VisualBody& body : scene.bodies) {
+      if (body.body >= static_cast<int>(X_GB.size())) continue;
+      if (!with_ground && body.body == model::kGroundIndex) continue;
+      for (const VisualPart& part : body.parts) {
+        if (!part.mesh || (part.unbounded && !with_unbounded)) continue;
+        for (const Vec3& p : Pose(part, X_GB[body.body]).positions) {
+          lo = lo.cwiseMin(p);
+          hi = hi.cwiseMax(p);
+        }
       }
     }
+    if (lo.x() <= hi.x()) return {lo, hi};
   }
-  if (!(lo.x() <= hi.x())) return {Vec3::Constant(-1), Vec3::Constant(1)};
-  return {lo, hi};
+  return {Vec3::Constant(-1), Vec3::Constant(1)};
 }
 
 Camera FrameCamera(const std::pair<Vec3, Vec3>& bounds, const Vec3& direction, double aspect) {

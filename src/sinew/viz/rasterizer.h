@@ -46,7 +46,8 @@ struct RenderOptions {
 Vec3 ParseViewDirection(const std::string& view);
 
 /// World-space bounds of the posed scene (min, max), ground's parts left out unless
-/// `with_ground`; an empty scene gives a unit box.
+/// `with_ground`, and the stand-ins of unbounded shapes (VisualPart::unbounded: half-space
+/// slabs) unless nothing else is there; an empty scene gives a unit box.
 std::pair<Vec3, Vec3> SceneBounds(const VisualScene& scene, const std::vector<Transform>& X_GB,
                                   bool with_ground = true);
 

@@ -198,6 +198,7 @@ class SceneBuilder {
       part.mesh = UnitBox();
       part.X_BG = c.X_BC * Transform::Translation(Vec3(half_thickness, 0, 0));
       part.scale = Vec3(half_thickness, half_width, half_width);
+      part.unbounded = true;
     } else if (c.type == "ContactMesh") {
       part.mesh = LoadMesh(c.mesh_file, warn);
       if (!part.mesh) {

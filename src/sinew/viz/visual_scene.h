@@ -41,6 +41,9 @@ struct VisualPart {
   Vec3 color = Vec3(0.9, 0.9, 0.9);  ///< RGB in [0, 1].
   double opacity = 1.0;
   std::string source;  ///< Mesh file read, or the shape's kind ("Sphere").
+  /// A finite stand-in for an unbounded shape (a half-space's slab): drawn, but left out of the
+  /// bounds a camera is framed on (SceneBounds).
+  bool unbounded = false;
 };
 
 /// The parts of one body (index into ModelSpec::bodies).
