@@ -239,7 +239,7 @@ TEST(EvaluationAllocationTest, NscStepsWithoutHeapUse) {
   // Delassus operator) are reused: a ball resting on the floor, one contact per step.
   const auto system = sinew::testing::ParseContactModel(
       sinew::testing::FreeBodyContactModel(1.0, Vec3::Constant(0.004), Vec3(0, -9.80665, 0), 0.1,
-                                    {Vec3::Zero()}, ""),
+                                           {Vec3::Zero()}, ""),
       "nsc_ball.osim");
   auto provider = std::make_shared<sinew::testing::SphereContactProvider>(
       std::vector<sinew::testing::TestSphere>{{1, Vec3::Zero(), 0.1}}, true, 0.4, 0.0, 1e-3);

@@ -48,7 +48,7 @@ class FixedStepIntegrator : public Integrator {
 
   std::string name_;
   int steps_without_start_factorization_ = 0;
-  State before_;                // the positions before the last start-factorization iteration
+  State before_;                      // the positions before the last start-factorization iteration
   VecX phi_, rhs_, solution_, step_;  // buffers of ProjectWithStartFactorization
 };
 

@@ -91,9 +91,8 @@ void CalcBodyVelocities(const KinematicTree& tree, std::span<const double> q,
   for (const TreeJoint& t : tree.joints()) {
     const std::array<double, 6> q_local = Gather(t, q);
     const std::array<double, 6> u_local = Gather(t, u);
-    V_GB[t.outboard] =
-        CalcJointTwistInG(t, std::span<const double>(q_local.data(), t.nq),
-                          std::span<const double>(u_local.data(), t.nq), X_GB);
+    V_GB[t.outboard] = CalcJointTwistInG(t, std::span<const double>(q_local.data(), t.nq),
+                                         std::span<const double>(u_local.data(), t.nq), X_GB);
     AddInboardVelocity(t, X_GB, V_GB);
   }
 }
@@ -102,8 +101,7 @@ void CalcBodyVelocityColumns(const KinematicTree& tree, std::span<const double> 
                              std::span<const Transform> X_GB, std::span<SpatialVec> V_GB) {
   const size_t nb = static_cast<size_t>(tree.num_bodies());
   const size_t nc = static_cast<size_t>(tree.num_coordinates());
-  CheckVelocityArguments(tree, q, X_GB, nc == 0 ? nb : V_GB.size() / nc,
-                         "CalcBodyVelocityColumns");
+  CheckVelocityArguments(tree, q, X_GB, nc == 0 ? nb : V_GB.size() / nc, "CalcBodyVelocityColumns");
   for (size_t i = 0; i < nb * nc; ++i) V_GB[i].setZero();
   // Each coordinate's own joint twist (one velocity map per coordinate)...
   for (const TreeJoint& t : tree.joints()) {

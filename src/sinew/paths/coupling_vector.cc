@@ -66,9 +66,8 @@ std::vector<double> CalcCouplingVector(const model::ModelSpec& spec,
 }
 
 void CalcCouplingVectors(const model::ModelSpec& spec,
-                         const kinematics::CoordinateCouplers& couplers,
-                         std::span<const double> q, std::span<const int> coordinates,
-                         std::vector<std::vector<double>>& out) {
+                         const kinematics::CoordinateCouplers& couplers, std::span<const double> q,
+                         std::span<const int> coordinates, std::vector<std::vector<double>>& out) {
   out.resize(coordinates.size());
   const Eigen::MatrixXd A = ConstraintRows(spec, couplers, q, -1);
   // lambda for every e_j at once: (A A^T)^+ A, factorized once.

@@ -26,8 +26,7 @@ std::vector<double> CalcCouplingVector(const model::ModelSpec& spec,
 /// CalcCouplingVector gives it). The coordinates that are not locked share their constraint
 /// rows, which are then factorized once for all of them.
 void CalcCouplingVectors(const model::ModelSpec& spec,
-                         const kinematics::CoordinateCouplers& couplers,
-                         std::span<const double> q, std::span<const int> coordinates,
-                         std::vector<std::vector<double>>& out);
+                         const kinematics::CoordinateCouplers& couplers, std::span<const double> q,
+                         std::span<const int> coordinates, std::vector<std::vector<double>>& out);
 
 }  // namespace sinew::paths

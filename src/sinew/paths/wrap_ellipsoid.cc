@@ -92,8 +92,8 @@ PlanePoint ChoosePlanePoint(const Vec3& a, const Vec3& p1p2, const Vec3& r1, con
   }
   const double axial_weight = (mu_best - kFanOnly) / (kAxialOnly - kFanOnly);
   const Vec3 fan_c1 = CalcClosestPointOnEllipsoid(a, fan_point, -1, out.c1);
-  out.c1 = CalcClosestPointOnEllipsoid(
-      a, axial_weight * out.c1 + (1.0 - axial_weight) * fan_c1, -1, out.c1);
+  out.c1 = CalcClosestPointOnEllipsoid(a, axial_weight * out.c1 + (1.0 - axial_weight) * fan_c1, -1,
+                                       out.c1);
   out.fan_weight = 1.0 - axial_weight;
   return out;
 }
@@ -106,12 +106,12 @@ PlanePoint ChoosePlanePoint(const Vec3& a, const Vec3& p1p2, const Vec3& r1, con
 // them all.
 struct Arc {
   double length = 0.0;
-  int num_points = 2;  ///< r1, the interior points, r2
+  int num_points = 2;                                      ///< r1, the interior points, r2
   Vec3 after_r1 = Vec3::Zero(), before_r2 = Vec3::Zero();  ///< second and second-to-last
 };
 
-Arc CalcArc(const Vec3& r1, const Vec3& r2, const Vec3& a, const Vec3& n, double d,
-            bool long_way, double factor, std::vector<Vec3>* points) {
+Arc CalcArc(const Vec3& r1, const Vec3& r2, const Vec3& a, const Vec3& n, double d, bool long_way,
+            double factor, std::vector<Vec3>* points) {
   Arc arc;
   arc.after_r1 = r2;
   arc.before_r2 = r1;
@@ -132,8 +132,7 @@ Arc CalcArc(const Vec3& r1, const Vec3& r2, const Vec3& a, const Vec3& n, double
   const Vec3 u2 = NormalizedOrZero(r2 - a0);
   // OpenSim takes acos of the unclamped cosine (NaN when rounding pushes it past 1).
   const double angle = std::acos(std::clamp(u1.dot(u2), -1.0, 1.0));
-  const double step =
-      long_way ? -(2.0 * std::numbers::pi - angle) / segments : angle / segments;
+  const double step = long_way ? -(2.0 * std::numbers::pi - angle) / segments : angle / segments;
   const Vec3 normal = NormalizedOrZero(u1.cross(u2));
   const Vec3 across = normal.cross(u1);
   const Vec3 a0_scaled = a0.cwiseQuotient(a);

@@ -179,7 +179,7 @@ class SceneBuilder {
     auto number = [&](const char* key, int i, double fallback) {
       const auto it = c.dimensions.find(key);
       return it != c.dimensions.end() && static_cast<int>(it->second.size()) > i ? it->second[i]
-                                                                                : fallback;
+                                                                                 : fallback;
     };
     VisualPart part;
     part.name = c.name;
