@@ -99,6 +99,23 @@ TEST_F(ViewHintsTest, FloorIsTheModelsHalfSpaceOnGroundInTheGlbAndThePage) {
   EXPECT_NEAR(extras["grid"]["center"][1].get<double>(), 0.25, 1e-7);  // the grid lies on it
   EXPECT_EQ(extras["follow_body"], -1);                                // the ball does not move
   EXPECT_FALSE(extras.contains("contact_arrows"));
+  // The floor's slab is marked as the stand-in of an unbounded shape (the viewer, like
+  // render, frames the model without it); the ball is not.
+  int unbounded = 0, bounded = 0;
+  const nlohmann::json doc = testing::ParseGlb(file).doc;
+  for (const nlohmann::json& node : doc["nodes"]) {
+    if (!node.contains("extras") || !node["extras"].contains("source")) continue;
+    const bool marked = node["extras"].value("unbounded", false);
+    if (node["extras"]["source"] == "ContactHalfSpace") {
+      EXPECT_TRUE(marked);
+      ++unbounded;
+    } else if (node["extras"]["source"] == "ContactSphere") {
+      EXPECT_FALSE(marked);
+      ++bounded;
+    }
+  }
+  EXPECT_EQ(unbounded, 1);
+  EXPECT_EQ(bounded, 1);
   // An explicit floor (simulate's --ground-plane) wins.
   options.floor = HorizontalFloor(-0.5, "--ground-plane");
   ExportAnimation(ball, motion, (dir_ / "ball.glb").string(), options);

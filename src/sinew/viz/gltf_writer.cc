@@ -81,6 +81,7 @@ std::vector<uint8_t> WriteGlb(const VisualScene& scene, const BodyMotion& motion
                     {"rotation", RotationOf(part.X_BG.R)},
                     {"scale", {part.scale.x(), part.scale.y(), part.scale.z()}},
                     {"extras", {{"source", part.source}}}};
+      if (part.unbounded) child["extras"]["unbounded"] = true;  // the viewer frames without it
       doc["nodes"].push_back(child);
       children.push_back(doc["nodes"].size() - 1);
     }
