@@ -47,24 +47,8 @@ TEST(FunctionBasedPathDynamicsTest, SpringOnAPolynomialPathConservesEnergy) {
 }
 
 TEST(FunctionBasedPathDynamicsTest, SpringOnTheSliderFollowsTheClosedForm) {
-  // As PathSpringTest: k = 50 N/m, resting length 0.3 m, the 2 kg block from x = 0.1 m
-  // follows x = 0.1 cos(5 t) while the spring is stretched.
-  auto parsed =
-      Parse(SliderModel(std::string(R"(<PathSpring name="spring">)") + kFunctionPath +
-                            "<resting_length>0.3</resting_length><stiffness>50</stiffness>"
-                            "<dissipation>0</dissipation></PathSpring>",
-                        false));
-  auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-11});
-  engine::State state = engine::MakeDefaultState(*parsed->system);
-  const double energy0 = engine::CalcMechanicalEnergy(*parsed->system, state);
-  EXPECT_NEAR(energy0, 0.5 * 50 * 0.1 * 0.1, 1e-12);
-  for (double t : {0.1, 0.2, 0.3}) {
-    integrator->StepTo(state, t);
-    EXPECT_NEAR(engine::GetCoordinateValue(*parsed->system, state, "x"), 0.1 * std::cos(5 * t),
-                1e-10)
-        << t;
-    EXPECT_NEAR(engine::CalcMechanicalEnergy(*parsed->system, state), energy0, 1e-10) << t;
-  }
+  // As PathSpringTest, on the FunctionBasedPath.
+  ExpectStretchedSpringOscillatesAsTheClosedForm(kFunctionPath);
 }
 
 // The block's position and speed and the muscle's states after `duration` s of a Thelen

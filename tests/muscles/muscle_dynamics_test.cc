@@ -67,24 +67,7 @@ TEST(PathActuatorTest, ConstantTensionAcceleratesTheBlockAsTheClosedForm) {
 }
 
 TEST(PathSpringTest, StretchedSpringOscillatesAsTheClosedFormAndConservesEnergy) {
-  // k = 50 N/m, resting length 0.3 m: the 2 kg block at x = 0.1 (length 0.4 m) follows
-  // x = 0.1 cos(5 t) while the spring is stretched (x > 0, t < pi / 10 s).
-  auto parsed =
-      Parse(SliderModel(std::string(R"(<PathSpring name="spring">)") + kPath +
-                            "<resting_length>0.3</resting_length><stiffness>50</stiffness>"
-                            "<dissipation>0</dissipation></PathSpring>",
-                        false));
-  auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-11});
-  engine::State state = engine::MakeDefaultState(*parsed->system);
-  const double energy0 = engine::CalcMechanicalEnergy(*parsed->system, state);
-  EXPECT_NEAR(energy0, 0.5 * 50 * 0.1 * 0.1 + 2 * 9.80665 * 0.0, 1e-12);  // slider at y = 0
-  for (double t : {0.1, 0.2, 0.3}) {
-    integrator->StepTo(state, t);
-    EXPECT_NEAR(engine::GetCoordinateValue(*parsed->system, state, "x"), 0.1 * std::cos(5 * t),
-                1e-10)
-        << t;
-    EXPECT_NEAR(engine::CalcMechanicalEnergy(*parsed->system, state), energy0, 1e-10) << t;
-  }
+  ExpectStretchedSpringOscillatesAsTheClosedForm(kPath);
   // A spring without its properties (OpenSim's defaults are NaN) is refused by name.
   EXPECT_THROW(Parse(SliderModel(
                    std::string(R"(<PathSpring name="spring">)") + kPath + "</PathSpring>", false)),

@@ -2,10 +2,15 @@
 // (or a model file): the small musculoskeletal system the muscle tests run their models on.
 #pragma once
 
+#include <gtest/gtest.h>
+#include <sinew/engine/assemble.h>
+#include <sinew/engine/energy.h>
+#include <sinew/engine/integrator.h>
 #include <sinew/engine/system.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/opensim/parser.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -59,6 +64,28 @@ inline std::unique_ptr<Parsed> ParseFile(const std::string& file, bool equilibra
   parsed->parser.ParseSpec(*parsed->system, spec);
   parsed->system->Finalize();
   return parsed;
+}
+
+// A PathSpring on `path` (a path of length 0.4 m at x = 0.1 m whose length grows with x, such as
+// kPath), k = 50 N/m, resting length 0.3 m: the 2 kg block from x = 0.1 m follows
+// x = 0.1 cos(5 t) while the spring is stretched (x > 0, t < pi / 10 s), conserving energy.
+inline void ExpectStretchedSpringOscillatesAsTheClosedForm(const std::string& path) {
+  auto parsed =
+      Parse(SliderModel(std::string(R"(<PathSpring name="spring">)") + path +
+                            "<resting_length>0.3</resting_length><stiffness>50</stiffness>"
+                            "<dissipation>0</dissipation></PathSpring>",
+                        false));
+  auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-11});
+  engine::State state = engine::MakeDefaultState(*parsed->system);
+  const double energy0 = engine::CalcMechanicalEnergy(*parsed->system, state);
+  EXPECT_NEAR(energy0, 0.5 * 50 * 0.1 * 0.1, 1e-12);  // the slider at y = 0: no gravity term
+  for (double t : {0.1, 0.2, 0.3}) {
+    integrator->StepTo(state, t);
+    EXPECT_NEAR(engine::GetCoordinateValue(*parsed->system, state, "x"), 0.1 * std::cos(5 * t),
+                1e-10)
+        << t;
+    EXPECT_NEAR(engine::CalcMechanicalEnergy(*parsed->system, state), energy0, 1e-10) << t;
+  }
 }
 
 }  // namespace sinew::muscles
