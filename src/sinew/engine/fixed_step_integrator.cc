@@ -53,6 +53,34 @@ void FixedStepIntegrator::ProjectAfterStep(State& later, double t_start) {
   UpdateDirectCoordinates(system_, later);
 }
 
+void FixedStepIntegrator::SolveFreeVelocities(State& state, double h, double t_new) {
+  const int nv = kkt_.num_velocities();
+  zdot_.resize(system_.num_state_variables());
+  const Accelerations& acc = Evaluate(state, zdot_);
+  v0_.resize(nv);
+  GatherVelocities(system_, kkt_, state, v0_);
+  v_free_ = v0_ + h * acc.vdot;
+  // M vdot + J^T lambda = f, so M (v0 + h vdot) = M v0 + h f - h J^T lambda: the new impulse
+  // h lambda+ replaces the acceleration solve's.
+  free_rhs_.resize(nv + kkt_.num_equations());
+  kkt_.MultiplyMass(v_free_, mv_);
+  free_rhs_.head(nv) = mv_;
+  later_ = state;  // copies into the buffers of an earlier step's state
+  later_.t = t_new;
+  SetVelocityRhs(later_, free_rhs_);
+  kkt_.Solve(free_rhs_, free_solution_);
+  v_free_ = free_solution_.head(nv);
+}
+
+void FixedStepIntegrator::FinishStep(State& state, double h) {
+  ScatterVelocities(system_, kkt_, v_free_, later_);
+  v_free_ *= h;  // now the positions' displacement
+  ApplyPositionDisplacement(system_, kkt_, v_free_, later_);
+  later_.z += h * zdot_;
+  ProjectAfterStep(later_, state.t);
+  std::swap(state, later_);
+}
+
 bool FixedStepIntegrator::ProjectWithStartFactorization(State& later) {
   constexpr int kMaxIterations = 4;
   const int nv = kkt_.num_velocities();

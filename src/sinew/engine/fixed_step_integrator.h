@@ -33,6 +33,22 @@ class FixedStepIntegrator : public Integrator {
   /// The scheme's name ("euler", ...).
   const std::string& name() const { return name_; }
 
+  /// The first part of a semi-implicit Euler step from `state` to t_new = state.t + h:
+  /// evaluates the accelerations there (its controller setting its inputs) (factorizing kkt_ at the
+  /// step's start) and the state variables' derivatives (zdot_), keeps the start's velocities
+  /// (v0_), and solves M v+ + J^T (h lambda+) = M (v0 + h vdot), J v+ = c(t_new) for v_free_.
+  /// later_ is the state to finish, at t_new.
+  void SolveFreeVelocities(State& state, double h, double t_new);
+  /// Ends the step with the velocities v_free_: later_ takes them, its positions move by
+  /// h v_free_ and its state variables by h zdot_, it is projected onto the constraints
+  /// (ProjectAfterStep) and becomes `state`.
+  void FinishStep(State& state, double h);
+
+  // What SolveFreeVelocities leaves for the scheme and FinishStep; reused from step to step
+  // (no heap use once sized).
+  VecX zdot_, v0_, v_free_;
+  State later_;
+
  private:
   // Newton iterations on phi(x) = 0 with the KKT matrix still factorized at the step's start:
   // a modified Newton method (the step moved the positions by h v, so the matrix is off by
@@ -50,6 +66,7 @@ class FixedStepIntegrator : public Integrator {
   int steps_without_start_factorization_ = 0;
   State before_;                      // the positions before the last start-factorization iteration
   VecX phi_, rhs_, solution_, step_;  // buffers of ProjectWithStartFactorization
+  VecX free_rhs_, free_solution_, mv_;  // buffers of SolveFreeVelocities
 };
 
 }  // namespace sinew::engine

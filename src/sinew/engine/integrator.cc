@@ -261,36 +261,9 @@ class SemiImplicitEuler final : public FixedStepIntegrator {
 
  private:
   void Step(State& state, double h, double t_new) override {
-    const int nv = kkt_.num_velocities();
-    // Accelerations' right-hand side f at (x, v); the same matrix serves the velocity solve.
-    zdot_.resize(system_.num_state_variables());
-    const Accelerations& acc = Evaluate(state, zdot_);
-    // M vdot + J^T lambda = f  =>  f = M vdot + J^T lambda; the new velocities solve
-    // M v+ + J^T (h lambda+) = M v + h f, J v+ = c(t+h).
-    v_.resize(nv);
-    GatherVelocities(system_, kkt_, state, v_);
-    v_ += h * acc.vdot;
-    rhs_.resize(nv + kkt_.num_equations());
-    kkt_.MultiplyMass(v_, mv_);
-    rhs_.head(nv) = mv_;
-    later_ = state;  // copies into the buffers of the previous step's state
-    later_.t = t_new;
-    SetVelocityRhs(later_, rhs_);
-    // h * J^T lambda of the acceleration solve is replaced by the new impulse.
-    kkt_.Solve(rhs_, solution_);
-    v_ = solution_.head(nv);
-    // Positions move with the new velocities.
-    ScatterVelocities(system_, kkt_, v_, later_);
-    v_ *= h;
-    ApplyPositionDisplacement(system_, kkt_, v_, later_);
-    later_.z += h * zdot_;
-    ProjectAfterStep(later_, state.t);
-    std::swap(state, later_);
+    SolveFreeVelocities(state, h, t_new);
+    FinishStep(state, h);
   }
-
-  // Buffers reused from step to step (no heap use once sized).
-  VecX zdot_, v_, mv_, rhs_, solution_;
-  State later_;
 };
 
 // Linearized implicit Euler (fixed step): the applied loads f(x, v) are linearized about the

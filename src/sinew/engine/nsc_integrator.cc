@@ -49,23 +49,8 @@ void NscIntegrator::ContactFrame(const Vec3& n_G, Vec3& t1, Vec3& t2) {
 }
 
 void NscIntegrator::Step(State& state, double h, double t_new) {
-  const int nv = kkt_.num_velocities(), nc = kkt_.num_equations();
-  zdot_.resize(system_.num_state_variables());
-  const Accelerations& acc = Evaluate(state, zdot_);  // factorizes kkt_ at the step's start
-  // 1. The step without contact: M v_free + J^T (h lambda) = M (v + h vdot) + J^T (h lambda_a),
-  //    J v_free = c(t + h) (as "euler").
-  v0_.resize(nv);
-  GatherVelocities(system_, kkt_, state, v0_);
-  rhs_.resize(nv + nc);
-  v_free_ = v0_ + h * acc.vdot;
-  kkt_.MultiplyMass(v_free_, mv_);
-  rhs_.head(nv) = mv_;
-  State& later = later_;
-  later = state;
-  later.t = t_new;
-  SetVelocityRhs(later, rhs_);
-  kkt_.Solve(rhs_, solution_);
-  v_free_ = solution_.head(nv);
+  // 1. The step without contact (as "euler").
+  SolveFreeVelocities(state, h, t_new);
   // 2-5. Contacts.
   contacts_.clear();
   provider_->FindContacts(system_, state, contacts_);
@@ -75,12 +60,7 @@ void NscIntegrator::Step(State& state, double h, double t_new) {
   } else {
     previous_contacts_.clear();
   }
-  ScatterVelocities(system_, kkt_, v_free_, later);
-  dx_ = h * v_free_;
-  ApplyPositionDisplacement(system_, kkt_, dx_, later);
-  later.z += h * zdot_;
-  ProjectAfterStep(later, state.t);
-  std::swap(state, later);
+  FinishStep(state, h);
 }
 
 void NscIntegrator::SolveContacts(const State& state, double h) {

@@ -116,9 +116,8 @@ class NscIntegrator final : public FixedStepIntegrator {
   MatX X_;                      // nv x 6 per body in contact: A^-1 columns
   MatX E_;                      // nv x 3 per contact: A^-1 D_i^T
   MatX W_;                      // Delassus operator
-  VecX v0_, v_free_, rhs_, solution_, zdot_, mv_, dx_;
+  VecX rhs_, solution_;         // the contact impulses' solves
   VecX u_free_, u_, target_, mu_, gamma_;
-  State later_;  // the step's end, in buffers kept from step to step
 };
 
 }  // namespace sinew::engine
