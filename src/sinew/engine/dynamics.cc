@@ -95,13 +95,12 @@ namespace {
                             (external ? " or the external loads" : "") + " is not finite");
 }
 
-// The accelerations for data.loads with data.kkt factorized at `state`.
-const Accelerations& SolveAccelerations(const System& system, const State& state,
-                                        const Loads* external, Data& data) {
+}  // namespace
+
+void CalcForceRhs(const System& system, const State& state, const Loads* external,
+                  const Data& data, Eigen::Ref<VecX> rhs) {
   const Loads& loads = data.loads;
   const KktSolver& kkt = data.kkt;
-  const int nv = kkt.num_velocities();
-  VecX& rhs = data.rhs;
   rhs.setZero();
   // Body rows: applied loads minus the velocity-dependent (gyroscopic, centripetal) terms of
   // the Newton-Euler equations about the body origin.
@@ -121,6 +120,24 @@ const Accelerations& SolveAccelerations(const System& system, const State& state
   for (int c = 0; c < system.num_coordinates(); ++c) {
     if (system.IsIntegrated(c)) rhs[kkt.SpeedColumn(c)] = loads.mobility[c];
   }
+  if (!rhs.allFinite()) ThrowNonFiniteLoads(system, state, external);
+}
+
+void CalcForceRhsReusingFactorization(const System& system, const State& state,
+                                      const Loads* external, Data& data, Eigen::Ref<VecX> rhs) {
+  CalcLoads(system, state, external, data.loads);
+  if (!data.kkt.IsFactorizedAt(state)) data.kkt.Factorize(state);
+  CalcForceRhs(system, state, external, data, rhs);
+}
+
+namespace {
+// The accelerations for data.loads with data.kkt factorized at `state`.
+const Accelerations& SolveAccelerations(const System& system, const State& state,
+                                        const Loads* external, Data& data) {
+  const KktSolver& kkt = data.kkt;
+  const int nv = kkt.num_velocities();
+  VecX& rhs = data.rhs;
+  CalcForceRhs(system, state, external, data, rhs.head(nv));
   const auto& constraints = system.constraints();
   for (size_t k = 0; k < constraints.size(); ++k) {
     constraints[k]->CalcAccelerationRhs(

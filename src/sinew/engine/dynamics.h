@@ -53,6 +53,19 @@ struct Data {
   Accelerations accelerations;  ///< the last evaluation's results
 };
 
+/// The velocity rows of the KKT right-hand side (KKT velocity order, nv entries) for data.loads
+/// at `state`: each body's applied loads minus its velocity-dependent (gyroscopic, centripetal)
+/// terms, and each integrated coordinate's generalized force. Throws NonFiniteForceError naming
+/// the first source that is not finite.
+void CalcForceRhs(const System& system, const State& state, const Loads* external,
+                  const Data& data, Eigen::Ref<VecX> rhs);
+
+/// CalcLoads, data.kkt factorized at `state` (kept when it was made at `state`'s positions), then
+/// CalcForceRhs: what a velocity-level step needs of an evaluation, M v+ + J^T mu = M v + h f,
+/// without the acceleration solve.
+void CalcForceRhsReusingFactorization(const System& system, const State& state,
+                                      const Loads* external, Data& data, Eigen::Ref<VecX> rhs);
+
 /// The accelerations of `state` under the loads of CalcLoads, into data.accelerations (also
 /// returned). `data` must belong to `system`. Throws NonFiniteForceError naming the force when
 /// the loads are not finite, and sinew::Error for a singular system.

@@ -56,15 +56,16 @@ void FixedStepIntegrator::ProjectAfterStep(State& later, double t_start) {
 void FixedStepIntegrator::SolveFreeVelocities(State& state, double h, double t_new) {
   const int nv = kkt_.num_velocities();
   zdot_.resize(system_.num_state_variables());
-  const Accelerations& acc = Evaluate(state, zdot_);
+  force_rhs_.resize(nv);
+  EvaluateForces(state, zdot_, force_rhs_);
   v0_.resize(nv);
   GatherVelocities(system_, kkt_, state, v0_);
-  v_free_ = v0_ + h * acc.vdot;
-  // M vdot + J^T lambda = f, so M (v0 + h vdot) = M v0 + h f - h J^T lambda: the new impulse
-  // h lambda+ replaces the acceleration solve's.
+  // M v+ + J^T mu = M v0 + h f with f the loads less the velocity terms: the step's
+  // M (v0 + h vdot) = M v0 + h f - h J^T lambda differs from it only by a term in the range of
+  // J^T, which mu takes up, so the acceleration solve is not needed.
   free_rhs_.resize(nv + kkt_.num_equations());
-  kkt_.MultiplyMass(v_free_, mv_);
-  free_rhs_.head(nv) = mv_;
+  kkt_.MultiplyMass(v0_, mv_);
+  free_rhs_.head(nv) = mv_ + h * force_rhs_;
   later_ = state;  // copies into the buffers of an earlier step's state
   later_.t = t_new;
   SetVelocityRhs(later_, free_rhs_);

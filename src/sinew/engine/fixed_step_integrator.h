@@ -34,9 +34,10 @@ class FixedStepIntegrator : public Integrator {
   const std::string& name() const { return name_; }
 
   /// The first part of a semi-implicit Euler step from `state` to t_new = state.t + h:
-  /// evaluates the accelerations there (its controller setting its inputs) (factorizing kkt_ at the
-  /// step's start) and the state variables' derivatives (zdot_), keeps the start's velocities
-  /// (v0_), and solves M v+ + J^T (h lambda+) = M (v0 + h vdot), J v+ = c(t_new) for v_free_.
+  /// evaluates the loads there (its controller setting its inputs; kkt_ factorized at the step's
+  /// start) and the state variables' derivatives (zdot_), keeps the start's velocities (v0_),
+  /// and solves M v+ + J^T mu = M v0 + h f, J v+ = c(t_new) for v_free_ (f: the loads less the
+  /// velocity terms; the same v+ as M v+ + J^T mu' = M (v0 + h vdot), one solve fewer).
   /// later_ is the state to finish, at t_new.
   void SolveFreeVelocities(State& state, double h, double t_new);
   /// Ends the step with the velocities v_free_: later_ takes them, its positions move by
@@ -66,7 +67,7 @@ class FixedStepIntegrator : public Integrator {
   int steps_without_start_factorization_ = 0;
   State before_;                      // the positions before the last start-factorization iteration
   VecX phi_, rhs_, solution_, step_;  // buffers of ProjectWithStartFactorization
-  VecX free_rhs_, free_solution_, mv_;  // buffers of SolveFreeVelocities
+  VecX force_rhs_, free_rhs_, free_solution_, mv_;  // buffers of SolveFreeVelocities
 };
 
 }  // namespace sinew::engine

@@ -55,6 +55,13 @@ const Accelerations& Integrator::Evaluate(State& state, Eigen::Ref<VecX> zdot) {
   return CalcAccelerationsReusingFactorization(system_, state, external_, data_);
 }
 
+void Integrator::EvaluateForces(State& state, Eigen::Ref<VecX> zdot, Eigen::Ref<VecX> force_rhs) {
+  ApplyController(state);
+  ++stats_.evaluations;
+  if (zdot.size() > 0) CalcStateVariableDerivatives(system_, state, zdot);
+  CalcForceRhsReusingFactorization(system_, state, external_, data_, force_rhs);
+}
+
 double Integrator::ConstraintTolerance() const {
   return settings_.constraint_tolerance > 0.0 ? settings_.constraint_tolerance
                                               : std::min(1e-3 * settings_.accuracy, 1e-10);

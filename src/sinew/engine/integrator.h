@@ -100,6 +100,10 @@ class Integrator {
   /// stats().evaluations; the KKT factorization is reused when it was made at these positions)
   /// and, into `zdot`, the state variables' derivatives.
   const Accelerations& Evaluate(State& state, Eigen::Ref<VecX> zdot);
+  /// Evaluate without the acceleration solve, for velocity-level steps: the same inputs, zdot
+  /// and factorization, and into `force_rhs` the loads' rows of the KKT right-hand side
+  /// (CalcForceRhsReusingFactorization).
+  void EvaluateForces(State& state, Eigen::Ref<VecX> zdot, Eigen::Ref<VecX> force_rhs);
 
   const System& system_;
   IntegratorSettings settings_;
