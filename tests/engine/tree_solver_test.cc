@@ -1,6 +1,7 @@
-// The tree elimination's two kinds of node block: articulated pivots (parameterized joints, the
-// joint rows eliminated as in the articulated-body algorithm) and the generic LU (direct joints,
-// and every block with KktSolver::Method::kTreeGenericNodes) solve the same system.
+// The tree elimination's three kinds of node block: articulated pivots (parameterized joints, the
+// joint rows eliminated as in the articulated-body algorithm), direct pivots (direct joints, by
+// the range-space method) and the generic LU (a massless body's block, and every block with
+// KktSolver::Method::kTreeGenericNodes) solve the same system.
 #include <gtest/gtest.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/dynamics.h>
@@ -91,7 +92,7 @@ std::unique_ptr<System> MakeEveryJointTree() {
   return system;
 }
 
-TEST(TreeSolverTest, ArticulatedPivotsEqualTheGenericLu) {
+TEST(TreeSolverTest, ClosedFormPivotsEqualTheGenericLu) {
   const auto system = MakeEveryJointTree();
   ASSERT_TRUE(system->IsReversed(system->FindJoint("reversed")));
   State state = MakeDefaultState(*system);
@@ -105,7 +106,10 @@ TEST(TreeSolverTest, ArticulatedPivotsEqualTheGenericLu) {
   const Accelerations d = CalcAccelerations(*system, state, nullptr, dense);
   // Free, ball, universal, rolling, slider, the two pins about the cross, the reversed pin.
   EXPECT_EQ(articulated.kkt.num_articulated_nodes(), 8);
+  // Direct pin, ball, universal and weld.
+  EXPECT_EQ(articulated.kkt.num_direct_nodes(), 4);
   EXPECT_EQ(generic.kkt.num_articulated_nodes(), 0);
+  EXPECT_EQ(generic.kkt.num_direct_nodes(), 0);
   EXPECT_LT((a.vdot - b.vdot).lpNorm<Eigen::Infinity>(), 1e-12 * b.vdot.lpNorm<Eigen::Infinity>());
   EXPECT_LT((a.lambda - b.lambda).lpNorm<Eigen::Infinity>(),
             1e-12 * b.lambda.lpNorm<Eigen::Infinity>());

@@ -7,7 +7,8 @@ namespace {
 // Smallest pivot, relative to the block's scale, that the small system may have.
 constexpr double kMinPivot = 1e-14;
 
-// Inverse of a 3 x 3 block into `inverse`; false when it is (nearly) singular.
+}  // namespace
+
 bool Invert3(const Mat3& A, Mat3& inverse) {
   const double scale = A.cwiseAbs().maxCoeff();
   const double det = A.determinant();
@@ -15,7 +16,6 @@ bool Invert3(const Mat3& A, Mat3& inverse) {
   inverse = A.inverse();
   return true;
 }
-}  // namespace
 
 bool ArticulatedPivot::Factorize(const Block& K, int nu) {
   nu_ = nu;

@@ -33,6 +33,10 @@
 
 namespace sinew::engine {
 
+/// Inverse of a 3 x 3 block of a joint's rows into `inverse`; false when it is (nearly) singular
+/// (determinant below 1e-10 of its largest entry cubed).
+bool Invert3(const Mat3& A, Mat3& inverse);
+
 /// Factorization and solves of one articulated pivot block (layout above). Fixed capacity: no
 /// heap use.
 class ArticulatedPivot {

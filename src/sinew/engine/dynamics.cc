@@ -97,8 +97,8 @@ namespace {
 
 }  // namespace
 
-void CalcForceRhs(const System& system, const State& state, const Loads* external,
-                  const Data& data, Eigen::Ref<VecX> rhs) {
+void CalcForceRhs(const System& system, const State& state, const Loads* external, const Data& data,
+                  Eigen::Ref<VecX> rhs) {
   const Loads& loads = data.loads;
   const KktSolver& kkt = data.kkt;
   rhs.setZero();

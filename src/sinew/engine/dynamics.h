@@ -57,8 +57,8 @@ struct Data {
 /// at `state`: each body's applied loads minus its velocity-dependent (gyroscopic, centripetal)
 /// terms, and each integrated coordinate's generalized force. Throws NonFiniteForceError naming
 /// the first source that is not finite.
-void CalcForceRhs(const System& system, const State& state, const Loads* external,
-                  const Data& data, Eigen::Ref<VecX> rhs);
+void CalcForceRhs(const System& system, const State& state, const Loads* external, const Data& data,
+                  Eigen::Ref<VecX> rhs);
 
 /// CalcLoads, data.kkt factorized at `state` (kept when it was made at `state`'s positions), then
 /// CalcForceRhs: what a velocity-level step needs of an evaluation, M v+ + J^T mu = M v + h f,

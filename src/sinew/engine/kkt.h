@@ -74,6 +74,9 @@ class KktSolver {
   /// Node blocks of the tree elimination that the last Factorize eliminated as articulated
   /// pivots (0 for kTreeGenericNodes and kDense).
   int num_articulated_nodes() const { return tree_ ? tree_->num_articulated_nodes() : 0; }
+  /// Node blocks of direct joints that the last Factorize eliminated as direct pivots
+  /// (DirectPivot; 0 for kTreeGenericNodes and kDense).
+  int num_direct_nodes() const { return tree_ ? tree_->num_direct_nodes() : 0; }
 
   /// The twist responses of bodies `targets` to unit loads on body `source`'s six twist
   /// columns (TreeKktSolver::SolveUnitLoadResponses: only the tree paths between the bodies

@@ -91,8 +91,12 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
     node.entries.push_back(std::move(entries));
   }
   for (int j = 0; j < num_joints; ++j) {
-    if (articulated && node_of_joint[j] >= 0) {
-      nodes_[node_of_joint[j]].articulated = FitsArticulatedPivot(nodes_[node_of_joint[j]], j);
+    if (!articulated || node_of_joint[j] < 0) continue;
+    Node& node = nodes_[node_of_joint[j]];
+    if (FitsArticulatedPivot(node, j)) {
+      node.fits = Pivot::kArticulated;
+    } else if (FitsDirectPivot(node, j)) {
+      node.fits = Pivot::kDirect;
     }
   }
   for (Node& node : nodes_) {
@@ -131,11 +135,14 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
     FactorizeNode(node);
     if (node.parent < 0) continue;
     auto parent_block = nodes_[node.parent].K.topLeftCorner<6, 6>();
-    if (node.use_pivot) {
+    Eigen::Matrix<double, 6, 6> CtW;
+    if (node.used == Pivot::kArticulated) {
       // Closed form: C is J_P in the joint rows and zero elsewhere.
       const Eigen::Matrix<double, 6, 6> J_P = node.C.middleRows<6>(6 + node.num_speeds);
-      Eigen::Matrix<double, 6, 6> CtW;
       node.pivot.SolveCoupling(J_P, node.W, CtW);
+      parent_block -= CtW;
+    } else if (node.used == Pivot::kDirect) {
+      node.direct.SolveCoupling(node.C.bottomRows(NumConstraintRows(node)), node.W, CtW);
       parent_block -= CtW;
     } else {
       node.W = node.C;
@@ -151,7 +158,13 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
 
 int TreeKktSolver::num_articulated_nodes() const {
   int n = 0;
-  for (const Node& node : nodes_) n += node.use_pivot ? 1 : 0;
+  for (const Node& node : nodes_) n += node.used == Pivot::kArticulated ? 1 : 0;
+  return n;
+}
+
+int TreeKktSolver::num_direct_nodes() const {
+  int n = 0;
+  for (const Node& node : nodes_) n += node.used == Pivot::kDirect ? 1 : 0;
   return n;
 }
 
@@ -171,9 +184,21 @@ bool TreeKktSolver::FitsArticulatedPivot(const Node& node, int joint) const {
   return true;
 }
 
+bool TreeKktSolver::FitsDirectPivot(const Node& node, int joint) const {
+  return system_.joints()[joint].form != JointForm::kParameterized && node.num_speeds == 0 &&
+         node.constraints.size() == 1 && node.constraints[0] == joint;
+}
+
 void TreeKktSolver::FactorizeNode(Node& node) {
-  node.use_pivot = node.articulated && node.pivot.Factorize(node.K, node.num_speeds);
-  if (node.use_pivot) return;
+  node.used = Pivot::kLu;
+  if (node.fits == Pivot::kArticulated && node.pivot.Factorize(node.K, node.num_speeds)) {
+    node.used = Pivot::kArticulated;
+    return;
+  }
+  if (node.fits == Pivot::kDirect && node.direct.Factorize(node.K)) {
+    node.used = Pivot::kDirect;
+    return;
+  }
   node.lu.compute(node.K);
   // Partial pivoting puts each column's largest entry on U's diagonal: a pivot that is tiny
   // next to the largest one means a singular block.

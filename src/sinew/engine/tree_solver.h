@@ -7,6 +7,7 @@
 #pragma once
 
 #include <sinew/engine/articulated_pivot.h>
+#include <sinew/engine/direct_pivot.h>
 #include <sinew/math/types.h>
 
 #include <Eigen/LU>
@@ -26,7 +27,8 @@ class TreeKktSolver {
   /// row of constraint k among them (the solver's vectors are [velocities; their rows]);
   /// `columns[k]` the velocity column of each Jacobian column of constraint k (-1 for ground).
   /// With `articulated`, the blocks of parameterized joints are eliminated as articulated pivots
-  /// (ArticulatedPivot); without, every block by a generic LU.
+  /// (ArticulatedPivot) and those of direct joints as direct pivots (DirectPivot); without,
+  /// every block by a generic LU.
   TreeKktSolver(const System& system, int nv, const std::vector<int>& body_columns,
                 const std::vector<int>& speed_columns, const std::vector<int>& tree_constraints,
                 const std::vector<int>& equation_rows, const std::vector<std::vector<int>>& columns,
@@ -39,8 +41,10 @@ class TreeKktSolver {
   /// Solves with the last factorization: rhs and x are [velocities; tree rows] (x is resized;
   /// no heap use once it has its size).
   void Solve(const VecX& rhs, VecX& x) const;
-  /// Node blocks the last Factorize eliminated as articulated pivots (the rest by generic LU).
+  /// Node blocks the last Factorize eliminated as articulated pivots.
   int num_articulated_nodes() const;
+  /// Node blocks the last Factorize eliminated as direct pivots (the rest by generic LU).
+  int num_direct_nodes() const;
   /// The twist responses of bodies `targets` to the six unit loads on body `source`'s twist
   /// columns (zero constraint right-hand side): block t of `out` (rows 6 t to 6 t + 5, 6
   /// columns) is the part of Solve([e_j; 0]) at target t's twist, for j over source's six
@@ -76,13 +80,15 @@ class TreeKktSolver {
   static constexpr int max_node_size() { return kMaxNode; }
 
  private:
+  // How a node's block is eliminated.
+  enum class Pivot { kLu, kArticulated, kDirect };
   struct Node {
-    int body = 0;              // outboard body
-    int parent = -1;           // node of the inboard body (-1: ground)
-    int num_speeds = 0;        // joint speeds among the unknowns (after the 6 twist entries)
-    bool articulated = false;  // the block fits ArticulatedPivot (decided at construction)
-    bool use_pivot = false;    // the last Factorize used `pivot` (else `lu`)
-    std::vector<int> global;   // global index of each local variable
+    int body = 0;             // outboard body
+    int parent = -1;          // node of the inboard body (-1: ground)
+    int num_speeds = 0;       // joint speeds among the unknowns (after the 6 twist entries)
+    Pivot fits = Pivot::kLu;  // the closed form the block's layout allows (at construction)
+    Pivot used = Pivot::kLu;  // what the last Factorize used
+    std::vector<int> global;  // global index of each local variable
     std::vector<int> constraints;
     std::vector<std::vector<Entry>> entries;  // per constraint: where its J entries go
     std::vector<Placement> placements;        // the same, by runs of columns
@@ -91,10 +97,13 @@ class TreeKktSolver {
     NodeCoupling W;                           // K^-1 C
     Eigen::PartialPivLU<NodeMatrix> lu;
     ArticulatedPivot pivot;
+    DirectPivot direct;
   };
   // Whether node's block has the articulated layout: a parameterized joint's 6 rows first, then
   // rows on the joint speeds only.
   bool FitsArticulatedPivot(const Node& node, int joint) const;
+  // Whether node's block is a direct joint's alone: the twist and the joint's rows.
+  bool FitsDirectPivot(const Node& node, int joint) const;
   // The node's constraint rows, its last rows: the coupling C is zero above them.
   static int NumConstraintRows(const Node& node) {
     return static_cast<int>(node.global.size()) - 6 - node.num_speeds;
@@ -104,10 +113,16 @@ class TreeKktSolver {
   // x = K^-1 x with node's factorization.
   template <typename X>
   static void SolveNode(const Node& node, X& x) {
-    if (node.use_pivot) {
-      node.pivot.SolveInPlace(x);
-    } else {
-      x = node.lu.solve(x);
+    switch (node.used) {
+      case Pivot::kArticulated:
+        node.pivot.SolveInPlace(x);
+        break;
+      case Pivot::kDirect:
+        node.direct.SolveInPlace(x);
+        break;
+      case Pivot::kLu:
+        x = node.lu.solve(x);
+        break;
     }
   }
   const System& system_;
