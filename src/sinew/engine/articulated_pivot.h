@@ -65,7 +65,6 @@ class ArticulatedPivot {
   using Six = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
   using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12>;
   using SmallRhs = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 6>;
-  using SixRows = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6>;
   int nu_ = 0, nc_ = 0;
   Eigen::Matrix<double, 6, 6> M_ = Eigen::Matrix<double, 6, 6>::Zero();     // M_A
   Eigen::Matrix<double, 6, 6> Jinv_ = Eigen::Matrix<double, 6, 6>::Zero();  // J_B^-1
@@ -97,39 +96,45 @@ void ArticulatedPivot::SolveCoupling(const Eigen::Matrix<double, 6, 6>& J_P,
                                      Eigen::MatrixBase<WMatrix>& W,
                                      Eigen::Matrix<double, 6, 6>& CtW) const {
   using Mat6 = Eigen::Matrix<double, 6, 6>;
-  const Mat6 A = Jinv_ * J_P;
-  const Mat6 MA = M_ * A;
-  const SixRows Y = MS_.transpose() * A;  // S^T M_A A
+  const Mat6 A = Jinv_.lazyProduct(J_P);
+  const Mat6 MA = M_.lazyProduct(A);
   SmallRhs Z(nu_ + nc_, 6);
-  Z.topRows(nu_) = -Y;
+  Z.topRows(nu_).noalias() = -MS_.transpose().lazyProduct(A);  // -Y = -S^T M_A A
   Z.bottomRows(nc_).setZero();
   SolveSmallInPlace(Z);
-  CtW.noalias() = -A.transpose() * MA;
-  CtW.noalias() -= Y.transpose() * Z.topRows(nu_);
+  const auto Zu = Z.topRows(nu_);
+  // C^T W = -(A^T M_A A + Y^T Z_u), Y^T = A^T M_A S.
+  CtW.noalias() = -A.transpose().lazyProduct(MA);
+  CtW.noalias() -= (MA.transpose().lazyProduct(S_)).lazyProduct(Zu);
   W.template topRows<6>() = A;
-  W.template topRows<6>().noalias() += S_ * Z.topRows(nu_);
-  W.middleRows(6, nu_) = Z.topRows(nu_);
+  W.template topRows<6>().noalias() += S_.lazyProduct(Zu);
+  W.middleRows(6, nu_) = Zu;
   Mat6 r = -MA;
-  r.noalias() -= MS_ * Z.topRows(nu_);
-  W.middleRows(6 + nu_, 6).noalias() = Jinv_.transpose() * r;
+  r.noalias() -= MS_.lazyProduct(Zu);
+  W.template middleRows<6>(6 + nu_).noalias() = Jinv_.transpose().lazyProduct(r);
   W.bottomRows(nc_) = Z.bottomRows(nc_);
 }
 
 template <typename Rhs>
 void ArticulatedPivot::SolveInPlace(Eigen::MatrixBase<Rhs>& x) const {
+  // Fixed-size temporaries for one right-hand side (the tree solve's vectors).
+  constexpr int kCols = Rhs::ColsAtCompileTime;
+  constexpr int kMaxCols = kCols == 1 ? 1 : 6;
+  using SixCols = Eigen::Matrix<double, 6, kCols, 0, 6, kMaxCols>;
+  using SmallCols = Eigen::Matrix<double, Eigen::Dynamic, kCols, 0, 12, kMaxCols>;
   const int m = static_cast<int>(x.cols());
-  const Six a = Jinv_ * x.middleRows(6 + nu_, 6);
-  const Six t = x.template topRows<6>() - M_ * a;
-  SmallRhs y(nu_ + nc_, m);
+  const SixCols a = Jinv_.lazyProduct(x.template middleRows<6>(6 + nu_));
+  SixCols t = x.template topRows<6>();
+  t.noalias() -= M_.lazyProduct(a);
+  SmallCols y(nu_ + nc_, m);
   y.topRows(nu_) = x.middleRows(6, nu_);
-  y.topRows(nu_).noalias() += S_.transpose() * t;
+  y.topRows(nu_).noalias() += S_.transpose().lazyProduct(t);
   y.bottomRows(nc_) = x.bottomRows(nc_);
   SolveSmallInPlace(y);
   x.template topRows<6>() = a;
-  x.template topRows<6>().noalias() += S_ * y.topRows(nu_);
-  Six r = t;
-  r.noalias() -= MS_ * y.topRows(nu_);
-  x.middleRows(6 + nu_, 6).noalias() = Jinv_.transpose() * r;
+  x.template topRows<6>().noalias() += S_.lazyProduct(y.topRows(nu_));
+  t.noalias() -= MS_.lazyProduct(y.topRows(nu_));
+  x.template middleRows<6>(6 + nu_).noalias() = Jinv_.transpose().lazyProduct(t);
   x.middleRows(6, nu_) = y.topRows(nu_);
   x.bottomRows(nc_) = y.bottomRows(nc_);
 }
