@@ -1,6 +1,7 @@
 #include <sinew/paths/path_loads.h>
 
 #include <algorithm>
+#include <span>
 #include <vector>
 
 namespace sinew::paths {
@@ -64,11 +65,12 @@ void AddGeneralizedForces(const PathLoads& loads, std::span<const Transform> X_G
       same->force_G += f.f_G;
     }
   }
-  // Only the columns that move a body meet its wrench.
+  // Only the columns that move a body meet its wrench (kept contiguous per body).
   for (const BodyWrench& w : wrenches) {
-    for (const int k : columns.support[static_cast<size_t>(w.body)]) {
-      const SpatialVec& V = columns.V_GB[static_cast<size_t>(k) * columns.num_bodies + w.body];
-      Q[k] += w.moment_G.dot(V.head<3>()) + w.force_G.dot(V.tail<3>());
+    const std::span<const int> support = columns.Support(w.body);
+    const std::span<const SpatialVec> V = columns.AtBody(w.body);
+    for (size_t i = 0; i < support.size(); ++i) {
+      Q[support[i]] += w.moment_G.dot(V[i].head<3>()) + w.force_G.dot(V[i].tail<3>());
     }
   }
   for (const CoordinateForce& f : loads.coordinate_forces) Q[f.coordinate] += f.value;
