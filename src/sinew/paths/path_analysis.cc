@@ -16,7 +16,7 @@ PathAnalysis::PathAnalysis(const model::ModelSpec& spec, const kinematics::Kinem
       V_GB_(static_cast<size_t>(tree.num_bodies())),
       dL_du_(static_cast<size_t>(tree.num_coordinates())),
       couplings_(coordinates_.size()),
-      coupled_(coordinates_.size()),
+      alone_(coordinates_.size()),
       lengths_(paths.paths().size()),
       speeds_(paths.paths().size()),
       moment_arms_(coordinates_.size() * paths.paths().size()) {}
@@ -28,12 +28,20 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
   if (moment_arms) {
     CalcSpeedColumns(tree_, q, X_GB_, columns_);
     CalcCouplingVectors(spec_, couplers_, q, coordinates_, couplings_);
+    // Only the coordinates that move along (one, or a few with couplers) enter the sums.
+    coupled_begin_.clear();
+    coupled_.clear();
     for (size_t k = 0; k < coordinates_.size(); ++k) {
-      // Only the coordinates that move along (one, or a few with couplers) enter the sums.
-      coupled_[k].clear();
+      coupled_begin_.push_back(coupled_.size());
       for (size_t c = 0; c < couplings_[k].size(); ++c) {
-        if (couplings_[k][c] != 0.0) coupled_[k].emplace_back(c, couplings_[k][c]);
+        if (couplings_[k][c] != 0.0) coupled_.push_back({c, couplings_[k][c]});
       }
+    }
+    coupled_begin_.push_back(coupled_.size());
+    for (size_t k = 0; k < coordinates_.size(); ++k) {
+      const size_t begin = coupled_begin_[k];
+      const bool alone = coupled_begin_[k + 1] == begin + 1 && coupled_[begin].coupling == 1.0;
+      alone_[k] = alone ? static_cast<int>(coupled_[begin].coordinate) : -1;
     }
   }
   const size_t num_paths = paths_.paths().size();
@@ -58,7 +66,13 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
     CalcLengthGradient(state_, X_GB_, columns_, loads_, dL_du_);
     for (size_t k = 0; k < coordinates_.size(); ++k) {
       double r = 0.0;
-      for (const auto& [c, coupling] : coupled_[k]) r -= coupling * dL_du_[c];
+      if (alone_[k] >= 0) {
+        r -= dL_du_[static_cast<size_t>(alone_[k])];  // the same sum, of one term times 1
+      } else {
+        for (size_t e = coupled_begin_[k]; e < coupled_begin_[k + 1]; ++e) {
+          r -= coupled_[e].coupling * dL_du_[coupled_[e].coordinate];
+        }
+      }
       moment_arms_[k * num_paths + p] = r;
     }
   }

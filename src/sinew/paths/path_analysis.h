@@ -10,7 +10,6 @@
 #include <sinew/paths/speed_columns.h>
 
 #include <span>
-#include <utility>
 #include <vector>
 
 namespace sinew::paths {
@@ -51,8 +50,17 @@ class PathAnalysis {
   PathLoads loads_;
   std::vector<double> dL_du_;
   std::vector<std::vector<double>> couplings_;
-  // Per moment-arm coordinate: the nonzero entries of its coupling vector (index, value).
-  std::vector<std::vector<std::pair<size_t, double>>> coupled_;
+  // The nonzero entries of the coupling vectors, laid end to end: those of the k-th
+  // moment-arm coordinate are coupled_[coupled_begin_[k] .. coupled_begin_[k + 1]).
+  struct Coupled {
+    size_t coordinate;
+    double coupling;
+  };
+  std::vector<Coupled> coupled_;
+  std::vector<size_t> coupled_begin_;
+  // Per moment-arm coordinate: the coordinate that alone enters its sum with coupling 1 (the
+  // coordinate itself when nothing moves along), or -1.
+  std::vector<int> alone_;
   std::vector<double> lengths_, speeds_, moment_arms_;
 };
 
