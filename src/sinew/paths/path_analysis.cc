@@ -64,16 +64,20 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
       continue;
     }
     CalcLengthGradient(state_, X_GB_, columns_, loads_, dL_du_);
-    for (size_t k = 0; k < coordinates_.size(); ++k) {
-      double r = 0.0;
-      if (alone_[k] >= 0) {
-        r -= dL_du_[static_cast<size_t>(alone_[k])];  // the same sum, of one term times 1
+    // Locals: the compiler need not reload the members after each store.
+    const double* dL_du = dL_du_.data();
+    const int* alone = alone_.data();
+    double* r = moment_arms_.data() + p;
+    for (size_t k = 0; k < coordinates_.size(); ++k, r += num_paths) {
+      double sum = 0.0;
+      if (alone[k] >= 0) {
+        sum -= dL_du[alone[k]];  // the same sum, of one term times 1
       } else {
         for (size_t e = coupled_begin_[k]; e < coupled_begin_[k + 1]; ++e) {
-          r -= coupled_[e].coupling * dL_du_[coupled_[e].coordinate];
+          sum -= coupled_[e].coupling * dL_du[coupled_[e].coordinate];
         }
       }
-      moment_arms_[k * num_paths + p] = r;
+      *r = sum;
     }
   }
 }

@@ -49,29 +49,28 @@ void AddGeneralizedForces(const PathLoads& loads, std::span<const Transform> X_G
   // per point.
   struct BodyWrench {
     int body;
-    Vec3 moment_G, force_G;
+    SpatialVec F_G;  // [moment about the body origin; force], in G
   };
   thread_local std::vector<BodyWrench> wrenches;  // reused: no heap use once sized
   wrenches.clear();
   for (const PointForce& f : loads.point_forces) {
     if (f.body == model::kGroundIndex) continue;
-    const Vec3 moment_G = (X_GB[f.body].R * f.p_BP).cross(f.f_G);
+    SpatialVec F;
+    F << (X_GB[f.body].R * f.p_BP).cross(f.f_G), f.f_G;
     auto same = std::find_if(wrenches.begin(), wrenches.end(),
                              [&](const BodyWrench& w) { return w.body == f.body; });
     if (same == wrenches.end()) {
-      wrenches.push_back({f.body, moment_G, f.f_G});
+      wrenches.push_back({f.body, F});
     } else {
-      same->moment_G += moment_G;
-      same->force_G += f.f_G;
+      same->F_G += F;
     }
   }
-  // Only the columns that move a body meet its wrench (kept contiguous per body).
+  // Only the columns that move a body meet its wrench (kept contiguous per body): one
+  // six-vector product each, w . moment + v . force.
   for (const BodyWrench& w : wrenches) {
     const std::span<const int> support = columns.Support(w.body);
-    const std::span<const SpatialVec> V = columns.AtBody(w.body);
-    for (size_t i = 0; i < support.size(); ++i) {
-      Q[support[i]] += w.moment_G.dot(V[i].head<3>()) + w.force_G.dot(V[i].tail<3>());
-    }
+    const SpatialVec* V = columns.AtBody(w.body).data();
+    for (size_t i = 0; i < support.size(); ++i) Q[support[i]] += w.F_G.dot(V[i]);
   }
   for (const CoordinateForce& f : loads.coordinate_forces) Q[f.coordinate] += f.value;
 }
