@@ -63,7 +63,7 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
       }
       continue;
     }
-    CalcLengthGradient(state_, X_GB_, columns_, loads_, dL_du_);
+    CalcLengthGradient(state_, X_GB_, columns_, dL_du_);
     // Locals: the compiler need not reload the members after each store.
     const double* dL_du = dL_du_.data();
     const int* alone = alone_.data();

@@ -47,7 +47,6 @@ class PathAnalysis {
   std::vector<SpatialVec> V_GB_;
   SpeedColumns columns_;
   PathState state_;
-  PathLoads loads_;
   std::vector<double> dL_du_;
   std::vector<std::vector<double>> couplings_;
   // The nonzero entries of the coupling vectors, laid end to end: those of the k-th
