@@ -15,11 +15,24 @@ PathAnalysis::PathAnalysis(const model::ModelSpec& spec, const kinematics::Kinem
       X_GB_(static_cast<size_t>(tree.num_bodies())),
       V_GB_(static_cast<size_t>(tree.num_bodies())),
       dL_du_(static_cast<size_t>(tree.num_coordinates())),
-      couplings_(coordinates_.size()),
-      alone_(coordinates_.size()),
+      alone_(coordinates_.size(), -1),
+      solved_index_(coordinates_.size(), 0),
       lengths_(paths.paths().size()),
       speeds_(paths.paths().size()),
-      moment_arms_(coordinates_.size() * paths.paths().size()) {}
+      moment_arms_(coordinates_.size() * paths.paths().size()) {
+  // A coordinate that is not locked and in no coupler is in no constraint row: its coupling
+  // vector is e_j at every pose (CalcCouplingVectors), so only the others are solved for.
+  for (size_t k = 0; k < coordinates_.size(); ++k) {
+    const int j = coordinates_[k];
+    if (!spec.coordinates.at(static_cast<size_t>(j)).locked && !couplers.Involves(j)) {
+      alone_[k] = j;
+    } else {
+      solved_index_[k] = solved_coordinates_.size();
+      solved_coordinates_.push_back(j);
+    }
+  }
+  couplings_.resize(solved_coordinates_.size());
+}
 
 void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
   kinematics::CalcBodyPoses(tree_, q, X_GB_);
@@ -27,22 +40,19 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
   const bool moment_arms = !coordinates_.empty();
   if (moment_arms) {
     CalcSpeedColumns(tree_, q, X_GB_, columns_);
-    CalcCouplingVectors(spec_, couplers_, q, coordinates_, couplings_);
+    if (!solved_coordinates_.empty()) {
+      CalcCouplingVectors(spec_, couplers_, q, solved_coordinates_, couplings_);
+    }
     // Only the coordinates that move along (one, or a few with couplers) enter the sums.
     coupled_begin_.clear();
     coupled_.clear();
-    for (size_t k = 0; k < coordinates_.size(); ++k) {
+    for (const std::vector<double>& coupling : couplings_) {
       coupled_begin_.push_back(coupled_.size());
-      for (size_t c = 0; c < couplings_[k].size(); ++c) {
-        if (couplings_[k][c] != 0.0) coupled_.push_back({c, couplings_[k][c]});
+      for (size_t c = 0; c < coupling.size(); ++c) {
+        if (coupling[c] != 0.0) coupled_.push_back({c, coupling[c]});
       }
     }
     coupled_begin_.push_back(coupled_.size());
-    for (size_t k = 0; k < coordinates_.size(); ++k) {
-      const size_t begin = coupled_begin_[k];
-      const bool alone = coupled_begin_[k + 1] == begin + 1 && coupled_[begin].coupling == 1.0;
-      alone_[k] = alone ? static_cast<int>(coupled_[begin].coordinate) : -1;
-    }
   }
   const size_t num_paths = paths_.paths().size();
   for (size_t p = 0; p < num_paths; ++p) {
@@ -73,7 +83,8 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
       if (alone[k] >= 0) {
         sum -= dL_du[alone[k]];  // the same sum, of one term times 1
       } else {
-        for (size_t e = coupled_begin_[k]; e < coupled_begin_[k + 1]; ++e) {
+        const size_t s = solved_index_[k];
+        for (size_t e = coupled_begin_[s]; e < coupled_begin_[s + 1]; ++e) {
           sum -= coupled_[e].coupling * dL_du[coupled_[e].coordinate];
         }
       }

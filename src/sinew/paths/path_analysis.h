@@ -48,18 +48,21 @@ class PathAnalysis {
   SpeedColumns columns_;
   PathState state_;
   std::vector<double> dL_du_;
+  // Per moment-arm coordinate: the coordinate itself when no constraint row involves it (it
+  // moves alone, coupling 1), else -1 and its place in solved_coordinates_.
+  std::vector<int> alone_;
+  std::vector<size_t> solved_index_;
+  // The coordinates whose coupling vectors are solved for at each pose, and those vectors.
+  std::vector<int> solved_coordinates_;
   std::vector<std::vector<double>> couplings_;
-  // The nonzero entries of the coupling vectors, laid end to end: those of the k-th
-  // moment-arm coordinate are coupled_[coupled_begin_[k] .. coupled_begin_[k + 1]).
+  // The nonzero entries of those coupling vectors, laid end to end: those of
+  // solved_coordinates_[s] are coupled_[coupled_begin_[s] .. coupled_begin_[s + 1]).
   struct Coupled {
     size_t coordinate;
     double coupling;
   };
   std::vector<Coupled> coupled_;
   std::vector<size_t> coupled_begin_;
-  // Per moment-arm coordinate: the coordinate that alone enters its sum with coupling 1 (the
-  // coordinate itself when nothing moves along), or -1.
-  std::vector<int> alone_;
   std::vector<double> lengths_, speeds_, moment_arms_;
 };
 
