@@ -36,8 +36,11 @@ PathAnalysis::PathAnalysis(const model::ModelSpec& spec, const kinematics::Kinem
 
 void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
   kinematics::CalcBodyPoses(tree_, q, X_GB_);
-  kinematics::CalcBodyVelocities(tree_, q, u, X_GB_, V_GB_);
   const bool moment_arms = !coordinates_.empty();
+  // With moment arms, a GeometryPath's dL/du gives its lengthening speed as well (dL/dt =
+  // dL/du . u, the same sum over its segments in another order), so the body velocities are
+  // not needed.
+  if (!moment_arms) kinematics::CalcBodyVelocities(tree_, q, u, X_GB_, V_GB_);
   if (moment_arms) {
     CalcSpeedColumns(tree_, q, X_GB_, columns_);
     if (!solved_coordinates_.empty()) {
@@ -58,9 +61,13 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
   for (size_t p = 0; p < num_paths; ++p) {
     paths_.paths()[p].CalcState(q, X_GB_, state_);
     lengths_[p] = state_.length;
-    speeds_[p] = CalcLengtheningSpeed(state_, X_GB_, V_GB_, u);
-    if (!moment_arms) continue;
+    if (!moment_arms) {
+      speeds_[p] = CalcLengtheningSpeed(state_, X_GB_, V_GB_, u);
+      continue;
+    }
     if (!state_.slopes.empty()) {
+      // A FunctionBasedPath's speed reads no body velocity.
+      speeds_[p] = CalcLengtheningSpeed(state_, X_GB_, {}, u);
       // A FunctionBasedPath: OpenSim reads its moment arm about each of its own coordinates
       // (zero about any other) without the MomentArmSolver, so coupled coordinates do not
       // move along.
@@ -74,6 +81,9 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
       continue;
     }
     CalcLengthGradient(state_, X_GB_, columns_, dL_du_);
+    double speed = 0.0;
+    for (size_t c = 0; c < dL_du_.size(); ++c) speed += dL_du_[c] * u[c];
+    speeds_[p] = speed;
     // Locals: the compiler need not reload the members after each store.
     const double* dL_du = dL_du_.data();
     const int* alone = alone_.data();
