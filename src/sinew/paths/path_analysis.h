@@ -27,7 +27,9 @@ class PathAnalysis {
   /// couplers already applied to both, e.g. CoordinateCouplers::Apply and ApplySpeeds).
   void Calc(std::span<const double> q, std::span<const double> u);
 
-  /// Per path (PathSet order): length (m) and lengthening speed (m/s).
+  /// Per path (PathSet order): length (m) and lengthening speed (m/s; with moment arms, a
+  /// GeometryPath's is dL/du . u from the same length gradient, else the segment sum of
+  /// CalcLengtheningSpeed: equal to rounding).
   const std::vector<double>& lengths() const { return lengths_; }
   const std::vector<double>& lengthening_speeds() const { return speeds_; }
   /// Moment arm (m, or dimensionless about a translational coordinate) of path p about the
