@@ -251,6 +251,17 @@ TEST(ForwardKinematicsTest, SupportColumnsAreTheNonzeroVelocityColumns) {
         }
       }
     }
+    // Filled for the last body only (and so its inboard ones): the same columns there, and
+    // the joints listed are those between it and ground.
+    const int last = tree.joints().back().outboard;
+    const std::vector<int> joints = kinematics::ListJointsToBodies(tree, std::vector<int>{last});
+    EXPECT_EQ(joints.back(), static_cast<int>(tree.joints().size()) - 1);
+    EXPECT_TRUE(std::is_sorted(joints.begin(), joints.end()));
+    std::vector<SpatialVec> some(support.size(), SpatialVec::Constant(std::nan("")));
+    kinematics::CalcSupportVelocityColumns(tree, q, X, some, joints);
+    for (int i = 0; i < static_cast<int>(tree.support(last).size()); ++i) {
+      EXPECT_EQ(some[tree.support_offset(last) + i], support[tree.support_offset(last) + i]);
+    }
   }
 }
 

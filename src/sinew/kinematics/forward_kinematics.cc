@@ -166,15 +166,18 @@ void CalcBodyVelocityColumns(const KinematicTree& tree, std::span<const double> 
 }
 
 void CalcSupportVelocityColumns(const KinematicTree& tree, std::span<const double> q,
-                                std::span<const Transform> X_GB, std::span<SpatialVec> V) {
+                                std::span<const Transform> X_GB, std::span<SpatialVec> V,
+                                std::span<const int> joints) {
   const size_t nb = static_cast<size_t>(tree.num_bodies());
   if (q.size() < static_cast<size_t>(tree.num_coordinates()) || X_GB.size() < nb ||
       V.size() < static_cast<size_t>(tree.support_offset(tree.num_bodies()))) {
     throw Error("CalcSupportVelocityColumns: q, X_GB or V is too short for the model");
   }
+  const size_t num_joints = joints.empty() ? tree.joints().size() : joints.size();
   // The outboard body's support is the inboard body's followed by the joint's coordinates.
   std::array<SpatialVec, 6> twists;
-  for (const TreeJoint& t : tree.joints()) {
+  for (size_t j = 0; j < num_joints; ++j) {
+    const TreeJoint& t = tree.joints()[joints.empty() ? j : static_cast<size_t>(joints[j])];
     const size_t in = static_cast<size_t>(tree.support_offset(t.inboard));
     const size_t out = static_cast<size_t>(tree.support_offset(t.outboard));
     const size_t inherited = tree.support(t.inboard).size();
@@ -184,6 +187,20 @@ void CalcSupportVelocityColumns(const KinematicTree& tree, std::span<const doubl
       V[out + inherited + static_cast<size_t>(i)] = twists[static_cast<size_t>(i)];
     }
   }
+}
+
+std::vector<int> ListJointsToBodies(const KinematicTree& tree, std::span<const int> bodies) {
+  std::vector<bool> wanted(static_cast<size_t>(tree.num_bodies()), false);
+  for (const int b : bodies) wanted.at(static_cast<size_t>(b)) = true;
+  // Outermost joints first: a wanted body wants its inboard body.
+  std::vector<int> joints;
+  for (size_t j = tree.joints().size(); j-- > 0;) {
+    const TreeJoint& t = tree.joints()[j];
+    if (!wanted[static_cast<size_t>(t.outboard)]) continue;
+    wanted[static_cast<size_t>(t.inboard)] = true;
+    joints.push_back(static_cast<int>(j));
+  }
+  return {joints.rbegin(), joints.rend()};
 }
 
 std::vector<Vec3> CalcMassCenterLocations(const model::ModelSpec& spec,

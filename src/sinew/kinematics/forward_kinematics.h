@@ -35,9 +35,17 @@ void CalcBodyVelocityColumns(const KinematicTree& tree, std::span<const double> 
 /// The same columns where they are not zero, body by body: V[tree.support_offset(b) + i] is
 /// body b's spatial velocity when u = e_k with k = tree.support(b)[i] (any coordinate not in
 /// tree.support(b) leaves b at rest). `V` holds tree.support_offset(tree.num_bodies())
-/// entries; a body's columns are contiguous. No heap allocation.
+/// entries; a body's columns are contiguous. Only the outboard bodies of `joints` (indices
+/// into tree.joints(), increasing, each joint's inboard joints listed too, as
+/// ListJointsToBodies gives them) are filled, the others left as they are; empty: every body.
+/// No heap allocation.
 void CalcSupportVelocityColumns(const KinematicTree& tree, std::span<const double> q,
-                                std::span<const Transform> X_GB, std::span<SpatialVec> V);
+                                std::span<const Transform> X_GB, std::span<SpatialVec> V,
+                                std::span<const int> joints = {});
+
+/// The tree joints (indices into tree.joints(), increasing) between ground and any of `bodies`
+/// (body indices): what places those bodies and every body inboard of them.
+std::vector<int> ListJointsToBodies(const KinematicTree& tree, std::span<const int> bodies);
 
 /// Ground position (m) of each body's mass centre.
 std::vector<Vec3> CalcMassCenterLocations(const model::ModelSpec& spec,

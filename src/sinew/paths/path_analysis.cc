@@ -32,6 +32,14 @@ PathAnalysis::PathAnalysis(const model::ModelSpec& spec, const kinematics::Kinem
     }
   }
   couplings_.resize(solved_coordinates_.size());
+  // The speed columns only of the bodies a path point or tangent point can be on (and those
+  // inboard of them): Rajagopal's arms carry no path.
+  std::vector<int> bodies;
+  for (const GeometryPath& path : paths.paths()) {
+    for (const PathPoint& point : path.points()) bodies.push_back(point.body);
+    for (const PathWrap& wrap : path.wraps()) bodies.push_back(wrap.body);
+  }
+  columns_.joints = kinematics::ListJointsToBodies(tree, bodies);
 }
 
 void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {

@@ -7,7 +7,7 @@ void CalcSpeedColumns(const kinematics::KinematicTree& tree, std::span<const dou
                       std::span<const Transform> X_GB, SpeedColumns& columns) {
   columns.tree = &tree;
   columns.V_GB.resize(static_cast<size_t>(tree.support_offset(tree.num_bodies())));
-  kinematics::CalcSupportVelocityColumns(tree, q, X_GB, columns.V_GB);
+  kinematics::CalcSupportVelocityColumns(tree, q, X_GB, columns.V_GB, columns.joints);
 }
 
 }  // namespace sinew::paths

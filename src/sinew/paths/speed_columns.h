@@ -20,6 +20,10 @@ struct SpeedColumns {
   const kinematics::KinematicTree* tree = nullptr;
   /// Body b's columns at V_GB[tree->support_offset(b) + i], for coordinate tree->support(b)[i].
   std::vector<SpatialVec> V_GB;
+  /// When not empty, only the bodies these tree joints place are filled
+  /// (kinematics::ListJointsToBodies of the bodies wanted, set once by the user); the columns
+  /// of other bodies are then not computed and must not be read.
+  std::vector<int> joints;
 
   /// The coordinates whose columns can move body b; every other column is zero there.
   std::span<const int> Support(int b) const { return tree->support(b); }
