@@ -4,7 +4,9 @@
 #include <sinew/kinematics/forward_kinematics.h>
 #include <sinew/math/rotation.h>
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -217,6 +219,49 @@ TEST(ForwardKinematicsTest, VelocityColumnsAreTheVelocitiesOfUnitSpeeds) {
     }
     kinematics::CalcBodyVelocities(tree, q, u, X, V);
     for (int b = 0; b < nb; ++b) EXPECT_LT((combined[b] - V[b]).norm(), 1e-14) << b;
+  }
+}
+
+// The support columns are the dense columns where these are not zero: body b's column k is
+// the same arithmetic in both for every k of tree.support(b), and the dense column is zero at
+// b for every other k (that speed moves no joint between b and ground).
+TEST(ForwardKinematicsTest, SupportColumnsAreTheNonzeroVelocityColumns) {
+  for (const model::ModelSpec& spec : {MixedChain(), DoublePendulum(true)}) {
+    const kinematics::KinematicTree tree(spec);
+    const int nb = tree.num_bodies(), nq = tree.num_coordinates();
+    std::vector<double> q(nq);
+    for (int i = 0; i < nq; ++i) q[i] = 0.5 * std::sin(1.7 * i + 0.3);
+    std::vector<Transform> X(nb);
+    kinematics::CalcBodyPoses(tree, q, X);
+    std::vector<SpatialVec> dense(static_cast<size_t>(nb * nq));
+    std::vector<SpatialVec> support(static_cast<size_t>(tree.support_offset(nb)));
+    kinematics::CalcBodyVelocityColumns(tree, q, X, dense);
+    kinematics::CalcSupportVelocityColumns(tree, q, X, support);
+    EXPECT_TRUE(tree.support(model::kGroundIndex).empty());
+    for (int b = 0; b < nb; ++b) {
+      const std::span<const int> coordinates = tree.support(b);
+      for (int k = 0; k < nq; ++k) {
+        const auto at = std::find(coordinates.begin(), coordinates.end(), k);
+        const SpatialVec& V = dense[k * nb + b];
+        if (at == coordinates.end()) {
+          EXPECT_TRUE(V.isZero(0.0)) << k << " " << b;
+        } else {
+          EXPECT_EQ(V, support[tree.support_offset(b) + (at - coordinates.begin())])
+              << k << " " << b;
+        }
+      }
+    }
+    // Filled for the last body only (and so its inboard ones): the same columns there, and
+    // the joints listed are those between it and ground.
+    const int last = tree.joints().back().outboard;
+    const std::vector<int> joints = kinematics::ListJointsToBodies(tree, std::vector<int>{last});
+    EXPECT_EQ(joints.back(), static_cast<int>(tree.joints().size()) - 1);
+    EXPECT_TRUE(std::is_sorted(joints.begin(), joints.end()));
+    std::vector<SpatialVec> some(support.size(), SpatialVec::Constant(std::nan("")));
+    kinematics::CalcSupportVelocityColumns(tree, q, X, some, joints);
+    for (int i = 0; i < static_cast<int>(tree.support(last).size()); ++i) {
+      EXPECT_EQ(some[tree.support_offset(last) + i], support[tree.support_offset(last) + i]);
+    }
   }
 }
 

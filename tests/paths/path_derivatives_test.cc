@@ -95,6 +95,45 @@ TEST(PathDerivativesTest, CouplingVectorsAtOnceEqualOneAtATime) {
   EXPECT_GT(coupled, 0);  // and some coordinate moves others (the knees their patellae)
 }
 
+// With moment arms, PathAnalysis takes each GeometryPath's lengthening speed as dL/du . u from
+// the speed columns; without, as the sum over its segments of e . (v_(i+1) - v_i) from the
+// body velocities. The two are the same sum in another order: equal to rounding (a few dozen
+// additions with partial sums below 1 m/s, 1e-16 each), at poses with wraps, moving points and
+// the patellae's couplers. The lengths are the same computation.
+TEST(PathDerivativesTest, SpeedsFromTheLengthGradientEqualTheSegmentSums) {
+  for (const std::string& file :
+       {kDataDir + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim",
+        kDataDir + "/MyoHub/myoconverter/models/osim/Leg6Dof9Musc/leg6dof9musc.osim"}) {
+    const PathModel m(file);
+    std::vector<int> free;
+    for (size_t c = 0; c < m.spec.coordinates.size(); ++c) {
+      if (!m.spec.coordinates[c].locked && !m.couplers.Drives(static_cast<int>(c))) {
+        free.push_back(static_cast<int>(c));
+      }
+    }
+    ASSERT_FALSE(free.empty());
+    PathAnalysis with_arms(m.spec, m.tree, m.couplers, m.paths, free);
+    PathAnalysis without(m.spec, m.tree, m.couplers, m.paths, {});
+    std::mt19937 random(7);
+    int moving = 0;
+    std::uniform_real_distribution<double> speed(-1.0, 1.0);
+    for (const std::vector<double>& q : MakePoses(m, 4)) {
+      std::vector<double> u(q.size());
+      for (double& u_c : u) u_c = speed(random);
+      m.couplers.ApplySpeeds(q, u);
+      with_arms.Calc(q, u);
+      without.Calc(q, u);
+      for (size_t p = 0; p < m.paths.paths().size(); ++p) {
+        EXPECT_EQ(with_arms.lengths()[p], without.lengths()[p]);
+        EXPECT_NEAR(with_arms.lengthening_speeds()[p], without.lengthening_speeds()[p], 1e-14)
+            << file << " " << m.paths.paths()[p].name();
+        moving += std::abs(without.lengthening_speeds()[p]) > 1e-3 ? 1 : 0;
+      }
+    }
+    EXPECT_GT(moving, 4 * static_cast<int>(m.paths.paths().size()));  // most paths move
+  }
+}
+
 // arm26 with its real surfaces: cylinders (one refined, with three wrap objects on TRIlong) and
 // ellipsoids. The analytic values are the derivatives of the path with its tangent points
 // carried by the bone (asserted inside); against the length wrapped afresh they differ by the

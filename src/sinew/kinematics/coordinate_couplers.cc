@@ -87,4 +87,11 @@ bool CoordinateCouplers::Drives(int c) const {
                      [c](const Coupler& p) { return p.dependent == c; });
 }
 
+bool CoordinateCouplers::Involves(int c) const {
+  return std::any_of(couplers_.begin(), couplers_.end(), [c](const Coupler& p) {
+    return p.dependent == c ||
+           std::find(p.independent.begin(), p.independent.end(), c) != p.independent.end();
+  });
+}
+
 }  // namespace sinew::kinematics

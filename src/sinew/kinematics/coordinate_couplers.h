@@ -32,6 +32,9 @@ class CoordinateCouplers {
   void AppendVelocityRows(std::span<const double> q, std::vector<std::vector<double>>& rows) const;
   /// True when coordinate `c` is set by a coupler.
   bool Drives(int c) const;
+  /// True when coordinate `c` is a coupler's dependent or one of its independent coordinates
+  /// (it appears in AppendVelocityRows' rows).
+  bool Involves(int c) const;
   bool empty() const { return couplers_.empty(); }
 
  private:

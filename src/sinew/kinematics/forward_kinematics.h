@@ -26,10 +26,26 @@ void CalcBodyVelocities(const KinematicTree& tree, std::span<const double> q,
 
 /// The columns of the same map: V_GB[k * num_bodies() + b] is body b's spatial velocity when
 /// u = e_k (CalcBodyVelocities with unit speed k), for every coordinate k. One joint velocity
-/// map per coordinate, then rigid transport outward. `V_GB` holds num_bodies() *
-/// num_coordinates() entries.
+/// matrix H_FM per joint, then rigid transport outward over the subtree of k's joint (the
+/// column is zero elsewhere). `V_GB` holds num_bodies() * num_coordinates() entries. No heap
+/// allocation.
 void CalcBodyVelocityColumns(const KinematicTree& tree, std::span<const double> q,
                              std::span<const Transform> X_GB, std::span<SpatialVec> V_GB);
+
+/// The same columns where they are not zero, body by body: V[tree.support_offset(b) + i] is
+/// body b's spatial velocity when u = e_k with k = tree.support(b)[i] (any coordinate not in
+/// tree.support(b) leaves b at rest). `V` holds tree.support_offset(tree.num_bodies())
+/// entries; a body's columns are contiguous. Only the outboard bodies of `joints` (indices
+/// into tree.joints(), increasing, each joint's inboard joints listed too, as
+/// ListJointsToBodies gives them) are filled, the others left as they are; empty: every body.
+/// No heap allocation.
+void CalcSupportVelocityColumns(const KinematicTree& tree, std::span<const double> q,
+                                std::span<const Transform> X_GB, std::span<SpatialVec> V,
+                                std::span<const int> joints = {});
+
+/// The tree joints (indices into tree.joints(), increasing) between ground and any of `bodies`
+/// (body indices): what places those bodies and every body inboard of them.
+std::vector<int> ListJointsToBodies(const KinematicTree& tree, std::span<const int> bodies);
 
 /// Ground position (m) of each body's mass centre.
 std::vector<Vec3> CalcMassCenterLocations(const model::ModelSpec& spec,

@@ -72,6 +72,20 @@ KinematicTree::KinematicTree(const model::ModelSpec& spec)
                   "body is not connected to ground by any joint");
     }
   }
+
+  // Each body's support: its inboard body's, then its joint's coordinates (tree order places
+  // the inboard body first); laid end to end in body order.
+  std::vector<std::vector<int>> support(static_cast<size_t>(num_bodies_));
+  for (const TreeJoint& t : joints_) {
+    std::vector<int>& s = support[static_cast<size_t>(t.outboard)];
+    s = support[static_cast<size_t>(t.inboard)];
+    s.insert(s.end(), t.q_index.begin(), t.q_index.begin() + t.nq);
+  }
+  support_offsets_.push_back(0);
+  for (const std::vector<int>& s : support) {
+    support_.insert(support_.end(), s.begin(), s.end());
+    support_offsets_.push_back(static_cast<int>(support_.size()));
+  }
 }
 
 }  // namespace sinew::kinematics

@@ -46,6 +46,19 @@ class KinematicTree {
   /// Joints (indices into ModelSpec::joints) that close kinematic loops.
   const std::vector<int>& loop_joints() const { return loop_joints_; }
 
+  /// The coordinates whose speeds move body b: those of the tree joints between ground and b,
+  /// inboard joints first, each joint's in its own order (empty for ground). Every other
+  /// coordinate's speed leaves b at rest (loop joints' coordinates move no body here).
+  std::span<const int> support(int b) const {
+    return {support_.data() + support_offsets_[static_cast<size_t>(b)],
+            static_cast<size_t>(support_offsets_[static_cast<size_t>(b) + 1] -
+                                support_offsets_[static_cast<size_t>(b)])};
+  }
+  /// Where body b's support starts when every body's support is laid end to end in body order;
+  /// support_offset(num_bodies()) is the length of them all. support(b) of the outboard body of
+  /// a tree joint is its inboard body's support followed by the joint's coordinates.
+  int support_offset(int b) const { return support_offsets_[static_cast<size_t>(b)]; }
+
   /// Coordinate default values (rad or m), in ModelSpec::coordinates order.
   const std::vector<double>& default_q() const { return default_q_; }
   /// Coordinate default speeds, in ModelSpec::coordinates order.
@@ -56,6 +69,7 @@ class KinematicTree {
   int num_coordinates_ = 0;
   std::vector<TreeJoint> joints_;
   std::vector<int> loop_joints_;
+  std::vector<int> support_, support_offsets_;
   std::vector<double> default_q_, default_u_;
 };
 

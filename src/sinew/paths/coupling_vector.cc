@@ -32,24 +32,25 @@ Eigen::MatrixXd ConstraintRows(const model::ModelSpec& spec,
 }
 
 // The coupling vector from u = e_j - A^T lambda, with lambda = (A A^T)^+ A e_j: u / u_j, or all
-// NaN when u_j vanishes.
-std::vector<double> CouplingFrom(const Eigen::MatrixXd& A, const Eigen::VectorXd& lambda, int j) {
+// NaN when u_j vanishes. Into `coupling` (resized to A's columns).
+void CouplingFrom(const Eigen::MatrixXd& A, const Eigen::VectorXd& lambda, int j,
+                  std::vector<double>& coupling) {
   Eigen::VectorXd u = -A.transpose() * lambda;
   u(j) += 1.0;
   const double u_j = u(j);
   const size_t n = static_cast<size_t>(A.cols());
   if (!(std::abs(u_j) > 1e-12)) {
-    return std::vector<double>(n, std::numeric_limits<double>::quiet_NaN());
+    coupling.assign(n, std::numeric_limits<double>::quiet_NaN());
+    return;
   }
-  std::vector<double> coupling(n);
+  coupling.resize(n);
   for (size_t c = 0; c < n; ++c) coupling[c] = u(static_cast<Eigen::Index>(c)) / u_j;
-  return coupling;
 }
 
-std::vector<double> Unit(size_t n, int j) {
-  std::vector<double> e(n, 0.0);
+// e_j of size n, into `e`.
+void Unit(size_t n, int j, std::vector<double>& e) {
+  e.assign(n, 0.0);
   e[static_cast<size_t>(j)] = 1.0;
-  return e;
 }
 
 }  // namespace
@@ -57,12 +58,17 @@ std::vector<double> Unit(size_t n, int j) {
 std::vector<double> CalcCouplingVector(const model::ModelSpec& spec,
                                        const kinematics::CoordinateCouplers& couplers,
                                        std::span<const double> q, int j) {
+  std::vector<double> coupling;
   const Eigen::MatrixXd A = ConstraintRows(spec, couplers, q, j);
-  if (A.rows() == 0) return Unit(q.size(), j);
+  if (A.rows() == 0) {
+    Unit(q.size(), j, coupling);
+    return coupling;
+  }
   // u = e_j - A^T (A A^T)^+ A e_j: the nearest speeds to e_j that satisfy A u = 0.
   const Eigen::MatrixXd AAt = A * A.transpose();
   const Eigen::VectorXd Ae_j = A.col(j);
-  return CouplingFrom(A, AAt.completeOrthogonalDecomposition().solve(Ae_j), j);
+  CouplingFrom(A, AAt.completeOrthogonalDecomposition().solve(Ae_j), j, coupling);
+  return coupling;
 }
 
 void CalcCouplingVectors(const model::ModelSpec& spec,
@@ -70,20 +76,23 @@ void CalcCouplingVectors(const model::ModelSpec& spec,
                          std::span<const int> coordinates, std::vector<std::vector<double>>& out) {
   out.resize(coordinates.size());
   const Eigen::MatrixXd A = ConstraintRows(spec, couplers, q, -1);
-  // lambda for every e_j at once: (A A^T)^+ A, factorized once.
-  Eigen::MatrixXd lambdas;
-  if (A.rows() > 0) {
-    const Eigen::MatrixXd AAt = A * A.transpose();
-    lambdas = AAt.completeOrthogonalDecomposition().solve(A);
-  }
+  // The rows are factorized once, when a coordinate first needs them.
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> AAt;
+  bool factorized = false;
   for (size_t k = 0; k < coordinates.size(); ++k) {
     const int j = coordinates[k];
     if (spec.coordinates[static_cast<size_t>(j)].locked) {
       out[k] = CalcCouplingVector(spec, couplers, q, j);  // its own rows: j is free to move
-    } else if (A.rows() == 0) {
-      out[k] = Unit(q.size(), j);
+    } else if ((A.col(j).array() == 0.0).all()) {
+      // No constraint involves j (A e_j = 0, so lambda = 0): it moves alone. Most coordinates.
+      Unit(q.size(), j, out[k]);
     } else {
-      out[k] = CouplingFrom(A, lambdas.col(j), j);
+      if (!factorized) {
+        AAt.compute(A * A.transpose());
+        factorized = true;
+      }
+      const Eigen::VectorXd Ae_j = A.col(j);
+      CouplingFrom(A, AAt.solve(Ae_j), j, out[k]);
     }
   }
 }

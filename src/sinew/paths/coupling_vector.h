@@ -24,7 +24,8 @@ std::vector<double> CalcCouplingVector(const model::ModelSpec& spec,
 
 /// The coupling vectors of `coordinates` at q (`out[k]` for coordinates[k], as
 /// CalcCouplingVector gives it). The coordinates that are not locked share their constraint
-/// rows, which are then factorized once for all of them.
+/// rows: one that no row involves moves alone (e_j, without solving), and the rows are
+/// factorized once for all the others.
 void CalcCouplingVectors(const model::ModelSpec& spec,
                          const kinematics::CoordinateCouplers& couplers, std::span<const double> q,
                          std::span<const int> coordinates, std::vector<std::vector<double>>& out);

@@ -10,7 +10,6 @@
 #include <sinew/paths/speed_columns.h>
 
 #include <span>
-#include <utility>
 #include <vector>
 
 namespace sinew::paths {
@@ -28,7 +27,9 @@ class PathAnalysis {
   /// couplers already applied to both, e.g. CoordinateCouplers::Apply and ApplySpeeds).
   void Calc(std::span<const double> q, std::span<const double> u);
 
-  /// Per path (PathSet order): length (m) and lengthening speed (m/s).
+  /// Per path (PathSet order): length (m) and lengthening speed (m/s; with moment arms, a
+  /// GeometryPath's is dL/du . u from the same length gradient, else the segment sum of
+  /// CalcLengtheningSpeed: equal to rounding).
   const std::vector<double>& lengths() const { return lengths_; }
   const std::vector<double>& lengthening_speeds() const { return speeds_; }
   /// Moment arm (m, or dimensionless about a translational coordinate) of path p about the
@@ -48,11 +49,22 @@ class PathAnalysis {
   std::vector<SpatialVec> V_GB_;
   SpeedColumns columns_;
   PathState state_;
-  PathLoads loads_;
   std::vector<double> dL_du_;
+  // Per moment-arm coordinate: the coordinate itself when no constraint row involves it (it
+  // moves alone, coupling 1), else -1 and its place in solved_coordinates_.
+  std::vector<int> alone_;
+  std::vector<size_t> solved_index_;
+  // The coordinates whose coupling vectors are solved for at each pose, and those vectors.
+  std::vector<int> solved_coordinates_;
   std::vector<std::vector<double>> couplings_;
-  // Per moment-arm coordinate: the nonzero entries of its coupling vector (index, value).
-  std::vector<std::vector<std::pair<size_t, double>>> coupled_;
+  // The nonzero entries of those coupling vectors, laid end to end: those of
+  // solved_coordinates_[s] are coupled_[coupled_begin_[s] .. coupled_begin_[s + 1]).
+  struct Coupled {
+    size_t coordinate;
+    double coupling;
+  };
+  std::vector<Coupled> coupled_;
+  std::vector<size_t> coupled_begin_;
   std::vector<double> lengths_, speeds_, moment_arms_;
 };
 

@@ -1,6 +1,7 @@
 #include <sinew/paths/path_loads.h>
 
 #include <algorithm>
+#include <span>
 #include <vector>
 
 namespace sinew::paths {
@@ -17,6 +18,47 @@ Vec3 PullDirection(const PathState& state, size_t i) {
   if (i < state.e_G.size()) pull += state.e_G[i];
   if (i > 0) pull -= state.e_G[i - 1];
   return pull;
+}
+
+// The point forces of a path gathered into one wrench per body (moment about the body origin,
+// in G): f . (v + w x r) = f . v + w . (r x f), so each coordinate costs a product per body,
+// not per point.
+struct BodyWrench {
+  int body;
+  SpatialVec F_G;  // [moment about the body origin; force], in G
+};
+
+// The wrench list, emptied; reused, so no heap use once sized.
+std::vector<BodyWrench>& EmptyWrenches() {
+  thread_local std::vector<BodyWrench> wrenches;
+  wrenches.clear();
+  return wrenches;
+}
+
+// Adds the force f_G at p_BP of `body` to that body's wrench (none for ground).
+void AddPointForce(std::span<const Transform> X_GB, int body, const Vec3& p_BP, const Vec3& f_G,
+                   std::vector<BodyWrench>& wrenches) {
+  if (body == model::kGroundIndex) return;
+  SpatialVec F;
+  F << (X_GB[body].R * p_BP).cross(f_G), f_G;
+  auto same = std::find_if(wrenches.begin(), wrenches.end(),
+                           [&](const BodyWrench& w) { return w.body == body; });
+  if (same == wrenches.end()) {
+    wrenches.push_back({body, F});
+  } else {
+    same->F_G += F;
+  }
+}
+
+// Q_k += the power of every wrench under unit speed k. Only the columns that move a body meet
+// its wrench (kept contiguous per body): one six-vector product each, w . moment + v . force.
+void AddWrenchPowers(const std::vector<BodyWrench>& wrenches, const SpeedColumns& columns,
+                     std::span<double> Q) {
+  for (const BodyWrench& w : wrenches) {
+    const std::span<const int> support = columns.Support(w.body);
+    const SpatialVec* V = columns.AtBody(w.body).data();
+    for (size_t i = 0; i < support.size(); ++i) Q[support[i]] += w.F_G.dot(V[i]);
+  }
 }
 
 }  // namespace
@@ -43,43 +85,34 @@ void CalcPathLoads(const PathState& state, std::span<const Transform> X_GB, doub
 
 void AddGeneralizedForces(const PathLoads& loads, std::span<const Transform> X_GB,
                           const SpeedColumns& columns, std::span<double> Q) {
-  // The point forces gathered into one wrench per body (moment about the body origin, in G):
-  // f . (v + w x r) = f . v + w . (r x f), so each coordinate costs a product per body, not
-  // per point.
-  struct BodyWrench {
-    int body;
-    Vec3 moment_G, force_G;
-  };
-  thread_local std::vector<BodyWrench> wrenches;  // reused: no heap use once sized
-  wrenches.clear();
+  std::vector<BodyWrench>& wrenches = EmptyWrenches();
   for (const PointForce& f : loads.point_forces) {
-    if (f.body == model::kGroundIndex) continue;
-    const Vec3 moment_G = (X_GB[f.body].R * f.p_BP).cross(f.f_G);
-    auto same = std::find_if(wrenches.begin(), wrenches.end(),
-                             [&](const BodyWrench& w) { return w.body == f.body; });
-    if (same == wrenches.end()) {
-      wrenches.push_back({f.body, moment_G, f.f_G});
-    } else {
-      same->moment_G += moment_G;
-      same->force_G += f.f_G;
-    }
+    AddPointForce(X_GB, f.body, f.p_BP, f.f_G, wrenches);
   }
-  // Only the columns that move a body meet its wrench.
-  for (const BodyWrench& w : wrenches) {
-    for (const int k : columns.support[static_cast<size_t>(w.body)]) {
-      const SpatialVec& V = columns.V_GB[static_cast<size_t>(k) * columns.num_bodies + w.body];
-      Q[k] += w.moment_G.dot(V.head<3>()) + w.force_G.dot(V.tail<3>());
-    }
-  }
+  AddWrenchPowers(wrenches, columns, Q);
   for (const CoordinateForce& f : loads.coordinate_forces) Q[f.coordinate] += f.value;
 }
 
 void CalcLengthGradient(const PathState& state, std::span<const Transform> X_GB,
-                        const SpeedColumns& columns, PathLoads& loads, std::span<double> dL_du) {
+                        const SpeedColumns& columns, std::span<double> dL_du) {
   std::fill(dL_du.begin(), dL_du.end(), 0.0);
-  // A tension of -1 pushes: its generalized force is +dL/du.
-  CalcPathLoads(state, X_GB, -1.0, loads);
-  AddGeneralizedForces(loads, X_GB, columns, dL_du);
+  // AddGeneralizedForces of CalcPathLoads at a tension of -1 (which pushes: its generalized
+  // force is +dL/du), term by term in the same order, without storing the loads.
+  std::vector<BodyWrench>& wrenches = EmptyWrenches();
+  for (size_t i = 0; i < state.points.size(); ++i) {
+    const PathPointState& p = state.points[i];
+    AddPointForce(X_GB, p.body, p.p_BP, -PullDirection(state, i), wrenches);
+  }
+  AddWrenchPowers(wrenches, columns, dL_du);
+  for (size_t i = 0; i < state.points.size(); ++i) {
+    const PathPointState& p = state.points[i];
+    for (int axis = 0; axis < 3; ++axis) {
+      if (p.coordinates[axis] == model::kNone) continue;
+      dL_du[p.coordinates[axis]] +=
+          (-PullDirection(state, i)).dot(X_GB[p.body].R * p.dp_BP_dq[axis]);
+    }
+  }
+  for (const LengthSlope& s : state.slopes) dL_du[s.coordinate] += s.dL_dq;
 }
 
 double CalcLengtheningSpeed(const PathState& state, std::span<const Transform> X_GB,

@@ -47,9 +47,10 @@ void AddGeneralizedForces(const PathLoads& loads, std::span<const Transform> X_G
                           const SpeedColumns& columns, std::span<double> Q);
 
 /// dL/du_k for every coordinate speed (m per rad or m per m), analytic: minus the generalized
-/// force of a unit tension. `loads` is a workspace.
+/// force of a unit tension (CalcPathLoads then AddGeneralizedForces, without storing the
+/// loads). No heap use once its workspace is sized.
 void CalcLengthGradient(const PathState& state, std::span<const Transform> X_GB,
-                        const SpeedColumns& columns, PathLoads& loads, std::span<double> dL_du);
+                        const SpeedColumns& columns, std::span<double> dL_du);
 
 /// The lengthening speed dL/dt (m/s): the sum over straight segments of e_i . (v_(i+1) - v_i),
 /// with each point's velocity in ground from its body's V_GB (kinematics::CalcBodyVelocities)
