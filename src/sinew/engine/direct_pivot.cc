@@ -37,7 +37,6 @@ Mat3 CompleteRows(const RotationRows& Q) {
 bool DirectPivot::Factorize(const Block& K) {
   m_ = static_cast<int>(K.rows()) - 6;
   if (m_ < 3 || m_ > 6) return false;
-  d_ = 6 - m_;
   const auto J = K.bottomLeftCorner(m_, 6);
   const double s = J(0, 3);
   if (!(s == 1.0 || s == -1.0) || J.block<3, 3>(0, 3) != s * Mat3::Identity() ||
@@ -48,20 +47,24 @@ bool DirectPivot::Factorize(const Block& K) {
   if (!Invert3(CompleteRows(J.bottomLeftCorner(m_ - 3, 3)), Q_E_inv)) return false;
   Mat6 J_E_inv;  // [J_B; E 0]^-1
   J_E_inv << Mat3::Zero(), Q_E_inv, s * Mat3::Identity(), -s * J.topLeftCorner<3, 3>() * Q_E_inv;
-  G_ = J_E_inv.leftCols(m_);
-  N_ = J_E_inv.rightCols(d_);
+  const int d = 6 - m_;
+  G_.setZero();
+  G_.leftCols(m_) = J_E_inv.leftCols(m_);
+  N_.setZero();
+  N_.leftCols(d) = J_E_inv.rightCols(d);
   M_ = K.topLeftCorner<6, 6>();
   MN_.noalias() = M_ * N_;
-  Dinv_.resize(d_, d_);
-  if (d_ == 0) return true;  // a weld: the joint rows alone fix the twist
-  const Small D = N_.transpose() * MN_;
+  Dinv_.setZero();
+  if (d == 0) return true;  // a weld: the joint rows alone fix the twist
+  using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
+  const Small D = N_.leftCols(d).transpose() * MN_.leftCols(d);
   const Eigen::LLT<Small> llt(D);
   if (llt.info() != Eigen::Success) return false;
   // D's scale is that of M_A seen through N: a pivot far below it means a free motion with
   // (nearly) no inertia.
   const double scale = M_.cwiseAbs().maxCoeff() * N_.colwise().squaredNorm().maxCoeff();
   if (!(llt.matrixLLT().diagonal().minCoeff() > std::sqrt(kMinPivot * scale))) return false;
-  Dinv_ = llt.solve(Small::Identity(d_, d_));
+  Dinv_.topLeftCorner(d, d) = llt.solve(Small::Identity(d, d));
   return true;
 }
 

@@ -53,42 +53,54 @@ class DirectPivot {
                      Eigen::Matrix<double, 6, 6>& CtW) const;
 
  private:
+  // Fixed sizes, zero-padded (G's columns past m, N's and D^-1's past d are zero), so that every
+  // product is a fixed-size one: Eigen's runtime size dispatch costs more than the arithmetic.
   using Mat6 = Eigen::Matrix<double, 6, 6>;
-  using Columns = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;  // 6 x m or 6 x d
-  using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
-  int m_ = 0, d_ = 0;
-  Mat6 M_ = Mat6::Zero();  // M_A
-  Columns G_, N_, MN_;     // G, N and M_A N
-  Small Dinv_;             // D^-1 (d x d)
+  using Mat63 = Eigen::Matrix<double, 6, 3>;
+  int m_ = 0;
+  Mat6 M_ = Mat6::Zero();                         // M_A
+  Mat6 G_ = Mat6::Zero();                         // G
+  Mat63 N_ = Mat63::Zero(), MN_ = Mat63::Zero();  // N and M_A N
+  Mat3 Dinv_ = Mat3::Zero();                      // D^-1
 };
 
 template <typename Rhs>
 void DirectPivot::SolveInPlace(Eigen::MatrixBase<Rhs>& x) const {
-  const Columns a = G_.lazyProduct(x.bottomRows(m_));
-  Columns t = x.template topRows<6>();
+  constexpr int kCols = Rhs::ColsAtCompileTime;
+  constexpr int kMaxCols = kCols == 1 ? 1 : 6;
+  using SixCols = Eigen::Matrix<double, 6, kCols, 0, 6, kMaxCols>;
+  using ThreeCols = Eigen::Matrix<double, 3, kCols, 0, 3, kMaxCols>;
+  SixCols lambda = SixCols::Zero(6, x.cols());
+  lambda.topRows(m_) = x.bottomRows(m_);
+  const SixCols a = G_.lazyProduct(lambda);
+  SixCols t = x.template topRows<6>();
   t.noalias() -= M_.lazyProduct(a);
-  const Small alpha = Dinv_.lazyProduct(N_.transpose().lazyProduct(t));
+  const ThreeCols alpha = Dinv_.lazyProduct(N_.transpose().lazyProduct(t));
   x.template topRows<6>() = a;
   x.template topRows<6>().noalias() += N_.lazyProduct(alpha);
   t.noalias() -= MN_.lazyProduct(alpha);
-  x.bottomRows(m_).noalias() = G_.transpose().lazyProduct(t);
+  lambda.noalias() = G_.transpose().lazyProduct(t);
+  x.bottomRows(m_) = lambda.topRows(m_);
 }
 
 template <typename JMatrix, typename WMatrix>
 void DirectPivot::SolveCoupling(const Eigen::MatrixBase<JMatrix>& J_P,
                                 Eigen::MatrixBase<WMatrix>& W,
                                 Eigen::Matrix<double, 6, 6>& CtW) const {
-  const Mat6 A = G_.lazyProduct(J_P);
+  Mat6 J = Mat6::Zero();
+  J.topRows(m_) = J_P;
+  const Mat6 A = G_.lazyProduct(J);
   const Mat6 MA = M_.lazyProduct(A);
-  const Small Y = MN_.transpose().lazyProduct(A);
-  const Small Z = Dinv_.lazyProduct(Y);
+  const Eigen::Matrix<double, 3, 6> Y = MN_.transpose().lazyProduct(A);
+  const Eigen::Matrix<double, 3, 6> Z = Dinv_.lazyProduct(Y);
   CtW.noalias() = -A.transpose().lazyProduct(MA);
   CtW.noalias() += Y.transpose().lazyProduct(Z);
   W.template topRows<6>() = A;
   W.template topRows<6>().noalias() -= N_.lazyProduct(Z);
   Mat6 r = -MA;
   r.noalias() += MN_.lazyProduct(Z);
-  W.bottomRows(m_).noalias() = G_.transpose().lazyProduct(r);
+  const Mat6 lambda = G_.transpose().lazyProduct(r);
+  W.bottomRows(m_) = lambda.topRows(m_);
 }
 
 }  // namespace sinew::engine
