@@ -192,6 +192,13 @@ void KktSolver::Solve(const VecX& rhs, VecX& x) const {
     CheckSolution(rhs, x);
     return;
   }
+  if (ne_ == 0) {
+    // Every constraint is a tree constraint, numbered in the same order: the tree solver's
+    // vectors are the KKT ones.
+    tree_->Solve(rhs, x);
+    CheckSolution(rhs, x);
+    return;
+  }
   GatherTreeRhs(rhs, tree_rhs_);
   tree_->Solve(tree_rhs_, y_);
   const auto& constraints = system_.constraints();
