@@ -63,7 +63,7 @@ void DropAndSettle(const std::string& integrator_name, double step, double accur
   const double weight = scene.total_mass * 9.80665;
   const double bound =
       std::pow(weight / (4.0 / 3.0 * modulus * std::sqrt(scene.cylinder_radius)), 2.0 / 3.0);
-  double deepest = 0.0, largest_kinetic = 0.0;
+  double deepest = 0.0, largest_kinetic = 0.0, largest_kinetic_at_end = 0.0;
   int jointed = 0;
   constexpr double kSample = 0.01;
   for (int n = 1; n * kSample <= duration + 1e-9; ++n) {
@@ -74,31 +74,36 @@ void DropAndSettle(const std::string& integrator_name, double step, double accur
     const ContactSurvey s = Survey(detector, scene.collision, state);
     deepest = std::max(deepest, s.deepest);
     jointed += s.jointed;
-    largest_kinetic = std::max(largest_kinetic, engine::CalcKineticEnergy(system, state));
+    const double kinetic = engine::CalcKineticEnergy(system, state);
+    largest_kinetic = std::max(largest_kinetic, kinetic);
+    if (n * kSample > duration - 0.5)
+      largest_kinetic_at_end = std::max(largest_kinetic_at_end, kinetic);
   }
   const ContactSurvey end = Survey(detector, scene.collision, state);
-  const double kinetic = engine::CalcKineticEnergy(system, state);
   // Never through the floor: no contact deeper than a cylinder's radius, ever.
   EXPECT_LT(deepest, scene.cylinder_radius);
-  // At rest: the deepest contact within the one-cylinder bound; the kinetic energy a
-  // thousandth of the potential energy the 5 cm drop released.
+  // At rest: the deepest contact within the one-cylinder bound; the kinetic energy, at every
+  // sample of the last 0.5 s, a thousandth of the potential energy the 5 cm drop released.
   EXPECT_EQ(jointed, 0);
   if (settle) {
     EXPECT_GT(end.floor, 0);
     EXPECT_LE(end.deepest, bound);
-    EXPECT_LT(kinetic, 1e-3 * weight * 0.05);
+    EXPECT_LT(largest_kinetic_at_end, 1e-3 * weight * 0.05);
   }
   std::cout << integrator_name << ": deepest floor contact " << deepest << " m (radius "
             << scene.cylinder_radius << "), at rest " << end.deepest << " m (bound " << bound
             << " m), " << end.floor << " floor and " << end.self
-            << " self contacts, kinetic energy at " << duration << " s " << kinetic
+            << " self contacts, kinetic energy in the last 0.5 s at most " << largest_kinetic_at_end
             << " J (largest " << largest_kinetic << " J), " << integrator->stats().steps
             << " steps\n";
 }
 
-// Semi-implicit Euler at the benchmark's step, 1 ms: it lands, collapses and is at rest at 3 s.
+// Semi-implicit Euler at the benchmark's step, 1 ms: it lands, collapses and is at rest by 5 s.
+// The collapse is chaotic: a change of rounding moves when the limbs stop rocking (one rounding
+// had 0.086 J at 3 s, another 0.02 J), so rest is asserted over the last half second of a run
+// long enough for either.
 TEST(SkeletonDropTest, Rajagopal2015ComesToRestOnTheFloorWithEuler) {
-  DropAndSettle("euler", 1e-3, 0.0, 3.0, true);
+  DropAndSettle("euler", 1e-3, 0.0, 5.0, true);
 }
 
 // RK45 (accuracy 1e-4) through the landing: the contacts are stiff (steps of about 2e-5 s),
