@@ -24,7 +24,11 @@
 // articulated-body algorithm, with one 6-column solve of the small system instead of six solves
 // of the whole block.
 // J_B of a parameterized joint is block lower triangular, [R^T 0; -R^T [r]x R^T] in 3 x 3
-// blocks (also when the joint is reversed), so J_B^-1 takes two 3 x 3 inverses.
+// blocks (also when the joint is reversed), so J_B^-1 takes two 3 x 3 inverses. And the joint
+// rows hold when the body moves rigidly with its parent (u = 0: the same angular velocity, the
+// parent's linear velocity carried to the body's origin), so the shift is
+// A = -[I 0; -[p_B - p_P]x I] = [-I 0; K -I]: SolveCoupling computes K alone and takes the
+// rest as it is (ArticulatedPivotTest checks the result against six solves and a dense LU).
 #pragma once
 
 #include <sinew/math/types.h>
@@ -96,22 +100,45 @@ void ArticulatedPivot::SolveCoupling(const Eigen::Matrix<double, 6, 6>& J_P,
                                      Eigen::MatrixBase<WMatrix>& W,
                                      Eigen::Matrix<double, 6, 6>& CtW) const {
   using Mat6 = Eigen::Matrix<double, 6, 6>;
-  const Mat6 A = Jinv_.lazyProduct(J_P);
-  const Mat6 MA = M_.lazyProduct(A);
+  // A = [-I 0; K -I] (the rigid shift, above): only K = X P_11 + C^-1 P_21 is computed, with
+  // J_B^-1 = [A^-1 0; X C^-1] and J_P = [P_11 0; P_21 P_22]; every product with A is then one
+  // 3 x 3 product, or none.
+  const Mat3 K = Jinv_.bottomLeftCorner<3, 3>().lazyProduct(J_P.topLeftCorner<3, 3>()) +
+                 Jinv_.bottomRightCorner<3, 3>().lazyProduct(J_P.bottomLeftCorner<3, 3>());
+  Mat6 MA;  // M_A A
+  MA.leftCols<3>() = M_.rightCols<3>().lazyProduct(K) - M_.leftCols<3>();
+  MA.rightCols<3>() = -M_.rightCols<3>();
+  // Y^T = A^T M_A S = [-(M_A S)_1 + K^T (M_A S)_2; -(M_A S)_2] (6 x nu), and Z_u's
+  // right-hand side is -Y.
+  Six Yt(6, nu_);
+  Yt.template topRows<3>() = K.transpose().lazyProduct(MS_.template bottomRows<3>());
+  Yt.template topRows<3>() -= MS_.template topRows<3>();
+  Yt.template bottomRows<3>() = -MS_.template bottomRows<3>();
   SmallRhs Z(nu_ + nc_, 6);
-  Z.topRows(nu_).noalias() = -MS_.transpose().lazyProduct(A);  // -Y = -S^T M_A A
+  Z.topRows(nu_) = -Yt.transpose();
   Z.bottomRows(nc_).setZero();
   SolveSmallInPlace(Z);
   const auto Zu = Z.topRows(nu_);
-  // C^T W = -(A^T M_A A + Y^T Z_u), Y^T = A^T M_A S.
-  CtW.noalias() = -A.transpose().lazyProduct(MA);
-  CtW.noalias() -= (MA.transpose().lazyProduct(S_)).lazyProduct(Zu);
-  W.template topRows<6>() = A;
-  W.template topRows<6>().noalias() += S_.lazyProduct(Zu);
+  // C^T W = -(A^T M_A A + Y^T Z_u).
+  CtW.template topRows<3>() = MA.template topRows<3>();
+  CtW.template topRows<3>().noalias() -= K.transpose().lazyProduct(MA.template bottomRows<3>());
+  CtW.template bottomRows<3>() = MA.template bottomRows<3>();
+  CtW.noalias() -= Yt.lazyProduct(Zu);
+  // W's twist rows A + S Z_u, its joint rows J_B^-T (-M_A A - M_A S Z_u).
+  W.template topRows<6>().noalias() = S_.lazyProduct(Zu);
+  W.template topLeftCorner<3, 3>() -= Mat3::Identity();
+  W.template block<3, 3>(3, 0) += K;
+  W.template block<3, 3>(3, 3) -= Mat3::Identity();
   W.middleRows(6, nu_) = Zu;
   Mat6 r = -MA;
   r.noalias() -= MS_.lazyProduct(Zu);
-  W.template middleRows<6>(6 + nu_).noalias() = Jinv_.transpose().lazyProduct(r);
+  auto lambda = W.template middleRows<6>(6 + nu_);
+  lambda.template topRows<3>().noalias() =
+      Jinv_.topLeftCorner<3, 3>().transpose().lazyProduct(r.template topRows<3>());
+  lambda.template topRows<3>().noalias() +=
+      Jinv_.bottomLeftCorner<3, 3>().transpose().lazyProduct(r.template bottomRows<3>());
+  lambda.template bottomRows<3>().noalias() =
+      Jinv_.bottomRightCorner<3, 3>().transpose().lazyProduct(r.template bottomRows<3>());
   W.bottomRows(nc_) = Z.bottomRows(nc_);
 }
 
