@@ -10,20 +10,15 @@
 #include <Eigen/LU>
 #include <algorithm>
 
+#include "engine/test_models.h"
+
 namespace sinew::engine {
 namespace {
 
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Block = ArticulatedPivot::Block;
 
-// The spatial inertia about the body origin ([angular; linear] in G) of mass m, mass centre c
-// and central inertia I.
-Mat6 SpatialInertia(double m, const Vec3& c, const Mat3& I) {
-  Mat6 M;
-  const Mat3 cx = Skew(c);
-  M << I - m * cx * cx, m * cx, -m * cx, m * Mat3::Identity();
-  return M;
-}
+using testing::SpatialInertia;
 
 struct PivotCase {
   Block K;
@@ -95,7 +90,7 @@ TEST(ArticulatedPivotTest, ClosedFormCouplingEqualsSolvesForEveryNumberOfSpeeds)
   const Mat6 M = SpatialInertia(3.0, Vec3(0.02, -0.15, 0.01), Vec3(0.04, 0.01, 0.035).asDiagonal());
   for (int nu = 0; nu <= 6; ++nu) {
     for (int nc = 0; nc <= std::min(nu, 2); ++nc) {
-      SCOPED_TRACE(testing::Message() << nu << " speeds, " << nc << " coordinate rows");
+      SCOPED_TRACE(::testing::Message() << nu << " speeds, " << nc << " coordinate rows");
       // Columns of a free joint's motion subspace, taken in turn, with a coupling mixed in.
       Mat6X S = Mat6X::Zero(6, nu);
       for (int k = 0; k < nu; ++k) {

@@ -8,20 +8,15 @@
 
 #include <Eigen/LU>
 
+#include "engine/test_models.h"
+
 namespace sinew::engine {
 namespace {
 
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Block = DirectPivot::Block;
 
-// The spatial inertia about the body origin ([angular; linear] in G) of mass m, mass centre c
-// and central inertia I.
-Mat6 SpatialInertia(double m, const Vec3& c, const Mat3& I) {
-  Mat6 M;
-  const Mat3 cx = Skew(c);
-  M << I - m * cx * cx, m * cx, -m * cx, m * Mat3::Identity();
-  return M;
-}
+using testing::SpatialInertia;
 
 // The rows of a joint holding the body's point r_B (from its origin) at the parent's point d,
 // with `free_rotations` of the body's rotations left free about axes turned by R, in a
@@ -60,7 +55,7 @@ TEST(DirectPivotTest, SolvesAndCouplingEqualADenseLuForEveryDirectForm) {
   const Mat3 R = RotationFromBodyFixedXYZ(Vec3(0.3, -0.7, 1.1));
   for (int free_rotations = 0; free_rotations <= 3; ++free_rotations) {
     const int m = 6 - free_rotations;
-    SCOPED_TRACE(testing::Message() << m << " joint rows");
+    SCOPED_TRACE(::testing::Message() << m << " joint rows");
     const JointRows rows =
         MakeJointRows(free_rotations, R, Vec3(0.1, -0.2, 0.03), Vec3(-0.05, 0.4, 0.1));
     const Block K = MakeBlock(M, rows.J_B);

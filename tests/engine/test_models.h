@@ -17,6 +17,15 @@
 
 namespace sinew::engine::testing {
 
+/// The spatial inertia about the body origin ([angular; linear] in G) of mass m, mass centre c
+/// and central inertia I, written out independently of the engine's CalcBodyMassMatrix.
+inline Eigen::Matrix<double, 6, 6> SpatialInertia(double m, const Vec3& c, const Mat3& I) {
+  Eigen::Matrix<double, 6, 6> M;
+  const Mat3 cx = Skew(c);
+  M << I - m * cx * cx, m * cx, -m * cx, m * Mat3::Identity();
+  return M;
+}
+
 /// Rotation q about a fixed unit axis of F (a pin about `axis`).
 class RevoluteModel final : public kinematics::JointModel {
  public:
