@@ -28,7 +28,11 @@ JointFrames CalcJointFrames(const Joint& joint, const State& state) {
 // inverse(X_GF) * X_GM = X_FM(q), six rows in F: [rotation; translation].
 class ParameterizedJointConstraint final : public Constraint {
  public:
-  explicit ParameterizedJointConstraint(const Joint& joint) : joint_(joint) {}
+  explicit ParameterizedJointConstraint(const Joint& joint)
+      : joint_(joint), quat_PF_(joint.X_PF.R), quat_BM_(joint.X_BM.R) {
+    quat_PF_.normalize();
+    quat_BM_.normalize();
+  }
 
   std::string name() const override { return joint_.name; }
   int NumEquations() const override { return 6; }
@@ -36,11 +40,20 @@ class ParameterizedJointConstraint final : public Constraint {
   std::vector<int> Coordinates() const override { return joint_.coordinates; }
 
   void CalcPositionError(const System&, const State& state, Eigen::Ref<VecX> phi) const override {
-    const JointFrames f = CalcJointFrames(joint_, state);
-    const Transform X_FM_actual = f.X_GF.Inverse() * f.X_GM;
+    // The frames composed as unit quaternions (cheaper than the rotation matrices of
+    // CalcJointFrames; the same rotations to round-off).
+    const BodyState& P = state.bodies[joint_.parent];
+    const BodyState& B = state.bodies[joint_.child];
+    const Quat quat_GP = P.quat_GB.normalized(), quat_GB = B.quat_GB.normalized();
+    const Quat quat_FG = (quat_GP * quat_PF_).conjugate();
+    const Vec3 p_GF = P.p_GB + quat_GP * joint_.X_PF.p;
+    const Vec3 p_GM = B.p_GB + quat_GB * joint_.X_BM.p;
+    const Quat quat_FM_actual = quat_FG * (quat_GB * quat_BM_);
     const Transform X_FM = joint_.model->CalcX_FM(JointValues(state.q, joint_.coordinates));
-    phi.head<3>() = RotationVector(X_FM_actual.R * X_FM.R.transpose());
-    phi.tail<3>() = X_FM_actual.p - X_FM.p;
+    // Rotation vector of R_FM_actual * R_FM(q)^T.
+    const Eigen::AngleAxisd error(quat_FM_actual * Quat(X_FM.R).conjugate());
+    phi.head<3>() = error.axis() * error.angle();
+    phi.tail<3>() = quat_FG * (p_GM - p_GF) - X_FM.p;
   }
 
   void CalcJacobian(const System&, const State& state, Eigen::Ref<MatX> J) const override {
@@ -84,6 +97,7 @@ class ParameterizedJointConstraint final : public Constraint {
 
  private:
   Joint joint_;
+  Quat quat_PF_, quat_BM_;  // the rotations of joint_.X_PF and joint_.X_BM
 };
 
 // q_i - f(t) = 0 on a coordinate of a parameterized joint. Velocity: (N(q) u)_i = f'(t);
