@@ -57,18 +57,27 @@ class ParameterizedJointConstraint final : public Constraint {
   }
 
   void CalcJacobian(const System&, const State& state, Eigen::Ref<MatX> J) const override {
-    const JointFrames f = CalcJointFrames(joint_, state);
-    const Mat3 Rt = f.X_GF.R.transpose();
-    const Vec3 r_BM = f.X_GM.p - f.X_GB.p;
-    const Vec3 d = f.X_GM.p - f.X_GP.p;
-    J.setZero();
-    // Parent twist columns 0..5, child 6..11, then the joint speeds.
+    // Only R_GF and the origins are needed: R_GF from the composed unit quaternions, and
+    // r_BM = R_GB p_BM without forming R_GB.
+    const BodyState& P = state.bodies[joint_.parent];
+    const BodyState& B = state.bodies[joint_.child];
+    const Quat quat_GP = P.quat_GB.normalized();
+    const Mat3 R_GF = (quat_GP * quat_PF_).toRotationMatrix();
+    const Vec3 r_BM = B.quat_GB.normalized() * joint_.X_BM.p;
+    const Vec3 d = B.p_GB + r_BM - P.p_GB;
+    const Mat3 Rt = R_GF.transpose();
+    // Parent twist columns 0..5, child 6..11, then the joint speeds. Row i of Rt [v]x is
+    // (R_GF.col(i) x v)^T.
     J.block<3, 3>(0, 0) = -Rt;
-    J.block<3, 3>(3, 0) = Rt * Skew(d);
+    J.block<3, 3>(0, 3).setZero();
     J.block<3, 3>(3, 3) = -Rt;
     J.block<3, 3>(0, 6) = Rt;
-    J.block<3, 3>(3, 6) = -Rt * Skew(r_BM);
+    J.block<3, 3>(0, 9).setZero();
     J.block<3, 3>(3, 9) = Rt;
+    for (int i = 0; i < 3; ++i) {
+      J.block<1, 3>(3 + i, 0) = R_GF.col(i).cross(d).transpose();
+      J.block<1, 3>(3 + i, 6) = -R_GF.col(i).cross(r_BM).transpose();
+    }
     const int n = static_cast<int>(joint_.coordinates.size());
     if (n > 0) J.rightCols(n) = -joint_.model->CalcH_FM(JointValues(state.q, joint_.coordinates));
   }
