@@ -11,20 +11,6 @@
 namespace sinew::engine {
 namespace {
 
-// Frames F (on the parent P) and M (on the child B) of a joint at a state.
-struct JointFrames {
-  Transform X_GP, X_GB, X_GF, X_GM;
-};
-
-JointFrames CalcJointFrames(const Joint& joint, const State& state) {
-  JointFrames f;
-  f.X_GP = PoseOf(state.bodies[joint.parent]);
-  f.X_GB = PoseOf(state.bodies[joint.child]);
-  f.X_GF = f.X_GP * joint.X_PF;
-  f.X_GM = f.X_GB * joint.X_BM;
-  return f;
-}
-
 // inverse(X_GF) * X_GM = X_FM(q), six rows in F: [rotation; translation].
 class ParameterizedJointConstraint final : public Constraint {
  public:
@@ -40,8 +26,8 @@ class ParameterizedJointConstraint final : public Constraint {
   std::vector<int> Coordinates() const override { return joint_.coordinates; }
 
   void CalcPositionError(const System&, const State& state, Eigen::Ref<VecX> phi) const override {
-    // The frames composed as unit quaternions (cheaper than the rotation matrices of
-    // CalcJointFrames; the same rotations to round-off).
+    // The frames composed as unit quaternions (cheaper than composing rotation matrices; the
+    // same rotations to round-off).
     const BodyState& P = state.bodies[joint_.parent];
     const BodyState& B = state.bodies[joint_.child];
     const Quat quat_GP = P.quat_GB.normalized(), quat_GB = B.quat_GB.normalized();
@@ -83,19 +69,19 @@ class ParameterizedJointConstraint final : public Constraint {
   }
 
   void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
-    const JointFrames f = CalcJointFrames(joint_, state);
     const BodyState& P = state.bodies[joint_.parent];
     const BodyState& B = state.bodies[joint_.child];
-    const Mat3 Rt = f.X_GF.R.transpose();
-    const Vec3 r_BM = f.X_GM.p - f.X_GB.p;
-    const Vec3 d = f.X_GM.p - f.X_GP.p;
+    // R_FG as a quaternion, and the offsets (as in CalcJacobian).
+    const Quat quat_FG = (P.quat_GB.normalized() * quat_PF_).conjugate();
+    const Vec3 r_BM = B.quat_GB.normalized() * joint_.X_BM.p;
+    const Vec3 d = B.p_GB + r_BM - P.p_GB;
     const Vec3 v_M = B.v_GB + B.w_GB.cross(r_BM);
     const Vec3 d_dot = v_M - P.v_GB;
     const Vec3 y = d_dot - P.w_GB.cross(d);
     SpatialVec bias;
-    bias.head<3>() = -Rt * P.w_GB.cross(B.w_GB - P.w_GB);
+    bias.head<3>() = -(quat_FG * P.w_GB.cross(B.w_GB - P.w_GB));
     bias.tail<3>() =
-        Rt * (B.w_GB.cross(B.w_GB.cross(r_BM)) - P.w_GB.cross(d_dot) - P.w_GB.cross(y));
+        quat_FG * (B.w_GB.cross(B.w_GB.cross(r_BM)) - P.w_GB.cross(d_dot) - P.w_GB.cross(y));
     SpatialVec hdot_u = SpatialVec::Zero();
     if (!joint_.coordinates.empty()) {
       hdot_u = joint_.model->CalcHDotU(JointValues(state.q, joint_.coordinates),
