@@ -73,6 +73,25 @@ model::ModelSpec MakeCustomSpec() {
   return spec;
 }
 
+// A CustomJoint on F's coordinate axes (as in most OpenSim models: elementary rotations) with
+// a constant nonzero rotation first, a nonlinear function and a coordinate.
+model::ModelSpec MakeCustomCoordinateAxesSpec() {
+  model::ModelSpec spec = MakeSpec(model::JointType::kCustom, "CustomJoint", 2);
+  auto& st = spec.joints[0].spatial_transform;
+  st.push_back(Axis("rotation1", Vec3(0, 1, 0), {}, std::make_shared<TestConstantFunction>(0.4)));
+  st.push_back(Axis("rotation2", Vec3(0, 0, 1), {0},
+                    std::make_shared<TestSmoothFunction>(0.1, 0.9, 0.2, 0.3)));
+  st.push_back(
+      Axis("rotation3", Vec3(1, 0, 0), {1}, std::make_shared<TestLinearFunction>(1.0, 0.0)));
+  st.push_back(Axis("translation1", Vec3(1, 0, 0), {0},
+                    std::make_shared<TestSmoothFunction>(0.01, 0.05, -0.02, 0.01)));
+  st.push_back(
+      Axis("translation2", Vec3(0, 1, 0), {}, std::make_shared<TestConstantFunction>(0.0)));
+  st.push_back(
+      Axis("translation3", Vec3(0, 0, 1), {1}, std::make_shared<TestLinearFunction>(-1.0, 0.01)));
+  return spec;
+}
+
 struct JointCase {
   std::string name;
   model::ModelSpec spec;
@@ -97,6 +116,7 @@ std::vector<JointCase> AllJointCases() {
   scap.spec.joints[0].parameters["scapula_winging_axis_direction"] = {0.4};
   cases.push_back(scap);
   cases.push_back({"Custom", MakeCustomSpec()});
+  cases.push_back({"CustomCoordinateAxes", MakeCustomCoordinateAxesSpec()});
   return cases;
 }
 
@@ -312,6 +332,25 @@ TEST(JointTransformTest, CustomJointComposesBodyFixedRotationsAndUnrotatedTransl
                  (-q[2] + 0.01) * st[5].axis.normalized();
   const Transform X = joint->CalcX_FM(q);
   EXPECT_TRUE(X.R.isApprox(R, 1e-14));
+  EXPECT_TRUE(X.p.isApprox(p, 1e-14));
+}
+
+TEST(JointTransformTest, CustomJointOnCoordinateAxesComposesElementaryRotations) {
+  const model::ModelSpec spec = MakeCustomCoordinateAxesSpec();
+  const auto joint = kinematics::MakeJointModel(spec, 0);
+  const double q[] = {0.7, -1.1};
+  const auto& st = spec.joints[0].spatial_transform;
+  const double s2 = st[1].function->Calc(q[0]);
+  // Ry(0.4) Rz(s2) Rx(q1), written out.
+  const double cy = std::cos(0.4), sy = std::sin(0.4), cz = std::cos(s2), sz = std::sin(s2);
+  const double cx = std::cos(q[1]), sx = std::sin(q[1]);
+  Mat3 Ry, Rz, Rx;
+  Ry << cy, 0, sy, 0, 1, 0, -sy, 0, cy;
+  Rz << cz, -sz, 0, sz, cz, 0, 0, 0, 1;
+  Rx << 1, 0, 0, 0, cx, -sx, 0, sx, cx;
+  const Vec3 p(st[3].function->Calc(q[0]), 0.0, -q[1] + 0.01);
+  const Transform X = joint->CalcX_FM(q);
+  EXPECT_TRUE(X.R.isApprox(Ry * Rz * Rx, 1e-14));
   EXPECT_TRUE(X.p.isApprox(p, 1e-14));
 }
 

@@ -11,24 +11,14 @@
 namespace sinew::engine {
 namespace {
 
-// Frames F (on the parent P) and M (on the child B) of a joint at a state.
-struct JointFrames {
-  Transform X_GP, X_GB, X_GF, X_GM;
-};
-
-JointFrames CalcJointFrames(const Joint& joint, const State& state) {
-  JointFrames f;
-  f.X_GP = PoseOf(state.bodies[joint.parent]);
-  f.X_GB = PoseOf(state.bodies[joint.child]);
-  f.X_GF = f.X_GP * joint.X_PF;
-  f.X_GM = f.X_GB * joint.X_BM;
-  return f;
-}
-
 // inverse(X_GF) * X_GM = X_FM(q), six rows in F: [rotation; translation].
 class ParameterizedJointConstraint final : public Constraint {
  public:
-  explicit ParameterizedJointConstraint(const Joint& joint) : joint_(joint) {}
+  explicit ParameterizedJointConstraint(const Joint& joint)
+      : joint_(joint), quat_PF_(joint.X_PF.R), quat_BM_(joint.X_BM.R) {
+    quat_PF_.normalize();
+    quat_BM_.normalize();
+  }
 
   std::string name() const override { return joint_.name; }
   int NumEquations() const override { return 6; }
@@ -36,44 +26,62 @@ class ParameterizedJointConstraint final : public Constraint {
   std::vector<int> Coordinates() const override { return joint_.coordinates; }
 
   void CalcPositionError(const System&, const State& state, Eigen::Ref<VecX> phi) const override {
-    const JointFrames f = CalcJointFrames(joint_, state);
-    const Transform X_FM_actual = f.X_GF.Inverse() * f.X_GM;
+    // The frames composed as unit quaternions (cheaper than composing rotation matrices; the
+    // same rotations to round-off).
+    const BodyState& P = state.bodies[joint_.parent];
+    const BodyState& B = state.bodies[joint_.child];
+    const Quat quat_GP = P.quat_GB.normalized(), quat_GB = B.quat_GB.normalized();
+    const Quat quat_FG = (quat_GP * quat_PF_).conjugate();
+    const Vec3 p_GF = P.p_GB + quat_GP * joint_.X_PF.p;
+    const Vec3 p_GM = B.p_GB + quat_GB * joint_.X_BM.p;
+    const Quat quat_FM_actual = quat_FG * (quat_GB * quat_BM_);
     const Transform X_FM = joint_.model->CalcX_FM(JointValues(state.q, joint_.coordinates));
-    phi.head<3>() = RotationVector(X_FM_actual.R * X_FM.R.transpose());
-    phi.tail<3>() = X_FM_actual.p - X_FM.p;
+    // Rotation vector of R_FM_actual * R_FM(q)^T.
+    const Eigen::AngleAxisd error(quat_FM_actual * Quat(X_FM.R).conjugate());
+    phi.head<3>() = error.axis() * error.angle();
+    phi.tail<3>() = quat_FG * (p_GM - p_GF) - X_FM.p;
   }
 
   void CalcJacobian(const System&, const State& state, Eigen::Ref<MatX> J) const override {
-    const JointFrames f = CalcJointFrames(joint_, state);
-    const Mat3 Rt = f.X_GF.R.transpose();
-    const Vec3 r_BM = f.X_GM.p - f.X_GB.p;
-    const Vec3 d = f.X_GM.p - f.X_GP.p;
-    J.setZero();
-    // Parent twist columns 0..5, child 6..11, then the joint speeds.
+    // Only R_GF and the origins are needed: R_GF from the composed unit quaternions, and
+    // r_BM = R_GB p_BM without forming R_GB.
+    const BodyState& P = state.bodies[joint_.parent];
+    const BodyState& B = state.bodies[joint_.child];
+    const Quat quat_GP = P.quat_GB.normalized();
+    const Mat3 R_GF = (quat_GP * quat_PF_).toRotationMatrix();
+    const Vec3 r_BM = B.quat_GB.normalized() * joint_.X_BM.p;
+    const Vec3 d = B.p_GB + r_BM - P.p_GB;
+    const Mat3 Rt = R_GF.transpose();
+    // Parent twist columns 0..5, child 6..11, then the joint speeds. Row i of Rt [v]x is
+    // (R_GF.col(i) x v)^T.
     J.block<3, 3>(0, 0) = -Rt;
-    J.block<3, 3>(3, 0) = Rt * Skew(d);
+    J.block<3, 3>(0, 3).setZero();
     J.block<3, 3>(3, 3) = -Rt;
     J.block<3, 3>(0, 6) = Rt;
-    J.block<3, 3>(3, 6) = -Rt * Skew(r_BM);
+    J.block<3, 3>(0, 9).setZero();
     J.block<3, 3>(3, 9) = Rt;
+    for (int i = 0; i < 3; ++i) {
+      J.block<1, 3>(3 + i, 0) = R_GF.col(i).cross(d).transpose();
+      J.block<1, 3>(3 + i, 6) = -R_GF.col(i).cross(r_BM).transpose();
+    }
     const int n = static_cast<int>(joint_.coordinates.size());
     if (n > 0) J.rightCols(n) = -joint_.model->CalcH_FM(JointValues(state.q, joint_.coordinates));
   }
 
   void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
-    const JointFrames f = CalcJointFrames(joint_, state);
     const BodyState& P = state.bodies[joint_.parent];
     const BodyState& B = state.bodies[joint_.child];
-    const Mat3 Rt = f.X_GF.R.transpose();
-    const Vec3 r_BM = f.X_GM.p - f.X_GB.p;
-    const Vec3 d = f.X_GM.p - f.X_GP.p;
+    // R_FG as a quaternion, and the offsets (as in CalcJacobian).
+    const Quat quat_FG = (P.quat_GB.normalized() * quat_PF_).conjugate();
+    const Vec3 r_BM = B.quat_GB.normalized() * joint_.X_BM.p;
+    const Vec3 d = B.p_GB + r_BM - P.p_GB;
     const Vec3 v_M = B.v_GB + B.w_GB.cross(r_BM);
     const Vec3 d_dot = v_M - P.v_GB;
     const Vec3 y = d_dot - P.w_GB.cross(d);
     SpatialVec bias;
-    bias.head<3>() = -Rt * P.w_GB.cross(B.w_GB - P.w_GB);
+    bias.head<3>() = -(quat_FG * P.w_GB.cross(B.w_GB - P.w_GB));
     bias.tail<3>() =
-        Rt * (B.w_GB.cross(B.w_GB.cross(r_BM)) - P.w_GB.cross(d_dot) - P.w_GB.cross(y));
+        quat_FG * (B.w_GB.cross(B.w_GB.cross(r_BM)) - P.w_GB.cross(d_dot) - P.w_GB.cross(y));
     SpatialVec hdot_u = SpatialVec::Zero();
     if (!joint_.coordinates.empty()) {
       hdot_u = joint_.model->CalcHDotU(JointValues(state.q, joint_.coordinates),
@@ -84,6 +92,7 @@ class ParameterizedJointConstraint final : public Constraint {
 
  private:
   Joint joint_;
+  Quat quat_PF_, quat_BM_;  // the rotations of joint_.X_PF and joint_.X_BM
 };
 
 // q_i - f(t) = 0 on a coordinate of a parameterized joint. Velocity: (N(q) u)_i = f'(t);

@@ -1,12 +1,10 @@
 #include <sinew/common/error.h>
 #include <sinew/kinematics/custom_joint_model.h>
-#include <sinew/kinematics/internal/joint_math.h>
 
+#include <cmath>
 #include <utility>
 
 namespace sinew::kinematics {
-
-using internal::RotationAboutUnitAxis;
 
 namespace {
 constexpr int kMaxArgs = 6;  // A joint has at most six coordinates.
@@ -33,37 +31,80 @@ CustomJointModel::CustomJointModel(std::array<TransformAxisTerm, 6> axes, int nq
     }
   }
   for (int i = 0; i < 3; ++i) {
-    rotation_fixed_[i] = axes_[i].kind == TransformAxisTerm::Kind::kConstant;
-    fixed_rotation_[i] = RotationAboutUnitAxis(axes_[i].axis, axes_[i].value);
-  }
-}
-
-Mat3 CustomJointModel::CalcAxisRotation(int i, double s) const {
-  return rotation_fixed_[i] ? fixed_rotation_[i] : RotationAboutUnitAxis(axes_[i].axis, s);
-}
-
-void CustomJointModel::CalcS(std::span<const double> q, double* s) const {
-  for (int i = 0; i < 6; ++i) {
     const TransformAxisTerm& a = axes_[i];
-    switch (a.kind) {
-      case TransformAxisTerm::Kind::kConstant:
-        s[i] = a.value;
-        break;
-      case TransformAxisTerm::Kind::kIdentity:
-        s[i] = q[a.args[0]];
-        break;
-      case TransformAxisTerm::Kind::kFunction1:
-        s[i] = a.function->Calc(q[a.args[0]]);
-        break;
-      case TransformAxisTerm::Kind::kFunctionN: {
-        double x[kMaxArgs];
-        const int n = static_cast<int>(a.args.size());
-        for (int k = 0; k < n; ++k) x[k] = q[a.args[k]];
-        s[i] = a.function->CalcN(std::span<const double>(x, n));
-        break;
-      }
+    rotation_zero_[i] = a.kind == TransformAxisTerm::Kind::kConstant && a.value == 0.0;
+    fixed_cos_[i] = std::cos(a.value);
+    fixed_sin_[i] = std::sin(a.value);
+    coordinate_axis_[i] = -1;
+    for (int k = 0; k < 3; ++k) {
+      if (a.axis == Vec3::Unit(k)) coordinate_axis_[i] = k;
     }
   }
+}
+
+void CustomJointModel::CalcCosSin(int i, std::span<const double> q, double* c, double* s) const {
+  if (axes_[i].kind == TransformAxisTerm::Kind::kConstant) {
+    *c = fixed_cos_[i];
+    *s = fixed_sin_[i];
+    return;
+  }
+  const double angle = CalcAxisValue(i, q);
+  *c = std::cos(angle);
+  *s = std::sin(angle);
+}
+
+Vec3 CustomJointModel::RotateAbout(int i, double c, double s, const Vec3& v) const {
+  const int k = coordinate_axis_[i];
+  if (k >= 0) {
+    // Elementary rotation about F's axis k: only the components (j, l) = (k+1, k+2) mix.
+    const int j = (k + 1) % 3, l = (k + 2) % 3;
+    Vec3 r;
+    r[k] = v[k];
+    r[j] = c * v[j] - s * v[l];
+    r[l] = s * v[j] + c * v[l];
+    return r;
+  }
+  // Rodrigues: R v = c v + s (a x v) + (1 - c) (a . v) a.
+  const Vec3& a = axes_[i].axis;
+  return c * v + s * a.cross(v) + ((1.0 - c) * a.dot(v)) * a;
+}
+
+void CustomJointModel::MultiplyByRotation(int i, double c, double s, Mat3& M) const {
+  const int k = coordinate_axis_[i];
+  if (k >= 0) {
+    // M R_k: columns j and l mix, column k is unchanged.
+    const int j = (k + 1) % 3, l = (k + 2) % 3;
+    const Vec3 mj = M.col(j), ml = M.col(l);
+    M.col(j) = c * mj + s * ml;
+    M.col(l) = c * ml - s * mj;
+    return;
+  }
+  const Vec3& a = axes_[i].axis;
+  const double t = 1.0 - c;
+  Mat3 R;
+  R << t * a.x() * a.x() + c, t * a.x() * a.y() - s * a.z(), t * a.x() * a.z() + s * a.y(),
+      t * a.x() * a.y() + s * a.z(), t * a.y() * a.y() + c, t * a.y() * a.z() - s * a.x(),
+      t * a.x() * a.z() - s * a.y(), t * a.y() * a.z() + s * a.x(), t * a.z() * a.z() + c;
+  M = M * R;
+}
+
+double CustomJointModel::CalcAxisValue(int i, std::span<const double> q) const {
+  const TransformAxisTerm& a = axes_[i];
+  switch (a.kind) {
+    case TransformAxisTerm::Kind::kConstant:
+      return a.value;
+    case TransformAxisTerm::Kind::kIdentity:
+      return q[a.args[0]];
+    case TransformAxisTerm::Kind::kFunction1:
+      return a.function->Calc(q[a.args[0]]);
+    case TransformAxisTerm::Kind::kFunctionN: {
+      double x[kMaxArgs];
+      const int n = static_cast<int>(a.args.size());
+      for (int k = 0; k < n; ++k) x[k] = q[a.args[k]];
+      return a.function->CalcN(std::span<const double>(x, n));
+    }
+  }
+  return 0.0;
 }
 
 void CustomJointModel::CalcJ(std::span<const double> q, double (*J)[6]) const {
@@ -122,37 +163,38 @@ double CustomJointModel::CalcSecondTerm(int i, std::span<const double> q,
   return 0.0;
 }
 
-void CustomJointModel::CalcRotationAxesInF(const double* s, Vec3* e, Mat3* R_FM) const {
-  const Mat3 R1 = CalcAxisRotation(0, s[0]);
-  const Mat3 R12 = R1 * CalcAxisRotation(1, s[1]);
+void CustomJointModel::CalcRotationAxesInF(std::span<const double> q, Vec3* e) const {
+  double c1, s1, c2, s2;
+  CalcCosSin(0, q, &c1, &s1);
+  CalcCosSin(1, q, &c2, &s2);
   e[0] = axes_[0].axis;
-  e[1] = R1 * axes_[1].axis;
-  e[2] = R12 * axes_[2].axis;
-  if (R_FM) *R_FM = R12 * CalcAxisRotation(2, s[2]);
+  e[1] = RotateAbout(0, c1, s1, axes_[1].axis);
+  e[2] = RotateAbout(0, c1, s1, RotateAbout(1, c2, s2, axes_[2].axis));
 }
 
 Transform CustomJointModel::CalcX_FM(std::span<const double> q) const {
-  double s[6];
-  CalcS(q, s);
   Transform X;
+  X.R.setIdentity();
   // Skip the constant zero rotations (every Pin, Slider, Universal, Planar joint has some).
-  bool any = false;
   for (int i = 0; i < 3; ++i) {
-    if (rotation_fixed_[i] && axes_[i].value == 0.0) continue;
-    X.R = any ? Mat3(X.R * CalcAxisRotation(i, s[i])) : CalcAxisRotation(i, s[i]);
-    any = true;
+    if (rotation_zero_[i]) continue;
+    double c, s;
+    CalcCosSin(i, q, &c, &s);
+    MultiplyByRotation(i, c, s, X.R);
   }
-  X.p = s[3] * axes_[3].axis + s[4] * axes_[4].axis + s[5] * axes_[5].axis;
+  X.p.setZero();
+  for (int i = 3; i < 6; ++i) {
+    if (axes_[i].kind == TransformAxisTerm::Kind::kConstant && axes_[i].value == 0.0) continue;
+    X.p += CalcAxisValue(i, q) * axes_[i].axis;
+  }
   return X;
 }
 
 Mat6X CustomJointModel::CalcH_FM(std::span<const double> q) const {
-  double s[6];
-  CalcS(q, s);
   double J[6][6];
   CalcJ(q, J);
   Vec3 e[3];
-  CalcRotationAxesInF(s, e, nullptr);
+  CalcRotationAxesInF(q, e);
   // w_FM = sum_i sdot_i e_i (i = rotations), v_FM = sum_i sdot_i a_i (i = translations),
   // with sdot_i = sum_k J_ik u_k.
   Mat6X H = Mat6X::Zero(6, nq_);
@@ -166,12 +208,10 @@ Mat6X CustomJointModel::CalcH_FM(std::span<const double> q) const {
 }
 
 SpatialVec CustomJointModel::CalcV_FM(std::span<const double> q, std::span<const double> u) const {
-  double s[6];
-  CalcS(q, s);
   double J[6][6];
   CalcJ(q, J);
   Vec3 e[3];
-  CalcRotationAxesInF(s, e, nullptr);
+  CalcRotationAxesInF(q, e);
   SpatialVec V = SpatialVec::Zero();
   for (int i = 0; i < 3; ++i) {
     double sdot_rot = 0.0, sdot_trans = 0.0;
@@ -196,12 +236,10 @@ void CustomJointModel::CalcU(std::span<const double>, std::span<const double> qd
 }
 
 SpatialVec CustomJointModel::CalcHDotU(std::span<const double> q, std::span<const double> u) const {
-  double s[6];
-  CalcS(q, s);
   double J[6][6];
   CalcJ(q, J);
   Vec3 e[3];
-  CalcRotationAxesInF(s, e, nullptr);
+  CalcRotationAxesInF(q, e);
   double sdot[6];
   for (int i = 0; i < 6; ++i) {
     sdot[i] = 0.0;

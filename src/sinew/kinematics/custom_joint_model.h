@@ -42,22 +42,30 @@ class CustomJointModel final : public JointModel {
   const std::array<TransformAxisTerm, 6>& axes() const { return axes_; }
 
  private:
-  // s_i for all six axes.
-  void CalcS(std::span<const double> q, double* s) const;
+  // s_i for axis i alone.
+  double CalcAxisValue(int i, std::span<const double> q) const;
   // ds_i/dq_k into J[i][k] (k < nq_), zeroed first.
   void CalcJ(std::span<const double> q, double (*J)[6]) const;
   // sum_{k,l} d2 s_i / dq_k dq_l u_k u_l.
   double CalcSecondTerm(int i, std::span<const double> q, std::span<const double> u) const;
-  // The three rotation axes in F for the current s: a1, R1 a2, R1 R2 a3; and R_FM.
-  void CalcRotationAxesInF(const double* s, Vec3* e, Mat3* R_FM) const;
+  // The three rotation axes in F at q: a1, R1 a2, R1 R2 a3 (only s_1 and s_2 are evaluated).
+  void CalcRotationAxesInF(std::span<const double> q, Vec3* e) const;
 
-  // R(a_i, s_i) for rotation axis i (0..2).
-  Mat3 CalcAxisRotation(int i, double s) const;
+  // cos and sin of s_i for rotation axis i (0..2); precomputed for a constant axis.
+  void CalcCosSin(int i, std::span<const double> q, double* c, double* s) const;
+  // v <- R(a_i, s_i) v, given cos and sin of s_i.
+  Vec3 RotateAbout(int i, double c, double s, const Vec3& v) const;
+  // M <- M R(a_i, s_i), given cos and sin of s_i.
+  void MultiplyByRotation(int i, double c, double s, Mat3& M) const;
 
   std::array<TransformAxisTerm, 6> axes_;
   int nq_;
-  std::array<bool, 3> rotation_fixed_{};  // rotation axis i is constant: use fixed_rotation_[i]
-  std::array<Mat3, 3> fixed_rotation_;
+  // Per rotation axis: 0, 1 or 2 when the axis is exactly +x, +y or +z of F (an elementary
+  // rotation, applied to two columns only), -1 otherwise (Rodrigues' formula).
+  std::array<int, 3> coordinate_axis_{};
+  // Per rotation axis: constant zero (skipped), and cos/sin of a constant angle.
+  std::array<bool, 3> rotation_zero_{};
+  std::array<double, 3> fixed_cos_{}, fixed_sin_{};
 };
 
 }  // namespace sinew::kinematics
