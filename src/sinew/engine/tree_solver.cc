@@ -120,8 +120,9 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
       for (const ColumnRun& run : placement.runs) {
         const auto block = J.middleCols(run.jac_col, run.width);
         if (run.col >= 0) {
+          // The lower triangle only: the pivots read no more, and the LU fills the upper
+          // triangle from it when it is used (FactorizeNode).
           node.K.block(placement.first_row, run.col, rows, run.width) = block;
-          node.K.block(run.col, placement.first_row, run.width, rows) = block.transpose();
         } else {
           // Inboard columns run downwards from -1 - col.
           node.C.block(placement.first_row, -1 - run.col, rows, run.width) = block;
@@ -199,6 +200,9 @@ void TreeKktSolver::FactorizeNode(Node& node) {
     node.used = Pivot::kDirect;
     return;
   }
+  // Factorize wrote the constraint rows' entries below the diagonal only: J^T from J.
+  const int first = 6 + node.num_speeds, rows = NumConstraintRows(node);
+  node.K.block(0, first, first, rows) = node.K.block(first, 0, rows, first).transpose();
   node.lu.compute(node.K);
   // Partial pivoting puts each column's largest entry on U's diagonal: a pivot that is tiny
   // next to the largest one means a singular block.
