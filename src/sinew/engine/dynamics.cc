@@ -143,7 +143,8 @@ const Accelerations& SolveAccelerations(const System& system, const State& state
     constraints[k]->CalcAccelerationRhs(
         system, state, rhs.segment(nv + kkt.EquationRow(k), constraints[k]->NumEquations()));
   }
-  if (!rhs.allFinite()) ThrowNonFiniteLoads(system, state, external);
+  // The loads' rows were checked by CalcForceRhs.
+  if (!rhs.tail(kkt.num_equations()).allFinite()) ThrowNonFiniteLoads(system, state, external);
   kkt.Solve(rhs, data.solution);
   data.accelerations.vdot = data.solution.head(nv);
   data.accelerations.lambda = data.solution.tail(kkt.num_equations());

@@ -48,17 +48,19 @@ void Integrator::ApplyController(State& state) const {
   if (controller_) controller_->CalcInputs(system_, state, state.inputs);
 }
 
-const Accelerations& Integrator::Evaluate(State& state, Eigen::Ref<VecX> zdot) {
+void Integrator::EvaluateInputsAndStateDerivatives(State& state, Eigen::Ref<VecX> zdot) {
   ApplyController(state);
   ++stats_.evaluations;
   if (zdot.size() > 0) CalcStateVariableDerivatives(system_, state, zdot);
+}
+
+const Accelerations& Integrator::Evaluate(State& state, Eigen::Ref<VecX> zdot) {
+  EvaluateInputsAndStateDerivatives(state, zdot);
   return CalcAccelerationsReusingFactorization(system_, state, external_, data_);
 }
 
 void Integrator::EvaluateForces(State& state, Eigen::Ref<VecX> zdot, Eigen::Ref<VecX> force_rhs) {
-  ApplyController(state);
-  ++stats_.evaluations;
-  if (zdot.size() > 0) CalcStateVariableDerivatives(system_, state, zdot);
+  EvaluateInputsAndStateDerivatives(state, zdot);
   CalcForceRhsReusingFactorization(system_, state, external_, data_, force_rhs);
 }
 

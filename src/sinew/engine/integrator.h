@@ -105,6 +105,11 @@ class Integrator {
   /// (CalcForceRhsReusingFactorization).
   void EvaluateForces(State& state, Eigen::Ref<VecX> zdot, Eigen::Ref<VecX> force_rhs);
 
+ private:
+  // What both evaluations begin with: inputs from the controller, the count, and zdot.
+  void EvaluateInputsAndStateDerivatives(State& state, Eigen::Ref<VecX> zdot);
+
+ protected:
   const System& system_;
   IntegratorSettings settings_;
   Data data_;       // the evaluations' workspace

@@ -202,20 +202,19 @@ void KktSolver::Solve(const VecX& rhs, VecX& x) const {
   GatherTreeRhs(rhs, tree_rhs_);
   tree_->Solve(tree_rhs_, y_);
   const auto& constraints = system_.constraints();
-  if (ne_ > 0) {
-    g_.resize(ne_);
-    for (int k : extra_constraints_) {
-      const int n = constraints[k]->NumEquations();
-      g_.segment(extra_row_[k], n) = -rhs.segment(nv_ + row_[k], n);
-    }
-    g_.noalias() += G_ * y_.head(nv_);
-    mu_.resize(ne_);
-    mu_.noalias() = schur_inverse_ * g_;
-    y_.noalias() -= Y_ * mu_;
-    for (int k : extra_constraints_) {
-      const int n = constraints[k]->NumEquations();
-      x.segment(nv_ + row_[k], n) = mu_.segment(extra_row_[k], n);
-    }
+  // The extra constraints (ne_ > 0 here): the Schur complement on their rows.
+  g_.resize(ne_);
+  for (int k : extra_constraints_) {
+    const int n = constraints[k]->NumEquations();
+    g_.segment(extra_row_[k], n) = -rhs.segment(nv_ + row_[k], n);
+  }
+  g_.noalias() += G_ * y_.head(nv_);
+  mu_.resize(ne_);
+  mu_.noalias() = schur_inverse_ * g_;
+  y_.noalias() -= Y_ * mu_;
+  for (int k : extra_constraints_) {
+    const int n = constraints[k]->NumEquations();
+    x.segment(nv_ + row_[k], n) = mu_.segment(extra_row_[k], n);
   }
   x.head(nv_) = y_.head(nv_);
   for (int k : tree_constraints_) {

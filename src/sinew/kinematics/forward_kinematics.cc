@@ -114,11 +114,7 @@ SpatialVec TransportVelocity(const TreeJoint& t, std::span<const Transform> X_GB
 // plus the joint's own twist.
 void AddInboardVelocity(const TreeJoint& t, std::span<const Transform> X_GB,
                         std::span<SpatialVec> V_GB) {
-  const Vec3 w_GI = V_GB[t.inboard].head<3>();
-  const Vec3 v_GI = V_GB[t.inboard].tail<3>();
-  SpatialVec& V = V_GB[t.outboard];
-  V.head<3>() += w_GI;
-  V.tail<3>() += v_GI + w_GI.cross(X_GB[t.outboard].p - X_GB[t.inboard].p);
+  V_GB[t.outboard] += TransportVelocity(t, X_GB, V_GB[t.inboard]);
 }
 
 }  // namespace
