@@ -1,5 +1,6 @@
 #include <sinew/engine/articulated_pivot.h>
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 
 namespace sinew::engine {
@@ -34,19 +35,49 @@ bool ArticulatedPivot::Factorize(const Block& K, int nu) {
   M_ = K.topLeftCorner<6, 6>();
   S_.noalias() = -Jinv_ * K.block(rows, 6, 6, nu);
   MS_.noalias() = M_ * S_;
+  fixed_nu_ = 0;
   if (nu_ + nc_ == 0) return true;  // the joint rows alone fix the twist
+  // D's scale is that of M_A seen through S: a pivot far below it means a direction with
+  // (nearly) no inertia that the joint leaves free.
+  const double inertia_scale = M_.cwiseAbs().maxCoeff() * S_.colwise().squaredNorm().maxCoeff();
+  if (nc_ == 0) {
+    switch (nu_) {
+      case 1:
+        return FactorizeFixed<1>(inertia_scale);
+      case 2:
+        return FactorizeFixed<2>(inertia_scale);
+      case 3:
+        return FactorizeFixed<3>(inertia_scale);
+      default:
+        break;
+    }
+  }
   Small small(nu_ + nc_, nu_ + nc_);
   small.topLeftCorner(nu_, nu_).noalias() = S_.transpose() * MS_;
   small.topRightCorner(nu_, nc_) = K.block(12 + nu_, 6, nc_, nu_).transpose();
   small.bottomLeftCorner(nc_, nu_) = K.block(12 + nu_, 6, nc_, nu_);
   small.bottomRightCorner(nc_, nc_).setZero();
   small_.compute(small);
-  // D's scale is that of M_A seen through S: a pivot far below it means a direction with
-  // (nearly) no inertia that the joint leaves free.
   const auto pivots = small_.matrixLU().diagonal().cwiseAbs();
-  const double scale =
-      std::max(pivots.maxCoeff(), M_.cwiseAbs().maxCoeff() * S_.colwise().squaredNorm().maxCoeff());
-  return pivots.minCoeff() > kMinPivot * scale;
+  return pivots.minCoeff() > kMinPivot * std::max(pivots.maxCoeff(), inertia_scale);
+}
+
+template <int NU>
+bool ArticulatedPivot::FactorizeFixed(double inertia_scale) {
+  using MatNU = Eigen::Matrix<double, NU, NU>;
+  const auto S = S_.template leftCols<NU>();
+  const MatNU D = S.transpose().lazyProduct(MS_.template leftCols<NU>());
+  const Eigen::LLT<MatNU> llt(D);
+  // The Cholesky pivots L_ii^2 are those of an LU without row exchanges; D is symmetric
+  // positive definite when the joint's free directions carry inertia.
+  const Eigen::Matrix<double, NU, 1> pivots = llt.matrixLLT().diagonal().cwiseAbs2();
+  if (llt.info() != Eigen::Success ||
+      !(pivots.minCoeff() > kMinPivot * std::max(pivots.maxCoeff(), inertia_scale))) {
+    return false;
+  }
+  Dinv_.template topLeftCorner<NU, NU>() = llt.solve(MatNU::Identity());
+  fixed_nu_ = NU;
+  return true;
 }
 
 }  // namespace sinew::engine

@@ -70,6 +70,11 @@ class ArticulatedPivot {
   using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12>;
   using SmallRhs = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 6>;
   int nu_ = 0, nc_ = 0;
+  // nu_ when the small system is D alone (no coordinate rows) with 1 to 3 speeds, the common
+  // case (CustomJoints): the solves then use D^-1 (from D's Cholesky factor) with every size
+  // known at compile time; 0 otherwise (the small LU below).
+  int fixed_nu_ = 0;
+  Mat3 Dinv_ = Mat3::Zero();  // D^-1 in its top-left fixed_nu_ x fixed_nu_ corner
   Eigen::Matrix<double, 6, 6> M_ = Eigen::Matrix<double, 6, 6>::Zero();     // M_A
   Eigen::Matrix<double, 6, 6> Jinv_ = Eigen::Matrix<double, 6, 6>::Zero();  // J_B^-1
   Six S_, MS_;                                                              // S and M_A S
@@ -78,6 +83,14 @@ class ArticulatedPivot {
   // blocked triangular solves cost more than the arithmetic on these few rows).
   template <typename Y>
   void SolveSmallInPlace(Y& y) const;
+  // D's Cholesky check and inverse for fixed_nu_ = NU; false when a pivot is below the scale.
+  template <int NU>
+  bool FactorizeFixed(double inertia_scale);
+  template <int NU, typename WMatrix>
+  void SolveCouplingFixed(const Mat3& K, const Eigen::Matrix<double, 6, 6>& MA,
+                          Eigen::MatrixBase<WMatrix>& W, Eigen::Matrix<double, 6, 6>& CtW) const;
+  template <int NU, typename Rhs>
+  void SolveInPlaceFixed(Eigen::MatrixBase<Rhs>& x) const;
 };
 
 template <typename Y>
@@ -108,6 +121,16 @@ void ArticulatedPivot::SolveCoupling(const Eigen::Matrix<double, 6, 6>& J_P,
   Mat6 MA;  // M_A A
   MA.leftCols<3>() = M_.rightCols<3>().lazyProduct(K) - M_.leftCols<3>();
   MA.rightCols<3>() = -M_.rightCols<3>();
+  switch (fixed_nu_) {
+    case 1:
+      return SolveCouplingFixed<1>(K, MA, W, CtW);
+    case 2:
+      return SolveCouplingFixed<2>(K, MA, W, CtW);
+    case 3:
+      return SolveCouplingFixed<3>(K, MA, W, CtW);
+    default:
+      break;
+  }
   // Y^T = A^T M_A S = [-(M_A S)_1 + K^T (M_A S)_2; -(M_A S)_2] (6 x nu), and Z_u's
   // right-hand side is -Y.
   Six Yt(6, nu_);
@@ -142,8 +165,74 @@ void ArticulatedPivot::SolveCoupling(const Eigen::Matrix<double, 6, 6>& J_P,
   W.bottomRows(nc_) = Z.bottomRows(nc_);
 }
 
+template <int NU, typename WMatrix>
+void ArticulatedPivot::SolveCouplingFixed(const Mat3& K, const Eigen::Matrix<double, 6, 6>& MA,
+                                          Eigen::MatrixBase<WMatrix>& W,
+                                          Eigen::Matrix<double, 6, 6>& CtW) const {
+  // SolveCoupling's steps with D^-1 for the small system and every size fixed.
+  const auto S = S_.template leftCols<NU>();
+  const auto MS = MS_.template leftCols<NU>();
+  Eigen::Matrix<double, 6, NU> Yt;
+  Yt.template topRows<3>() = K.transpose().lazyProduct(MS.template bottomRows<3>());
+  Yt.template topRows<3>() -= MS.template topRows<3>();
+  Yt.template bottomRows<3>() = -MS.template bottomRows<3>();
+  const Eigen::Matrix<double, NU, 6, NU == 1 ? Eigen::RowMajor : 0> Zu =
+      -Dinv_.template topLeftCorner<NU, NU>().lazyProduct(Yt.transpose());
+  CtW.template topRows<3>() = MA.template topRows<3>();
+  CtW.template topRows<3>().noalias() -= K.transpose().lazyProduct(MA.template bottomRows<3>());
+  CtW.template bottomRows<3>() = MA.template bottomRows<3>();
+  CtW.noalias() -= Yt.lazyProduct(Zu);
+  W.template topRows<6>().noalias() = S.lazyProduct(Zu);
+  W.template topLeftCorner<3, 3>() -= Mat3::Identity();
+  W.template block<3, 3>(3, 0) += K;
+  W.template block<3, 3>(3, 3) -= Mat3::Identity();
+  W.template middleRows<NU>(6) = Zu;
+  Eigen::Matrix<double, 6, 6> r = -MA;
+  r.noalias() -= MS.lazyProduct(Zu);
+  auto lambda = W.template middleRows<6>(6 + NU);
+  lambda.template topRows<3>().noalias() =
+      Jinv_.topLeftCorner<3, 3>().transpose().lazyProduct(r.template topRows<3>());
+  lambda.template topRows<3>().noalias() +=
+      Jinv_.bottomLeftCorner<3, 3>().transpose().lazyProduct(r.template bottomRows<3>());
+  lambda.template bottomRows<3>().noalias() =
+      Jinv_.bottomRightCorner<3, 3>().transpose().lazyProduct(r.template bottomRows<3>());
+}
+
+template <int NU, typename Rhs>
+void ArticulatedPivot::SolveInPlaceFixed(Eigen::MatrixBase<Rhs>& x) const {
+  // SolveInPlace's steps with D^-1 for the small system and every size fixed.
+  constexpr int kCols = Rhs::ColsAtCompileTime;
+  constexpr int kMaxCols = kCols == 1 ? 1 : 6;
+  using SixCols = Eigen::Matrix<double, 6, kCols, 0, 6, kMaxCols>;
+  using SpeedCols =
+      Eigen::Matrix<double, NU, kCols, (NU == 1 && kCols != 1) ? Eigen::RowMajor : 0, NU, kMaxCols>;
+  const auto S = S_.template leftCols<NU>();
+  const auto MS = MS_.template leftCols<NU>();
+  const SixCols a = Jinv_.lazyProduct(x.template middleRows<6>(6 + NU));
+  SixCols t = x.template topRows<6>();
+  t.noalias() -= M_.lazyProduct(a);
+  SpeedCols rhs = x.template middleRows<NU>(6);
+  rhs.noalias() += S.transpose().lazyProduct(t);
+  const SpeedCols y = Dinv_.template topLeftCorner<NU, NU>().lazyProduct(rhs);
+  x.template topRows<6>() = a;
+  x.template topRows<6>().noalias() += S.lazyProduct(y);
+  t.noalias() -= MS.lazyProduct(y);
+  x.template middleRows<6>(6 + NU).noalias() = Jinv_.transpose().lazyProduct(t);
+  x.template middleRows<NU>(6) = y;
+}
+
 template <typename Rhs>
 void ArticulatedPivot::SolveInPlace(Eigen::MatrixBase<Rhs>& x) const {
+  switch (fixed_nu_) {
+    case 1:
+      return SolveInPlaceFixed<1>(x);
+    case 2:
+      return SolveInPlaceFixed<2>(x);
+    case 3:
+      return SolveInPlaceFixed<3>(x);
+    default:
+      break;
+  }
   // Fixed-size temporaries for one right-hand side (the tree solve's vectors).
   constexpr int kCols = Rhs::ColsAtCompileTime;
   constexpr int kMaxCols = kCols == 1 ? 1 : 6;
