@@ -136,17 +136,17 @@ ContactSolverResult SolveApgd(Eigen::Ref<const MatX> W, Eigen::Ref<const VecX> u
   best = x;
   double best_residual = LargestResidual(W, x, u_best, target_n, mu, largest);
   result.products = 1;
-  // L: the Lipschitz constant of the scaled gradient, lambda_max(D^1/2 W D^1/2), first
-  // estimated by one power step from the vector of ones (a lower bound), then doubled while
-  // the step overshoots (backtracking) and lowered by 10% per iteration, as Chrono's APGD.
+  // L: the Lipschitz constant of the scaled gradient, lambda_max(A) with A = D^1/2 W D^1/2,
+  // first estimated as |A e| / |e| for e the ones of the contacts that can move (at most
+  // lambda_max), then doubled while the step overshoots (backtracking) and lowered by 10% per
+  // iteration, as Chrono's APGD.
   double L = 1.0;
-  {
-    auto z = y;  // y is free until the loop
-    z = D.cwiseSqrt();
-    Wy.noalias() = W * z;
+  const double rows = static_cast<double>((D.array() > 0.0).count());
+  if (rows > 0.0) {
+    y = D.cwiseSqrt();  // D^1/2 e (y is free until the loop)
+    Wy.noalias() = W * y;
     ++result.products;
-    const double zz = z.squaredNorm();
-    if (zz > 0.0) L = std::max((D.cwiseSqrt().cwiseProduct(Wy)).norm() / std::sqrt(zz), 1e-12);
+    L = std::max(D.cwiseSqrt().cwiseProduct(Wy).norm() / std::sqrt(rows), 1e-12);
   }
   y = x;
   Wy = Wx;
