@@ -185,6 +185,32 @@ TEST(ContactImpulseSolverTest, ApgdAndGaussSeidelAgreeOnASlidingTable) {
             << (gs.gamma - apgd.gamma).cwiseAbs().maxCoeff() << " N s\n";
 }
 
+TEST(ContactImpulseSolverTest, ContactsThatCannotMoveGetNoImpulse) {
+  // The resting ball's contact plus a contact between two bodies that cannot move (its rows of
+  // W zero, its u_free approaching): that contact gets no impulse and is left out of the
+  // residual; the ball's impulse is m g h as alone.
+  constexpr double kM = 2.0;
+  const RigidBodyProblem ball = MakeProblem(kM, Vec3::Constant(0.008), {Vec3(0, -0.1, 0)},
+                                            Vec3::Zero(), Vec3(0, -kG * kH, 0), 0.4);
+  MatX W = MatX::Zero(6, 6);
+  W.topLeftCorner<3, 3>() = ball.W;
+  VecX u_free(6), target = VecX::Zero(2), mu = VecX::Constant(2, 0.4);
+  u_free << ball.u_free, -1.0, 0.5, 0.0;
+  for (ContactSolverMethod method : kMethods) {
+    SCOPED_TRACE(Name(method));
+    ContactSolverSettings settings;
+    settings.method = method;
+    settings.tolerance = 1e-12;
+    ContactSolverWorkspace workspace;
+    VecX gamma = VecX::Constant(6, 1.0), u(6);  // a warm start that the second cannot keep
+    const ContactSolverResult r =
+        SolveContactImpulses(W, u_free, target, mu, settings, workspace, gamma, u);
+    EXPECT_LE(r.residual, 1e-12);
+    EXPECT_NEAR(gamma[0], kM * kG * kH, 2e-12);
+    EXPECT_EQ(gamma.tail<3>().norm(), 0.0);
+  }
+}
+
 TEST(ContactImpulseSolverTest, ApgdStartsFromAWarmStartThatSolvesTheProblem) {
   // A solution given as the starting guess is returned as it is, without an iteration.
   const RigidBodyProblem p = MakeProblem(2.0, Vec3::Constant(0.008), {Vec3(0, -0.1, 0)},
