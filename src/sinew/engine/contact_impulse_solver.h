@@ -6,23 +6,23 @@
 //   with k >= 0                                             (Coulomb's law, circular cone)
 // i.e. Coulomb's law itself (not the convexified cone complementarity of Anitescu-Tasora,
 // which lets sliding contacts separate at mu |u_t|). Two solvers:
-//  - projected block Gauss-Seidel: per contact, the normal impulse by a clamped
-//    Newton step on its diagonal entry, then the tangential impulse by a gradient step of
+//  - projected block Gauss-Seidel: per contact, the normal impulse by a clamped Newton step on
+//    its diagonal entry, then the tangential impulse by a gradient step of
 //    1 / lambda_max(W_tt) projected onto the disc of radius mu gamma_n;
-//  - APGD (the default), accelerated projected gradient descent (Nesterov's method with an adaptive
-//  step and
-//    gradient restarts, as in Mazhar, Heyn, Negrut, Tasora 2015, "Using Nesterov's method to
-//    accelerate multibody dynamics with friction and contact"): gradient steps on
-//    f(gamma) = 1/2 gamma^T W gamma + gamma^T (u_free - target), scaled per contact by
-//    1 / W_nn, each followed by the projection P that clamps gamma_n to >= 0 and then shrinks
-//    gamma_t radially onto the disc of radius mu gamma_n. P keeps gamma in the friction cone
-//    but is not the Euclidean projection onto it (which would give the relaxed CCP's
-//    solution): the fixed points of gamma = P(gamma - t D grad f) are exactly the solutions of
-//    the law above (the friction bound mu gamma_n is updated every iteration, a Tresca
-//    fixed point). The same residual and stopping rule as Gauss-Seidel; the iterate of the
-//    smallest residual is returned. The default since it was measured: on Rajagopal2015 lying
-//    on the ground it meets the 1e-6 m/s tolerance in about 6 iterations where Gauss-Seidel
-//    stops at its 100-sweep limit short of it; in the drop it costs the same (docs/contact.md).
+//  - APGD (the default), accelerated projected gradient descent (Nesterov's method with an
+//    adaptive step and gradient restarts, as in Mazhar, Heyn, Negrut, Tasora 2015, "Using
+//    Nesterov's method to accelerate multibody dynamics with friction and contact"): gradient
+//    steps on f(gamma) = 1/2 gamma^T W gamma + gamma^T (u_free - target), scaled per contact
+//    by 1 / W_nn, each followed by the projection P that clamps gamma_n to >= 0 and then
+//    shrinks gamma_t radially onto the disc of radius mu gamma_n. P keeps gamma in the
+//    friction cone but is not the Euclidean projection onto it (which would give the relaxed
+//    CCP's solution): the fixed points of gamma = P(gamma - t D grad f) are exactly the
+//    solutions of the law above (the friction bound mu gamma_n is updated every iteration, a
+//    Tresca fixed point). The same residual and stopping rule as Gauss-Seidel; the iterate of
+//    the smallest residual is returned. The default since it was measured: on Rajagopal2015
+//    lying on the ground it meets the 1e-6 m/s tolerance in 6-9 iterations where Gauss-Seidel
+//    mostly stops at its 100-sweep limit short of it; in the drop it costs the same
+//    (docs/contact.md).
 #pragma once
 
 #include <sinew/math/types.h>
