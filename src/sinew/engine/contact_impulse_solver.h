@@ -20,7 +20,7 @@
 //    solutions of the law above (the friction bound mu gamma_n is updated every iteration, a
 //    Tresca fixed point). The same residual and stopping rule as Gauss-Seidel; the iterate of
 //    the smallest residual is returned. The default since it was measured: on Rajagopal2015
-//    lying on the ground it meets the 1e-6 m/s tolerance in 6-9 iterations where Gauss-Seidel
+//    lying on the ground it meets the 1e-6 m/s tolerance in about 6 iterations where Gauss-Seidel
 //    mostly stops at its 100-sweep limit short of it; in the drop it costs the same
 //    (docs/contact.md).
 #pragma once
