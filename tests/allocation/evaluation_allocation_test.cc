@@ -235,20 +235,33 @@ TEST(EvaluationAllocationTest, EulerStepsWithoutHeapUse) {
 }
 
 TEST(EvaluationAllocationTest, NscStepsWithoutHeapUse) {
-  // The NSC stepper's own buffers (the free step, the State, the contact rows and the
-  // Delassus operator) are reused: a ball resting on the floor, one contact per step.
+  // The NSC stepper's own buffers (the free step, the State, the contact rows, the Delassus
+  // operator and APGD's workspace) are reused: a ball resting on the floor, one contact per
+  // step, and a block standing on three spheres, three; with either impulse solver.
   const auto system = sinew::testing::ParseContactModel(
       sinew::testing::FreeBodyContactModel(1.0, Vec3::Constant(0.004), Vec3(0, -9.80665, 0), 0.1,
                                            {Vec3::Zero()}, ""),
       "nsc_ball.osim");
-  auto provider = std::make_shared<sinew::testing::SphereContactProvider>(
-      std::vector<sinew::testing::TestSphere>{{1, Vec3::Zero(), 0.1}}, true, 0.4, 0.0, 1e-3);
-  NscIntegrator integrator(*system, provider, {.step = 1e-3});
-  State state = MakeDefaultState(*system);
-  SetCoordinateValue(*system, state, "ty", 0.1);
-  for (int i = 0; i < 5; ++i) integrator.Advance(state, 1.0);
-  EXPECT_EQ(AllocationsPerSteps(integrator, state, 20), 0);
-  EXPECT_EQ(integrator.last_contacts().size(), 1u);  // it rests on the floor throughout
+  const std::vector<sinew::testing::TestSphere> ball = {{1, Vec3::Zero(), 0.1}};
+  const std::vector<sinew::testing::TestSphere> feet = {{1, Vec3(0.1, -0.09, 0), 0.01},
+                                                        {1, Vec3(-0.05, -0.09, 0.087), 0.01},
+                                                        {1, Vec3(-0.05, -0.09, -0.087), 0.01}};
+  for (const auto method : {ContactSolverMethod::kGaussSeidel, ContactSolverMethod::kApgd}) {
+    for (const auto* spheres : {&ball, &feet}) {
+      auto provider =
+          std::make_shared<sinew::testing::SphereContactProvider>(*spheres, true, 0.4, 0.0, 1e-3);
+      NscSettings nsc;
+      nsc.solver.method = method;
+      NscIntegrator integrator(*system, provider, {.step = 1e-3}, nsc);
+      State state = MakeDefaultState(*system);
+      SetCoordinateValue(*system, state, "ty", 0.1);
+      for (int i = 0; i < 5; ++i) integrator.Advance(state, 1.0);
+      const bool apgd = method == ContactSolverMethod::kApgd;
+      EXPECT_EQ(AllocationsPerSteps(integrator, state, 20), 0) << apgd << " " << spheres->size();
+      // It rests on the floor throughout.
+      EXPECT_EQ(integrator.last_contacts().size(), spheres->size()) << apgd;
+    }
+  }
 }
 
 TEST(EvaluationAllocationTest, ContactForcesEvaluateWithoutHeapUse) {

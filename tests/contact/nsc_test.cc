@@ -28,8 +28,17 @@ std::unique_ptr<engine::System> FreeBody(double mass, const Vec3& inertia, const
       "nsc_body.osim");
 }
 
-engine::NscSettings TightSolver() {
+using engine::ContactSolverMethod;
+// Every closed form below is checked with both impulse solvers.
+const ContactSolverMethod kMethods[] = {ContactSolverMethod::kGaussSeidel,
+                                        ContactSolverMethod::kApgd};
+const char* Name(ContactSolverMethod method) {
+  return method == ContactSolverMethod::kApgd ? "APGD" : "Gauss-Seidel";
+}
+
+engine::NscSettings TightSolver(ContactSolverMethod method) {
   engine::NscSettings nsc;
+  nsc.solver.method = method;
   nsc.solver.max_iterations = 1000;
   nsc.solver.tolerance = 1e-12;
   return nsc;
@@ -47,44 +56,48 @@ TEST(NscTest, SlidingSphereRollsAtFiveSeventhsOfItsSpeed) {
   // that line crosses zero, so the first rolling sample is within h after t*, and the line
   // through the sliding samples crosses zero at t* itself.
   constexpr double kM = 1.0, kR = 0.1, kMu = 0.4, kV0 = 1.0, kH = 1e-4;
-  auto system = FreeBody(kM, Vec3::Constant(0.4 * kM * kR * kR), Vec3(0, -kG, 0));
-  auto provider = std::make_shared<testing::SphereContactProvider>(
-      std::vector<testing::TestSphere>{{1, Vec3::Zero(), kR}}, true, kMu, 0.0, 1e-3);
-  engine::IntegratorSettings settings;
-  settings.step = kH;
-  engine::NscIntegrator integrator(*system, provider, settings, TightSolver());
-  engine::State state = engine::MakeDefaultState(*system);
-  engine::SetCoordinateValue(*system, state, "ty", kR);
-  engine::SetCoordinateSpeed(*system, state, "tx", kV0);
-  auto slip = [](const engine::State& s) {
-    return s.bodies[1].v_GB.x() + s.bodies[1].w_GB.z() * kR;
-  };
-  double t_first_rolling = -1.0, t_line = -1.0, previous = slip(state), worst_residual = 0.0;
-  for (int n = 1; n <= 2000; ++n) {
-    integrator.StepTo(state, n * kH);
-    worst_residual = std::max(worst_residual, integrator.last_step().residual);
-    const double s = slip(state);
-    if (t_first_rolling < 0.0 && std::abs(s) < 1e-9) {
-      t_first_rolling = n * kH;
-    } else if (t_first_rolling < 0.0) {
-      t_line = n * kH + s / ((previous - s) / kH);  // where the sliding line reaches zero
+  for (ContactSolverMethod method : kMethods) {
+    SCOPED_TRACE(Name(method));
+    auto system = FreeBody(kM, Vec3::Constant(0.4 * kM * kR * kR), Vec3(0, -kG, 0));
+    auto provider = std::make_shared<testing::SphereContactProvider>(
+        std::vector<testing::TestSphere>{{1, Vec3::Zero(), kR}}, true, kMu, 0.0, 1e-3);
+    engine::IntegratorSettings settings;
+    settings.step = kH;
+    engine::NscIntegrator integrator(*system, provider, settings, TightSolver(method));
+    engine::State state = engine::MakeDefaultState(*system);
+    engine::SetCoordinateValue(*system, state, "ty", kR);
+    engine::SetCoordinateSpeed(*system, state, "tx", kV0);
+    auto slip = [](const engine::State& s) {
+      return s.bodies[1].v_GB.x() + s.bodies[1].w_GB.z() * kR;
+    };
+    double t_first_rolling = -1.0, t_line = -1.0, previous = slip(state), worst_residual = 0.0;
+    for (int n = 1; n <= 2000; ++n) {
+      integrator.StepTo(state, n * kH);
+      worst_residual = std::max(worst_residual, integrator.last_step().residual);
+      const double s = slip(state);
+      if (t_first_rolling < 0.0 && std::abs(s) < 1e-9) {
+        t_first_rolling = n * kH;
+      } else if (t_first_rolling < 0.0) {
+        t_line = n * kH + s / ((previous - s) / kH);  // where the sliding line reaches zero
+      }
+      previous = s;
     }
-    previous = s;
+    const double t_star = 2.0 * kV0 / (7.0 * kMu * kG);
+    const double v = state.bodies[1].v_GB.x();
+    EXPECT_GE(t_first_rolling, t_star - 1e-12);
+    EXPECT_LE(t_first_rolling, t_star + kH + 1e-12);
+    EXPECT_NEAR(t_line, t_star, 2e-3 * t_star);
+    EXPECT_NEAR(t_line, t_star, 1e-9 * t_star);  // the samples lie on the continuous line
+    EXPECT_NEAR(v, 5.0 / 7.0 * kV0, 2e-3 * kV0);
+    EXPECT_NEAR(v, 5.0 / 7.0 * kV0, 1e-9 * kV0);       // the solver's tolerance, 1e-12 m/s
+    EXPECT_NEAR(state.bodies[1].p_GB.y(), kR, 1e-12);  // neither sinks nor lifts
+    EXPECT_LE(worst_residual, 1e-12);
+    std::cout << "nsc rolling (" << Name(method) << "): first rolling sample " << t_first_rolling
+              << " s, sliding line " << t_line << " s, t* " << t_star << " s (relative "
+              << t_line / t_star - 1 << "); speed " << v << " m/s (relative "
+              << v / (5.0 / 7.0 * kV0) - 1 << "); height error " << state.bodies[1].p_GB.y() - kR
+              << " m\n";
   }
-  const double t_star = 2.0 * kV0 / (7.0 * kMu * kG);
-  const double v = state.bodies[1].v_GB.x();
-  EXPECT_GE(t_first_rolling, t_star - 1e-12);
-  EXPECT_LE(t_first_rolling, t_star + kH + 1e-12);
-  EXPECT_NEAR(t_line, t_star, 2e-3 * t_star);
-  EXPECT_NEAR(t_line, t_star, 1e-9 * t_star);  // the samples lie on the continuous line
-  EXPECT_NEAR(v, 5.0 / 7.0 * kV0, 2e-3 * kV0);
-  EXPECT_NEAR(v, 5.0 / 7.0 * kV0, 1e-9 * kV0);       // the solver's tolerance, 1e-12 m/s
-  EXPECT_NEAR(state.bodies[1].p_GB.y(), kR, 1e-12);  // neither sinks nor lifts
-  EXPECT_LE(worst_residual, 1e-12);
-  std::cout << "nsc rolling: first rolling sample " << t_first_rolling << " s, sliding line "
-            << t_line << " s, t* " << t_star << " s (relative " << t_line / t_star - 1
-            << "); speed " << v << " m/s (relative " << v / (5.0 / 7.0 * kV0) - 1
-            << "); height error " << state.bodies[1].p_GB.y() - kR << " m\n";
 }
 
 // The downhill displacement of a 1 kg block standing on three small spheres (r = 1 cm, an
@@ -93,7 +106,7 @@ TEST(NscTest, SlidingSphereRollsAtFiveSeventhsOfItsSpeed) {
 struct InclineRun {
   double x_half, x_one, v_half, v_one;
 };
-InclineRun RunIncline(double angle) {
+InclineRun RunIncline(double angle, ContactSolverMethod method) {
   const double r = 0.01, a = 0.1;
   auto system =
       FreeBody(1.0, Vec3(0.01, 0.01, 0.01), kG * Vec3(std::sin(angle), -std::cos(angle), 0));
@@ -103,7 +116,7 @@ InclineRun RunIncline(double angle) {
   auto provider = std::make_shared<testing::SphereContactProvider>(feet, true, 0.5, 0.0, 1e-3);
   engine::IntegratorSettings settings;
   settings.step = 1e-3;
-  engine::NscIntegrator integrator(*system, provider, settings, TightSolver());
+  engine::NscIntegrator integrator(*system, provider, settings, TightSolver(method));
   engine::State state = engine::MakeDefaultState(*system);
   engine::SetCoordinateValue(*system, state, "ty", 0.05 + r);
   InclineRun run{};
@@ -118,21 +131,25 @@ InclineRun RunIncline(double angle) {
 
 TEST(NscTest, BlockSticksBelowTheFrictionAngleAndSlidesAboveIt) {
   constexpr double kMu = 0.5;
-  // 20 degrees (tan = 0.364 < 0.5): Coulomb's block sticks. With the solver converged to
-  // 1e-12 m/s per step, the drift over 1 s is at most 1e-12 m plus round-off.
-  const InclineRun stick = RunIncline(20.0 * std::numbers::pi / 180.0);
-  EXPECT_LT(std::abs(stick.x_one), 1e-11);
-  EXPECT_LT(std::abs(stick.v_one), 1e-11);
-  // 35 degrees (tan = 0.700): it slides with a = g (sin a - mu cos a), exactly per step (the
-  // friction impulse is mu times the normal one, m g cos a h).
-  const double above = 35.0 * std::numbers::pi / 180.0;
-  const InclineRun slide = RunIncline(above);
-  const double acceleration = (slide.v_one - slide.v_half) / 0.5;
-  const double closed = kG * (std::sin(above) - kMu * std::cos(above));
-  EXPECT_NEAR(acceleration, closed, 1e-9 * closed);
-  std::cout << "nsc incline: drift at 20 deg " << stick.x_one << " m, speed " << stick.v_one
-            << " m/s; acceleration at 35 deg " << acceleration << " m/s^2 (closed form " << closed
-            << ", relative " << acceleration / closed - 1 << ")\n";
+  for (ContactSolverMethod method : kMethods) {
+    SCOPED_TRACE(Name(method));
+    // 20 degrees (tan = 0.364 < 0.5): Coulomb's block sticks. With the solver converged to
+    // 1e-12 m/s per step, the drift over 1 s is at most 1e-12 m plus round-off.
+    const InclineRun stick = RunIncline(20.0 * std::numbers::pi / 180.0, method);
+    EXPECT_LT(std::abs(stick.x_one), 1e-11);
+    EXPECT_LT(std::abs(stick.v_one), 1e-11);
+    // 35 degrees (tan = 0.700): it slides with a = g (sin a - mu cos a), exactly per step (the
+    // friction impulse is mu times the normal one, m g cos a h).
+    const double above = 35.0 * std::numbers::pi / 180.0;
+    const InclineRun slide = RunIncline(above, method);
+    const double acceleration = (slide.v_one - slide.v_half) / 0.5;
+    const double closed = kG * (std::sin(above) - kMu * std::cos(above));
+    EXPECT_NEAR(acceleration, closed, 1e-9 * closed);
+    std::cout << "nsc incline (" << Name(method) << "): drift at 20 deg " << stick.x_one
+              << " m, speed " << stick.v_one << " m/s; acceleration at 35 deg " << acceleration
+              << " m/s^2 (closed form " << closed << ", relative " << acceleration / closed - 1
+              << ")\n";
+  }
 }
 
 TEST(NscTest, DroppedBallBouncesToRestitutionSquaredOfItsHeight) {
@@ -142,30 +159,34 @@ TEST(NscTest, DroppedBallBouncesToRestitutionSquaredOfItsHeight) {
   // g h below v: height off by 2 g h / v relative), starts from a gap below h v, and the
   // discrete apex of semi-implicit Euler is within h v of the continuous one.
   constexpr double kR = 0.1, kH0 = 1.0, kStep = 1e-5;
-  for (double e : {0.5, 0.8}) {
-    auto system = FreeBody(1.0, Vec3::Constant(0.004), Vec3(0, -kG, 0));
-    auto provider = std::make_shared<testing::SphereContactProvider>(
-        std::vector<testing::TestSphere>{{1, Vec3::Zero(), kR}}, true, 0.3, e, 1e-2);
-    engine::IntegratorSettings settings;
-    settings.step = kStep;
-    engine::NscIntegrator integrator(*system, provider, settings);
-    engine::State state = engine::MakeDefaultState(*system);
-    engine::SetCoordinateValue(*system, state, "ty", kR + kH0);
-    const double v = std::sqrt(2 * kG * kH0);
-    const double t_apex = v / kG * (1.0 + e);  // fall, then rise
-    double apex = 0.0, lowest = 1.0;
-    for (int n = 1; n * kStep < t_apex + 0.2 * v / kG; ++n) {
-      integrator.StepTo(state, n * kStep);
-      const double y = state.bodies[1].p_GB.y() - kR;
-      lowest = std::min(lowest, y);
-      if (n * kStep > v / kG + 0.01) apex = std::max(apex, y);
+  for (ContactSolverMethod method : kMethods) {
+    for (double e : {0.5, 0.8}) {
+      auto system = FreeBody(1.0, Vec3::Constant(0.004), Vec3(0, -kG, 0));
+      auto provider = std::make_shared<testing::SphereContactProvider>(
+          std::vector<testing::TestSphere>{{1, Vec3::Zero(), kR}}, true, 0.3, e, 1e-2);
+      engine::IntegratorSettings settings;
+      settings.step = kStep;
+      engine::NscSettings nsc;  // the default solver settings, as the models use
+      nsc.solver.method = method;
+      engine::NscIntegrator integrator(*system, provider, settings, nsc);
+      engine::State state = engine::MakeDefaultState(*system);
+      engine::SetCoordinateValue(*system, state, "ty", kR + kH0);
+      const double v = std::sqrt(2 * kG * kH0);
+      const double t_apex = v / kG * (1.0 + e);  // fall, then rise
+      double apex = 0.0, lowest = 1.0;
+      for (int n = 1; n * kStep < t_apex + 0.2 * v / kG; ++n) {
+        integrator.StepTo(state, n * kStep);
+        const double y = state.bodies[1].p_GB.y() - kR;
+        lowest = std::min(lowest, y);
+        if (n * kStep > v / kG + 0.01) apex = std::max(apex, y);
+      }
+      const double tolerance = e * e * kH0 * 2 * kG * kStep / v + 2 * kStep * v;
+      EXPECT_NEAR(apex, e * e * kH0, tolerance) << Name(method) << ", e = " << e;
+      EXPECT_GT(lowest, -1e-12) << Name(method) << ": the ball never enters the floor";
+      std::cout << "nsc bounce (" << Name(method) << ") e = " << e << ": apex " << apex
+                << " m (closed form " << e * e * kH0 << ", error " << apex - e * e * kH0
+                << ", allowed " << tolerance << "); lowest " << lowest << " m\n";
     }
-    const double tolerance = e * e * kH0 * 2 * kG * kStep / v + 2 * kStep * v;
-    EXPECT_NEAR(apex, e * e * kH0, tolerance) << "e = " << e;
-    EXPECT_GT(lowest, -1e-12) << "the ball never enters the floor";
-    std::cout << "nsc bounce e = " << e << ": apex " << apex << " m (closed form " << e * e * kH0
-              << ", error " << apex - e * e * kH0 << ", allowed " << tolerance << "); lowest "
-              << lowest << " m\n";
   }
 }
 

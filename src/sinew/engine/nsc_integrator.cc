@@ -30,6 +30,10 @@ NscIntegrator::NscIntegrator(const System& system, std::shared_ptr<const Contact
   if (nsc.solver.max_iterations < 1) {
     throw Error("integrator 'nsc': the impulse solver needs max_iterations >= 1");
   }
+  if (nsc.solver.method != ContactSolverMethod::kGaussSeidel &&
+      nsc.solver.method != ContactSolverMethod::kApgd) {
+    throw Error("integrator 'nsc': unknown impulse solver method");
+  }
   if (!(nsc.solver.tolerance >= 0.0)) throw Error("integrator 'nsc': tolerance must be >= 0");
   if (!(nsc.max_recovery_speed >= 0.0)) {
     throw Error("integrator 'nsc': max_recovery_speed must be >= 0");
@@ -54,7 +58,7 @@ void NscIntegrator::Step(State& state, double h, double t_new) {
   // 2-5. Contacts.
   contacts_.clear();
   provider_->FindContacts(system_, state, contacts_);
-  report_ = NscStepReport{h, static_cast<int>(contacts_.size()), 0, 0.0};
+  report_ = NscStepReport{h, static_cast<int>(contacts_.size()), 0, 0, 0.0};
   if (!contacts_.empty()) {
     SolveContacts(state, h);
   } else {
@@ -149,8 +153,9 @@ void NscIntegrator::SolveContacts(const State& state, double h) {
   auto gamma = gamma_.head(3 * m);
   const ContactSolverResult result =
       SolveContactImpulses(W_.topLeftCorner(3 * m, 3 * m), u_free_.head(3 * m), target_.head(m),
-                           mu_.head(m), nsc_.solver, gamma, u_.head(3 * m));
+                           mu_.head(m), nsc_.solver, workspace_, gamma, u_.head(3 * m));
   report_.iterations = result.iterations;
+  report_.products = result.products;
   report_.residual = result.residual;
   // v+ = v_free + A^-1 D^T gamma.
   rhs_.setZero(nv + kkt_.num_equations());

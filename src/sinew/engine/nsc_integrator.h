@@ -12,9 +12,9 @@
 //     x with unit loads on each body in contact (KktSolver::SolveUnitLoadResponses: only the
 //     tree paths from those bodies to ground are visited; with model constraints outside the
 //     tree, six full solves per body).
-//  4. The impulses gamma by SolveContactImpulses (Coulomb's law, circular cone, Gauss-Seidel,
-//     warm-started from the previous step's impulses of the same contacts), with the normal target
-//     speed per contact (gap g = -depth)
+//  4. The impulses gamma by SolveContactImpulses (Coulomb's law, circular cone, Gauss-Seidel or
+//     APGD, warm-started from the previous step's impulses of the same contacts), with the normal
+//     target speed per contact (gap g = -depth)
 //        target = -g / h                          g >= 0 (stop where the surfaces meet)
 //        target = min(-g / h, max_recovery_speed) g < 0  (push out an overlap, at most that fast)
 //     and, when the contact closes during the step while approaching faster than
@@ -36,7 +36,7 @@ namespace sinew::engine {
 
 /// Settings of the NSC contact method.
 struct NscSettings {
-  /// Gauss-Seidel sweeps and tolerance (m/s) of the impulse solve.
+  /// Method (Gauss-Seidel or APGD), iterations and tolerance (m/s) of the impulse solve.
   ContactSolverSettings solver;
   /// Largest normal speed (m/s) at which an overlap is pushed out (stabilization).
   double max_recovery_speed = 0.1;
@@ -49,7 +49,9 @@ struct NscSettings {
 struct NscStepReport {
   double step = 0.0;      ///< the step's length h (s; 0 before the first step)
   int contacts = 0;       ///< contacts the provider gave
-  int iterations = 0;     ///< Gauss-Seidel sweeps of the impulse solve (0 without contacts)
+  int iterations = 0;     ///< sweeps or iterations of the impulse solve (0 without contacts,
+                          ///< or when the warm start already met the tolerance, APGD)
+  int products = 0;       ///< products W x of the impulse solve (ContactSolverResult)
   double residual = 0.0;  ///< its final residual (m/s; see ContactSolverResult)
 };
 
@@ -118,6 +120,7 @@ class NscIntegrator final : public FixedStepIntegrator {
   MatX W_;                      // Delassus operator
   VecX rhs_, solution_;         // the contact impulses' solves
   VecX u_free_, u_, target_, mu_, gamma_;
+  ContactSolverWorkspace workspace_;  // APGD's buffers
 };
 
 }  // namespace sinew::engine
