@@ -25,6 +25,7 @@
 #include <string>
 
 #include "contact/contact_models.h"
+#include "contact/skeleton_drop.h"
 #include "contact/sphere_contact_provider.h"
 #include "engine/chain_model.h"
 
@@ -276,6 +277,19 @@ TEST(EvaluationAllocationTest, ContactForcesEvaluateWithoutHeapUse) {
     SetCoordinateValue(*system, state, "ball_ty", 0.4995);
     EXPECT_EQ(AllocationsPerEvaluations(*system, state, 10), 0) << file;
   }
+}
+
+TEST(EvaluationAllocationTest, SkeletonOnTheGroundStepsWithoutHeapUse) {
+  // The SMC skeleton-on-ground scene (the seed's cylinders, Bullet's detection each evaluation):
+  // once landed, with contacts coming and going as it folds, 50 further Euler steps allocate
+  // nothing (Bullet's pair caches and manifolds keep their memory once grown).
+  const sinew::testing::SkeletonDrop scene = sinew::testing::MakeSkeletonDrop(0.05);
+  State state = MakeDefaultState(*scene.system);
+  IntegratorSettings settings;
+  settings.step = 1e-3;
+  auto integrator = MakeIntegrator("euler", *scene.system, settings);
+  integrator->StepTo(state, 0.3);  // landed: contacts active
+  EXPECT_EQ(AllocationsPerSteps(*integrator, state, 50), 0);
 }
 
 TEST(EvaluationAllocationTest, TheCounterCounts) {

@@ -50,16 +50,15 @@ TEST_F(SimulateOutputTest, CompleteRunSaysSoInItsHeader) {
 }
 
 TEST_F(SimulateOutputTest, InterruptKeepsTheRowsComputedSoFar) {
-  // A run of 4 10^7 s (8 10^7 rows, under the CLI's limit of 10^8) cannot end in the 6 s before
-  // SIGINT arrives (long enough for the handler to be installed and rows to be written on a
-  // loaded machine, even under sanitizers: with 3 s the test failed once on a loaded machine):
+  // A run of 4 10^7 s (8 10^7 rows, under the CLI's limit of 10^8) cannot end in the 3 s before
+  // SIGINT arrives (long enough for rows to be written on a loaded machine, even under sanitizers):
   // once swinging (many short steps), once at rest (rk45's steps grow huge, each holding many
-  // report times: on an idle machine the 2 million rows of a 10^6 s run were all written within
+  // report times: on an idle machine the 2 million rows of a 10^6 s run were all written within the
   // 3 s).
   const std::string swing = " --initial-states " + kResources + "SinglePin_InitialStates.sto";
   for (const std::string& start : {swing, std::string()}) {
     std::filesystem::remove_all(Path("out"));
-    const std::string command = "timeout --preserve-status -s INT 6 " +
+    const std::string command = "timeout --preserve-status -s INT 3 " +
                                 std::string(SINEW_CLI_PATH) + " simulate " + kSinglePin + start +
                                 " --duration 4e7 --report-interval 0.5 --quiet --out " +
                                 Path("out") + " 2>" + Path("err.txt");

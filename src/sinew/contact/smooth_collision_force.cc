@@ -41,36 +41,49 @@ double SmoothCollisionForce::VisitContacts(const engine::State& state, ContactSi
   thread_local std::vector<Transform> X_GB;
   X_GB.resize(state.bodies.size());
   for (size_t b = 0; b < state.bodies.size(); ++b) X_GB[b] = engine::PoseOf(state.bodies[b]);
-  double energy = 0.0;
-  detector_->FindContacts(X_GB, [&](const CollisionContact& c) {
-    const PairMaterial& m = c.material;
-    const double d = c.depth;
-    const double sqrt_Rd = std::sqrt(c.radius * d);
-    const double mass =
-        EffectiveMass(c.body1 == 0 ? 0.0 : masses_[c.body1], c.body2 == 0 ? 0.0 : masses_[c.body2]);
-    double f_elastic = 0.0, damping = 0.0;
-    if (m.kn > 0.0) {
-      f_elastic = m.kn * sqrt_Rd * d;
-      damping = m.gn * mass * sqrt_Rd;
-    } else {
-      f_elastic = 4.0 / 3.0 * m.effective_modulus * sqrt_Rd * d;
-      damping = 2.0 * std::sqrt(5.0 / 6.0) * DampingFactor(m.restitution) *
-                std::sqrt(2.0 * m.effective_modulus * sqrt_Rd * mass);
-    }
-    energy += 0.4 * f_elastic * d;
-    // Velocity of body 2's point relative to body 1's at the contact point.
-    const Vec3 v_G = engine::PointVelocity(state.bodies[c.body2], c.p_G) -
-                     engine::PointVelocity(state.bodies[c.body1], c.p_G);
-    const double v_normal = v_G.dot(c.n_G);
-    const double f_normal = std::max(0.0, f_elastic - damping * v_normal);
-    if (f_normal == 0.0) return;
+  // The visitor captures one reference, so std::function holds it without the heap
+  // (EvaluationAllocationTest.SkeletonOnTheGroundStepsWithoutHeapUse).
+  struct Visit {
+    const SmoothCollisionForce* force;
+    const engine::State* state;
+    ContactSink* sink;
+    double energy;
+  } visit{this, &state, &sink, 0.0};
+  detector_->FindContacts(X_GB, [&visit](const CollisionContact& c) {
+    visit.energy += visit.force->ApplyContact(*visit.state, c, *visit.sink);
+  });
+  return visit.energy;
+}
+
+double SmoothCollisionForce::ApplyContact(const engine::State& state, const CollisionContact& c,
+                                          ContactSink& sink) const {
+  const PairMaterial& m = c.material;
+  const double d = c.depth;
+  const double sqrt_Rd = std::sqrt(c.radius * d);
+  const double mass =
+      EffectiveMass(c.body1 == 0 ? 0.0 : masses_[c.body1], c.body2 == 0 ? 0.0 : masses_[c.body2]);
+  double f_elastic = 0.0, damping = 0.0;
+  if (m.kn > 0.0) {
+    f_elastic = m.kn * sqrt_Rd * d;
+    damping = m.gn * mass * sqrt_Rd;
+  } else {
+    f_elastic = 4.0 / 3.0 * m.effective_modulus * sqrt_Rd * d;
+    damping = 2.0 * std::sqrt(5.0 / 6.0) * DampingFactor(m.restitution) *
+              std::sqrt(2.0 * m.effective_modulus * sqrt_Rd * mass);
+  }
+  // Velocity of body 2's point relative to body 1's at the contact point.
+  const Vec3 v_G = engine::PointVelocity(state.bodies[c.body2], c.p_G) -
+                   engine::PointVelocity(state.bodies[c.body1], c.p_G);
+  const double v_normal = v_G.dot(c.n_G);
+  const double f_normal = std::max(0.0, f_elastic - damping * v_normal);
+  if (f_normal > 0.0) {
     const Vec3 v_tangent = v_G - v_normal * c.n_G;
     const double friction = m.friction * f_normal;
     const double v_s = m.gt > 0.0 ? friction / m.gt : slip_speed_;
     const Vec3 f_friction = -friction * v_tangent / std::sqrt(v_tangent.squaredNorm() + v_s * v_s);
     sink.Add({c.body1, c.body2, c.p_G, f_normal * c.n_G + f_friction});
-  });
-  return energy;
+  }
+  return 0.4 * f_elastic * d;
 }
 
 }  // namespace sinew::contact

@@ -34,6 +34,10 @@ class SmoothCollisionForce final : public ContactForce {
   double slip_speed() const { return slip_speed_; }
 
  private:
+  // One contact's force into `sink`; returns its elastic energy.
+  double ApplyContact(const engine::State& state, const CollisionContact& c,
+                      ContactSink& sink) const;
+
   std::shared_ptr<const CollisionDetector> detector_;
   std::vector<double> masses_;
   double slip_speed_;

@@ -4,6 +4,8 @@
 #include <sinew/engine/direct_joint.h>
 #include <sinew/engine/pose.h>
 
+#include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -149,11 +151,15 @@ void UpdateDirectCoordinates(const System& system, State& state) {
     if (joint.form == JointForm::kParameterized || joint.coordinates.empty()) continue;
     const Transform X_FM = (PoseOf(state.bodies[joint.parent]) * joint.X_PF).Inverse() *
                            PoseOf(state.bodies[joint.child]) * joint.X_BM;
-    std::vector<double> q = Gather(state.q, joint.coordinates);
-    std::vector<double> u(q.size(), 0.0);
+    // A direct joint has at most 3 coordinates (a Ball); no heap use, as this runs every step.
+    std::array<double, 3> q_buffer{}, u_buffer{};
+    const size_t n = joint.coordinates.size();
+    if (n > q_buffer.size()) throw Error("joint '" + joint.name + "': too many coordinates");
+    const std::span<double> q(q_buffer.data(), n), u(u_buffer.data(), n);
+    for (size_t i = 0; i < n; ++i) q[i] = state.q[joint.coordinates[i]];
     ReadDirectCoordinates(joint.form, X_FM, CalcJointVelocity(system, state, static_cast<int>(j)),
                           q, u);
-    for (size_t i = 0; i < q.size(); ++i) {
+    for (size_t i = 0; i < n; ++i) {
       state.q[joint.coordinates[i]] = q[i];
       state.u[joint.coordinates[i]] = u[i];
     }

@@ -38,26 +38,44 @@ std::vector<int> CoordinateCouplerConstraint::Coordinates() const {
   return c;
 }
 
-std::vector<double> CoordinateCouplerConstraint::IndependentValues(
-    const engine::State& state) const {
-  std::vector<double> x(independent_.size());
-  for (size_t i = 0; i < independent_.size(); ++i) x[i] = state.q[independent_[i]];
-  return x;
-}
+namespace {
+
+// The independent coordinates' values, on the stack for up to kInline of them: a coupler is
+// evaluated several times per step and must not use the heap there (EvaluationAllocationTest).
+class IndependentValues {
+ public:
+  IndependentValues(const std::vector<int>& coordinates, const VecX& q) : n_(coordinates.size()) {
+    if (n_ > kInline) heap_.resize(n_);
+    double* x = n_ > kInline ? heap_.data() : inline_.data();
+    for (size_t i = 0; i < n_; ++i) x[i] = q[coordinates[i]];
+  }
+  std::span<const double> values() const {
+    return {n_ > kInline ? heap_.data() : inline_.data(), n_};
+  }
+
+ private:
+  static constexpr size_t kInline = 8;
+  size_t n_;
+  std::array<double, kInline> inline_{};
+  std::vector<double> heap_;
+};
+
+}  // namespace
 
 void CoordinateCouplerConstraint::CalcPositionError(const engine::System&,
                                                     const engine::State& state,
                                                     Eigen::Ref<VecX> phi) const {
-  phi[0] = state.q[dependent_] - scale_ * f_->CalcN(IndependentValues(state));
+  phi[0] =
+      state.q[dependent_] - scale_ * f_->CalcN(IndependentValues(independent_, state.q).values());
 }
 
 void CoordinateCouplerConstraint::CalcJacobian(const engine::System&, const engine::State& state,
                                                Eigen::Ref<MatX> J) const {
-  const std::vector<double> x = IndependentValues(state);
+  const IndependentValues x(independent_, state.q);
   const int n = static_cast<int>(independent_.size());
   for (int i = 0; i < n; ++i) {
     const std::array<int, 1> wrt = {i};
-    J(0, i) = -scale_ * f_->CalcPartialN(x, wrt);
+    J(0, i) = -scale_ * f_->CalcPartialN(x.values(), wrt);
   }
   J(0, n) = 1.0;
 }
@@ -66,13 +84,14 @@ void CoordinateCouplerConstraint::CalcAccelerationRhs(const engine::System&,
                                                       const engine::State& state,
                                                       Eigen::Ref<VecX> b) const {
   // d/dt (J u) = J udot + Jdot u with Jdot u = -s sum_ij f_ij qdot_j u_i and qdot = u.
-  const std::vector<double> x = IndependentValues(state);
+  const IndependentValues x(independent_, state.q);
   const int n = static_cast<int>(independent_.size());
   double sum = 0.0;
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
       const std::array<int, 2> wrt = {i, j};
-      sum += f_->CalcPartialN(x, wrt) * state.u[independent_[i]] * state.u[independent_[j]];
+      sum +=
+          f_->CalcPartialN(x.values(), wrt) * state.u[independent_[i]] * state.u[independent_[j]];
     }
   }
   b[0] = scale_ * sum;

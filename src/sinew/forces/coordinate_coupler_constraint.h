@@ -41,8 +41,6 @@ class CoordinateCouplerConstraint final : public engine::Constraint {
                            Eigen::Ref<VecX> b) const override;
 
  private:
-  std::vector<double> IndependentValues(const engine::State& state) const;
-
   std::string name_;
   std::vector<int> independent_;
   int dependent_;
