@@ -10,7 +10,9 @@
 #include <sinew/paths/wrap_cylinder_obst.h>
 #include <sinew/paths/wrap_double_cylinder_obst.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <numbers>
 #include <random>
 
@@ -70,6 +72,7 @@ TEST(WrapDoubleCylinderObstTest, WithVOutOfTheWayTheUPathIsTheUnrolledLine) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> coordinate(-0.08, 0.08);
   int wrapped = 0, straight = 0;
+  double worst = 0.0;
   for (const Direction direction : {Direction::kRightHand, Direction::kLeftHand}) {
     const int turn = direction == Direction::kRightHand ? 1 : -1;
     const WrapDoubleCylinderObst obstacle(kRadius, direction, kRadius, Direction::kRightHand);
@@ -88,12 +91,15 @@ TEST(WrapDoubleCylinderObstTest, WithVOutOfTheWayTheUPathIsTheUnrolledLine) {
       ASSERT_EQ(result.on_first, expected.wraps) << p.transpose() << " / " << s.transpose();
       // 1e-9 m: the acos of a chord's cosine loses up to sqrt(eps) of the angle near zero.
       EXPECT_NEAR(PathLength(p, s, result), expected.length, 1e-9);
+      worst = std::max(worst, std::abs(PathLength(p, s, result) - expected.length));
       (expected.wraps ? wrapped : straight)++;
       if (!expected.wraps) continue;
       EXPECT_NEAR(std::hypot(result.p_WT1.x(), result.p_WT1.y()), kRadius, 1e-15);
       EXPECT_NEAR(std::hypot(result.p_WT2.x(), result.p_WT2.y()), kRadius, 1e-15);
     }
   }
+  std::cout << "U alone: " << wrapped << " wrapped, " << straight << " straight; worst length "
+            << "error " << worst << " m\n";
   EXPECT_GT(wrapped, 500);
   EXPECT_GT(straight, 500);
 }
@@ -144,12 +150,39 @@ TEST(WrapDoubleCylinderObstTest, BothEngagedAlongTheOuterTangentInOnePlane) {
     const WrapResult result = obstacle.Wrap(p, s, At(Transform::Translation(Vec3(d, 0.0, 0.0))));
     ASSERT_TRUE(result.on_first && result.on_second);
     EXPECT_NEAR(PathLength(p, s, result), expected, 1e-12);
+    std::cout << "outer tangent at height " << z << ": length error "
+              << PathLength(p, s, result) - expected << " m, crossing points off by "
+              << (result.p_WT2 - Vec3(0.0, -kRadius, z)).norm() << " and "
+              << (result.p_WT3 - Vec3(d, -kRadius, z)).norm() << " m\n";
     // Newton stops when the entry point moves less than 1e-12 m in all.
     EXPECT_LT((result.p_WT2 - Vec3(0.0, -kRadius, z)).norm(), 1e-11);
     EXPECT_LT((result.p_WT3 - Vec3(d, -kRadius, z)).norm(), 1e-11);
     EXPECT_NEAR(result.arc_length, kRadius * arc_angle, 1e-12);
     EXPECT_NEAR(result.second_arc_length, kRadius * arc_angle, 1e-12);
   }
+}
+
+// The same cylinders with S 4 cm above P: for parallel axes the heights over U follow the
+// unrolled line from P to V's entry point and over V the one from U's exit point to S; sharing
+// the crossing segment, they are one line, so the path is the straight line of the whole
+// path unrolled (its length the hypotenuse of the plane path and the rise), and the crossing
+// points are at heights in proportion to the plane path's length before them.
+TEST(WrapDoubleCylinderObstTest, BothEngagedAtDifferentHeightsIsTheUnrolledLine) {
+  const double d = 0.1, a = 0.05, b = 0.01, rise = 0.04;
+  const WrapDoubleCylinderObst obstacle(kRadius, Direction::kRightHand, kRadius,
+                                        Direction::kRightHand);
+  const Vec3 p(-a, -b, 0.0), s(d + a, -b, rise);
+  const double dp = std::hypot(a, b);
+  const double arc_angle = -kPi / 2 - (std::atan2(-b, -a) + std::acos(kRadius / dp));
+  const double to_u_exit = std::sqrt(dp * dp - kRadius * kRadius) + kRadius * arc_angle;
+  const double plane = 2 * to_u_exit + d;
+  const WrapResult result = obstacle.Wrap(p, s, At(Transform::Translation(Vec3(d, 0.0, 0.0))));
+  ASSERT_TRUE(result.on_first && result.on_second);
+  EXPECT_NEAR(PathLength(p, s, result), std::hypot(plane, rise), 1e-12);
+  std::cout << "outer tangent rising " << rise << " m: length error "
+            << PathLength(p, s, result) - std::hypot(plane, rise) << " m\n";
+  EXPECT_LT((result.p_WT2 - Vec3(0.0, -kRadius, rise * to_u_exit / plane)).norm(), 1e-11);
+  EXPECT_LT((result.p_WT3 - Vec3(d, -kRadius, rise * (to_u_exit + d) / plane)).norm(), 1e-11);
 }
 
 // U right-handed, V left-handed: the path goes under U and over V, crossing between them along
@@ -170,6 +203,7 @@ TEST(WrapDoubleCylinderObstTest, BothEngagedAlongTheCrossingTangentInOnePlane) {
   const WrapResult result = obstacle.Wrap(p, s, At(Transform::Translation(Vec3(d, 0.0, 0.0))));
   ASSERT_TRUE(result.on_first && result.on_second);
   EXPECT_NEAR(PathLength(p, s, result), expected, 1e-12);
+  std::cout << "crossing tangent: length error " << PathLength(p, s, result) - expected << " m\n";
   const Vec3 leaves_u(kRadius * std::cos(cross_angle), kRadius * std::sin(cross_angle), 0.0);
   EXPECT_LT((result.p_WT2 - leaves_u).norm(), 1e-11);
   EXPECT_LT((result.p_WT3 - (Vec3(d, 0.0, 0.0) - leaves_u)).norm(), 1e-11);
