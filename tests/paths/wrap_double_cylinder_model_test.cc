@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -139,6 +140,46 @@ TEST(WrapDoubleCylinderModelTest, MomentArmsSpeedsAndForcesAreDerivativesOfLengt
   EXPECT_GT(wrapped_both, 10);
   testing::CheckMomentArmsAndSpeeds(m, "double_cylinder", poses, true);
   EXPECT_GT(testing::CheckGeneralizedForces(m, poses), 20);
+}
+
+// OpenSim reports a wrap over neither cylinder as a wrap adding no length, and keeps the
+// segment of its range whose wrap adds least: with a via point that makes a first segment
+// clear of both cylinders, the extensor stays straight even where its second segment would
+// wrap; restricted to that second segment by its range, it wraps (docs/wrapping.md).
+TEST(WrapDoubleCylinderModelTest, ARangeOfSeveralSegmentsWrapsOnlyIfEverySegmentEngages) {
+  std::ifstream in(kModel);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  std::string text = buffer.str();
+  const std::string origin_end = "<location>-0.03 -0.1 0</location>\n                </PathPoint>";
+  ASSERT_NE(text.find(origin_end), std::string::npos);
+  text.insert(text.find(origin_end) + origin_end.size(),
+              "<PathPoint name=\"via\"><socket_parent_frame>/ground</socket_parent_frame>"
+              "<location>-0.03 -0.15 0</location></PathPoint>");
+  const std::string with_via = (std::filesystem::path(::testing::TempDir()) / "via.osim").string();
+  std::ofstream(with_via) << text;
+  const std::string range = "<range>-1 -1</range>";
+  text.replace(text.find(range), range.size(), "<range>2 3</range>");
+  const std::string second_only =
+      (std::filesystem::path(::testing::TempDir()) / "via_range.osim").string();
+  std::ofstream(second_only) << text;
+
+  const PathModel whole(with_via), second(second_only);
+  std::vector<double> q = whole.tree.default_q();
+  q[static_cast<size_t>(whole.spec.FindCoordinate("q2"))] = 0.5;
+  const int path = whole.FindPath("ext");
+  const PathState straight = whole.CalcState(path, q);
+  ASSERT_EQ(straight.points.size(), 3u);  // origin, via, insertion: no tangent points
+  std::vector<Transform> X_GB(static_cast<size_t>(whole.tree.num_bodies()));
+  kinematics::CalcBodyPoses(whole.tree, q, X_GB);
+  const Vec3 origin(-0.03, -0.1, 0.0), via(-0.03, -0.15, 0.0);
+  const Vec3 insertion =
+      X_GB[static_cast<size_t>(whole.spec.FindBody("lower"))] * Vec3(-0.015, -0.12, 0.0);
+  EXPECT_NEAR(straight.length, (via - origin).norm() + (insertion - via).norm(), 1e-15);
+  const PathState wrapped = second.CalcState(second.FindPath("ext"), q);
+  const Over over = WhichCylinders(second, wrapped);
+  EXPECT_TRUE(over.u || over.v);
+  EXPECT_GT(wrapped.length, straight.length + 1e-3);
 }
 
 TEST(WrapDoubleCylinderModelTest, AnUnknownVBodyIsAnErrorNamingTheWrapObject) {
