@@ -12,6 +12,7 @@
 #include <sinew/opensim/parser.h>
 #include <sinew/paths/wrap_cylinder.h>
 #include <sinew/paths/wrap_cylinder_obst.h>
+#include <sinew/paths/wrap_double_cylinder_obst.h>
 #include <sinew/paths/wrap_ellipsoid.h>
 #include <sinew/paths/wrap_sphere.h>
 #include <sinew/paths/wrap_sphere_obst.h>
@@ -191,6 +192,18 @@ TEST(EvaluationAllocationTest, EveryWrapSurfaceWrapsWithoutHeapUse) {
     EXPECT_GT(result.arc_length, 0.0) << c.name;
     EXPECT_EQ(g_allocations.load() + g_mallocs.load(), 0) << c.name;
   }
+  // WrapDoubleCylinderObst over both its cylinders (Newton's method on the crossing line).
+  const WrapDoubleCylinderObst two(0.02, WrapDoubleCylinderObst::Direction::kRightHand, 0.02,
+                                   WrapDoubleCylinderObst::Direction::kRightHand);
+  WrapOptions options;
+  options.X_WV = Transform::Translation(Vec3(0.1, 0.0, 0.0));
+  g_allocations = 0;
+  g_mallocs = 0;
+  g_counting = true;
+  const WrapResult result = two.Wrap({-0.05, -0.01, 0.0}, {0.15, -0.01, 0.0}, options);
+  g_counting = false;
+  EXPECT_TRUE(result.on_first && result.on_second);
+  EXPECT_EQ(g_allocations.load() + g_mallocs.load(), 0) << "WrapDoubleCylinderObst";
 }
 
 // Heap allocations made by `steps` further steps of `integrator` (each Advance is one step).

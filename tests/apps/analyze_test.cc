@@ -3,6 +3,7 @@
 // loudly, and bad input -> exit code 2 naming what is wrong.
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -101,7 +102,7 @@ TEST_F(AnalyzeCliTest, WrapsNotAppliedAreNamedOnStderr) {
     out << "arm\nversion=1\nnRows=1\nnColumns=2\ninDegrees=yes\nendheader\n"
            "time\tr_elbow_flex\n0\t30\n";
   }
-  // arm26 with its ellipsoids made WrapDoubleCylinderObst (a type Sinew does not wrap over).
+  // arm26 with its ellipsoids made MyPluginWrapObject (a type Sinew does not wrap over).
   const CliRun r = Analyze(
       sinew::testing::WriteWithUnsupportedWraps(kArm26, Path("with_unsupported_wraps.osim")) +
       " --motion " + motion + " --out " + Path("out"));
@@ -154,6 +155,55 @@ TEST_F(AnalyzeCliTest, FunctionBasedPathsGetTheirTables) {
     EXPECT_NEAR(lengths.rows[row][act], 0.2 * q1 + 0.01, 1e-12);
     EXPECT_NEAR(arm1.rows[row][act], 0.1 * q1 - 0.05, 1e-12);
     EXPECT_EQ(arm2.rows[row][act], 0.0);
+  }
+}
+
+TEST_F(AnalyzeCliTest, DoubleCylinderObstaclePathsGetTheirTables) {
+  // tests/data/sinew/double_cylinder.osim: two paths over WrapDoubleCylinderObst objects. The
+  // elbow q2 turns from -0.5 to 0.9 rad at 1 rad/s (q1 = 0), in 141 rows: the extensor goes
+  // from straight to round V, then round both (short of its snap at 0.976 rad).
+  const std::string motion = Path("flex.mot");
+  {
+    std::ofstream out(motion);
+    out << "flex\nversion=1\nnRows=141\nnColumns=3\ninDegrees=no\nendheader\ntime\tq1\tq2\n";
+    for (int k = 0; k <= 140; ++k) out << 0.01 * k << "\t0\t" << -0.5 + 0.01 * k << "\n";
+  }
+  const CliRun r = Analyze(std::string(SINEW_TEST_DATA_DIR) + "/sinew/double_cylinder.osim" +
+                           " --motion " + motion + " --out " + Path("out"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");  // every wrap object is applied: nothing to warn about
+  const StoTable lengths = ReadStoTable(Path("out/Length.sto"));
+  const StoTable speeds = ReadStoTable(Path("out/LengtheningSpeed.sto"));
+  const StoTable arm1 = ReadStoTable(Path("out/MomentArm_q1.sto"));
+  const StoTable arm2 = ReadStoTable(Path("out/MomentArm_q2.sto"));
+  ASSERT_EQ(lengths.rows.size(), 141u);
+  const int ext = lengths.Column("ext");
+  ASSERT_GE(ext, 0);
+  ASSERT_GE(lengths.Column("ext_tilted"), 0);
+  // At q2 = -0.5 the extensor clears both cylinders: the straight line from ground
+  // (-0.03, -0.1) to the lower link's (-0.015, -0.12), the link turned -0.5 rad about the elbow
+  // (0, -0.3); its moment arms are minus the line's direction dotted with the insertion's
+  // velocity per unit rotation about z (about the origin for q1, the elbow for q2).
+  const Eigen::Vector3d p(-0.03, -0.1, 0.0), elbow(0.0, -0.3, 0.0), z = Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d s = elbow + Eigen::AngleAxisd(-0.5, z) * Eigen::Vector3d(-0.015, -0.12, 0);
+  const Eigen::Vector3d e = (s - p).normalized();
+  EXPECT_NEAR(lengths.rows[0][ext], (s - p).norm(), 1e-12);
+  EXPECT_NEAR(arm1.rows[0][ext], -e.dot(z.cross(s)), 1e-12);
+  EXPECT_NEAR(arm2.rows[0][ext], -e.dot(z.cross(s - elbow)), 1e-12);
+  // The lengthening speed integrates to the length change: the trapezoidal rule's error is at
+  // most T h^2 max|L''| / 12 = 1.4 s (0.01 s)^2 (1 m/s^2) / 12 ~ 1.2e-5 m, with |L''| (the
+  // rate of change of a moment arm of centimetres over tenths of a radian) below 1 m/rad^2.
+  for (size_t c = 1; c < speeds.labels.size(); ++c) {
+    double integral = 0.0;
+    for (size_t row = 1; row < speeds.rows.size(); ++row) {
+      integral += 0.5 * (speeds.rows[row][c] + speeds.rows[row - 1][c]) * 0.01;
+    }
+    EXPECT_NEAR(integral, lengths.rows.back()[c] - lengths.rows.front()[c], 1.2e-5)
+        << speeds.labels[c];
+  }
+  // q1 is still and q2 turns at 1 rad/s, so the speed is minus the q2 moment arm.
+  for (size_t row = 0; row < speeds.rows.size(); ++row) {
+    EXPECT_NEAR(speeds.rows[row][ext], -arm2.rows[row][ext], 1e-9) << row;
   }
 }
 

@@ -49,17 +49,17 @@ TEST_F(Inspect, PathsAreListedWithTheirPointsAndWrapsAndWhatIsNotComputed) {
       << run.out;
   // 7 PathWraps over 5 paths, all over cylinders and ellipsoids: all computed.
   EXPECT_NE(run.out.find("path parts not computed (0):"), std::string::npos) << run.out;
-  // The same model with its two ellipsoids made WrapDoubleCylinderObst: those 2 PathWraps are named
-  // with their path (not applied).
+  // The same model with its two ellipsoids made a plugin's MyPluginWrapObject: those 2 PathWraps
+  // are named with their path (not applied).
   const CliRun unsupported = Run(
       "inspect " + testing::WriteWithUnsupportedWraps(kArm26, Path("with_unsupported_wraps.osim")));
   ASSERT_EQ(unsupported.exit_code, 0) << unsupported.err;
   EXPECT_NE(unsupported.out.find("path parts not computed (2):"), std::string::npos)
       << unsupported.out;
-  EXPECT_NE(unsupported.out.find(
-                "/forceset/TRIlong: wrap object 'TRIlonghh' (WrapDoubleCylinderObst) is not "
-                "applied yet"),
-            std::string::npos)
+  EXPECT_NE(
+      unsupported.out.find("/forceset/TRIlong: wrap object 'TRIlonghh' (MyPluginWrapObject) is not "
+                           "applied yet"),
+      std::string::npos)
       << unsupported.out;
   const CliRun json = Run("inspect --json " + kArm26);
   ASSERT_EQ(json.exit_code, 0) << json.err;

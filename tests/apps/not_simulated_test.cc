@@ -67,7 +67,7 @@ FileCounts CountInFile(const std::string& osim) {
 class NotSimulatedTest : public testing::CliTest {
  protected:
   // arm26 with two kinds of parts Sinew does not simulate: its 6 Thelen2003Muscles read as
-  // Millard2012AccelerationMuscle and its 2 WrapEllipsoids as WrapDoubleCylinderObst.
+  // Millard2012AccelerationMuscle and its 2 WrapEllipsoids as a plugin's MyPluginWrapObject.
   std::string Arm26WithUnsupportedParts() const {
     std::string text = testing::ReadText(
         testing::WriteWithUnsupportedWraps(kArm26, Path("with_unsupported_wraps.osim")));
@@ -101,7 +101,7 @@ TEST_F(NotSimulatedTest, SimulateSaysOnceWhatIsLeftOutByKind) {
 }
 
 TEST_F(NotSimulatedTest, StrictMakesItAnError) {
-  // arm26's muscles and its cylinders and ellipsoids are simulated; WrapDoubleCylinderObst is not.
+  // arm26's muscles and its cylinders and ellipsoids are simulated; a plugin's wrap object is not.
   const std::string model =
       testing::WriteWithUnsupportedWraps(kArm26, Path("with_unsupported_wraps.osim"));
   const CliRun run =

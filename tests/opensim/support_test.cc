@@ -8,15 +8,16 @@ namespace {
 
 TEST(Support, ListsEverythingNotSimulatedYet) {
   // Ideal actuators, PrescribedControllers and WrapSphere (as WrapCylinder, WrapEllipsoid,
-  // WrapTorus, WrapSphereObst and WrapCylinderObst) are simulated; Millard2012AccelerationMuscle,
-  // other controllers, this constraint, contact geometry, WrapDoubleCylinderObst and unknown
-  // joints are not yet.
+  // WrapTorus, WrapSphereObst, WrapCylinderObst and WrapDoubleCylinderObst) are simulated;
+  // Millard2012AccelerationMuscle, other controllers, this constraint, contact geometry, a
+  // plugin's wrap object and unknown joints are not yet.
   const std::string text = R"(<OpenSimDocument Version="40000"><Model name="m">
 <Ground name="ground"/>
 <BodySet><objects><Body name="b"><mass>1</mass>
   <WrapObjectSet><objects><WrapSphere name="ws"><radius>0.1</radius></WrapSphere>
     <WrapSphereObst name="wso"/><WrapCylinderObst name="wco"/>
-    <WrapDoubleCylinderObst name="wt"/></objects></WrapObjectSet>
+    <WrapDoubleCylinderObst name="wd"><wrapVcylHomeBodyName>c</wrapVcylHomeBodyName>
+    </WrapDoubleCylinderObst><MyPluginWrapObject name="wt"/></objects></WrapObjectSet>
 </Body><Body name="c"><mass>1</mass></Body></objects></BodySet>
 <JointSet><objects>
   <SliderJoint name="s"><socket_parent_frame>/ground</socket_parent_frame>
@@ -45,7 +46,7 @@ TEST(Support, ListsEverythingNotSimulatedYet) {
       "/constraintset/roll: RollingOnSurfaceConstraint",
       "/controllerset/reflex: ToyReflexController",
       "/contactgeometryset/cs: ContactSphere",
-      "/bodyset/b/wrapobjectset/wt: WrapDoubleCylinderObst",
+      "/bodyset/b/wrapobjectset/wt: MyPluginWrapObject",
       "/probe: JointInternalPowerProbe",
   };
   EXPECT_EQ(opensim::ListNotSimulated(spec), expected);

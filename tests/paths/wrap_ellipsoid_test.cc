@@ -24,7 +24,7 @@ using testing::CircleWrapLength;
 using testing::PathLength;
 
 constexpr double kRadius = 0.02;  // bone sized: OpenSim's chords are 1 mm
-const WrapOptions kHybrid{WrapOptions::Method::kHybrid, true, true};
+const WrapOptions kHybrid{WrapOptions::Method::kHybrid, true, true, {}};
 // The tangent-point iteration stops when its squared residuals sum below 1e-8, so the point's
 // residual on the ellipsoid, |x / radii|^2 - 1, may be up to 1e-4: off the surface by up to
 // 1e-4 / |gradient| <= 5e-5 times the largest semi-axis.

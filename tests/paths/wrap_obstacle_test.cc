@@ -25,7 +25,7 @@ using testing::PathLength;
 constexpr double kPi = std::numbers::pi;
 constexpr double kRadius = 0.02;                               // the obstacle's `radius` (m)
 constexpr double kCircle = kObstacleRadiusFraction * kRadius;  // what the path wraps over
-const WrapOptions kOptions{WrapOptions::Method::kHybrid, true, true};
+const WrapOptions kOptions{WrapOptions::Method::kHybrid, true, true, {}};
 
 // The cross-section path of a cylinder obstacle, from the geometry alone: P and S at polar
 // angles and distances; the turn from P's tangent point to S's, `turn` (+1 counter-clockwise

@@ -21,7 +21,7 @@ using testing::RandomPoint;
 
 constexpr double kRadius = 1.0;
 // Arc points asked for, so the drawn arc is checked too.
-const WrapOptions kOptions{WrapOptions::Method::kHybrid, true, true};
+const WrapOptions kOptions{WrapOptions::Method::kHybrid, true, true, {}};
 
 // True when the segment P-S passes strictly inside the sphere (closest point between P and S).
 bool SegmentEntersSphere(const Vec3& p, const Vec3& s) {

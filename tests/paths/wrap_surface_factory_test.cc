@@ -5,6 +5,7 @@
 #include <sinew/common/error.h>
 #include <sinew/paths/wrap_cylinder.h>
 #include <sinew/paths/wrap_cylinder_obst.h>
+#include <sinew/paths/wrap_double_cylinder_obst.h>
 #include <sinew/paths/wrap_ellipsoid.h>
 #include <sinew/paths/wrap_sphere.h>
 #include <sinew/paths/wrap_sphere_obst.h>
@@ -54,9 +55,10 @@ TEST(WrapSurfaceFactoryTest, BuildsSpheresAndCylindersWithTheirDimensions) {
       MakeWrapSurface(Spec("WrapEllipsoid", {{"dimensions", {0.035, 0.02, 0.02}}}, "z"));
   ASSERT_NE(dynamic_cast<const WrapEllipsoid*>(ellipsoid.get()), nullptr);
   EXPECT_EQ(dynamic_cast<const WrapEllipsoid&>(*ellipsoid).radii(), Vec3(0.035, 0.02, 0.02));
-  EXPECT_EQ(SupportedWrapSurfaceTypes(),
-            (std::vector<std::string>{"WrapCylinder", "WrapCylinderObst", "WrapEllipsoid",
-                                      "WrapSphere", "WrapSphereObst", "WrapTorus"}));
+  EXPECT_EQ(
+      SupportedWrapSurfaceTypes(),
+      (std::vector<std::string>{"WrapCylinder", "WrapCylinderObst", "WrapDoubleCylinderObst",
+                                "WrapEllipsoid", "WrapSphere", "WrapSphereObst", "WrapTorus"}));
   const auto torus =
       MakeWrapSurface(Spec("WrapTorus", {{"inner_radius", {0.035}}, {"outer_radius", {0.08}}}));
   const auto* as_torus = dynamic_cast<const WrapTorus*>(torus.get());
@@ -79,6 +81,17 @@ TEST(WrapSurfaceFactoryTest, BuildsObstaclesWithTheirRadiusAndWrapDirection) {
   const auto sphere = MakeWrapSurface(Spec("WrapSphereObst", {}));
   ASSERT_NE(dynamic_cast<const WrapSphereObst*>(sphere.get()), nullptr);
   EXPECT_EQ(dynamic_cast<const WrapSphereObst&>(*sphere).radius(), 0.05);
+  // The double cylinder: OpenSim's radii 1 m and right-handed directions unless given.
+  model::WrapObjectSpec spec =
+      Spec("WrapDoubleCylinderObst", {{"radiusVcyl", {0.015}}, {"wrap_ucyl_direction", {-1.0}}});
+  spec.second_body = 2;
+  const auto both = MakeWrapSurface(spec);
+  const auto* as_double = dynamic_cast<const WrapDoubleCylinderObst*>(both.get());
+  ASSERT_NE(as_double, nullptr);
+  EXPECT_EQ(as_double->radius_u(), 1.0);
+  EXPECT_EQ(as_double->radius_v(), 0.015);
+  EXPECT_EQ(as_double->direction_u(), WrapDoubleCylinderObst::Direction::kLeftHand);
+  EXPECT_EQ(as_double->direction_v(), WrapDoubleCylinderObst::Direction::kRightHand);
 }
 
 TEST(WrapSurfaceFactoryTest, MissingDimensionsTakeOpenSimsDefaults) {
@@ -112,7 +125,18 @@ TEST(WrapSurfaceFactoryTest, BadInputIsAnErrorNamingTheObject) {
              "inner_radius must be positive");
   fails_with(Spec("WrapSphereObst", {{"length", {0.0}}}), "length must be positive");
   fails_with(Spec("WrapCylinderObst", {{"wrap_direction", {2.0}}}), "wrap_direction must be");
-  fails_with(Spec("WrapDoubleCylinderObst", {}), "WrapDoubleCylinderObst is not a wrap surface");
+  fails_with(Spec("MyPluginWrapObject", {}), "MyPluginWrapObject is not a wrap surface");
+  // The double cylinder needs the body of its V cylinder (the reader resolves
+  // wrapVcylHomeBodyName) and positive radii.
+  fails_with(Spec("WrapDoubleCylinderObst", {}), "has no body for its V cylinder");
+  model::WrapObjectSpec with_body = Spec("WrapDoubleCylinderObst", {{"radiusUcyl", {-0.02}}});
+  with_body.second_body = 2;
+  fails_with(with_body,
+             "WrapDoubleCylinderObst radiusUcyl must be positive and finite (got -0.02)");
+  with_body.dimensions = {{"radiusVcyl", {0.0}}};
+  fails_with(with_body, "radiusVcyl must be positive");
+  with_body.dimensions = {{"wrap_vcyl_direction", {3.0}}};
+  fails_with(with_body, "wrap_vcyl_direction must be");
 }
 
 TEST(WrapSurfaceFactoryTest, ReadsEveryQuadrantSpellingOpenSimAccepts) {

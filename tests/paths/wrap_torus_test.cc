@@ -22,7 +22,7 @@ using testing::PathLength;
 // The dimensions of test_wrapAllVis.osim's torus (m).
 constexpr double kTube = 0.035;  // inner_radius
 constexpr double kRing = 0.08;   // outer_radius
-const WrapOptions kOptions{WrapOptions::Method::kHybrid, true, true};
+const WrapOptions kOptions{WrapOptions::Method::kHybrid, true, true, {}};
 
 // p turned by `angle` about W's z axis (the torus's axis of symmetry).
 Vec3 TurnedAboutAxis(const Vec3& p, double angle) {

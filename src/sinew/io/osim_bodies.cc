@@ -81,24 +81,49 @@ Mat3 ReadInertia(ReadContext& ctx, const pugi::xml_node& body, const std::string
   return inertia;
 }
 
-// WrapCylinderObst's `wrapDirection` is text, and a wrap object's spec keeps numbers: it is
-// kept among the dimensions as "wrap_direction", +1 for right-handed (also when none is
-// written, OpenSim's default) and -1 for left-handed, in any of OpenSim's spellings.
+// The obstacles' wrap directions are text, and a wrap object's spec keeps numbers: each is
+// kept among the dimensions as `key`, +1 for right-handed (also when none is written,
+// OpenSim's default) and -1 for left-handed, in any of OpenSim's spellings. `tag` is
+// WrapCylinderObst's wrapDirection or WrapDoubleCylinderObst's wrapUcylDirection and
+// wrapVcylDirection.
 void ReadWrapDirection(const XmlDocument& doc, const pugi::xml_node& wrap,
-                       const std::string& component, model::NumberMap& dimensions) {
-  const std::string text = TextOf(wrap, "wrapDirection");
+                       const std::string& component, const char* tag, const std::string& key,
+                       model::NumberMap& dimensions) {
+  const std::string text = TextOf(wrap, tag);
   if (text.empty()) return;
   for (const char* right :
        {"righthand", "right", "righthanded", "Righthand", "Right", "Righthanded", "Unassigned"}) {
-    if (text == right) dimensions["wrap_direction"] = {1.0};
+    if (text == right) dimensions[key] = {1.0};
   }
   for (const char* left : {"lefthand", "left", "lefthanded", "Lefthand", "Left", "Lefthanded"}) {
-    if (text == left) dimensions["wrap_direction"] = {-1.0};
+    if (text == left) dimensions[key] = {-1.0};
   }
-  if (!dimensions.contains("wrap_direction")) {
-    doc.Fail(wrap.child("wrapDirection"), component,
-             "wrapDirection '" + text + "' is not righthand or lefthand");
+  if (!dimensions.contains(key)) {
+    doc.Fail(wrap.child(tag), component,
+             std::string(tag) + " '" + text + "' is not righthand or lefthand");
   }
+}
+
+// WrapDoubleCylinderObst's V cylinder: the body named by wrapVcylHomeBodyName (OpenSim's
+// default, "Unassigned", names none) and its frame there.
+void ReadVCylinder(ReadContext& ctx, const pugi::xml_node& wrap, const std::string& component,
+                   model::WrapObjectSpec& spec) {
+  const XmlDocument& doc = ctx.doc();
+  ReadWrapDirection(doc, wrap, component, "wrapUcylDirection", "wrap_ucyl_direction",
+                    spec.dimensions);
+  ReadWrapDirection(doc, wrap, component, "wrapVcylDirection", "wrap_vcyl_direction",
+                    spec.dimensions);
+  const std::string body = TextOf(wrap, "wrapVcylHomeBodyName");
+  spec.second_body = body.empty() ? model::kNone : ctx.BodyIndex(body);
+  if (spec.second_body == model::kNone) {
+    const pugi::xml_node where = wrap.child("wrapVcylHomeBodyName");
+    doc.Fail(where ? where : wrap, component,
+             "WrapDoubleCylinderObst: wrapVcylHomeBodyName '" +
+                 (body.empty() ? std::string("Unassigned") : body) +
+                 "' is not a body of the model (the V cylinder needs one)");
+  }
+  spec.X_BV = MakeTransform(ReadVec3Or(doc, wrap, "xyz_body_rotationVcyl", component, Vec3::Zero()),
+                            ReadVec3Or(doc, wrap, "translationVcyl", component, Vec3::Zero()));
 }
 
 void ReadWrapObjects(ReadContext& ctx, const pugi::xml_node& owner, int body,
@@ -115,9 +140,11 @@ void ReadWrapObjects(ReadContext& ctx, const pugi::xml_node& owner, int body,
     spec.quadrant = TextOf(wrap, "quadrant");
     if (spec.quadrant.empty()) spec.quadrant = "all";
     spec.active = ReadBoolOr(doc, wrap, "active", component, true);
-    spec.dimensions =
-        ReadNumericLeaves(doc, wrap, component, {"xyz_body_rotation", "translation", "active"});
-    ReadWrapDirection(doc, wrap, component, spec.dimensions);
+    spec.dimensions = ReadNumericLeaves(
+        doc, wrap, component,
+        {"xyz_body_rotation", "translation", "active", "xyz_body_rotationVcyl", "translationVcyl"});
+    ReadWrapDirection(doc, wrap, component, "wrapDirection", "wrap_direction", spec.dimensions);
+    if (spec.type == "WrapDoubleCylinderObst") ReadVCylinder(ctx, wrap, component, spec);
     spec.where = doc.Where(wrap);
     ctx.IndexWrapObject(spec.name);
     ctx.spec().bodies[body].wrap_objects.push_back(std::move(spec));

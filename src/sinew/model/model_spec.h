@@ -47,6 +47,11 @@ struct WrapObjectSpec {
   std::string quadrant;  ///< "all", "+x", "-y", ...
   bool active = true;
   NumberMap dimensions;  ///< radius, length, dimensions, inner_radius, outer_radius
+  /// WrapDoubleCylinderObst only: the body its V cylinder is fixed to (wrapVcylHomeBodyName)
+  /// and the V cylinder's frame V in that body (xyz_body_rotationVcyl, translationVcyl);
+  /// kNone for every other type.
+  int second_body = kNone;
+  Transform X_BV;
   SourceLocation where;
 };
 

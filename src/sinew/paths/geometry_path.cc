@@ -2,6 +2,7 @@
 #include <sinew/paths/geometry_path.h>
 #include <sinew/paths/wrap_surface_factory.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -68,6 +69,8 @@ GeometryPath::GeometryPath(const model::ModelSpec& spec, const model::ForceSpec&
     wrap.X_BW = object->X_BW;
     wrap.active = object->active;
     wrap.options.method = ParseMethod(w.method);
+    wrap.second_body = object->second_body;
+    wrap.X_BV = object->X_BV;
     // OpenSim: 1-based point numbers; anything below 1 means the first (last) point.
     wrap.first_point = w.range[0] < 1 ? 0 : w.range[0] - 1;
     wrap.last_point = w.range[1] < 1 ? num_points - 1 : w.range[1] - 1;
@@ -124,7 +127,7 @@ void GeometryPath::CalcState(std::span<const double> q, std::span<const Transfor
     CalcFunctionState(q, state);
     return;
   }
-  state.points.reserve(points_.size() + 2 * wraps_.size());  // room for every tangent point
+  state.points.reserve(points_.size() + 4 * wraps_.size());  // room for every tangent point
   state.arc_G.resize(with_arc_points ? wraps_.size() : 0);
   for (std::vector<Vec3>& arc : state.arc_G) arc.clear();
   for (size_t i = 0; i < points_.size(); ++i) {
@@ -204,6 +207,7 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
   WrapOptions options = wrap.options;
   options.single_wrap = wraps_.size() == 1 && refinement_ == CylinderRefinement::kSeveralWraps;
   options.with_arc_points = with_arc_points;
+  if (wrap.second_body != model::kNone) options.X_WV = X_WG * X_GB[wrap.second_body] * wrap.X_BV;
   double best_change = std::numeric_limits<double>::infinity();
   int best_segment = -1;
   WrapResult best;
@@ -227,8 +231,17 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
     // OpenSim measures the change with the ground locations it has read (and now reads).
     reads.Read(state.points[static_cast<size_t>(k)]);
     reads.Read(state.points[static_cast<size_t>(k) + 1]);
-    const double change = (X_GW * result.p_WT1 - a.p_GP).norm() + result.arc_length +
-                          (b.p_GP - X_GW * result.p_WT2).norm() - (b.p_GP - a.p_GP).norm();
+    double wrapped_length = 0.0;
+    Vec3 p_G = a.p_GP;  // where the path is so far
+    if (result.on_first) {
+      wrapped_length += (X_GW * result.p_WT1 - p_G).norm() + result.arc_length;
+      p_G = X_GW * result.p_WT2;
+    }
+    if (result.on_second) {
+      wrapped_length += (X_GW * result.p_WT3 - p_G).norm() + result.second_arc_length;
+      p_G = X_GW * result.p_WT4;
+    }
+    const double change = wrapped_length + (b.p_GP - p_G).norm() - (b.p_GP - a.p_GP).norm();
     if (change < best_change) {
       best_change = change;
       best_segment = k;
@@ -236,28 +249,39 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
     }
   }
   if (best_segment < 0) return true;
-  PathPointState t1, t2;
-  t1.wrap = t2.wrap = w;
-  t1.body = t2.body = wrap.body;
-  t1.p_BP = wrap.X_BW * best.p_WT1;
-  t2.p_BP = wrap.X_BW * best.p_WT2;
-  t1.p_GP = X_GW * best.p_WT1;
-  t2.p_GP = X_GW * best.p_WT2;
-  t1.arc_length_to_next = best.arc_length;
-  reads.Place(t1);
-  reads.Place(t2);
+  // The tangent points, in order; those over a second frame are fixed to its body.
+  std::array<PathPointState, 4> tangents;
+  int count = 0;
+  const auto add = [&](int which, const Vec3& p_WT, int body, double arc_length) {
+    PathPointState& t = tangents[static_cast<size_t>(count++)];
+    t.wrap = w;
+    t.tangent = which;
+    t.body = body;
+    t.p_GP = X_GW * p_WT;
+    t.p_BP = body == wrap.body ? Vec3(wrap.X_BW * p_WT) : Vec3(X_GB[body].Inverse() * t.p_GP);
+    t.arc_length_to_next = arc_length;
+    reads.Place(t);
+  };
+  if (best.on_first) {
+    add(0, best.p_WT1, wrap.body, best.arc_length);
+    add(1, best.p_WT2, wrap.body, -1.0);
+  }
+  if (best.on_second) {
+    add(2, best.p_WT3, wrap.second_body, best.second_arc_length);
+    add(3, best.p_WT4, wrap.second_body, -1.0);
+  }
   if (with_arc_points) {
     std::vector<Vec3>& arc = state.arc_G[static_cast<size_t>(w)];
     for (const Vec3& p_WA : best.arc_points) arc.push_back(X_GW * p_WA);
   }
-  const auto at = state.points.begin() + best_segment + 1;
-  state.points.insert(state.points.insert(at, t1) + 1, t2);
+  state.points.insert(state.points.begin() + best_segment + 1, tangents.begin(),
+                      tangents.begin() + count);
   return true;
 }
 
 void TangentPointReads::Reset(int num_wraps) {
   const size_t n = static_cast<size_t>(num_wraps);
-  read.assign(n, {false, false});
+  read.assign(n, {false, false, false, false});
   p_BP_read.resize(n);
   p_GP_read.resize(n);
   p_GP_current.resize(n);
@@ -266,7 +290,7 @@ void TangentPointReads::Reset(int num_wraps) {
 void TangentPointReads::Read(PathPointState& point) {
   if (point.wrap < 0) return;
   const size_t w = static_cast<size_t>(point.wrap);
-  const size_t which = point.arc_length_to_next >= 0.0 ? 0 : 1;
+  const size_t which = static_cast<size_t>(point.tangent);
   if (!read[w][which]) {
     read[w][which] = true;
     p_BP_read[w][which] = point.p_BP;
@@ -278,7 +302,7 @@ void TangentPointReads::Read(PathPointState& point) {
 
 void TangentPointReads::Place(PathPointState& point) {
   const size_t w = static_cast<size_t>(point.wrap);
-  const size_t which = point.arc_length_to_next >= 0.0 ? 0 : 1;
+  const size_t which = static_cast<size_t>(point.tangent);
   p_GP_current[w][which] = point.p_GP;
   if (read[w][which]) {
     point.p_BP = p_BP_read[w][which];
@@ -288,18 +312,17 @@ void TangentPointReads::Place(PathPointState& point) {
 
 Vec3 TangentPointReads::CurrentLocation(const PathPointState& point) const {
   if (point.wrap < 0) return point.p_GP;
-  const size_t which = point.arc_length_to_next >= 0.0 ? 0 : 1;
+  const size_t which = static_cast<size_t>(point.tangent);
   return p_GP_current[static_cast<size_t>(point.wrap)][which];
 }
 
 void GeometryPath::RemoveTangentPoints(int w, PathState& state) {
-  for (size_t k = 0; k + 1 < state.points.size(); ++k) {
-    if (state.points[k].wrap == w) {
-      state.points.erase(state.points.begin() + static_cast<std::ptrdiff_t>(k),
-                         state.points.begin() + static_cast<std::ptrdiff_t>(k) + 2);
-      return;
-    }
-  }
+  // A wrap's tangent points (two, or up to four over two frames) are next to each other.
+  const auto first = std::find_if(state.points.begin(), state.points.end(),
+                                  [w](const PathPointState& p) { return p.wrap == w; });
+  const auto last =
+      std::find_if(first, state.points.end(), [w](const PathPointState& p) { return p.wrap != w; });
+  state.points.erase(first, last);
 }
 
 // OpenSim's GeometryPath::applyWrapObjects: the wrap objects in the listed order, once for a

@@ -28,6 +28,10 @@ struct PathWrap {
   /// active points the object may wrap; OpenSim's 1-based `range`, -1 meaning the first / last.
   int first_point = 0, last_point = 0;
   WrapOptions options;
+  /// A wrap object on two frames (WrapDoubleCylinderObst): the body of its second frame V and
+  /// V's pose in that body; kNone for every other object.
+  int second_body = model::kNone;
+  Transform X_BV;
   /// The surface that wraps; null until one is connected, and the path then stays straight.
   std::shared_ptr<const WrapSurface> surface;
 };
@@ -36,6 +40,8 @@ struct PathWrap {
 struct PathPointState {
   int point = model::kNone;  ///< Index into GeometryPath::points(); kNone for a tangent point.
   int wrap = model::kNone;   ///< For tangent points: index into GeometryPath::wraps().
+  /// For tangent points: which of the wrap's (0 T1, 1 T2, 2 T3, 3 T4: WrapResult's points).
+  int tangent = 0;
   int body = model::kGroundIndex;
   Vec3 p_BP = Vec3::Zero();  ///< In the body frame (m).
   Vec3 p_GP = Vec3::Zero();  ///< In ground (m).
@@ -70,8 +76,8 @@ struct TangentPointReads {
   void Place(PathPointState& point);
   /// Where a path point is now (for the surfaces), in ground.
   Vec3 CurrentLocation(const PathPointState& point) const;
-  std::vector<std::array<bool, 2>> read;
-  std::vector<std::array<Vec3, 2>> p_BP_read, p_GP_read, p_GP_current;
+  std::vector<std::array<bool, 4>> read;
+  std::vector<std::array<Vec3, 4>> p_BP_read, p_GP_read, p_GP_current;
 };
 
 /// The bookkeeping of GeometryPath's wrapping passes, kept with the PathState so that a path

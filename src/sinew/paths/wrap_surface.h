@@ -15,6 +15,7 @@
 // from -dL/dq of the length (docs/wrapping.md: 1.5e-4 m on arm26's brachialis).
 #pragma once
 
+#include <sinew/math/transform.h>
 #include <sinew/math/types.h>
 
 #include <vector>
@@ -34,6 +35,9 @@ struct WrapOptions {
   /// Whether to fill WrapResult::arc_points (for drawing). Off by default: sampling the arc
   /// costs more than the wrap itself, and lengths and derivatives do not need it.
   bool with_arc_points = false;
+  /// Surfaces on two frames only (WrapDoubleCylinderObst): the pose of the second frame V (the
+  /// V cylinder's, fixed to another body) in W at this pose. The path sets it; others ignore it.
+  Transform X_WV;
 };
 
 /// What wrapping the segment from P to S over a surface gives, all in the surface frame W.
@@ -54,6 +58,18 @@ struct WrapResult {
   Vec3 p_WT1 = Vec3::Zero();  ///< first tangent point (where the path leaves the line from P)
   Vec3 p_WT2 = Vec3::Zero();  ///< second tangent point (where it leaves the surface toward S)
   double arc_length = 0.0;    ///< length of the path on the surface, from T1 to T2 (m)
+  /// Whether a wrapped path goes over the surface from T1 to T2: always, except for a surface
+  /// on two frames (WrapDoubleCylinderObst), whose path may pass over its second cylinder only,
+  /// or over neither (then `wrapped` with neither means OpenSim's wrap that leaves the segment
+  /// straight: it still takes part, with no change of length, in the choice of segment).
+  bool on_first = true;
+  /// Surfaces on two frames only: the path also (or only) goes over the second cylinder, from
+  /// T3 to T4 (in W, but fixed to the second frame V), after a straight piece from T2 (when
+  /// on_first) or from P; the path is then P, [T1, arc, T2,] T3, second arc, T4, S.
+  bool on_second = false;
+  Vec3 p_WT3 = Vec3::Zero();
+  Vec3 p_WT4 = Vec3::Zero();
+  double second_arc_length = 0.0;  ///< the path's length over the second cylinder (m)
   /// Points along the path on the surface, from T1 to T2 inclusive, for drawing; filled only
   /// when WrapOptions::with_arc_points is set.
   std::vector<Vec3> arc_points;

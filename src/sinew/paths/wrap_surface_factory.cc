@@ -1,6 +1,7 @@
 #include <sinew/common/error.h>
 #include <sinew/paths/wrap_cylinder.h>
 #include <sinew/paths/wrap_cylinder_obst.h>
+#include <sinew/paths/wrap_double_cylinder_obst.h>
 #include <sinew/paths/wrap_ellipsoid.h>
 #include <sinew/paths/wrap_quadrant.h>
 #include <sinew/paths/wrap_sphere.h>
@@ -79,15 +80,19 @@ std::unique_ptr<WrapSurface> MakeWrapTorus(const model::WrapObjectSpec& spec) {
   return std::make_unique<WrapTorus>(inner, outer, Quadrant(spec));
 }
 
-// WrapCylinderObst's `wrapDirection`, which the reader keeps as dimensions["wrap_direction"]:
-// +1 right-handed (also when absent), -1 left-handed.
+// An obstacle's wrap direction, which the reader keeps as dimensions[key]: +1 right-handed
+// (also when absent), -1 left-handed. WrapCylinderObst's key is "wrap_direction",
+// WrapDoubleCylinderObst's "wrap_ucyl_direction" and "wrap_vcyl_direction".
+bool RightHanded(const model::WrapObjectSpec& spec, const std::string& key) {
+  const auto found = spec.dimensions.find(key);
+  if (found == spec.dimensions.end() || found->second == std::vector<double>{1.0}) return true;
+  if (found->second == std::vector<double>{-1.0}) return false;
+  Fail(spec, key + " must be +1 (righthand) or -1 (lefthand)");
+}
+
 WrapCylinderObst::Direction WrapDirection(const model::WrapObjectSpec& spec) {
-  const auto found = spec.dimensions.find("wrap_direction");
-  if (found == spec.dimensions.end() || found->second == std::vector<double>{1.0}) {
-    return WrapCylinderObst::Direction::kRightHand;
-  }
-  if (found->second == std::vector<double>{-1.0}) return WrapCylinderObst::Direction::kLeftHand;
-  Fail(spec, "wrap_direction must be +1 (righthand) or -1 (lefthand)");
+  return RightHanded(spec, "wrap_direction") ? WrapCylinderObst::Direction::kRightHand
+                                             : WrapCylinderObst::Direction::kLeftHand;
 }
 
 // An obstacle's length plays no part in its wrap, but OpenSim refuses one that is not positive.
@@ -117,6 +122,20 @@ const std::map<std::string, Builder>& Registry() {
          CheckObstacleLength(spec, 1.0);
          return std::make_unique<WrapCylinderObst>(PositiveLength(spec, "radius", 1.0),
                                                    WrapDirection(spec));
+       }},
+      {"WrapDoubleCylinderObst",
+       [](const model::WrapObjectSpec& spec) -> std::unique_ptr<WrapSurface> {
+         using Direction = WrapDoubleCylinderObst::Direction;
+         const auto direction = [&](const std::string& key) {
+           return RightHanded(spec, key) ? Direction::kRightHand : Direction::kLeftHand;
+         };
+         if (spec.second_body == model::kNone) {
+           Fail(spec, "has no body for its V cylinder (wrapVcylHomeBodyName)");
+         }
+         CheckObstacleLength(spec, 1.0);
+         return std::make_unique<WrapDoubleCylinderObst>(
+             PositiveLength(spec, "radiusUcyl", 1.0), direction("wrap_ucyl_direction"),
+             PositiveLength(spec, "radiusVcyl", 1.0), direction("wrap_vcyl_direction"));
        }},
       {"WrapSphereObst",
        [](const model::WrapObjectSpec& spec) -> std::unique_ptr<WrapSurface> {
