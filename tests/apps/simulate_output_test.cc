@@ -58,7 +58,10 @@ TEST_F(SimulateOutputTest, InterruptKeepsTheRowsComputedSoFar) {
   const std::string swing = " --initial-states " + kResources + "SinglePin_InitialStates.sto";
   for (const std::string& start : {swing, std::string()}) {
     std::filesystem::remove_all(Path("out"));
-    const std::string command = "timeout --preserve-status -s INT 3 " +
+    // --foreground: otherwise timeout also signals its own process group, so the CLI gets
+    // SIGINT twice, and the second one (its handler resets, so that a second Ctrl-C kills) can
+    // kill it before it has written its partial tables: the test failed now and then so.
+    const std::string command = "timeout --foreground --preserve-status -s INT 3 " +
                                 std::string(SINEW_CLI_PATH) + " simulate " + kSinglePin + start +
                                 " --duration 4e7 --report-interval 0.5 --quiet --out " +
                                 Path("out") + " 2>" + Path("err.txt");
