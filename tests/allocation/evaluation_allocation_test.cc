@@ -5,6 +5,7 @@
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/dynamics.h>
 #include <sinew/engine/integrator.h>
+#include <sinew/engine/kkt.h>
 #include <sinew/engine/nsc_integrator.h>
 #include <sinew/engine/system.h>
 #include <sinew/io/osim_reader.h>
@@ -24,6 +25,7 @@
 #include <memory>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "contact/contact_models.h"
 #include "contact/skeleton_drop.h"
@@ -115,6 +117,24 @@ TEST(EvaluationAllocationTest, ChainWithCouplersEvaluatesWithoutHeapUse) {
   const System system = testing::MakeChain(20, JointForm::kParameterized, 3);
   const State state = MakeDefaultState(system);
   EXPECT_EQ(AllocationsPerEvaluations(system, state, 10), 0);
+}
+
+TEST(EvaluationAllocationTest, UnitLoadResponsesThroughCouplersWithoutHeapUse) {
+  // NSC contact's Delassus blocks: the tree-path responses and the Schur complement's
+  // correction for the levers reuse their buffers.
+  const System system = testing::MakeChain(20, JointForm::kParameterized, 3);
+  KktSolver kkt(system);
+  kkt.Factorize(MakeDefaultState(system));
+  ASSERT_EQ(kkt.num_extra_equations(), 3);
+  const std::vector<int> targets = {2, 11, 20, 5};
+  MatX out(6 * targets.size(), 6);
+  ASSERT_TRUE(kkt.SolveUnitLoadResponses(4, targets, out));  // sizes the buffers
+  g_allocations = 0;
+  g_mallocs = 0;
+  g_counting = true;
+  for (int source : {4, 11, 20, 1}) kkt.SolveUnitLoadResponses(source, targets, out);
+  g_counting = false;
+  EXPECT_EQ(g_allocations.load() + g_mallocs.load(), 0);
 }
 
 // arm26: six Thelen2003Muscles on paths wrapped by 7 PathWraps over 2 cylinders and 2

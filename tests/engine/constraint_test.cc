@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "engine/test_models.h"
+#include "engine/unit_load_responses.h"
 
 namespace sinew::engine {
 namespace {
@@ -157,6 +158,37 @@ TEST(AddConstraintTest, RedundantCouplerIsSolvable) {
   EXPECT_NEAR(a2.lambda[k2.EquationRow(2)], a2.lambda[k2.EquationRow(3)], 1e-9 * kM1 * kG);
   EXPECT_NEAR(a2.lambda[k2.EquationRow(2)] + a2.lambda[k2.EquationRow(3)],
               a1.lambda[k1.EquationRow(2)], 1e-9 * kM1 * kG);
+}
+
+TEST(AddConstraintTest, UnitLoadResponsesThroughCouplersEqualFullSolves) {
+  // The twist responses NSC contact reads (KktSolver::SolveUnitLoadResponses: tree paths plus
+  // the Schur correction) against six full solves per loaded body, to rounding: through the
+  // levers of the coupled chain, and through the redundant lever pair, whose singular Schur
+  // complement goes by its pseudo-inverse (and whose responses are the single lever's).
+  const auto chain = MakeCoupledChain();
+  State state = MakeDefaultState(*chain);
+  PlaceBodies(*chain, state);
+  KktSolver kkt(*chain);
+  kkt.Factorize(state);
+  ASSERT_EQ(kkt.num_extra_equations(), 2);
+  std::vector<int> bodies;
+  for (int b = 1; b < chain->num_bodies(); ++b) bodies.push_back(b);
+  for (int source : bodies) {
+    EXPECT_LT(testing::UnitLoadResponseError(kkt, source, bodies), 1e-12) << source;
+  }
+  const auto twice = MakeLever(2);
+  const auto once = MakeLever();
+  KktSolver k2(*twice), k1(*once);
+  k2.Factorize(MakeDefaultState(*twice));
+  k1.Factorize(MakeDefaultState(*once));
+  const std::vector<int> both = {1, 2};
+  MatX r2(12, 6), r1(12, 6);
+  for (int source : both) {
+    EXPECT_LT(testing::UnitLoadResponseError(k2, source, both), 1e-12) << source;
+    ASSERT_TRUE(k2.SolveUnitLoadResponses(source, both, r2));
+    ASSERT_TRUE(k1.SolveUnitLoadResponses(source, both, r1));
+    EXPECT_LT((r2 - r1).lpNorm<Eigen::Infinity>(), 1e-12 * r1.lpNorm<Eigen::Infinity>()) << source;
+  }
 }
 
 TEST(AddConstraintTest, OnlyBeforeFinalize) {

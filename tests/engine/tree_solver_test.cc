@@ -14,6 +14,7 @@
 
 #include "engine/chain_model.h"
 #include "engine/test_models.h"
+#include "engine/unit_load_responses.h"
 
 namespace sinew::engine {
 namespace {
@@ -136,6 +137,25 @@ TEST(TreeSolverTest, ReusedFactorizationGivesTheSameAccelerations) {
   EXPECT_FALSE(data.kkt.IsFactorizedAt(state));
 }
 
+TEST(TreeSolverTest, UnitLoadResponsesOnEveryJointTreeEqualFullSolves) {
+  // Every node kind, the massless cross, the reversed tail and the coupler across the branches
+  // (one Schur row): every body loaded, every body read (1e-12 relative, rounding).
+  const auto system = MakeEveryJointTree();
+  State state = MakeDefaultState(*system);
+  PlaceBodies(*system, state);
+  std::vector<int> bodies;
+  for (int b = system->num_bodies() - 1; b > 0; --b) bodies.push_back(b);
+  for (const auto method : {KktSolver::Method::kTree, KktSolver::Method::kTreeGenericNodes}) {
+    KktSolver kkt(*system, method);
+    kkt.Factorize(state);
+    ASSERT_EQ(kkt.num_extra_equations(), 1);
+    for (int source : bodies) {
+      EXPECT_LT(testing::UnitLoadResponseError(kkt, source, bodies), 1e-12)
+          << static_cast<int>(method) << " " << system->bodies()[source].name;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace sinew::engine
 
@@ -143,35 +163,41 @@ namespace sinew::engine::testing {
 namespace {
 
 // The twist responses to unit loads that NSC contact needs (only the tree paths between the
-// bodies and ground visited) equal the corresponding entries of full solves.
+// bodies and ground visited, plus the Schur complement's correction for constraints outside
+// the tree) equal the corresponding entries of full solves, to rounding (1e-12 relative: both
+// are the same exact elimination, summed in another order).
 TEST(TreeSolverTest, UnitLoadResponsesEqualFullSolves) {
   const System system = MakeChain(12, JointForm::kParameterized);
-  State state = MakeDefaultState(system);
   KktSolver kkt(system);
-  kkt.Factorize(state);
-  const std::vector<int> targets = {1, 6, 12, 3};
-  MatX responses(6 * targets.size(), 6);
-  ASSERT_TRUE(kkt.SolveUnitLoadResponses(6, targets, responses));
-  VecX rhs = VecX::Zero(kkt.num_velocities() + kkt.num_equations()), x;
-  double largest = 0.0, error = 0.0;
-  for (int j = 0; j < 6; ++j) {
-    rhs.setZero();
-    rhs[kkt.BodyColumn(6) + j] = 1.0;
-    kkt.Solve(rhs, x);
-    for (size_t t = 0; t < targets.size(); ++t) {
-      const VecX expected = x.segment<6>(kkt.BodyColumn(targets[t]));
-      largest = std::max(largest, expected.lpNorm<Eigen::Infinity>());
-      error =
-          std::max(error, (responses.block<6, 1>(6 * t, j) - expected).lpNorm<Eigen::Infinity>());
+  kkt.Factorize(MakeDefaultState(system));
+  ASSERT_EQ(kkt.num_extra_equations(), 0);
+  EXPECT_LT(UnitLoadResponseError(kkt, 6, {1, 6, 12, 3}), 1e-12);
+}
+
+TEST(TreeSolverTest, UnitLoadResponsesWithCouplersEqualFullSolves) {
+  // Three levers q[i] = 0.5 q[i + 10] (i = 0, 3, 6): Schur complement rows that couple bodies
+  // on separate paths; sources on and off the coupled joints, targets on the source's path,
+  // beyond it, repeated and the source itself.
+  const System system = MakeChain(20, JointForm::kParameterized, 3);
+  State state = MakeDefaultState(system);
+  for (int c = 0; c < system.num_coordinates(); ++c) state.q[c] = 0.3 * std::sin(c + 1.0);
+  PlaceBodies(system, state);
+  for (const auto method : {KktSolver::Method::kTree, KktSolver::Method::kTreeGenericNodes}) {
+    KktSolver kkt(system, method);
+    kkt.Factorize(state);
+    ASSERT_EQ(kkt.num_extra_equations(), 3);
+    const std::vector<std::pair<int, std::vector<int>>> cases = {
+        {1, {1}}, {4, {1, 4, 11, 20}}, {11, {20, 11, 2, 2, 17}}, {20, {7, 14, 1, 20}}};
+    for (const auto& [source, targets] : cases) {
+      EXPECT_LT(UnitLoadResponseError(kkt, source, targets), 1e-12)
+          << static_cast<int>(method) << " " << source;
     }
   }
-  EXPECT_GT(largest, 0.0);
-  EXPECT_LT(error, 1e-12 * largest);
-  // With a constraint outside the tree the paths are not enough: refused.
-  const System coupled = MakeChain(12, JointForm::kParameterized, 2);
-  KktSolver coupled_kkt(coupled);
-  coupled_kkt.Factorize(MakeDefaultState(coupled));
-  EXPECT_FALSE(coupled_kkt.SolveUnitLoadResponses(6, targets, responses));
+  // The dense method keeps no tree: refused.
+  KktSolver dense(system, KktSolver::Method::kDense);
+  dense.Factorize(state);
+  MatX responses(6, 6);
+  EXPECT_FALSE(dense.SolveUnitLoadResponses(4, {4}, responses));
 }
 
 }  // namespace

@@ -224,6 +224,22 @@ void KktSolver::Solve(const VecX& rhs, VecX& x) const {
   CheckSolution(rhs, x);
 }
 
+bool KktSolver::SolveUnitLoadResponses(int source, const std::vector<int>& targets,
+                                       Eigen::Ref<MatX> out) const {
+  if (!tree_) return false;
+  tree_->SolveUnitLoadResponses(source, targets, out);
+  if (ne_ == 0) return true;
+  // The Schur complement's correction x -= Y mu with mu = S^-1 (G y0), where G y0 for the unit
+  // loads is Y_s^T (the source's rows of Y): out_t -= Y_t S^-1 Y_s^T.
+  unit_mu_.resize(ne_, 6);
+  unit_mu_.noalias() = schur_inverse_ * Y_.middleRows<6>(BodyColumn(source)).transpose();
+  for (size_t t = 0; t < targets.size(); ++t) {
+    out.block<6, 6>(6 * static_cast<Eigen::Index>(t), 0).noalias() -=
+        Y_.middleRows<6>(BodyColumn(targets[t])) * unit_mu_;
+  }
+  return true;
+}
+
 void KktSolver::CheckSolution(const VecX& rhs, const VecX& x) const {
   // The tree elimination is exact once every pivot block passed its conditioning test in
   // Factorize, and so is a full-rank Schur complement: their solutions need no residual (an

@@ -79,16 +79,19 @@ class KktSolver {
   int num_direct_nodes() const { return tree_ ? tree_->num_direct_nodes() : 0; }
 
   /// The twist responses of bodies `targets` to unit loads on body `source`'s six twist
-  /// columns (TreeKktSolver::SolveUnitLoadResponses: only the tree paths between the bodies
-  /// and ground are visited), into `out` (6 rows per target, 6 columns). Returns false, doing
-  /// nothing, when the system has constraints outside the tree (the Schur complement couples
-  /// everything) or the method is kDense: then use Solve.
+  /// columns (zero constraint right-hand side), into `out` (6 rows per target, 6 columns):
+  /// block t is the part of Solve([e_j; 0]) at target t's twist, for j over source's six
+  /// columns. The tree part visits only the tree paths between the bodies and ground
+  /// (TreeKktSolver::SolveUnitLoadResponses); constraints outside the tree add the Schur
+  /// complement's correction from the Y = K_T^-1 G^T and S^-1 that Factorize keeps:
+  ///   out_t -= Y_t S^-1 Y_s^T
+  /// (Y_t, Y_s: Y's rows at the target's and the source's twist; G K_T^-1 e_j = Y_s^T e_j as
+  /// K_T is symmetric), no further tree solve. A rank-deficient S goes by its pseudo-inverse,
+  /// exact here as unit loads are always consistent with the constraints (unlike Solve, no
+  /// residual is checked). No heap use once warm. Returns false, doing nothing, for the kDense
+  /// method: then use Solve. Bodies must not be ground.
   bool SolveUnitLoadResponses(int source, const std::vector<int>& targets,
-                              Eigen::Ref<MatX> out) const {
-    if (!tree_ || ne_ > 0) return false;
-    tree_->SolveUnitLoadResponses(source, targets, out);
-    return true;
-  }
+                              Eigen::Ref<MatX> out) const;
 
   /// M * x (x has nv entries) with the M of the last Factorize.
   VecX MultiplyMass(const VecX& x) const;
@@ -139,6 +142,8 @@ class KktSolver {
   long num_factorizations_ = 0;
   // Buffers of Solve, so that it allocates nothing.
   mutable VecX tree_rhs_, y_, g_, mu_, residual_;
+  // Buffer of SolveUnitLoadResponses: S^-1 Y_s^T (ne x 6).
+  mutable Eigen::Matrix<double, Eigen::Dynamic, 6> unit_mu_;
   // Dense method.
   Eigen::FullPivLU<MatX> dense_;
 };

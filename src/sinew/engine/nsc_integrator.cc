@@ -215,7 +215,8 @@ void NscIntegrator::SolveBodyBlocks() {
   for (Eigen::Index source = 0; source < nb; ++source) {
     auto X_source = X_.block(0, 6 * source, 6 * nb, 6);
     if (kkt_.SolveUnitLoadResponses(bodies_[source], bodies_, X_source)) continue;
-    // Constraints outside the tree: six full solves, keeping the rows of the bodies in contact.
+    // The dense method (cross-checks only): six full solves, keeping the rows of the bodies in
+    // contact.
     const int nv = kkt_.num_velocities();
     rhs_.setZero(nv + kkt_.num_equations());
     const int col = kkt_.BodyColumn(bodies_[source]);

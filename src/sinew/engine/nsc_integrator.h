@@ -10,8 +10,9 @@
 //  3. The Delassus operator W = D A^-1 D^T, where A^-1 is the inverse mass *constrained by the
 //     joints*: its 6x6 blocks between the bodies in contact, from the KKT system factorized at
 //     x with unit loads on each body in contact (KktSolver::SolveUnitLoadResponses: only the
-//     tree paths from those bodies to ground are visited; with model constraints outside the
-//     tree, six full solves per body).
+//     tree paths from those bodies to ground are visited; model constraints outside the tree
+//     add a small Schur-complement correction per pair of bodies, from products the
+//     factorization keeps, no further solve).
 //  4. The impulses gamma by SolveContactImpulses (Coulomb's law, circular cone, Gauss-Seidel or
 //     APGD, warm-started from the previous step's impulses of the same contacts), with the normal
 //     target speed per contact (gap g = -depth)
