@@ -91,6 +91,15 @@ class ArticulatedPivot {
                           Eigen::MatrixBase<WMatrix>& W, Eigen::Matrix<double, 6, 6>& CtW) const;
   template <int NU, typename Rhs>
   void SolveInPlaceFixed(Eigen::MatrixBase<Rhs>& x) const;
+  // Y^T = A^T M_A S = [-(M_A S)_1 + K^T (M_A S)_2; -(M_A S)_2] (6 x nu) into `Yt`.
+  template <typename MSMatrix, typename YMatrix>
+  static void ShiftedInertiaColumns(const Mat3& K, const MSMatrix& MS, YMatrix& Yt);
+  // What both forms of SolveCoupling share once the speeds' block Z_u of the small system's
+  // solution is known: C^T W, and W's twist, speed and joint rows.
+  template <typename SMatrix, typename YMatrix, typename ZMatrix, typename WMatrix>
+  void FinishCoupling(const SMatrix& S, const SMatrix& MS, const YMatrix& Yt, const ZMatrix& Zu,
+                      const Mat3& K, const Eigen::Matrix<double, 6, 6>& MA,
+                      Eigen::MatrixBase<WMatrix>& W, Eigen::Matrix<double, 6, 6>& CtW) const;
 };
 
 template <typename Y>
@@ -131,37 +140,14 @@ void ArticulatedPivot::SolveCoupling(const Eigen::Matrix<double, 6, 6>& J_P,
     default:
       break;
   }
-  // Y^T = A^T M_A S = [-(M_A S)_1 + K^T (M_A S)_2; -(M_A S)_2] (6 x nu), and Z_u's
-  // right-hand side is -Y.
+  // Z_u's right-hand side is -Y (ShiftedInertiaColumns).
   Six Yt(6, nu_);
-  Yt.template topRows<3>() = K.transpose().lazyProduct(MS_.template bottomRows<3>());
-  Yt.template topRows<3>() -= MS_.template topRows<3>();
-  Yt.template bottomRows<3>() = -MS_.template bottomRows<3>();
+  ShiftedInertiaColumns(K, MS_, Yt);
   SmallRhs Z(nu_ + nc_, 6);
   Z.topRows(nu_) = -Yt.transpose();
   Z.bottomRows(nc_).setZero();
   SolveSmallInPlace(Z);
-  const auto Zu = Z.topRows(nu_);
-  // C^T W = -(A^T M_A A + Y^T Z_u).
-  CtW.template topRows<3>() = MA.template topRows<3>();
-  CtW.template topRows<3>().noalias() -= K.transpose().lazyProduct(MA.template bottomRows<3>());
-  CtW.template bottomRows<3>() = MA.template bottomRows<3>();
-  CtW.noalias() -= Yt.lazyProduct(Zu);
-  // W's twist rows A + S Z_u, its joint rows J_B^-T (-M_A A - M_A S Z_u).
-  W.template topRows<6>().noalias() = S_.lazyProduct(Zu);
-  W.template topLeftCorner<3, 3>() -= Mat3::Identity();
-  W.template block<3, 3>(3, 0) += K;
-  W.template block<3, 3>(3, 3) -= Mat3::Identity();
-  W.middleRows(6, nu_) = Zu;
-  Mat6 r = -MA;
-  r.noalias() -= MS_.lazyProduct(Zu);
-  auto lambda = W.template middleRows<6>(6 + nu_);
-  lambda.template topRows<3>().noalias() =
-      Jinv_.topLeftCorner<3, 3>().transpose().lazyProduct(r.template topRows<3>());
-  lambda.template topRows<3>().noalias() +=
-      Jinv_.bottomLeftCorner<3, 3>().transpose().lazyProduct(r.template bottomRows<3>());
-  lambda.template bottomRows<3>().noalias() =
-      Jinv_.bottomRightCorner<3, 3>().transpose().lazyProduct(r.template bottomRows<3>());
+  FinishCoupling(S_, MS_, Yt, Z.topRows(nu_), K, MA, W, CtW);
   W.bottomRows(nc_) = Z.bottomRows(nc_);
 }
 
@@ -173,23 +159,40 @@ void ArticulatedPivot::SolveCouplingFixed(const Mat3& K, const Eigen::Matrix<dou
   const auto S = S_.template leftCols<NU>();
   const auto MS = MS_.template leftCols<NU>();
   Eigen::Matrix<double, 6, NU> Yt;
+  ShiftedInertiaColumns(K, MS, Yt);
+  const Eigen::Matrix<double, NU, 6, NU == 1 ? Eigen::RowMajor : 0> Zu =
+      -Dinv_.template topLeftCorner<NU, NU>().lazyProduct(Yt.transpose());
+  FinishCoupling(S, MS, Yt, Zu, K, MA, W, CtW);
+}
+
+template <typename MSMatrix, typename YMatrix>
+void ArticulatedPivot::ShiftedInertiaColumns(const Mat3& K, const MSMatrix& MS, YMatrix& Yt) {
   Yt.template topRows<3>() = K.transpose().lazyProduct(MS.template bottomRows<3>());
   Yt.template topRows<3>() -= MS.template topRows<3>();
   Yt.template bottomRows<3>() = -MS.template bottomRows<3>();
-  const Eigen::Matrix<double, NU, 6, NU == 1 ? Eigen::RowMajor : 0> Zu =
-      -Dinv_.template topLeftCorner<NU, NU>().lazyProduct(Yt.transpose());
+}
+
+template <typename SMatrix, typename YMatrix, typename ZMatrix, typename WMatrix>
+void ArticulatedPivot::FinishCoupling(const SMatrix& S, const SMatrix& MS, const YMatrix& Yt,
+                                      const ZMatrix& Zu, const Mat3& K,
+                                      const Eigen::Matrix<double, 6, 6>& MA,
+                                      Eigen::MatrixBase<WMatrix>& W,
+                                      Eigen::Matrix<double, 6, 6>& CtW) const {
+  const int nu = static_cast<int>(Zu.rows());
+  // C^T W = -(A^T M_A A + Y^T Z_u).
   CtW.template topRows<3>() = MA.template topRows<3>();
   CtW.template topRows<3>().noalias() -= K.transpose().lazyProduct(MA.template bottomRows<3>());
   CtW.template bottomRows<3>() = MA.template bottomRows<3>();
   CtW.noalias() -= Yt.lazyProduct(Zu);
+  // W's twist rows A + S Z_u, its joint rows J_B^-T (-M_A A - M_A S Z_u).
   W.template topRows<6>().noalias() = S.lazyProduct(Zu);
   W.template topLeftCorner<3, 3>() -= Mat3::Identity();
   W.template block<3, 3>(3, 0) += K;
   W.template block<3, 3>(3, 3) -= Mat3::Identity();
-  W.template middleRows<NU>(6) = Zu;
+  W.template middleRows<ZMatrix::RowsAtCompileTime>(6, nu) = Zu;
   Eigen::Matrix<double, 6, 6> r = -MA;
   r.noalias() -= MS.lazyProduct(Zu);
-  auto lambda = W.template middleRows<6>(6 + NU);
+  auto lambda = W.template middleRows<6>(6 + nu);
   lambda.template topRows<3>().noalias() =
       Jinv_.topLeftCorner<3, 3>().transpose().lazyProduct(r.template topRows<3>());
   lambda.template topRows<3>().noalias() +=
