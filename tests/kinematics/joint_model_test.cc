@@ -1,6 +1,7 @@
 // Every joint type: X_FM against hand-derived values, and H_FM, N(q) and Hdot*u against
 // central finite differences of X_FM along the motion qdot = N(q) u.
 #include <gtest/gtest.h>
+#include <sinew/functions/linear_function.h>
 #include <sinew/kinematics/joint_model.h>
 #include <sinew/math/rotation.h>
 
@@ -92,6 +93,23 @@ model::ModelSpec MakeCustomCoordinateAxesSpec() {
   return spec;
 }
 
+// MakeCustomSpec with its linear axes (and an affine rotation) given as the library's
+// LinearFunction, which CustomJointModel evaluates inline instead of through the function; with
+// `through_function`, the same axes as a test function of the same values, evaluated through it.
+model::ModelSpec MakeCustomLinearSpec(bool through_function) {
+  model::ModelSpec spec = MakeCustomSpec();
+  auto& st = spec.joints[0].spatial_transform;
+  const auto linear = [&](double slope, double intercept) -> functions::FunctionPtr {
+    if (through_function) return std::make_shared<TestLinearFunction>(slope, intercept);
+    return std::make_shared<functions::LinearFunction>(slope, intercept);
+  };
+  st[2].function = linear(0.8, 0.1);
+  st[5].function = linear(-1.5, 0.02);
+  st[4].coordinates = {0};
+  st[4].function = linear(1.0, 0.0);
+  return spec;
+}
+
 struct JointCase {
   std::string name;
   model::ModelSpec spec;
@@ -117,6 +135,7 @@ std::vector<JointCase> AllJointCases() {
   cases.push_back(scap);
   cases.push_back({"Custom", MakeCustomSpec()});
   cases.push_back({"CustomCoordinateAxes", MakeCustomCoordinateAxesSpec()});
+  cases.push_back({"CustomLinearFunctions", MakeCustomLinearSpec(false)});
   return cases;
 }
 
@@ -352,6 +371,22 @@ TEST(JointTransformTest, CustomJointOnCoordinateAxesComposesElementaryRotations)
   const Transform X = joint->CalcX_FM(q);
   EXPECT_TRUE(X.R.isApprox(Ry * Rz * Rx, 1e-14));
   EXPECT_TRUE(X.p.isApprox(p, 1e-14));
+}
+
+TEST(JointTransformTest, LinearFunctionsInlineEqualTheFunctionsTheyReplace) {
+  // The library's LinearFunction axes are evaluated inline (slope q + intercept); the same
+  // values through a test function take the general path. Both must agree to rounding.
+  const auto inline_joint = kinematics::MakeJointModel(MakeCustomLinearSpec(false), 0);
+  const auto general_joint = kinematics::MakeJointModel(MakeCustomLinearSpec(true), 0);
+  for (int trial = 0; trial < 4; ++trial) {
+    const std::vector<double> q = Sample(3, 0.9, 0.2 + trial);
+    const std::vector<double> u = Sample(3, 1.3, 1.1 + trial);
+    const Transform X = inline_joint->CalcX_FM(q), X_ref = general_joint->CalcX_FM(q);
+    EXPECT_LT((X.R - X_ref.R).norm(), 1e-15);
+    EXPECT_LT((X.p - X_ref.p).norm(), 1e-15);
+    EXPECT_LT((inline_joint->CalcH_FM(q) - general_joint->CalcH_FM(q)).norm(), 1e-15);
+    EXPECT_LT((inline_joint->CalcHDotU(q, u) - general_joint->CalcHDotU(q, u)).norm(), 1e-14);
+  }
 }
 
 TEST(JointTransformTest, LinearFunctionWithoutCoordinatesGivesItsSlopeAsOpenSimDoes) {

@@ -24,8 +24,13 @@ bool ArticulatedPivot::Factorize(const Block& K, int nu) {
   const int rows = 6 + nu;  // first joint row
   const Eigen::Matrix<double, 6, 6> J_B = K.block<6, 6>(rows, 0);
   Mat3 A_inv, C_inv;
-  if (!J_B.topRightCorner<3, 3>().isZero(0.0) || !Invert3(J_B.topLeftCorner<3, 3>(), A_inv) ||
-      !Invert3(J_B.bottomRightCorner<3, 3>(), C_inv)) {
+  if (!J_B.topRightCorner<3, 3>().isZero(0.0) || !Invert3(J_B.topLeftCorner<3, 3>(), A_inv)) {
+    return false;
+  }
+  // A parameterized joint's two diagonal blocks are the same R^T: one inverse serves both.
+  if (J_B.bottomRightCorner<3, 3>() == J_B.topLeftCorner<3, 3>()) {
+    C_inv = A_inv;
+  } else if (!Invert3(J_B.bottomRightCorner<3, 3>(), C_inv)) {
     return false;
   }
   Jinv_.topLeftCorner<3, 3>() = A_inv;

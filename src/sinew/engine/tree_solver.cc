@@ -118,6 +118,16 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
       const Placement& placement = node.placements[i];
       const int rows = static_cast<int>(J.rows());
       for (const ColumnRun& run : placement.runs) {
+        if (rows == 6 && run.width == 6) {
+          // A joint's six rows on a whole twist (the common run), with fixed sizes.
+          const auto block = J.middleCols<6>(run.jac_col);
+          if (run.col >= 0) {
+            node.K.block<6, 6>(placement.first_row, run.col) = block;
+          } else {
+            node.C.block<6, 6>(placement.first_row, -1 - run.col) = block;
+          }
+          continue;
+        }
         const auto block = J.middleCols(run.jac_col, run.width);
         if (run.col >= 0) {
           // The lower triangle only: the pivots read no more, and the LU fills the upper
@@ -228,8 +238,14 @@ void TreeKktSolver::Solve(const VecX& rhs, VecX& x) const {
     SolveNode(nodes_[k], r[k]);
     if (nodes_[k].parent >= 0) {
       const int rows = NumConstraintRows(nodes_[k]);
-      r[nodes_[k].parent].head<6>().noalias() -=
-          nodes_[k].C.bottomRows(rows).transpose().lazyProduct(r[k].tail(rows));
+      auto parent_rows = r[nodes_[k].parent].head<6>();
+      if (rows == 6) {  // a joint's six rows alone (the common node), with fixed sizes
+        parent_rows.noalias() -=
+            nodes_[k].C.bottomRows<6>().transpose().lazyProduct(r[k].tail<6>());
+      } else {
+        parent_rows.noalias() -=
+            nodes_[k].C.bottomRows(rows).transpose().lazyProduct(r[k].tail(rows));
+      }
     }
   }
   // Backward: x_k = z_k - W_k x_parent.

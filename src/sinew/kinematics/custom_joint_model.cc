@@ -1,4 +1,5 @@
 #include <sinew/common/error.h>
+#include <sinew/functions/linear_function.h>
 #include <sinew/kinematics/custom_joint_model.h>
 
 #include <cmath>
@@ -29,6 +30,20 @@ CustomJointModel::CustomJointModel(std::array<TransformAxisTerm, 6> axes, int nq
         !a.function) {
       throw Error("CustomJointModel: axis without function");
     }
+    // Most CustomJoints map coordinates through LinearFunctions (OpenSim's default for a
+    // TransformAxis): evaluate those inline, slope q + intercept as LinearFunction does.
+    const auto* linear = a.kind == TransformAxisTerm::Kind::kFunction1
+                             ? dynamic_cast<const functions::LinearFunction*>(a.function.get())
+                             : nullptr;
+    if (linear && linear->slope() == 1.0 && linear->intercept() == 0.0) {
+      a.kind = TransformAxisTerm::Kind::kIdentity;
+    } else if (linear) {
+      a.kind = TransformAxisTerm::Kind::kAffine;
+      a.slope = linear->slope();
+      a.value = linear->intercept();
+    }
+    has_curved_axes_ = has_curved_axes_ || a.kind == TransformAxisTerm::Kind::kFunction1 ||
+                       a.kind == TransformAxisTerm::Kind::kFunctionN;
   }
   for (int i = 0; i < 3; ++i) {
     const TransformAxisTerm& a = axes_[i];
@@ -95,6 +110,8 @@ double CustomJointModel::CalcAxisValue(int i, std::span<const double> q) const {
       return a.value;
     case TransformAxisTerm::Kind::kIdentity:
       return q[a.args[0]];
+    case TransformAxisTerm::Kind::kAffine:
+      return a.slope * q[a.args[0]] + a.value;
     case TransformAxisTerm::Kind::kFunction1:
       return a.function->Calc(q[a.args[0]]);
     case TransformAxisTerm::Kind::kFunctionN: {
@@ -116,6 +133,9 @@ void CustomJointModel::CalcJ(std::span<const double> q, double (*J)[6]) const {
         break;
       case TransformAxisTerm::Kind::kIdentity:
         J[i][a.args[0]] = 1.0;
+        break;
+      case TransformAxisTerm::Kind::kAffine:
+        J[i][a.args[0]] = a.slope;
         break;
       case TransformAxisTerm::Kind::kFunction1:
         J[i][a.args[0]] = a.function->CalcDerivative(q[a.args[0]], 1);
@@ -140,6 +160,7 @@ double CustomJointModel::CalcSecondTerm(int i, std::span<const double> q,
   switch (a.kind) {
     case TransformAxisTerm::Kind::kConstant:
     case TransformAxisTerm::Kind::kIdentity:
+    case TransformAxisTerm::Kind::kAffine:
       return 0.0;
     case TransformAxisTerm::Kind::kFunction1: {
       const double uk = u[a.args[0]];
@@ -250,7 +271,7 @@ SpatialVec CustomJointModel::CalcHDotU(std::span<const double> q, std::span<cons
   const Vec3 w12 = w1 + sdot[1] * e[1];
   Vec3 a_w = sdot[1] * w1.cross(e[1]) + sdot[2] * w12.cross(e[2]);
   Vec3 a_v = Vec3::Zero();
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < 3 && has_curved_axes_; ++i) {
     a_w += CalcSecondTerm(i, q, u) * e[i];
     a_v += CalcSecondTerm(i + 3, q, u) * axes_[i + 3].axis;
   }

@@ -11,13 +11,16 @@ namespace sinew::kinematics {
 
 /// One of the six axes of a CustomJoint: s = f(q[args...]) along or about `axis` (unit, in F).
 struct TransformAxisTerm {
-  /// How s is computed: a constant, s = q[arg], a one-argument or a multi-argument function.
-  enum class Kind { kConstant, kIdentity, kFunction1, kFunctionN };
+  /// How s is computed: a constant, s = q[arg], s = slope q[arg] + value, a one-argument or a
+  /// multi-argument function. CustomJointModel turns a kFunction1 whose function is a
+  /// LinearFunction into kIdentity or kAffine (the same values without a virtual call).
+  enum class Kind { kConstant, kIdentity, kAffine, kFunction1, kFunctionN };
   Kind kind = Kind::kConstant;
-  Vec3 axis = Vec3::UnitX();        ///< Unit axis in F.
-  double value = 0.0;               ///< For kConstant.
-  std::vector<int> args;            ///< Joint-local coordinate indices (kIdentity/kFunction1: one).
-  functions::FunctionPtr function;  ///< For kFunction1 / kFunctionN.
+  Vec3 axis = Vec3::UnitX();  ///< Unit axis in F.
+  double value = 0.0;         ///< For kConstant; the intercept for kAffine.
+  double slope = 1.0;         ///< For kAffine.
+  std::vector<int> args;  ///< Joint-local coordinate indices (kIdentity/kAffine/kFunction1: one).
+  functions::FunctionPtr function;  ///< For kFunction1 / kFunctionN (kept for reports otherwise).
 };
 
 /// X_FM(q) = [R(a1,s1) R(a2,s2) R(a3,s3), s4 a4 + s5 a5 + s6 a6] with s_i = f_i(q): rotations
@@ -65,6 +68,9 @@ class CustomJointModel final : public JointModel {
   std::array<int, 3> coordinate_axis_{};
   // Per rotation axis: constant zero (skipped), and cos/sin of a constant angle.
   std::array<bool, 3> rotation_zero_{};
+  // Whether some axis has a second derivative (kFunction1 or kFunctionN); without one the
+  // velocity-product terms have no second-derivative part.
+  bool has_curved_axes_ = false;
   std::array<double, 3> fixed_cos_{}, fixed_sin_{};
 };
 
