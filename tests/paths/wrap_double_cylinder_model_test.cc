@@ -124,6 +124,46 @@ TEST(WrapDoubleCylinderModelTest, LengthIsContinuousAsTheElbowFlexesUntilTheLine
   }
 }
 
+// Drawing: with arc points asked for, each arc a tangent point starts (T1 over U, T3 over V)
+// runs from it to the next tangent point, in ground, and its chords add up to the arc's length
+// within the 5 degree sampling's bound (a^2 / 24 relative, 3.2e-4).
+TEST(WrapDoubleCylinderModelTest, BothArcsAreDrawnBetweenTheirTangentPoints) {
+  const PathModel m(kModel);
+  const int q2 = m.spec.FindCoordinate("q2");
+  for (const char* name : {"ext", "ext_tilted"}) {
+    const int path = m.FindPath(name);
+    ASSERT_GE(path, 0);
+    std::vector<double> q = m.tree.default_q();
+    std::vector<Transform> X_GB(static_cast<size_t>(m.tree.num_bodies()));
+    PathState state;
+    int arcs_checked = 0, poses_with_both = 0;
+    for (int i = 0; i <= 370; ++i) {
+      q[static_cast<size_t>(q2)] = -1.5 + i * 0.01;
+      kinematics::CalcBodyPoses(m.tree, q, X_GB);
+      m.paths.paths()[static_cast<size_t>(path)].CalcState(q, X_GB, state, true);
+      const Over over = WhichCylinders(m, state);
+      poses_with_both += over.u && over.v ? 1 : 0;
+      for (size_t k = 0; k + 1 < state.points.size(); ++k) {
+        const PathPointState& point = state.points[k];
+        if (point.wrap < 0 || point.arc_length_to_next < 0.0) continue;
+        const std::vector<Vec3>& arc =
+            state.arc_G[static_cast<size_t>(PathState::ArcIndex(point.wrap, point.tangent))];
+        ASSERT_GE(arc.size(), 2u) << name << " at q2 = " << q[static_cast<size_t>(q2)];
+        EXPECT_LT((arc.front() - point.p_GP).norm(), 1e-12);
+        EXPECT_LT((arc.back() - state.points[k + 1].p_GP).norm(), 1e-9);
+        double chords = 0.0;
+        for (size_t j = 1; j < arc.size(); ++j) chords += (arc[j] - arc[j - 1]).norm();
+        EXPECT_LE(chords, point.arc_length_to_next * (1 + 1e-12) + 1e-15);
+        EXPECT_GE(chords, point.arc_length_to_next * (1 - 3.2e-4));
+        ++arcs_checked;
+      }
+    }
+    EXPECT_GT(poses_with_both, 0) << name;
+    std::cout << name << ": " << arcs_checked << " arcs checked, " << poses_with_both
+              << " poses over both cylinders\n";
+  }
+}
+
 TEST(WrapDoubleCylinderModelTest, MomentArmsSpeedsAndForcesAreDerivativesOfLength) {
   const PathModel m(kModel);
   // The wrapped path is the shortest over both cylinders (each piece is the unrolled straight

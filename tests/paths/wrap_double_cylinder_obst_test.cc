@@ -192,6 +192,39 @@ TEST(WrapDoubleCylinderObstTest, BothEngagedAtDifferentHeightsIsTheUnrolledLine)
   EXPECT_LT((result.p_WT3 - Vec3(d, -kRadius, rise * (to_u_exit + d) / plane)).norm(), 1e-11);
 }
 
+// The points drawn along both arcs: each arc from its first tangent point to its second, on its
+// cylinder's surface (U's axis is W's z, V's is at x = d), and their chords' sum within the
+// sampling's bound of the arc's length (5 degree steps: a chord is 2 r sin(a / 2), short of the
+// arc r a by at most a^2 / 24 relative, 3.2e-4).
+TEST(WrapDoubleCylinderObstTest, BothArcsAreSampledForDrawing) {
+  const double d = 0.1, a = 0.05, b = 0.01, rise = 0.04;
+  const WrapDoubleCylinderObst obstacle(kRadius, Direction::kRightHand, kRadius,
+                                        Direction::kRightHand);
+  const Vec3 p(-a, -b, 0.0), s(d + a, -b, rise);
+  WrapOptions options = At(Transform::Translation(Vec3(d, 0.0, 0.0)));
+  options.with_arc_points = true;
+  const WrapResult result = obstacle.Wrap(p, s, options);
+  ASSERT_TRUE(result.on_first && result.on_second);
+  const auto check_arc = [&](const std::vector<Vec3>& arc, const Vec3& from, const Vec3& to,
+                             double axis_x, double arc_length) {
+    ASSERT_GE(arc.size(), 2u);
+    EXPECT_LT((arc.front() - from).norm(), 1e-12);
+    EXPECT_LT((arc.back() - to).norm(), 1e-9);
+    double chords = 0.0;
+    for (size_t i = 0; i < arc.size(); ++i) {
+      EXPECT_NEAR(std::hypot(arc[i].x() - axis_x, arc[i].y()), kRadius, 1e-12);
+      if (i > 0) chords += (arc[i] - arc[i - 1]).norm();
+    }
+    EXPECT_LE(chords, arc_length * (1 + 1e-12));
+    EXPECT_GE(chords, arc_length * (1 - 3.2e-4));
+  };
+  check_arc(result.arc_points, result.p_WT1, result.p_WT2, 0.0, result.arc_length);
+  check_arc(result.second_arc_points, result.p_WT3, result.p_WT4, d, result.second_arc_length);
+  // Without the option, nothing is sampled.
+  const WrapResult plain = obstacle.Wrap(p, s, At(Transform::Translation(Vec3(d, 0.0, 0.0))));
+  EXPECT_TRUE(plain.arc_points.empty() && plain.second_arc_points.empty());
+}
+
 // U right-handed, V left-handed: the path goes under U and over V, crossing between them along
 // the inner tangent through the midpoint M = (d / 2, 0), which touches each circle acos(r / m)
 // from the x axis (m = d / 2). P and S are mirror images through M.

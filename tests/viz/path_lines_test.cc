@@ -74,7 +74,8 @@ Expected ExpectedLines(const model::ModelSpec& spec, const io::Storage& table, i
     for (const paths::PathPointState& point : state.points) {
       line.push_back(point.p_GP);
       if (point.wrap >= 0 && point.arc_length_to_next >= 0.0) {
-        const std::vector<Vec3>& arc = state.arc_G[static_cast<size_t>(point.wrap)];
+        const std::vector<Vec3>& arc = state.arc_G[static_cast<size_t>(
+            paths::PathState::ArcIndex(point.wrap, point.tangent))];
         for (size_t j = 1; j + 1 < arc.size(); ++j, ++out.arc_points) line.push_back(arc[j]);
       }
     }

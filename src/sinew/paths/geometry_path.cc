@@ -128,7 +128,7 @@ void GeometryPath::CalcState(std::span<const double> q, std::span<const Transfor
     return;
   }
   state.points.reserve(points_.size() + 4 * wraps_.size());  // room for every tangent point
-  state.arc_G.resize(with_arc_points ? wraps_.size() : 0);
+  state.arc_G.resize(with_arc_points ? 2 * wraps_.size() : 0);
   for (std::vector<Vec3>& arc : state.arc_G) arc.clear();
   for (size_t i = 0; i < points_.size(); ++i) {
     const PathPoint& point = points_[i];
@@ -185,7 +185,7 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
                              PathState& state, WrapOutcome& outcome, TangentPointReads& reads,
                              bool with_arc_points) const {
   RemoveTangentPoints(w, state);
-  if (with_arc_points) state.arc_G[static_cast<size_t>(w)].clear();
+  if (with_arc_points) ClearArcs(w, state);
   outcome = WrapOutcome::kNoWrap;
   const PathWrap& wrap = wraps_[static_cast<size_t>(w)];
   if (!wrap.active || !wrap.surface) return true;
@@ -271,8 +271,10 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
     add(3, best.p_WT4, wrap.second_body, -1.0);
   }
   if (with_arc_points) {
-    std::vector<Vec3>& arc = state.arc_G[static_cast<size_t>(w)];
+    std::vector<Vec3>& arc = state.arc_G[static_cast<size_t>(PathState::ArcIndex(w, 0))];
     for (const Vec3& p_WA : best.arc_points) arc.push_back(X_GW * p_WA);
+    std::vector<Vec3>& second = state.arc_G[static_cast<size_t>(PathState::ArcIndex(w, 2))];
+    for (const Vec3& p_WA : best.second_arc_points) second.push_back(X_GW * p_WA);
   }
   state.points.insert(state.points.begin() + best_segment + 1, tangents.begin(),
                       tangents.begin() + count);
@@ -314,6 +316,11 @@ Vec3 TangentPointReads::CurrentLocation(const PathPointState& point) const {
   if (point.wrap < 0) return point.p_GP;
   const size_t which = static_cast<size_t>(point.tangent);
   return p_GP_current[static_cast<size_t>(point.wrap)][which];
+}
+
+void GeometryPath::ClearArcs(int w, PathState& state) {
+  state.arc_G[static_cast<size_t>(PathState::ArcIndex(w, 0))].clear();
+  state.arc_G[static_cast<size_t>(PathState::ArcIndex(w, 2))].clear();
 }
 
 void GeometryPath::RemoveTangentPoints(int w, PathState& state) {
@@ -364,7 +371,7 @@ void GeometryPath::ApplyWraps(std::span<const double> q, std::span<const Transfo
         outcomes[1] == WrapOutcome::kPointInside) {
       std::swap(order[0], order[1]);
       RemoveTangentPoints(0, state);
-      if (with_arc_points) state.arc_G[0].clear();
+      if (with_arc_points) ClearArcs(0, state);
     }
   }
 }

@@ -97,10 +97,15 @@ struct PathState {
   /// Per segment: its length (m); the arc length for a segment over a wrap surface.
   std::vector<double> segment_length;
   double length = 0.0;  ///< Sum of segment lengths (m).
-  /// Filled only when CalcState is asked for arc points: per wrap (index into
-  /// GeometryPath::wraps()), the points along its arc over the surface from T1 to T2 inclusive,
-  /// in ground (m), for drawing; empty for a wrap that does not wrap at this pose.
+  /// Filled only when CalcState is asked for arc points: per arc, the points along it over the
+  /// surface, in ground (m), for drawing; empty for an arc the path does not take at this pose.
+  /// Wrap w (index into GeometryPath::wraps()) has two: arc_G[ArcIndex(w, 0)] from T1 to T2
+  /// inclusive, and arc_G[ArcIndex(w, 1)] from T3 to T4 inclusive (WrapDoubleCylinderObst's
+  /// second cylinder only).
   std::vector<std::vector<Vec3>> arc_G;
+  /// The arc_G index of wrap w's arc starting at tangent point `tangent` (0 or 1: T1 to T2;
+  /// 2 or 3: T3 to T4).
+  static int ArcIndex(int w, int tangent) { return 2 * w + (tangent >= 2 ? 1 : 0); }
   /// Tangent points that stand where an earlier wrapping pass put them, not where the last
   /// pass did: OpenSim's length keeps a point's first location in ground (docs/paths.md), and
   /// Sinew reproduces it. Zero for a path with one wrap object.
@@ -180,6 +185,8 @@ class GeometryPath {
                  PathState& state, WrapOutcome& outcome, TangentPointReads& reads,
                  bool with_arc_points) const;
   static void RemoveTangentPoints(int wrap, PathState& state);
+  // Empties wrap's arcs in state.arc_G (when arc points are asked for).
+  static void ClearArcs(int wrap, PathState& state);
   static void CalcSegments(PathState& state);
   void CalcFunctionState(std::span<const double> q, PathState& state) const;
 

@@ -207,7 +207,7 @@ WrapResult WrapDoubleCylinderObst::Wrap(const Vec3& p_WP, const Vec3& p_WS,
     result.p_WT4 = X_WV * v.t;
     result.second_arc_length = v.arc;
     if (options.with_arc_points) {
-      AddArcPoints(v.q, v.t, v.angle, turn_v, X_WV, result.arc_points);
+      AddArcPoints(v.q, v.t, v.angle, turn_v, X_WV, result.second_arc_points);
     }
   };
   // Both cylinders, starting Newton's method from x_V; `fallback` when that fails.
@@ -239,8 +239,10 @@ WrapResult WrapDoubleCylinderObst::Wrap(const Vec3& p_WP, const Vec3& p_WS,
     result.p_WT3 = X_WV * c->T_V;
     result.p_WT4 = X_WV * c->t_V;
     result.second_arc_length = c->arc_v;
-    // With two arcs, no points are given: PathState::arc_G holds one arc per wrap, so the
-    // arcs are drawn as their chords.
+    if (options.with_arc_points) {
+      AddArcPoints(c->q_U, c->Q_U, c->angle_u, turn_u, Transform::Identity(), result.arc_points);
+      AddArcPoints(c->T_V, c->t_V, c->angle_v, turn_v, X_WV, result.second_arc_points);
+    }
   };
   // V first (also after U turned out not to wrap): then U, from P to where the path meets V.
   const auto v_first = [&] {

@@ -73,6 +73,8 @@ struct WrapResult {
   /// Points along the path on the surface, from T1 to T2 inclusive, for drawing; filled only
   /// when WrapOptions::with_arc_points is set.
   std::vector<Vec3> arc_points;
+  /// The same over the second cylinder (on_second), from T3 to T4 inclusive.
+  std::vector<Vec3> second_arc_points;
 };
 
 /// A wrapping surface fixed in its frame W. Stateless and thread-safe: Wrap is const.

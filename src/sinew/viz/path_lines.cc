@@ -76,7 +76,9 @@ PathLines CalcPathLines(const model::ModelSpec& spec, const BodyMotion& motion,
       arc_of.clear();
       for (const paths::PathPointState& point : state.points) {
         p_GP.push_back(point.p_GP);
-        arc_of.push_back(point.arc_length_to_next >= 0.0 ? point.wrap : model::kNone);
+        arc_of.push_back(point.arc_length_to_next >= 0.0
+                             ? paths::PathState::ArcIndex(point.wrap, point.tangent)
+                             : model::kNone);
       }
       lines.vertices[k][i] = PathPolyline(p_GP, arc_of, state.arc_G);
     }
