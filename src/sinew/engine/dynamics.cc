@@ -3,6 +3,7 @@
 #include <sinew/engine/dynamics.h>
 #include <sinew/engine/joint_values.h>
 #include <sinew/engine/pose.h>
+#include <sinew/math/finite.h>
 
 #include <string>
 #include <vector>
@@ -120,7 +121,7 @@ void CalcForceRhs(const System& system, const State& state, const Loads* externa
   for (int c = 0; c < system.num_coordinates(); ++c) {
     if (system.IsIntegrated(c)) rhs[kkt.SpeedColumn(c)] = loads.mobility[c];
   }
-  if (!rhs.allFinite()) ThrowNonFiniteLoads(system, state, external);
+  if (!AllFinite(rhs)) ThrowNonFiniteLoads(system, state, external);
 }
 
 void CalcForceRhsReusingFactorization(const System& system, const State& state,
@@ -144,7 +145,7 @@ const Accelerations& SolveAccelerations(const System& system, const State& state
         system, state, rhs.segment(nv + kkt.EquationRow(k), constraints[k]->NumEquations()));
   }
   // The loads' rows were checked by CalcForceRhs.
-  if (!rhs.tail(kkt.num_equations()).allFinite()) ThrowNonFiniteLoads(system, state, external);
+  if (!AllFinite(rhs.tail(kkt.num_equations()))) ThrowNonFiniteLoads(system, state, external);
   kkt.Solve(rhs, data.solution);
   data.accelerations.vdot = data.solution.head(nv);
   data.accelerations.lambda = data.solution.tail(kkt.num_equations());

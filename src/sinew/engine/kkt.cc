@@ -1,5 +1,6 @@
 #include <sinew/common/error.h>
 #include <sinew/engine/kkt.h>
+#include <sinew/math/finite.h>
 
 #include <cmath>
 #include <limits>
@@ -246,7 +247,7 @@ void KktSolver::CheckSolution(const VecX& rhs, const VecX& x) const {
   // O(n) pass as long as the solve itself). A pseudo-inverse of a rank-deficient Schur
   // complement and the dense LU are checked.
   if (!residual_check_) {
-    if (!x.allFinite()) ThrowSingular(std::numeric_limits<double>::quiet_NaN());
+    if (!AllFinite(x)) ThrowSingular(std::numeric_limits<double>::quiet_NaN());
     return;
   }
   // [M x_v + J^T lambda - f; J x_v - g], accumulated in place.
