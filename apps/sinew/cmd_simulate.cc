@@ -4,7 +4,8 @@
 //  [--disable-force NAME]... [--strict] [--export FILE] [--verbose] [--quiet]
 //  [--report-constraint-forces] [--equilibrate-muscles] [--rename-force-class OLD=NEW]
 //  [--cylinder-refinement several-wraps|always]
-//  [--collision [--contact smc|nsc] [--ground-plane H] [material options]] --out DIR`: a forward
+//  [--collision [--contact smc|nsc] [--ground-plane H] [material options] [--nsc-solver
+//  apgd|gauss-seidel] [--nsc-iterations N] [--nsc-tolerance TOL] ...] --out DIR`: a forward
 //  simulation of what the OpenSim parser
 // builds (skeleton, forces, constraints, external loads, actuators and their excitations).
 // Writes DIR/states.sto (every coordinate's value and speed, OpenSim 4 labels, radians and
@@ -179,6 +180,10 @@ void RunSimulate(const SimulateOptions& options) {
     }
     PrintSceneWarnings(viz::ExportAnimation(spec, motion, options.export_file, export_options),
                        options.verbose);
+  }
+  // What NSC's impulse solver did; loudly when steps stopped short of its tolerance.
+  if (const auto* nsc = dynamic_cast<const engine::NscIntegrator*>(integrator.get())) {
+    ReportNscSolves(nsc->solve_summary(), nsc->nsc_settings(), options.quiet);
   }
   if (!options.quiet) {
     const auto& stats = integrator->stats();
