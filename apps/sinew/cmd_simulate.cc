@@ -37,6 +37,7 @@
 #include "apps/sinew/commands.h"
 #include "apps/sinew/contact_options.h"
 #include "apps/sinew/initial_states.h"
+#include "apps/sinew/interrupt_guard.h"
 #include "apps/sinew/notices.h"
 #include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
@@ -160,8 +161,17 @@ void RunSimulate(const SimulateOptions& options) {
       motion.q.push_back(coordinates->Read(s));
     };
   }
-  RunWithProgress(*integrator, state, options.duration, options.report_interval, options.quiet,
-                  tables, options.out, record_motion);
+  // What NSC's impulse solver did; loudly when steps stopped short of its tolerance (also for a
+  // run stopped by a signal, over the steps it took).
+  const auto* nsc = dynamic_cast<const engine::NscIntegrator*>(integrator.get());
+  try {
+    RunWithProgress(*integrator, state, options.duration, options.report_interval, options.quiet,
+                    tables, options.out, record_motion);
+  } catch (const ExitRequest&) {
+    if (nsc) ReportNscSolves(nsc->solve_summary(), nsc->nsc_settings(), options.quiet);
+    throw;
+  }
+  if (nsc) ReportNscSolves(nsc->solve_summary(), nsc->nsc_settings(), options.quiet);
   if (!options.export_file.empty()) {
     viz::ExportOptions export_options;
     export_options.visual.mode = viz::ParseVisType(options.vis);
@@ -180,10 +190,6 @@ void RunSimulate(const SimulateOptions& options) {
     }
     PrintSceneWarnings(viz::ExportAnimation(spec, motion, options.export_file, export_options),
                        options.verbose);
-  }
-  // What NSC's impulse solver did; loudly when steps stopped short of its tolerance.
-  if (const auto* nsc = dynamic_cast<const engine::NscIntegrator*>(integrator.get())) {
-    ReportNscSolves(nsc->solve_summary(), nsc->nsc_settings(), options.quiet);
   }
   if (!options.quiet) {
     const auto& stats = integrator->stats();

@@ -4,9 +4,12 @@
 // contact options are checked (exit 2). NSC's impulse solver options reach the stepper, its
 // work is reported per row in contacts.sto and summed up on stderr.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -234,6 +237,27 @@ TEST_F(SimulateCollisionTest, NscIterationLimitIsHonouredAndUnconvergedStepsAreR
   for (const double r : full_contacts.at("nsc_contact.solver_residual")) EXPECT_LE(r, tolerance);
   EXPECT_NE(full.err.find("reached its tolerance of 1e-06 m/s in all"), std::string::npos)
       << full.err;
+}
+
+// A run stopped by SIGINT still reports the unconverged steps it took (at least those its
+// partial contacts.sto counts: the report covers the steps after the last row too).
+TEST_F(SimulateCollisionTest, InterruptedNscRunStillReportsUnconvergedSteps) {
+  // 10^4 s at 1 ms steps cannot end in the 3 s before SIGINT arrives (see
+  // SimulateOutputTest.InterruptKeepsTheRowsComputedSoFar for --foreground).
+  const std::string command =
+      "timeout --foreground --preserve-status -s INT 3 " + std::string(SINEW_CLI_PATH) +
+      " simulate " + kTable + " --collision --contact nsc --nsc-iterations 1 --duration 1e4 " +
+      "--report-interval 0.01 --quiet --out " + Path("out") + " 2>" + Path("err.txt");
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
+  const std::string err = ReadText(Path("err.txt"));
+  EXPECT_NE(err.find("stopped by SIGINT"), std::string::npos) << err;
+  const auto contacts = ReadStoColumns(Path("out/contacts.sto"));
+  const double counted = contacts.at("nsc_contact.unconverged_steps").back();
+  EXPECT_GT(counted, 0.0);
+  const long reported = NumberAfter(err, "did NOT reach its tolerance of 1e-06 m/s in ");
+  EXPECT_GE(reported, static_cast<long>(counted)) << err;
 }
 
 // Gauss-Seidel and APGD solve the same contact law: at a tolerance of 1e-12 m/s both runs meet
