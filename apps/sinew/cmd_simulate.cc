@@ -4,7 +4,8 @@
 //  [--disable-force NAME]... [--strict] [--export FILE] [--verbose] [--quiet]
 //  [--report-constraint-forces] [--equilibrate-muscles] [--rename-force-class OLD=NEW]
 //  [--cylinder-refinement several-wraps|always]
-//  [--collision [--contact smc|nsc] [--ground-plane H] [material options]] --out DIR`: a forward
+//  [--collision [--contact smc|nsc] [--ground-plane H] [material options] [--nsc-solver
+//  apgd|gauss-seidel] [--nsc-iterations N] [--nsc-tolerance TOL] ...] --out DIR`: a forward
 //  simulation of what the OpenSim parser
 // builds (skeleton, forces, constraints, external loads, actuators and their excitations).
 // Writes DIR/states.sto (every coordinate's value and speed, OpenSim 4 labels, radians and
@@ -36,6 +37,7 @@
 #include "apps/sinew/commands.h"
 #include "apps/sinew/contact_options.h"
 #include "apps/sinew/initial_states.h"
+#include "apps/sinew/interrupt_guard.h"
 #include "apps/sinew/notices.h"
 #include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
@@ -159,8 +161,17 @@ void RunSimulate(const SimulateOptions& options) {
       motion.q.push_back(coordinates->Read(s));
     };
   }
-  RunWithProgress(*integrator, state, options.duration, options.report_interval, options.quiet,
-                  tables, options.out, record_motion);
+  // What NSC's impulse solver did; loudly when steps stopped short of its tolerance (also for a
+  // run stopped by a signal, over the steps it took).
+  const auto* nsc = dynamic_cast<const engine::NscIntegrator*>(integrator.get());
+  try {
+    RunWithProgress(*integrator, state, options.duration, options.report_interval, options.quiet,
+                    tables, options.out, record_motion);
+  } catch (const ExitRequest&) {
+    if (nsc) ReportNscSolves(nsc->solve_summary(), nsc->nsc_settings(), options.quiet);
+    throw;
+  }
+  if (nsc) ReportNscSolves(nsc->solve_summary(), nsc->nsc_settings(), options.quiet);
   if (!options.export_file.empty()) {
     viz::ExportOptions export_options;
     export_options.visual.mode = viz::ParseVisType(options.vis);

@@ -1,5 +1,8 @@
 #include "apps/sinew/contact_options.h"
 
+#include <string>
+
+#include "apps/sinew/notices.h"
 #include "apps/sinew/option_checks.h"
 
 namespace sinew::cli {
@@ -37,9 +40,53 @@ void AddContactOptions(CLI::App* cmd, ContactOptions& o) {
   cmd->add_option("--slip-speed", o.slip_speed,
                   "SMC friction regularization speed (m/s, default 1e-3)")
       ->check(FiniteNumber(0.0, true));
+  // NSC's stepper; the help shows the library's defaults.
+  const engine::NscSettings d;
+  cmd->add_option("--nsc-solver", o.nsc_solver,
+                  std::string("With --contact nsc: the contact impulse solver, apgd (accelerated "
+                              "projected gradient) or gauss-seidel (projected); default ") +
+                      NscSolverName(d.solver.method))
+      ->check(CLI::IsMember({"apgd", "gauss-seidel"}));
+  cmd->add_option("--nsc-iterations", o.nsc_iterations,
+                  "With --contact nsc: the most iterations (apgd) or sweeps (gauss-seidel) of "
+                  "one step's impulse solve (default " +
+                      std::to_string(d.solver.max_iterations) +
+                      "); steps that stop there above the tolerance are reported")
+      ->check(WholeNumber(1));
+  cmd->add_option("--nsc-tolerance", o.nsc_tolerance,
+                  "With --contact nsc: the impulse solve stops when the contact law's largest "
+                  "violation is at most this (m/s, default " +
+                      ShowNumber(d.solver.tolerance) + ")")
+      ->check(FiniteNumber(0.0, true));
+  cmd->add_option("--nsc-max-recovery-speed", o.nsc_max_recovery_speed,
+                  "With --contact nsc: the fastest an overlap is pushed out (m/s, default " +
+                      ShowNumber(d.max_recovery_speed) + ")")
+      ->check(FiniteNumber(0.0));
+  cmd->add_option("--nsc-min-bounce-speed", o.nsc_min_bounce_speed,
+                  "With --contact nsc: restitution acts on contacts approaching faster than "
+                  "this (m/s, default " +
+                      ShowNumber(d.min_bounce_speed) + ")")
+      ->check(FiniteNumber(0.0));
+}
+
+const char* NscSolverName(engine::ContactSolverMethod method) {
+  return method == engine::ContactSolverMethod::kGaussSeidel ? "gauss-seidel" : "apgd";
 }
 
 void ApplyContactOptions(const ContactOptions& o, opensim::OpenSimParser& parser) {
+  // The first NSC option given, if any: they need --collision --contact nsc.
+  const char* nsc_option = o.nsc_solver               ? "--nsc-solver"
+                           : o.nsc_iterations         ? "--nsc-iterations"
+                           : o.nsc_tolerance          ? "--nsc-tolerance"
+                           : o.nsc_max_recovery_speed ? "--nsc-max-recovery-speed"
+                           : o.nsc_min_bounce_speed   ? "--nsc-min-bounce-speed"
+                                                      : nullptr;
+  if (nsc_option && (!o.collision || o.method != "nsc")) {
+    throw Error(
+        {}, nsc_option,
+        std::string("sets NSC's stepper: it needs --collision --contact nsc") +
+            (o.collision ? " (SMC contact, the default, is a force: no impulse solver)" : ""));
+  }
   if (!o.collision) {
     const contact::CollisionMaterial d;
     const contact::CollisionMaterial& m = o.material;
@@ -61,6 +108,19 @@ void ApplyContactOptions(const ContactOptions& o, opensim::OpenSimParser& parser
   if (o.ground_plane) parser.SetGroundPlane(*o.ground_plane);
   parser.SetContactMaterial(o.material);
   parser.SetFrictionSlipSpeed(o.slip_speed);
+  if (o.method == "nsc") {
+    engine::NscSettings nsc;
+    if (o.nsc_solver) {
+      nsc.solver.method = *o.nsc_solver == "gauss-seidel"
+                              ? engine::ContactSolverMethod::kGaussSeidel
+                              : engine::ContactSolverMethod::kApgd;
+    }
+    nsc.solver.max_iterations = o.nsc_iterations.value_or(nsc.solver.max_iterations);
+    nsc.solver.tolerance = o.nsc_tolerance.value_or(nsc.solver.tolerance);
+    nsc.max_recovery_speed = o.nsc_max_recovery_speed.value_or(nsc.max_recovery_speed);
+    nsc.min_bounce_speed = o.nsc_min_bounce_speed.value_or(nsc.min_bounce_speed);
+    parser.SetNscSettings(nsc);
+  }
 }
 
 }  // namespace sinew::cli

@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include "apps/sinew/contact_options.h"
+
 namespace sinew::cli {
 
 std::string ShowNumber(double value) {
@@ -119,6 +121,34 @@ void PrintSceneWarnings(const viz::VisualScene& scene, bool verbose) {
             << FirstFew(files) << "); their bodies are drawn as primitives. Searched: " << searched
             << ". Add the folder that holds them with --geometry-dir DIR or $SINEW_GEOMETRY_PATH"
             << (verbose ? "" : "; --verbose lists every one") << "\n";
+}
+
+void ReportNscSolves(const engine::NscSolveSummary& summary, const engine::NscSettings& settings,
+                     bool quiet) {
+  const char* solver = NscSolverName(settings.solver.method);
+  const std::string tolerance = ShowNumber(settings.solver.tolerance) + " m/s";
+  if (summary.unconverged > 0) {
+    std::cerr << "sinew: warning: NSC's contact impulse solver (" << solver
+              << ") did NOT reach its tolerance of " << tolerance << " in " << summary.unconverged
+              << " of " << summary.solves << " steps with contacts: it stopped at its limit of "
+              << settings.solver.max_iterations
+              << (settings.solver.max_iterations == 1 ? " iteration" : " iterations")
+              << " with a residual up to " << ShowNumber(summary.worst_residual)
+              << " m/s, so those steps' contact impulses are approximate (contacts.sto's "
+                 "nsc_contact.unconverged_steps counts them over time). Allow more with "
+                 "--nsc-iterations, or loosen --nsc-tolerance\n";
+    return;
+  }
+  if (quiet) return;
+  if (summary.solves == 0) {
+    std::cerr << "sinew: note: NSC: no step had contacts (no impulse solve)\n";
+    return;
+  }
+  std::cerr << "sinew: note: NSC's contact impulse solver (" << solver
+            << ") reached its tolerance of " << tolerance << " in all " << summary.solves
+            << " steps with contacts, in at most " << summary.most_iterations
+            << (summary.most_iterations == 1 ? " iteration" : " iterations") << " (worst residual "
+            << ShowNumber(summary.worst_residual) << " m/s)\n";
 }
 
 }  // namespace sinew::cli

@@ -3,6 +3,7 @@
 // a count, the first few names and where to find the rest.
 #pragma once
 
+#include <sinew/engine/nsc_integrator.h>
 #include <sinew/model/model_spec.h>
 #include <sinew/viz/visual_scene.h>
 
@@ -36,5 +37,13 @@ void UseStandIns(model::ModelSpec& spec, const std::string& model_path);
 /// $SINEW_GEOMETRY_PATH), each missing mesh on its own line when `verbose`, and every other
 /// warning as it is. With `verbose`, first one note per mesh file read saying where from.
 void PrintSceneWarnings(const viz::VisualScene& scene, bool verbose);
+
+/// After an NSC run (`simulate --collision --contact nsc`): what its contact impulse solver did
+/// over the run (`summary`, with `settings`), on stderr. Steps whose solve stopped at the
+/// iteration limit above the tolerance make a loud warning (always: those steps' impulses are
+/// approximate) with their count, the worst residual and what to change; otherwise, unless
+/// `quiet`, one note with the steps solved, the most iterations and the worst residual.
+void ReportNscSolves(const engine::NscSolveSummary& summary, const engine::NscSettings& settings,
+                     bool quiet);
 
 }  // namespace sinew::cli

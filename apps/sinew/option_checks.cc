@@ -4,6 +4,7 @@
 #include <sinew/common/text.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "apps/sinew/notices.h"
@@ -23,6 +24,22 @@ CLI::Validator FiniteNumber(double min, bool exclusive) {
         return "";
       },
       "NUMBER" + bound);
+}
+
+CLI::Validator WholeNumber(int min) {
+  const std::string bound = " >= " + std::to_string(min);
+  return CLI::Validator(
+      [min, bound](std::string& text) -> std::string {
+        const std::string trimmed(TrimSpace(text));
+        double value = 0;
+        if (trimmed.find_first_not_of("+-0123456789") != std::string::npos ||
+            !ParseNumber(trimmed, &value) || !(value >= min) ||
+            !(value <= std::numeric_limits<int>::max())) {
+          return "expects a whole number" + bound + ", not '" + text + "'";
+        }
+        return "";
+      },
+      "INTEGER" + bound);
 }
 
 void CheckSimulationSize(double duration, double report_interval, double step) {

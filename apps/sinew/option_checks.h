@@ -23,6 +23,9 @@ inline constexpr double kMaxSteps = 1e9;
 /// at least `min`, or above it when `exclusive` (no bound when `min` is -infinity).
 CLI::Validator FiniteNumber(double min = -HUGE_VAL, bool exclusive = false);
 
+/// A CLI11 check: the option's text is one whole number from `min` to INT_MAX.
+CLI::Validator WholeNumber(int min);
+
 /// Throws sinew::Error unless the run fits the caps above: `duration` / `report_interval` output
 /// rows at most kMaxOutputRows and, when `step` > 0, `duration` / `step` steps at most kMaxSteps.
 void CheckSimulationSize(double duration, double report_interval, double step);

@@ -66,7 +66,9 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
          contact: str = "nsc", strict: bool = False,
          parameters: Optional[Mapping[str, Union[float, Sequence[float]]]] = None,
          geometry_dirs: Sequence[PathLike] = (),
-         cylinder_refinement: str = "several-wraps") -> "Model":
+         cylinder_refinement: str = "several-wraps", nsc_solver: str = "apgd",
+         nsc_iterations: int = 100, nsc_tolerance: float = 1e-6,
+         nsc_max_recovery_speed: float = 0.1, nsc_min_bounce_speed: float = 0.01) -> "Model":
     """Reads an OpenSim model (.osim, every version 1.9 to 4.6) and builds what Sinew simulates.
 
     visualization: None/"none", "primitives" or "mesh" (visual assets of the bodies).
@@ -87,6 +89,14 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
     cylinder_refinement: when a WrapCylinder refines its tangent points, as `sinew simulate
     --cylinder-refinement`: "several-wraps" (OpenSim 4.4 and later: only on paths with two or
     more wrap objects) or "always" (every OpenSim before 4.4, to compare with results it wrote).
+    nsc_*: NSC's stepper, as `sinew simulate --nsc-*` (only with collision=True and
+    contact="nsc"; other values than the defaults otherwise are an Error): nsc_solver "apgd"
+    (accelerated projected gradient) or "gauss-seidel" (projected), the contact impulse solver;
+    nsc_iterations (>= 1) its most iterations (sweeps) per step; nsc_tolerance (m/s, > 0) the
+    largest violation of the contact law it stops at; nsc_max_recovery_speed (m/s, >= 0) the
+    fastest an overlap is pushed out; nsc_min_bounce_speed (m/s, >= 0) restitution acts above
+    it. Model.simulate's statistics count the steps whose solve stopped above the tolerance
+    (with a UserWarning) and its contacts table has the solver's columns (docs/contact.md).
     Raises sinew.Error with file, line, component (also for an unknown or ambiguous component,
     a property it lacks, a wrong value, or a ContactMesh file not found: the message lists the
     folders searched).

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import os
-from typing import Any, Dict, List, Optional
+from typing import Any, Dict, List, Optional, Union
 
 import numpy as np
 
@@ -14,16 +14,20 @@ class Result:
     `coordinates`. z: [n, state variables], in the order of `state_variables`. states: the
     states table as `sinew simulate` writes it to states.sto, columns named by `labels`.
     final_state: the sinew.State at the end. statistics: the integrator's steps, rejected steps
-    and evaluations. contacts: the contacts table as `sinew simulate` writes it to contacts.sto
-    ([n, contact_labels]; no columns when the run has no contact): per contact force (and an
-    NSC run's "nsc_contact") the net force (N) and torque about the body's origin (N m) on each
-    body, in ground, "<force>.<body>.force.X|Y|Z" and ".torque.X|Y|Z", then the number of
-    active contacts, in all and per body pair (docs/contact.md).
+    and evaluations; an NSC run's also "nsc_solves" (steps with contacts), "nsc_unconverged_steps"
+    (those whose impulse solve stopped at its iteration limit above the tolerance),
+    "nsc_most_iterations" and "nsc_worst_residual" (m/s). contacts: the contacts table as
+    `sinew simulate` writes it to contacts.sto ([n, contact_labels]; no columns when the run has
+    no contact): per contact force (and an NSC run's "nsc_contact") the net force (N) and torque
+    about the body's origin (N m) on each body, in ground, "<force>.<body>.force.X|Y|Z" and
+    ".torque.X|Y|Z", then the number of active contacts, in all and per body pair, and for NSC
+    "nsc_contact.solver_iterations" and ".solver_residual" (the last step's impulse solve) and
+    ".unconverged_steps" (so far) (docs/contact.md).
     """
 
     def __init__(self, *, time: np.ndarray, q: np.ndarray, u: np.ndarray, z: np.ndarray,
                  coordinates: List[str], state_variables: List[str], labels: List[str],
-                 states: np.ndarray, final_state: Any, statistics: Dict[str, int],
+                 states: np.ndarray, final_state: Any, statistics: Dict[str, Union[int, float]],
                  contact_labels: Optional[List[str]] = None,
                  contacts: Optional[np.ndarray] = None) -> None:
         self.time = time

@@ -4,6 +4,7 @@
 #include <pybind11/stl/filesystem.h>
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
+#include <sinew/engine/nsc_integrator.h>
 
 #include <filesystem>
 
@@ -94,6 +95,13 @@ std::vector<model::ParameterOverride> ToParameterOverrides(const std::string& pa
   return overrides;
 }
 
+// The name of the library's default NSC impulse solver, as `nsc_solver` takes it.
+std::string DefaultNscSolver() {
+  return engine::NscSettings{}.solver.method == engine::ContactSolverMethod::kGaussSeidel
+             ? "gauss-seidel"
+             : "apgd";
+}
+
 }  // namespace
 
 void BindModel(py::module_& m) {
@@ -103,8 +111,14 @@ void BindModel(py::module_& m) {
          bool collision, const std::string& contact, bool strict,
          const std::optional<py::dict>& parameters,
          const std::vector<std::filesystem::path>& geometry_dirs,
-         const std::string& cylinder_refinement) {
+         const std::string& cylinder_refinement, const std::string& nsc_solver, int nsc_iterations,
+         double nsc_tolerance, double nsc_max_recovery_speed, double nsc_min_bounce_speed) {
         LoadOptions options;
+        options.nsc_solver = nsc_solver;
+        options.nsc.solver.max_iterations = nsc_iterations;
+        options.nsc.solver.tolerance = nsc_tolerance;
+        options.nsc.max_recovery_speed = nsc_max_recovery_speed;
+        options.nsc.min_bounce_speed = nsc_min_bounce_speed;
         for (const std::filesystem::path& dir : geometry_dirs)
           options.geometry_dirs.push_back(dir.string());
         options.visualization = visualization.value_or("none");
@@ -119,10 +133,15 @@ void BindModel(py::module_& m) {
       py::arg("collision") = false, py::arg("contact") = "nsc", py::arg("strict") = false,
       py::arg("parameters") = py::none(),
       py::arg("geometry_dirs") = std::vector<std::filesystem::path>{},
-      py::arg("cylinder_refinement") = "several-wraps",
+      py::arg("cylinder_refinement") = "several-wraps", py::arg("nsc_solver") = DefaultNscSolver(),
+      py::arg("nsc_iterations") = engine::NscSettings{}.solver.max_iterations,
+      py::arg("nsc_tolerance") = engine::NscSettings{}.solver.tolerance,
+      py::arg("nsc_max_recovery_speed") = engine::NscSettings{}.max_recovery_speed,
+      py::arg("nsc_min_bounce_speed") = engine::NscSettings{}.min_bounce_speed,
       "Reads an OpenSim model (.osim) and builds what Sinew simulates of it, with `parameters` "
       "({'<component>/<property>': number or sequence}) overriding the file's values; "
-      "ContactMesh files are also searched in `geometry_dirs`.");
+      "ContactMesh files are also searched in `geometry_dirs`; the nsc_* settings are NSC's "
+      "stepper's (collision=True, contact='nsc'), as `sinew simulate --nsc-*`.");
 
   py::class_<ModelHandle, ModelPtr>(m, "Model", "A parsed OpenSim model (sinew.load makes one).")
       .def_property_readonly("path", &ModelHandle::path, "The .osim file it was read from.")

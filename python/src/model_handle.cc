@@ -6,6 +6,10 @@
 #include <sinew/io/storage.h>
 #include <sinew/opensim/initial_states.h>
 
+#include <cmath>
+#include <sstream>
+#include <tuple>
+
 namespace sinew::python {
 
 std::shared_ptr<ModelHandle> ModelHandle::Load(const std::string& path,
@@ -30,6 +34,42 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
                 "cylinder_refinement must be \"several-wraps\" or \"always\", not \"" +
                     options.cylinder_refinement + "\"");
   }
+  // NSC's stepper: as `sinew simulate --nsc-*` checks it, and only where it runs.
+  engine::NscSettings nsc = options.nsc;
+  if (options.nsc_solver != "apgd" && options.nsc_solver != "gauss-seidel") {
+    throw Error(
+        {path, 0}, "",
+        "nsc_solver must be \"apgd\" or \"gauss-seidel\", not \"" + options.nsc_solver + "\"");
+  }
+  nsc.solver.method = options.nsc_solver == "gauss-seidel"
+                          ? engine::ContactSolverMethod::kGaussSeidel
+                          : engine::ContactSolverMethod::kApgd;
+  if (nsc.solver.max_iterations < 1) {
+    throw Error({path, 0}, "",
+                "nsc_iterations must be >= 1, not " + std::to_string(nsc.solver.max_iterations));
+  }
+  for (const auto& [name, value, positive] :
+       {std::tuple<const char*, double, bool>{"nsc_tolerance", nsc.solver.tolerance, true},
+        {"nsc_max_recovery_speed", nsc.max_recovery_speed, false},
+        {"nsc_min_bounce_speed", nsc.min_bounce_speed, false}}) {
+    if (!std::isfinite(value) || (positive ? !(value > 0.0) : !(value >= 0.0))) {
+      std::ostringstream text;
+      text << name << " must be a finite number " << (positive ? "> 0" : ">= 0") << ", not "
+           << value;
+      throw Error({path, 0}, "", text.str());
+    }
+  }
+  const engine::NscSettings defaults;
+  const bool nsc_set = nsc.solver.method != defaults.solver.method ||
+                       nsc.solver.max_iterations != defaults.solver.max_iterations ||
+                       nsc.solver.tolerance != defaults.solver.tolerance ||
+                       nsc.max_recovery_speed != defaults.max_recovery_speed ||
+                       nsc.min_bounce_speed != defaults.min_bounce_speed;
+  if (nsc_set && !(options.collision && options.contact == "nsc")) {
+    throw Error({path, 0}, "",
+                "the nsc_* settings are NSC's stepper's: they need collision=True and "
+                "contact=\"nsc\"");
+  }
   auto handle = std::shared_ptr<ModelHandle>(new ModelHandle());
   handle->path_ = path;
   handle->options_ = options;
@@ -39,6 +79,7 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
   if (options.collision) parser.EnableCollision();
   parser.SetContactMethod(options.contact == "smc" ? opensim::ContactMethod::kSmc
                                                    : opensim::ContactMethod::kNsc);
+  parser.SetNscSettings(nsc);
   parser.SetStrict(options.strict);
   parser.SetCylinderRefinement(options.cylinder_refinement == "always"
                                    ? paths::CylinderRefinement::kAlways

@@ -3,6 +3,7 @@
 // every State, Simulator and Batch made from the model (a finalized System never changes).
 #pragma once
 
+#include <sinew/engine/nsc_integrator.h>
 #include <sinew/engine/state.h>
 #include <sinew/engine/system.h>
 #include <sinew/model/model_spec.h>
@@ -21,6 +22,10 @@ struct LoadOptions {
   std::string visualization = "none";  ///< "none", "primitives" or "mesh"
   bool collision = false;
   std::string contact = "nsc";  ///< "nsc" or "smc"
+  /// NSC's stepper (with collision and contact "nsc"): its impulse solver "apgd" or
+  /// "gauss-seidel", and the rest of engine::NscSettings, as `sinew simulate --nsc-*`.
+  std::string nsc_solver = "apgd";
+  engine::NscSettings nsc;  ///< its solver.method is set from nsc_solver
   bool strict = false;
   /// When cylinders refine their tangent points: "several-wraps" (OpenSim 4.4+) or "always"
   /// (paths::CylinderRefinement), as `sinew simulate --cylinder-refinement`.

@@ -12,6 +12,7 @@ import sinew
 from conftest import DATA, read_sto
 
 BALL = DATA / "sinew" / "ball_on_floor.osim"
+TABLE = DATA / "sinew" / "table_on_floor.osim"
 
 
 def test_ball_rests_at_hertz_static_depth_with_smc():
@@ -93,6 +94,83 @@ def test_contacts_table_is_contacts_sto_and_carries_the_weight_at_rest(cli, tmp_
         written = tmp_path / f"{contact}_contacts.sto"
         result.contacts_to_sto(written)
         assert written.read_bytes() == (states.parent / "contacts.sto").read_bytes()
+
+
+def test_nsc_solver_settings_act_as_the_cli_options_do(cli, tmp_path):
+    # load(nsc_iterations=...) is `sinew simulate --nsc-iterations`: the table lands on four
+    # legs at once (coupled contacts: one APGD iteration cannot solve the impact), so with one
+    # iteration allowed steps end above the tolerance. Result.contacts (with the solver's
+    # columns) equals the CLI's contacts.sto bit for bit; the statistics count the unconverged
+    # steps as the table's last row does, with a UserWarning.
+    contacts = cli([TABLE, "--collision", "--contact", "nsc", "--nsc-iterations", 1,
+                    "--duration", 0.5, "--report-interval", 0.001], tmp_path / "cli")
+    model = sinew.load(TABLE, collision=True, contact="nsc", nsc_iterations=1)
+    with pytest.warns(UserWarning, match="did NOT reach its tolerance of 1e-06 m/s"):
+        result = model.simulate(0.5, report_interval=0.001)
+    labels, time, values = read_sto(contacts.parent / "contacts.sto")
+    assert result.contact_labels == labels
+    assert np.array_equal(result.contacts, values)
+    column = {label: result.contacts[:, k] for k, label in enumerate(labels)}
+    statistics = result.statistics
+    assert column["nsc_contact.solver_iterations"].max() == 1
+    assert statistics["nsc_most_iterations"] == 1
+    assert statistics["nsc_unconverged_steps"] > 0
+    assert statistics["nsc_unconverged_steps"] == column["nsc_contact.unconverged_steps"][-1]
+    assert statistics["nsc_worst_residual"] > 1e-6
+    assert statistics["nsc_worst_residual"] >= column["nsc_contact.solver_residual"].max()
+    assert 0 < statistics["nsc_solves"] <= 500
+
+
+def test_nsc_solver_defaults_and_both_methods():
+    # The defaults are the library's (APGD, 100, 1e-6 m/s, 0.1 m/s, 0.01 m/s): naming them
+    # changes nothing. Gauss-Seidel and APGD at 1e-12 m/s meet it in every step and give the
+    # ball (launched sideways at 1 m/s by its initial speed: lands, rolls, bounces, rests) the
+    # same speeds: each leaves the contact's velocity within the tolerance of the law's, 2 tol
+    # apart per step, adding up at most linearly over the N steps with contacts (over the radius
+    # 0.1 m for the spin).
+    default = sinew.load(BALL, collision=True, contact="nsc").simulate(0.5)
+    named = sinew.load(BALL, collision=True, contact="nsc", nsc_solver="apgd",
+                       nsc_iterations=100, nsc_tolerance=1e-6, nsc_max_recovery_speed=0.1,
+                       nsc_min_bounce_speed=0.01).simulate(0.5)
+    assert np.array_equal(default.q, named.q) and np.array_equal(default.u, named.u)
+    assert np.array_equal(default.contacts, named.contacts)
+    runs = {}
+    for solver in ("apgd", "gauss-seidel"):
+        model = sinew.load(BALL, collision=True, contact="nsc", nsc_solver=solver,
+                           nsc_iterations=10000, nsc_tolerance=1e-12)
+        state = model.default_state()
+        state.set_speed("tx", 1.0)
+        runs[solver] = model.simulate(1.5, initial_states=state)
+        assert runs[solver].statistics["nsc_unconverged_steps"] == 0
+        assert runs[solver].statistics["nsc_worst_residual"] <= 1e-12
+    # One sweep solves a single sphere contact exactly (its normal and tangential rows are
+    # decoupled and W_tt is isotropic); APGD's first step, scaled by 1 / (W_nn L) on all three
+    # rows, cannot be exact on both the normal row (needs L = 1) and the tangential ones (L =
+    # W_tt / W_nn = 1 + m r^2 / I = 3.5), so the landing takes it more than one iteration.
+    assert runs["gauss-seidel"].statistics["nsc_most_iterations"] == 1
+    assert runs["apgd"].statistics["nsc_most_iterations"] > 1
+    steps = max(run.statistics["nsc_solves"] for run in runs.values())
+    bound = 2 * 1e-12 * steps
+    apgd, gauss_seidel = runs["apgd"], runs["gauss-seidel"]
+    assert apgd.coordinates == gauss_seidel.coordinates
+    for k, name in enumerate(apgd.coordinates):
+        difference = np.abs(apgd.u[:, k] - gauss_seidel.u[:, k]).max()
+        assert difference <= (bound / 0.1 if name.startswith("r") else bound), (name, difference)
+
+
+def test_bad_or_misplaced_nsc_settings_are_errors():
+    for options, message in (
+            (dict(nsc_iterations=0), "nsc_iterations must be >= 1"),
+            (dict(nsc_tolerance=0.0), "nsc_tolerance must be a finite number > 0"),
+            (dict(nsc_tolerance=float("nan")), "nsc_tolerance must be a finite number > 0"),
+            (dict(nsc_max_recovery_speed=-1.0), "nsc_max_recovery_speed must be"),
+            (dict(nsc_min_bounce_speed=-1.0), "nsc_min_bounce_speed must be"),
+            (dict(nsc_solver="jacobi"), 'nsc_solver must be "apgd" or "gauss-seidel"')):
+        with pytest.raises(sinew.Error, match=message):
+            sinew.load(BALL, collision=True, contact="nsc", **options)
+    for options in (dict(collision=True, contact="smc"), dict(collision=False)):
+        with pytest.raises(sinew.Error, match="need collision=True and contact=\"nsc\""):
+            sinew.load(BALL, nsc_iterations=5, **options)
 
 
 def test_run_without_contact_has_an_empty_contacts_table():

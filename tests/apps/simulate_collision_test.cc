@@ -1,12 +1,17 @@
 // `sinew simulate --collision`: a ball with a ContactSphere and no contact force settles on
 // the model's ContactHalfSpace through SMC (the default contact method), its contacts.sto row
 // at rest carrying its weight on one contact; NSC makes it bounce and rest;
-// contact options are checked (exit 2).
+// contact options are checked (exit 2). NSC's impulse solver options reach the stepper, its
+// work is reported per row in contacts.sto and summed up on stderr.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -19,8 +24,17 @@ namespace {
 
 using engine::testing::ReadStoColumns;
 using testing::CliRun;
+using testing::ReadText;
 
 const std::string kBall = std::string(SINEW_TEST_DATA_DIR) + "/sinew/ball_on_floor.osim";
+const std::string kTable = std::string(SINEW_TEST_DATA_DIR) + "/sinew/table_on_floor.osim";
+
+// The whole number in `text` right after `before` (-1 when `before` is not there).
+long NumberAfter(const std::string& text, const std::string& before) {
+  const size_t at = text.find(before);
+  if (at == std::string::npos) return -1;
+  return std::stol(text.substr(at + before.size()));
+}
 
 class SimulateCollisionTest : public testing::CliTest {
  protected:
@@ -181,6 +195,130 @@ TEST_F(SimulateCollisionTest, ContactMeshIsFoundInTheGeometryDir) {
     EXPECT_NE(missing.err.find(part), std::string::npos) << missing.err << "\nlacks " << part;
 }
 
+// --nsc-iterations caps every step's impulse solve. The table lands on its four legs at once
+// (four coupled contacts, so one APGD iteration cannot solve an impact) and stays on them: with
+// one iteration allowed, contacts.sto's iteration column never exceeds 1, steps end above the
+// tolerance and the run says so loudly, counting them as the column does. A row whose step
+// ended above the tolerance (its residual column > 1e-6 m/s, the solver's own stopping test)
+// counts one more unconverged step than the row before (one step per row: the report interval
+// is the step).
+TEST_F(SimulateCollisionTest, NscIterationLimitIsHonouredAndUnconvergedStepsAreReported) {
+  const CliRun run = Run("simulate " + kTable + " --collision --contact nsc --nsc-iterations 1 " +
+                         "--duration 1 --report-interval 0.001 --quiet --out " + Path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto contacts = ReadStoColumns(Path("out/contacts.sto"));
+  const std::vector<double>& iterations = contacts.at("nsc_contact.solver_iterations");
+  const std::vector<double>& residual = contacts.at("nsc_contact.solver_residual");
+  const std::vector<double>& unconverged = contacts.at("nsc_contact.unconverged_steps");
+  ASSERT_EQ(iterations.size(), 1001u);
+  EXPECT_EQ(*std::max_element(iterations.begin(), iterations.end()), 1.0);
+  EXPECT_GE(*std::min_element(iterations.begin(), iterations.end()), 0.0);
+  const double tolerance = 1e-6;  // the default
+  for (size_t i = 1; i < residual.size(); ++i) {
+    EXPECT_GE(unconverged[i], unconverged[i - 1]) << "row " << i;
+    if (residual[i] > tolerance) {
+      EXPECT_EQ(unconverged[i], unconverged[i - 1] + 1) << "row " << i;
+      EXPECT_EQ(iterations[i], 1.0) << "row " << i;
+    }
+  }
+  EXPECT_GT(unconverged.back(), 0.0);
+  // The warning on stderr (even with --quiet) gives the same count.
+  const std::string warning = "did NOT reach its tolerance of 1e-06 m/s in ";
+  ASSERT_NE(run.err.find(warning), std::string::npos) << run.err;
+  EXPECT_EQ(NumberAfter(run.err, warning), static_cast<long>(unconverged.back())) << run.err;
+  EXPECT_NE(run.err.find("limit of 1 iteration "), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--nsc-iterations"), std::string::npos) << run.err;
+  // With the default limit the same scene meets the tolerance in every step (and says so).
+  const CliRun full = Run("simulate " + kTable + " --collision --contact nsc --duration 1 " +
+                          "--report-interval 0.001 --out " + Path("full"));
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  const auto full_contacts = ReadStoColumns(Path("full/contacts.sto"));
+  EXPECT_EQ(full_contacts.at("nsc_contact.unconverged_steps").back(), 0.0);
+  for (const double r : full_contacts.at("nsc_contact.solver_residual")) EXPECT_LE(r, tolerance);
+  EXPECT_NE(full.err.find("reached its tolerance of 1e-06 m/s in all"), std::string::npos)
+      << full.err;
+}
+
+// A run stopped by SIGINT still reports the unconverged steps it took (at least those its
+// partial contacts.sto counts: the report covers the steps after the last row too).
+TEST_F(SimulateCollisionTest, InterruptedNscRunStillReportsUnconvergedSteps) {
+  // 10^4 s at 1 ms steps cannot end in the 3 s before SIGINT arrives (see
+  // SimulateOutputTest.InterruptKeepsTheRowsComputedSoFar for --foreground).
+  const std::string command =
+      "timeout --foreground --preserve-status -s INT 3 " + std::string(SINEW_CLI_PATH) +
+      " simulate " + kTable + " --collision --contact nsc --nsc-iterations 1 --duration 1e4 " +
+      "--report-interval 0.01 --quiet --out " + Path("out") + " 2>" + Path("err.txt");
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
+  const std::string err = ReadText(Path("err.txt"));
+  EXPECT_NE(err.find("stopped by SIGINT"), std::string::npos) << err;
+  const auto contacts = ReadStoColumns(Path("out/contacts.sto"));
+  const double counted = contacts.at("nsc_contact.unconverged_steps").back();
+  EXPECT_GT(counted, 0.0);
+  const long reported = NumberAfter(err, "did NOT reach its tolerance of 1e-06 m/s in ");
+  EXPECT_GE(reported, static_cast<long>(counted)) << err;
+}
+
+// Gauss-Seidel and APGD solve the same contact law: at a tolerance of 1e-12 m/s both runs meet
+// it in every step, and their body speeds agree. Each solve leaves every contact's velocity
+// within the tolerance of the law's, so the two runs' contact-point velocities differ by at
+// most 2 tol per step, and what a step leaves over adds at most linearly: after N steps with
+// contacts, 2 tol N (m/s) for the speeds of points, that over the shortest lever from the body's
+// origin to a contact (0.1 m: the ball's radius, the legs' 0.112 m about x) for the angular
+// speeds. Two scenes: the ball launched sideways at 1 m/s (its landing makes it roll, it
+// bounces and rests: one contact) and the table on its four legs (coupled contacts).
+// --nsc-solver reaches the stepper: the note names it, and for the ball's single contact (its
+// normal and tangential rows decoupled, W_tt isotropic) one Gauss-Seidel sweep is exact.
+TEST_F(SimulateCollisionTest, GaussSeidelAndApgdAgreeWithinTheirTolerance) {
+  std::string ball = ReadText(kBall);
+  const std::string tx = "<Coordinate name=\"tx\"/>";
+  ASSERT_NE(ball.find(tx), std::string::npos);
+  ball.replace(ball.find(tx), tx.size(),
+               "<Coordinate name=\"tx\"><default_speed_value>1</default_speed_value></Coordinate>");
+  std::ofstream(Path("ball.osim")) << ball;
+  const double tolerance = 1e-12, lever = 0.1;
+  for (const std::string& model : {Path("ball.osim"), kTable}) {
+    std::map<std::string, std::map<std::string, std::vector<double>>> states;
+    long steps = 0;
+    for (const std::string solver : {"apgd", "gauss-seidel"}) {
+      const std::string out = Path(solver);
+      const CliRun run = Run("simulate " + model + " --collision --contact nsc --nsc-solver " +
+                             solver + " --nsc-iterations 10000 --nsc-tolerance 1e-12 " +
+                             "--duration 1.5 --report-interval 0.01 --out " + out);
+      ASSERT_EQ(run.exit_code, 0) << run.err;
+      const std::string note = "solver (" + solver + ") reached its tolerance of 1e-12 m/s in all ";
+      ASSERT_NE(run.err.find(note), std::string::npos) << run.err;
+      steps = std::max(steps, NumberAfter(run.err, note));
+      const auto contacts = ReadStoColumns(out + "/contacts.sto");
+      for (const double r : contacts.at("nsc_contact.solver_residual")) EXPECT_LE(r, tolerance);
+      EXPECT_EQ(contacts.at("nsc_contact.unconverged_steps").back(), 0.0);
+      if (solver == "gauss-seidel" && model != kTable) {
+        const auto& iterations = contacts.at("nsc_contact.solver_iterations");
+        EXPECT_EQ(*std::max_element(iterations.begin(), iterations.end()), 1.0);
+      }
+      states[solver] = ReadStoColumns(out + "/states.sto");
+    }
+    ASSERT_GT(steps, 0);
+    const double bound = 2.0 * tolerance * static_cast<double>(steps);
+    int compared = 0;
+    for (const auto& [label, apgd] : states.at("apgd")) {
+      if (!label.ends_with("/speed")) continue;
+      const std::vector<double>& gauss_seidel = states.at("gauss-seidel").at(label);
+      ASSERT_EQ(apgd.size(), gauss_seidel.size());
+      // The coordinate: "/jointset/free/<coordinate>/speed"; rx, ry and rz turn.
+      const std::string path = label.substr(0, label.size() - 6);
+      const bool angular = path.substr(path.rfind('/') + 1).starts_with("r");
+      double largest = 0.0;
+      for (size_t i = 0; i < apgd.size(); ++i)
+        largest = std::max(largest, std::abs(apgd[i] - gauss_seidel[i]));
+      EXPECT_LE(largest, angular ? bound / lever : bound) << model << " " << label;
+      ++compared;
+    }
+    EXPECT_EQ(compared, 6) << model;
+  }
+}
+
 TEST_F(SimulateCollisionTest, BadContactOptionsAreRefused) {
   for (const auto& [options, what] :
        {std::pair<std::string, std::string>{"--collision --friction -0.1", "friction -0.1"},
@@ -188,7 +326,21 @@ TEST_F(SimulateCollisionTest, BadContactOptionsAreRefused) {
         {"--collision --kn -5", "kn -5"},
         {"--ground-plane 0", "needs --collision"},
         {"--contact smc", "needs --collision"},
-        {"--friction 0.3", "needs --collision"}}) {
+        {"--friction 0.3", "needs --collision"},
+        // NSC's stepper: bad values, and options that do not apply without --contact nsc.
+        {"--collision --contact nsc --nsc-iterations 0", "whole number >= 1, not '0'"},
+        {"--collision --contact nsc --nsc-iterations 2.5", "whole number >= 1, not '2.5'"},
+        {"--collision --contact nsc --nsc-tolerance 0", "number > 0, not '0'"},
+        {"--collision --contact nsc --nsc-tolerance -1e-6", "number > 0, not '-1e-6'"},
+        {"--collision --contact nsc --nsc-solver jacobi", "jacobi"},
+        {"--collision --contact nsc --nsc-max-recovery-speed -1", "number >= 0, not '-1'"},
+        {"--collision --contact nsc --nsc-min-bounce-speed nan", "number >= 0, not 'nan'"},
+        {"--nsc-iterations 5",
+         "--nsc-iterations: sets NSC's stepper: it needs --collision "
+         "--contact nsc"},
+        {"--collision --nsc-tolerance 1e-8", "--nsc-tolerance: sets NSC's stepper: it needs"},
+        {"--collision --contact smc --nsc-solver apgd", "--nsc-solver: sets NSC's stepper"},
+        {"--contact nsc --nsc-min-bounce-speed 0.1", "needs --collision --contact nsc"}}) {
     const CliRun run =
         Run("simulate " + kBall + " " + options + " --duration 0.1 --quiet --out " + Path("out"));
     EXPECT_EQ(run.exit_code, 2) << options << ": " << run.err;

@@ -41,8 +41,7 @@ TEST(NscContactTableTest, SlidingBlockReportsItsWeightAndCoulombFriction) {
   // solver's tolerance (1e-12 m/s) bounds the impulse errors by m 1e-12 m/s, 1e-9 N at h = 1 ms.
   constexpr double kMass = 1.0, kMu = 0.5, kH = 1e-3, kV0 = 2.0;
   auto system = testing::ParseContactModel(
-      testing::FreeBodyContactModel(kMass, Vec3(0.004, 0.008, 0.004), Vec3(0, -kG, 0), 0.1, {},
-                                    ""),
+      testing::FreeBodyContactModel(kMass, Vec3(0.004, 0.008, 0.004), Vec3(0, -kG, 0), 0.1, {}, ""),
       "block.osim");
   CollisionModel model;
   CollisionGeometry box;
@@ -61,7 +60,8 @@ TEST(NscContactTableTest, SlidingBlockReportsItsWeightAndCoulombFriction) {
   nsc.solver.tolerance = 1e-12;
   engine::NscIntegrator integrator(*system, provider, settings, nsc);
   const NscContactTable table(*system, integrator, *provider);
-  ASSERT_EQ(table.labels().size(), 2u * 6u + 1u + 1u);  // ground, body; all; ground-body
+  // ground, body; all; ground-body; the solver's iterations, residual, unconverged steps
+  ASSERT_EQ(table.labels().size(), 2u * 6u + 1u + 1u + 3u);
   engine::State state = engine::MakeDefaultState(*system);
   engine::SetCoordinateValue(*system, state, "ty", 0.05);
   engine::SetCoordinateSpeed(*system, state, "tx", kV0);
@@ -91,6 +91,15 @@ TEST(NscContactTableTest, SlidingBlockReportsItsWeightAndCoulombFriction) {
   EXPECT_LE(active, 4.0);
   EXPECT_EQ(Column(table, row, "nsc_contact.ground-body.active_contacts"), active);
   EXPECT_GT(state.bodies[1].v_GB.x(), 1.0) << "still sliding";
+  // The solver's columns: the last step's solve and the count of solves so far that stopped
+  // above the tolerance (the solver's own test: final residual > tolerance).
+  EXPECT_EQ(Column(table, row, "nsc_contact.solver_iterations"), integrator.last_step().iterations);
+  EXPECT_EQ(Column(table, row, "nsc_contact.solver_residual"), integrator.last_step().residual);
+  EXPECT_EQ(Column(table, row, "nsc_contact.unconverged_steps"),
+            static_cast<double>(integrator.solve_summary().unconverged));
+  EXPECT_LE(integrator.solve_summary().most_iterations, nsc.solver.max_iterations);
+  EXPECT_EQ(integrator.solve_summary().unconverged > 0,
+            integrator.solve_summary().worst_residual > nsc.solver.tolerance);
   std::cout << "nsc table: sliding block force " << force.transpose() << " N (closed form "
             << -kMu * kMass * kG << " " << kMass * kG << " 0), torque " << torque.transpose()
             << " N m, " << active << " active contacts\n";

@@ -22,6 +22,8 @@ NscContactTable::NscContactTable(const engine::System& system,
   labels_.push_back(prefix + "active_contacts");
   for (const auto& [a, b] : pairs_)
     labels_.push_back(prefix + name(a) + "-" + name(b) + ".active_contacts");
+  for (const char* solver : {"solver_iterations", "solver_residual", "unconverged_steps"})
+    labels_.push_back(prefix + solver);
 }
 
 void NscContactTable::Row(std::vector<double>& row) const {
@@ -47,6 +49,9 @@ void NscContactTable::Row(std::vector<double>& row) const {
   }
   row.push_back(active);
   for (const int count : per_pair) row.push_back(count);
+  row.push_back(integrator_.last_step().iterations);
+  row.push_back(integrator_.last_step().residual);
+  row.push_back(static_cast<double>(integrator_.solve_summary().unconverged));
 }
 
 }  // namespace sinew::contact

@@ -61,6 +61,11 @@ void NscIntegrator::Step(State& state, double h, double t_new) {
   report_ = NscStepReport{h, static_cast<int>(contacts_.size()), 0, 0, 0.0};
   if (!contacts_.empty()) {
     SolveContacts(state, h);
+    ++summary_.solves;
+    // The solver's own test: it stops once the residual is at most the tolerance.
+    if (!(report_.residual <= nsc_.solver.tolerance)) ++summary_.unconverged;
+    summary_.most_iterations = std::max(summary_.most_iterations, report_.iterations);
+    summary_.worst_residual = std::max(summary_.worst_residual, report_.residual);
   } else {
     previous_contacts_.clear();
   }

@@ -56,6 +56,16 @@ struct NscStepReport {
   double residual = 0.0;  ///< its final residual (m/s; see ContactSolverResult)
 };
 
+/// The impulse solves of every step taken so far. A solve has converged when its final
+/// residual is at most the tolerance (the solver's own stopping rule); one that has not stopped
+/// at the iteration limit with the best impulses it found.
+struct NscSolveSummary {
+  long solves = 0;              ///< steps with contacts (one impulse solve each)
+  long unconverged = 0;         ///< solves that ended above the tolerance (at the limit)
+  int most_iterations = 0;      ///< the most iterations one solve made
+  double worst_residual = 0.0;  ///< the largest final residual of a solve (m/s)
+};
+
 /// The impulse the last step's contacts gave one body: N s, and N m s about the body's origin
 /// (at the step's start), in G. Divided by the step, the mean force and torque over the step.
 struct BodyContactImpulse {
@@ -74,6 +84,9 @@ class NscIntegrator final : public FixedStepIntegrator {
   const NscSettings& nsc_settings() const { return nsc_; }
   /// The last step's contact count, solver iterations and residual.
   const NscStepReport& last_step() const { return report_; }
+  /// The impulse solves of every step so far: how many did not reach the tolerance, the most
+  /// iterations and the worst residual.
+  const NscSolveSummary& solve_summary() const { return summary_; }
   /// The contacts of the last step (at its start) and their impulses (N s), three per contact:
   /// along n_G, then along two tangents (see ContactFrame).
   const std::vector<UnilateralContact>& last_contacts() const { return contacts_; }
@@ -102,6 +115,7 @@ class NscIntegrator final : public FixedStepIntegrator {
   std::shared_ptr<const ContactProvider> provider_;
   NscSettings nsc_;
   NscStepReport report_;
+  NscSolveSummary summary_;
   std::vector<UnilateralContact> contacts_;
   // The previous step's contacts and impulses, to warm-start the solve (WarmStart).
   std::vector<UnilateralContact> previous_contacts_;

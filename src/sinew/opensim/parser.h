@@ -5,6 +5,7 @@
 #pragma once
 
 #include <sinew/contact/collision_model.h>
+#include <sinew/engine/nsc_integrator.h>
 #include <sinew/engine/system.h>
 #include <sinew/forces/actuator.h>
 #include <sinew/forces/excitation_controller.h>
@@ -64,6 +65,11 @@ class OpenSimParser {
   }
   /// SMC's friction regularization speed v_s (m/s, default 1e-3): docs/contact.md.
   void SetFrictionSlipSpeed(double speed) { collision_settings_.slip_speed = speed; }
+  /// The settings of NSC's time stepper (its impulse solver's method, iterations and
+  /// tolerance; its recovery and bounce speeds) that runs of an NSC model use
+  /// (opensim::MakeRunIntegrator; default engine::NscSettings{}): docs/contact.md.
+  void SetNscSettings(const engine::NscSettings& settings) { nsc_settings_ = settings; }
+  const engine::NscSettings& GetNscSettings() const { return nsc_settings_; }
   /// Prints what is built, and every warning, to stderr while parsing (default: off).
   void SetVerbose(bool verbose) { verbose_ = verbose; }
   /// With true, every actuator starts with the constant excitation 1 (default: 0, OpenSim's
@@ -165,6 +171,7 @@ class OpenSimParser {
   std::vector<std::pair<std::string, std::string>> force_class_renames_;
   std::vector<std::string> geometry_dirs_;
   ContactMethod contact_method_ = ContactMethod::kNsc;
+  engine::NscSettings nsc_settings_;
 
   model::ModelSpec spec_;
   Report report_;

@@ -31,7 +31,8 @@ std::unique_ptr<engine::Integrator> MakeRunIntegrator(const std::string& name,
       std::make_shared<contact::CollisionContactProvider>(model, std::nullopt, nsc, X_GB_rest);
   engine::IntegratorSettings nsc_settings = settings;
   if (!(nsc_settings.step > 0.0)) nsc_settings.step = kDefaultNscStep;
-  return std::make_unique<engine::NscIntegrator>(system, std::move(provider), nsc_settings);
+  return std::make_unique<engine::NscIntegrator>(system, std::move(provider), nsc_settings,
+                                                 parser.GetNscSettings());
 }
 
 }  // namespace sinew::opensim

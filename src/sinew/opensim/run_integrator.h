@@ -22,11 +22,11 @@ inline constexpr double kDefaultNscStep = 1e-3;
 bool UsesNscContact(const OpenSimParser& parser);
 
 /// For NSC (UsesNscContact): engine::NscIntegrator at `settings.step` (kDefaultNscStep when not
-/// > 0) over the parser's collision model (its ground plane with the rest of the environment),
-/// each pair's friction and restitution combined from its shapes' materials, the pairs
-/// overlapping at the default pose left out. Otherwise
-/// engine::MakeIntegrator(`name`, ...). `system` is what `parser` built; both must outlive the
-/// integrator. Throws sinew::Error as MakeIntegrator does.
+/// > 0) with the parser's NSC settings (OpenSimParser::SetNscSettings) over its collision model
+/// (its ground plane with the rest of the environment), each pair's friction and restitution
+/// combined from its shapes' materials, the pairs overlapping at the default pose left out.
+/// Otherwise engine::MakeIntegrator(`name`, ...). `system` is what `parser` built; both must
+/// outlive the integrator. Throws sinew::Error as MakeIntegrator does.
 std::unique_ptr<engine::Integrator> MakeRunIntegrator(const std::string& name,
                                                       const engine::System& system,
                                                       const OpenSimParser& parser,
