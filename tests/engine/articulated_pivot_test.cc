@@ -9,6 +9,7 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
 
 #include "engine/test_models.h"
 
@@ -107,6 +108,46 @@ TEST(ArticulatedPivotTest, ClosedFormCouplingEqualsSolvesForEveryNumberOfSpeeds)
       } else {
         EXPECT_GT(update, 1e-3);
       }
+    }
+  }
+}
+
+// Every speed locked or prescribed one by one (a locked joint: a hung skeleton's pelvis), N a
+// scaled permutation: solved without the small LU. Checked as above and, for right-hand sides
+// on every row (twist, speeds, joint rows, coordinate rows), against a dense LU of K.
+TEST(ArticulatedPivotTest, EverySpeedLockedSolvesAsTheDenseLu) {
+  for (int nu = 1; nu <= 6; ++nu) {
+    for (int variant = 0; variant < 2; ++variant) {
+      SCOPED_TRACE(::testing::Message() << nu << " speeds, variant " << variant);
+      const Mat6 M = SpatialInertia(2.0 + nu, Vec3(0.05, -0.1, 0.02 * nu),
+                                    Vec3(0.11, 0.07, 0.05).asDiagonal());
+      Mat6X S = Mat6X::Zero(6, nu);
+      for (int k = 0; k < nu; ++k) {
+        S(k, k) = 1.0;
+        S((k + 2) % 6, k) = 0.3 * (k + 1);
+      }
+      // Identity rows in order, or reversed and scaled (a prescribed speed's row may carry a
+      // factor, and the rows need not follow the speeds' order).
+      MatX N = MatX::Zero(nu, nu);
+      for (int i = 0; i < nu; ++i) {
+        if (variant == 0) {
+          N(i, i) = 1.0;
+        } else {
+          N(i, nu - 1 - i) = -0.5 - 0.25 * i;
+        }
+      }
+      const PivotCase c = MakeCase(M, S, N, nu + variant);
+      ExpectCouplingExact(c, nu);
+      ArticulatedPivot pivot;
+      ASSERT_TRUE(pivot.Factorize(c.K, nu));
+      const int n = static_cast<int>(c.K.rows());
+      Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 24, 1> x(n);
+      for (int i = 0; i < n; ++i) x[i] = std::sin(1.7 * i + nu) + 0.2 * variant;
+      const VecX rhs = x;
+      pivot.SolveInPlace(x);
+      const MatX K = c.K;
+      const VecX dense = K.fullPivLu().solve(rhs);
+      EXPECT_LT(RelativeError(x, dense), 1e-10);
     }
   }
 }

@@ -2,6 +2,8 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace sinew::engine {
 namespace {
@@ -41,6 +43,7 @@ bool ArticulatedPivot::Factorize(const Block& K, int nu) {
   S_.noalias() = -Jinv_ * K.block(rows, 6, 6, nu);
   MS_.noalias() = M_ * S_;
   fixed_nu_ = 0;
+  all_locked_ = false;
   if (nu_ + nc_ == 0) return true;  // the joint rows alone fix the twist
   // D's scale is that of M_A seen through S: a pivot far below it means a direction with
   // (nearly) no inertia that the joint leaves free.
@@ -57,6 +60,11 @@ bool ArticulatedPivot::Factorize(const Block& K, int nu) {
         break;
     }
   }
+  all_locked_ = FindLockedSpeeds(K, inertia_scale);
+  if (all_locked_) {
+    D_.topLeftCorner(nu_, nu_).noalias() = S_.transpose() * MS_;
+    return true;
+  }
   Small small(nu_ + nc_, nu_ + nc_);
   small.topLeftCorner(nu_, nu_).noalias() = S_.transpose() * MS_;
   small.topRightCorner(nu_, nc_) = K.block(12 + nu_, 6, nc_, nu_).transpose();
@@ -65,6 +73,29 @@ bool ArticulatedPivot::Factorize(const Block& K, int nu) {
   small_.compute(small);
   const auto pivots = small_.matrixLU().diagonal().cwiseAbs();
   return pivots.minCoeff() > kMinPivot * std::max(pivots.maxCoeff(), inertia_scale);
+}
+
+bool ArticulatedPivot::FindLockedSpeeds(const Block& K, double inertia_scale) {
+  if (nc_ != nu_) return false;
+  const auto N = K.block(12 + nu_, 6, nc_, nu_);
+  std::array<bool, 6> taken{};
+  double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < nc_; ++i) {
+    int column = -1;
+    for (int k = 0; k < nu_; ++k) {
+      if (N(i, k) == 0.0) continue;
+      if (column >= 0) return false;  // a row mixing speeds
+      column = k;
+    }
+    if (column < 0 || taken[column]) return false;
+    taken[column] = true;
+    locked_speed_[i] = column;
+    lock_scale_[i] = N(i, column);
+    largest = std::max(largest, std::abs(lock_scale_[i]));
+    smallest = std::min(smallest, std::abs(lock_scale_[i]));
+  }
+  // The small system's determinant is det(N)^2: the generic LU's pivot test, on N's entries.
+  return smallest > kMinPivot * std::max(largest, inertia_scale);
 }
 
 template <int NU>

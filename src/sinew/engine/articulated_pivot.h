@@ -34,6 +34,7 @@
 #include <sinew/math/types.h>
 
 #include <Eigen/LU>
+#include <array>
 
 namespace sinew::engine {
 
@@ -79,6 +80,16 @@ class ArticulatedPivot {
   Eigen::Matrix<double, 6, 6> Jinv_ = Eigen::Matrix<double, 6, 6>::Zero();  // J_B^-1
   Six S_, MS_;                                                              // S and M_A S
   Eigen::PartialPivLU<Small> small_;                                        // [D N^T; N 0]
+  // Every speed locked or prescribed one by one (a locked joint, e.g. a hung skeleton's pelvis):
+  // N is square with one nonzero per row, N(i, locked_speed_[i]) = lock_scale_[i], in distinct
+  // columns. Then [D N^T; N 0] is solved without a factorization: u = N^-1 y_mu and
+  // mu = N^-T (y_u - D u), with D_ = S^T M_A S kept.
+  bool all_locked_ = false;
+  std::array<int, 6> locked_speed_{};
+  std::array<double, 6> lock_scale_{};
+  Eigen::Matrix<double, 6, 6> D_ = Eigen::Matrix<double, 6, 6>::Zero();
+  // Whether the coordinate rows of K (nc_ = nu_) lock every speed one by one; fills the above.
+  bool FindLockedSpeeds(const Block& K, double inertia_scale);
   // y = [D N^T; N 0]^-1 y in place with small_'s factors (substitution written out: Eigen's
   // blocked triangular solves cost more than the arithmetic on these few rows).
   template <typename Y>
@@ -106,6 +117,16 @@ template <typename Y>
 void ArticulatedPivot::SolveSmallInPlace(Y& y) const {
   const int n = nu_ + nc_;
   if (n == 0) return;
+  if (all_locked_) {
+    // u = N^-1 y_mu, then mu = N^-T (y_u - D u), row by row (N is a scaled permutation).
+    Y u = y.topRows(nu_);  // y_u, kept for mu
+    for (int i = 0; i < nc_; ++i) {
+      y.row(locked_speed_[i]) = y.row(nu_ + i) / lock_scale_[i];
+    }
+    u.noalias() -= D_.topLeftCorner(nu_, nu_) * y.topRows(nu_);
+    for (int i = 0; i < nc_; ++i) y.row(nu_ + i) = u.row(locked_speed_[i]) / lock_scale_[i];
+    return;
+  }
   y = small_.permutationP() * y;
   const Small& LU = small_.matrixLU();
   for (int i = 1; i < n; ++i) {
