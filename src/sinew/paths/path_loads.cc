@@ -41,6 +41,11 @@ void AddPointForce(std::span<const Transform> X_GB, int body, const Vec3& p_BP, 
   if (body == model::kGroundIndex) return;
   SpatialVec F;
   F << (X_GB[body].R * p_BP).cross(f_G), f_G;
+  // Consecutive points are mostly on one body: the last wrench first.
+  if (!wrenches.empty() && wrenches.back().body == body) {
+    wrenches.back().F_G += F;
+    return;
+  }
   auto same = std::find_if(wrenches.begin(), wrenches.end(),
                            [&](const BodyWrench& w) { return w.body == body; });
   if (same == wrenches.end()) {
@@ -99,12 +104,15 @@ void CalcLengthGradient(const PathState& state, std::span<const Transform> X_GB,
   // AddGeneralizedForces of CalcPathLoads at a tension of -1 (which pushes: its generalized
   // force is +dL/du), term by term in the same order, without storing the loads.
   std::vector<BodyWrench>& wrenches = EmptyWrenches();
+  bool moving = false;
   for (size_t i = 0; i < state.points.size(); ++i) {
     const PathPointState& p = state.points[i];
     AddPointForce(X_GB, p.body, p.p_BP, -PullDirection(state, i), wrenches);
+    moving = moving || p.coordinates[0] != model::kNone || p.coordinates[1] != model::kNone ||
+             p.coordinates[2] != model::kNone;
   }
   AddWrenchPowers(wrenches, columns, dL_du);
-  for (size_t i = 0; i < state.points.size(); ++i) {
+  for (size_t i = 0; moving && i < state.points.size(); ++i) {
     const PathPointState& p = state.points[i];
     for (int axis = 0; axis < 3; ++axis) {
       if (p.coordinates[axis] == model::kNone) continue;
