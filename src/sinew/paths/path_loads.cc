@@ -35,23 +35,29 @@ std::vector<BodyWrench>& EmptyWrenches() {
   return wrenches;
 }
 
-// Adds the force f_G at p_BP of `body` to that body's wrench (none for ground).
+// Adds the force f_G at p_BP of `body` to that body's wrench (none for ground). The moment and
+// the force go into the wrench's halves directly: a six-vector assembled from them in memory
+// and read back whole stalls the store forwarding.
 void AddPointForce(std::span<const Transform> X_GB, int body, const Vec3& p_BP, const Vec3& f_G,
                    std::vector<BodyWrench>& wrenches) {
   if (body == model::kGroundIndex) return;
-  SpatialVec F;
-  F << (X_GB[body].R * p_BP).cross(f_G), f_G;
+  const Vec3 moment = (X_GB[body].R * p_BP).cross(f_G);
   // Consecutive points are mostly on one body: the last wrench first.
+  BodyWrench* same = nullptr;
   if (!wrenches.empty() && wrenches.back().body == body) {
-    wrenches.back().F_G += F;
-    return;
-  }
-  auto same = std::find_if(wrenches.begin(), wrenches.end(),
-                           [&](const BodyWrench& w) { return w.body == body; });
-  if (same == wrenches.end()) {
-    wrenches.push_back({body, F});
+    same = &wrenches.back();
   } else {
-    same->F_G += F;
+    auto found = std::find_if(wrenches.begin(), wrenches.end(),
+                              [&](const BodyWrench& w) { return w.body == body; });
+    if (found != wrenches.end()) same = &*found;
+  }
+  if (same == nullptr) {
+    wrenches.push_back({body, SpatialVec::Zero()});
+    wrenches.back().F_G.head<3>() = moment;
+    wrenches.back().F_G.tail<3>() = f_G;
+  } else {
+    same->F_G.head<3>() += moment;
+    same->F_G.tail<3>() += f_G;
   }
 }
 
