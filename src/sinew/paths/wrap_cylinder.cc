@@ -199,19 +199,29 @@ void RefineTangency(const Vec3& p_WP, const Vec3& p_WS, double radius, Helix* he
   TangentPointRefinement first(p_WP, pair->t1), second(p_WS, pair->t2);
   int last_samples = -1;
   double s = 0.0;
+  // The number of samples is the helix's length (Helix::Length) over 2 mm, truncated. Its
+  // square root and division are taken only when the squared length leaves the range that
+  // gives the last number with a margin of 1e-12 (far beyond their rounding), so the number
+  // is always the one they give.
+  double same_above = 0.0, same_below = -1.0;
   for (int refinement = 0; refinement < kMaxRefinements; ++refinement) {
     const double rise = helix->rise;
-    // Helix::Length.
-    const int samples =
-        static_cast<int>(std::sqrt(arc_squared + rise * rise) / kHelixSampleSpacing);
-    if (samples < 2) break;
-    if (samples != last_samples) {
-      last_samples = samples;
-      s = 1.0 / samples;
-      const Vec3 after_t1 = helix->PointAt(pair->t1, s);
-      const Vec3 before_t2 = helix->PointAt(pair->t1, 1.0 - s);
-      first.SetSample(after_t1.x(), after_t1.y());
-      second.SetSample(before_t2.x(), before_t2.y());
+    const double length_squared = arc_squared + rise * rise;
+    if (!(length_squared > same_above && length_squared < same_below)) {
+      const int samples = static_cast<int>(std::sqrt(length_squared) / kHelixSampleSpacing);
+      if (samples < 2) break;
+      const double low = samples * kHelixSampleSpacing;
+      const double high = (samples + 1) * kHelixSampleSpacing;
+      same_above = low * low * (1.0 + 1e-12);
+      same_below = high * high * (1.0 - 1e-12);
+      if (samples != last_samples) {
+        last_samples = samples;
+        s = 1.0 / samples;
+        const Vec3 after_t1 = helix->PointAt(pair->t1, s);
+        const Vec3 before_t2 = helix->PointAt(pair->t1, 1.0 - s);
+        first.SetSample(after_t1.x(), after_t1.y());
+        second.SetSample(before_t2.x(), before_t2.y());
+      }
     }
     // As OpenSim does, T2's check uses the helix of the previous T2 started at the new T1.
     const bool moved_t1 = first.Step(pair->t1.z() + s * rise, &pair->t1.z());
