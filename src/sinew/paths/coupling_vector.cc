@@ -47,6 +47,28 @@ void CouplingFrom(const Eigen::MatrixXd& A, const Eigen::VectorXd& lambda, int j
   for (size_t c = 0; c < n; ++c) coupling[c] = u(static_cast<Eigen::Index>(c)) / u_j;
 }
 
+// The one row of A that involves coordinate j when that row shares no coordinate with any other
+// row (a coupler whose coordinates no other coupler or lock involves: each of Rajagopal's knees
+// with its patella); -1 otherwise. A A^T is then block diagonal with (a_r . a_r) alone in its
+// block, and A e_j is zero outside row r, so (A A^T)^+ A e_j is a_rj / (a_r . a_r) at r and zero
+// elsewhere: no factorization.
+Eigen::Index LoneRow(const Eigen::MatrixXd& A, int j) {
+  Eigen::Index r = -1;
+  for (Eigen::Index i = 0; i < A.rows(); ++i) {
+    if (A(i, j) == 0.0) continue;
+    if (r >= 0) return -1;
+    r = i;
+  }
+  if (r < 0) return -1;
+  for (Eigen::Index c = 0; c < A.cols(); ++c) {
+    if (A(r, c) == 0.0) continue;
+    for (Eigen::Index i = 0; i < A.rows(); ++i) {
+      if (i != r && A(i, c) != 0.0) return -1;
+    }
+  }
+  return r;
+}
+
 // e_j of size n, into `e`.
 void Unit(size_t n, int j, std::vector<double>& e) {
   e.assign(n, 0.0);
@@ -86,6 +108,10 @@ void CalcCouplingVectors(const model::ModelSpec& spec,
     } else if ((A.col(j).array() == 0.0).all()) {
       // No constraint involves j (A e_j = 0, so lambda = 0): it moves alone. Most coordinates.
       Unit(q.size(), j, out[k]);
+    } else if (const Eigen::Index r = LoneRow(A, j); r >= 0) {
+      Eigen::VectorXd lambda = Eigen::VectorXd::Zero(A.rows());
+      lambda(r) = A(r, j) / A.row(r).squaredNorm();
+      CouplingFrom(A, lambda, j, out[k]);
     } else {
       if (!factorized) {
         AAt.compute(A * A.transpose());

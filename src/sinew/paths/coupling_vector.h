@@ -24,8 +24,9 @@ std::vector<double> CalcCouplingVector(const model::ModelSpec& spec,
 
 /// The coupling vectors of `coordinates` at q (`out[k]` for coordinates[k], as
 /// CalcCouplingVector gives it). The coordinates that are not locked share their constraint
-/// rows: one that no row involves moves alone (e_j, without solving), and the rows are
-/// factorized once for all the others.
+/// rows: one that no row involves moves alone (e_j, without solving), one involved in a single
+/// row that shares no coordinate with any other row takes that row's closed-form solution, and
+/// the rows are factorized once for all the others.
 void CalcCouplingVectors(const model::ModelSpec& spec,
                          const kinematics::CoordinateCouplers& couplers, std::span<const double> q,
                          std::span<const int> coordinates, std::vector<std::vector<double>>& out);

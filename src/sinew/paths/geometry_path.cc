@@ -149,8 +149,8 @@ void GeometryPath::CalcState(std::span<const double> q, std::span<const Transfor
                 "only " + std::to_string(state.points.size()) +
                     " of the path's points are active at this pose; a path needs two");
   }
-  ApplyWraps(q, X_GB, state, with_arc_points);
-  CalcSegments(state);
+  // The wrapping passes end with the segments of the path they leave, unless they stop early.
+  if (!ApplyWraps(q, X_GB, state, with_arc_points)) CalcSegments(state);
 }
 
 void GeometryPath::CalcSegments(PathState& state) {
@@ -336,11 +336,11 @@ void GeometryPath::RemoveTangentPoints(int w, PathState& state) {
 // path with one of them; with several, the passes repeat (at most 8) until the length changes
 // by less than 0.5 mm, each object rewrapping the path the others left. After the first pass,
 // when the first object does not wrap and the second has a point inside it, the two swap.
-void GeometryPath::ApplyWraps(std::span<const double> q, std::span<const Transform> X_GB,
+bool GeometryPath::ApplyWraps(std::span<const double> q, std::span<const Transform> X_GB,
                               PathState& state, bool with_arc_points) const {
   state.stale_tangent_points = 0;
   const int num_wraps = static_cast<int>(wraps_.size());
-  if (num_wraps == 0) return;
+  if (num_wraps == 0) return false;
   std::vector<int>& order = state.wrap_passes.order;
   order.resize(static_cast<size_t>(num_wraps));
   for (int i = 0; i < num_wraps; ++i) order[static_cast<size_t>(i)] = i;
@@ -354,7 +354,7 @@ void GeometryPath::ApplyWraps(std::span<const double> q, std::span<const Transfo
     for (int i = 0; i < num_wraps; ++i) {
       if (!ApplyWrap(order[static_cast<size_t>(i)], q, X_GB, state,
                      outcomes[static_cast<size_t>(i)], reads, with_arc_points)) {
-        return;
+        return false;
       }
     }
     for (PathPointState& point : state.points) reads.Read(point);
@@ -372,8 +372,10 @@ void GeometryPath::ApplyWraps(std::span<const double> q, std::span<const Transfo
       std::swap(order[0], order[1]);
       RemoveTangentPoints(0, state);
       if (with_arc_points) ClearArcs(0, state);
+      if (pass + 1 == max_passes) return false;  // the path changed after its segments
     }
   }
+  return true;
 }
 
 }  // namespace sinew::paths

@@ -179,7 +179,9 @@ class GeometryPath {
                  bool with_arc_points = false) const;
 
  private:
-  void ApplyWraps(std::span<const double> q, std::span<const Transform> X_GB, PathState& state,
+  // True when it leaves the segments (CalcSegments) of the path it leaves; false when it
+  // stops before (no wrap objects, or a range without active points).
+  bool ApplyWraps(std::span<const double> q, std::span<const Transform> X_GB, PathState& state,
                   bool with_arc_points) const;
   bool ApplyWrap(int wrap, std::span<const double> q, std::span<const Transform> X_GB,
                  PathState& state, WrapOutcome& outcome, TangentPointReads& reads,

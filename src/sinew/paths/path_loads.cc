@@ -35,18 +35,29 @@ std::vector<BodyWrench>& EmptyWrenches() {
   return wrenches;
 }
 
-// Adds the force f_G at p_BP of `body` to that body's wrench (none for ground).
+// Adds the force f_G at p_BP of `body` to that body's wrench (none for ground). The moment and
+// the force go into the wrench's halves directly: a six-vector assembled from them in memory
+// and read back whole stalls the store forwarding.
 void AddPointForce(std::span<const Transform> X_GB, int body, const Vec3& p_BP, const Vec3& f_G,
                    std::vector<BodyWrench>& wrenches) {
   if (body == model::kGroundIndex) return;
-  SpatialVec F;
-  F << (X_GB[body].R * p_BP).cross(f_G), f_G;
-  auto same = std::find_if(wrenches.begin(), wrenches.end(),
-                           [&](const BodyWrench& w) { return w.body == body; });
-  if (same == wrenches.end()) {
-    wrenches.push_back({body, F});
+  const Vec3 moment = (X_GB[body].R * p_BP).cross(f_G);
+  // Consecutive points are mostly on one body: the last wrench first.
+  BodyWrench* same = nullptr;
+  if (!wrenches.empty() && wrenches.back().body == body) {
+    same = &wrenches.back();
   } else {
-    same->F_G += F;
+    auto found = std::find_if(wrenches.begin(), wrenches.end(),
+                              [&](const BodyWrench& w) { return w.body == body; });
+    if (found != wrenches.end()) same = &*found;
+  }
+  if (same == nullptr) {
+    wrenches.push_back({body, SpatialVec::Zero()});
+    wrenches.back().F_G.head<3>() = moment;
+    wrenches.back().F_G.tail<3>() = f_G;
+  } else {
+    same->F_G.head<3>() += moment;
+    same->F_G.tail<3>() += f_G;
   }
 }
 
@@ -99,12 +110,15 @@ void CalcLengthGradient(const PathState& state, std::span<const Transform> X_GB,
   // AddGeneralizedForces of CalcPathLoads at a tension of -1 (which pushes: its generalized
   // force is +dL/du), term by term in the same order, without storing the loads.
   std::vector<BodyWrench>& wrenches = EmptyWrenches();
+  bool moving = false;
   for (size_t i = 0; i < state.points.size(); ++i) {
     const PathPointState& p = state.points[i];
     AddPointForce(X_GB, p.body, p.p_BP, -PullDirection(state, i), wrenches);
+    moving = moving || p.coordinates[0] != model::kNone || p.coordinates[1] != model::kNone ||
+             p.coordinates[2] != model::kNone;
   }
   AddWrenchPowers(wrenches, columns, dL_du);
-  for (size_t i = 0; i < state.points.size(); ++i) {
+  for (size_t i = 0; moving && i < state.points.size(); ++i) {
     const PathPointState& p = state.points[i];
     for (int axis = 0; axis < 3; ++axis) {
       if (p.coordinates[axis] == model::kNone) continue;

@@ -135,58 +135,100 @@ Helix CalcHelix(const TangentPair& pair, bool long_way) {
   return {turn, pair.t2.z() - pair.t1.z()};
 }
 
-// The helix's samples next to its ends (at s = 1 / samples and 1 - 1 / samples) during the
-// tangency refinement. The refinement moves T1 and T2 along their generators only, so the
-// helix's turn and T1's radial position stay: a sample's position about the axis changes only
-// with the number of samples, and is recomputed only then; its height follows T1 and the rise.
-class HelixSamplesNearEnds {
+// OpenSim's tangency refinement of one tangent point T (from path point X) against the helix
+// sample W next to T: when the segment X-T and the helix's start T-W leave the cylinder's axis
+// at angles a1, a2 (in [0, pi]) differing by more than the tolerance, T moves along its
+// generator 1.5 times toward where the line X-W passes it. The refinement moves T and W along z
+// only (W's position about the axis changes only with the number of samples), so what depends
+// on their x and y is computed when W's changes (SetSample), and a step costs a square root:
+// |a1 - a2| <= tol exactly when cos(a1 - a2) = cos a1 cos a2 + sin a1 sin a2 >= cos tol (no arc
+// cosines), both sides times |X-T| |T-W|. Every quantity is formed as OpenSim's vectors' would
+// be (x^2 + y^2 first, then + z^2), so the steps are the same to the last bit.
+class TangentPointRefinement {
  public:
-  HelixSamplesNearEnds(const Helix& helix, const Vec3& p_WT1) : helix_(helix), p_WT1_(p_WT1) {}
-  // Sets the number of samples (>= 2) and the current rise.
-  void Update(int samples, double rise) {
-    helix_.rise = rise;
-    if (samples == samples_) return;
-    samples_ = samples;
-    s_ = 1.0 / samples;
-    after_t1_ = helix_.PointAt(p_WT1_, s_);
-    before_t2_ = helix_.PointAt(p_WT1_, 1.0 - s_);
+  TangentPointRefinement(const Vec3& p_WX, const Vec3& p_WT)
+      : x_z_(p_WX.z()),
+        t_x_(p_WT.x()),
+        t_y_(p_WT.y()),
+        d1_x_(p_WT.x() - p_WX.x()),
+        d1_y_(p_WT.y() - p_WX.y()),
+        x_x_(p_WX.x()),
+        x_y_(p_WX.y()) {
+    d1_radial_squared_ = d1_x_ * d1_x_ + d1_y_ * d1_y_;
   }
-  // The samples for T1 at height z1 (as Helix::PointAt from T1 there).
-  Vec3 AfterT1(double z1) const { return {after_t1_.x(), after_t1_.y(), z1 + s_ * helix_.rise}; }
-  Vec3 BeforeT2(double z1) const {
-    return {before_t2_.x(), before_t2_.y(), z1 + (1.0 - s_) * helix_.rise};
+  // W's position about the axis is now (w_x, w_y).
+  void SetSample(double w_x, double w_y) {
+    const double d2_x = w_x - t_x_, d2_y = w_y - t_y_;
+    d2_radial_squared_ = d2_x * d2_x + d2_y * d2_y;
+    radial_ = std::sqrt(d1_radial_squared_ * d2_radial_squared_);
+    // Where the line X-W passes T's generator: X + slide (W - X), of which only z moves.
+    const double e_x = w_x - x_x_, e_y = w_y - x_y_;
+    const double e_radial_squared = e_x * e_x + e_y * e_y;
+    movable_ = e_radial_squared > 0.0;
+    slide_ = movable_ ? (d1_x_ * e_x + d1_y_ * e_y) / e_radial_squared : 0.0;
+  }
+  // One step with W at height w_z; T at height *t_z. True if T moved.
+  bool Step(double w_z, double* t_z) const {
+    const double d1_z = *t_z - x_z_, d2_z = w_z - *t_z;
+    const double lengths_squared =
+        (d1_radial_squared_ + d1_z * d1_z) * (d2_radial_squared_ + d2_z * d2_z);
+    if (d1_z * d2_z + radial_ >= kCosTangencyTolerance * std::sqrt(lengths_squared)) {
+      return false;
+    }
+    if (!movable_) return false;
+    const double z_nearest = x_z_ + slide_ * (w_z - x_z_);
+    *t_z += 1.5 * (z_nearest - *t_z);
+    return true;
   }
 
  private:
-  Helix helix_;
-  Vec3 p_WT1_;
-  int samples_ = -1;
-  double s_ = 0.0;
-  Vec3 after_t1_ = Vec3::Zero(), before_t2_ = Vec3::Zero();
+  double x_z_, t_x_, t_y_, d1_x_, d1_y_, x_x_, x_y_;
+  double d1_radial_squared_ = 0.0, d2_radial_squared_ = 0.0, radial_ = 0.0, slide_ = 0.0;
+  bool movable_ = false;
 };
 
-// Whether the segment along d1 and the helix's start along d2 leave the cylinder's axis at
-// angles a1, a2 (in [0, pi]) within the tolerance: |a1 - a2| <= tol exactly when
-// cos(a1 - a2) = cos a1 cos a2 + sin a1 sin a2 >= cos tol (no arc cosines).
-bool WithinTangencyTolerance(const Vec3& d1, const Vec3& d2) {
-  // Both sides times |d1| |d2|.
-  const double radial = std::sqrt(Radial(d1).squaredNorm() * Radial(d2).squaredNorm());
-  return d1.z() * d2.z() + radial >=
-         kCosTangencyTolerance * std::sqrt(d1.squaredNorm() * d2.squaredNorm());
-}
-
-// OpenSim's tangency refinement of one tangent point T (from path point X): when the segment
-// X-T and the helix's start T-W leave the axis at angles differing by more than the tolerance,
-// T moves along its generator 1.5 times toward where the line X-W passes it. True if it moved.
-bool RefineTangentPoint(const Vec3& p_WX, const Vec3& p_WW, Vec3* p_WT) {
-  if (WithinTangencyTolerance(*p_WT - p_WX, p_WW - *p_WT)) return false;
-  const Vec3 e = p_WW - p_WX;
-  const double radial_squared = Radial(e).squaredNorm();
-  if (radial_squared <= 0.0) return false;
-  const double s = Radial(*p_WT - p_WX).dot(Radial(e)) / radial_squared;
-  const double z_nearest = p_WX.z() + s * e.z();
-  p_WT->z() += 1.5 * (z_nearest - p_WT->z());
-  return true;
+// OpenSim's refinement (paths with several wrap objects): T1 against the helix's sample at
+// s = 1 / samples, T2 against the one at 1 - 1 / samples, the helix sampled every 2 mm, until
+// neither moves or 100 times. The points move along their generators only, so the helix's turn
+// and the samples' positions about the axis stay; those are recomputed only when the number
+// of samples changes, and the heights follow T1 and the rise.
+void RefineTangency(const Vec3& p_WP, const Vec3& p_WS, double radius, Helix* helix,
+                    TangentPair* pair) {
+  const double arc = radius * helix->turn;
+  const double arc_squared = arc * arc;
+  TangentPointRefinement first(p_WP, pair->t1), second(p_WS, pair->t2);
+  int last_samples = -1;
+  double s = 0.0;
+  // The number of samples is the helix's length (Helix::Length) over 2 mm, truncated. Its
+  // square root and division are taken only when the squared length leaves the range that
+  // gives the last number with a margin of 1e-12 (far beyond their rounding), so the number
+  // is always the one they give.
+  double same_above = 0.0, same_below = -1.0;
+  for (int refinement = 0; refinement < kMaxRefinements; ++refinement) {
+    const double rise = helix->rise;
+    const double length_squared = arc_squared + rise * rise;
+    if (!(length_squared > same_above && length_squared < same_below)) {
+      const int samples = static_cast<int>(std::sqrt(length_squared) / kHelixSampleSpacing);
+      if (samples < 2) break;
+      const double low = samples * kHelixSampleSpacing;
+      const double high = (samples + 1) * kHelixSampleSpacing;
+      same_above = low * low * (1.0 + 1e-12);
+      same_below = high * high * (1.0 - 1e-12);
+      if (samples != last_samples) {
+        last_samples = samples;
+        s = 1.0 / samples;
+        const Vec3 after_t1 = helix->PointAt(pair->t1, s);
+        const Vec3 before_t2 = helix->PointAt(pair->t1, 1.0 - s);
+        first.SetSample(after_t1.x(), after_t1.y());
+        second.SetSample(before_t2.x(), before_t2.y());
+      }
+    }
+    // As OpenSim does, T2's check uses the helix of the previous T2 started at the new T1.
+    const bool moved_t1 = first.Step(pair->t1.z() + s * rise, &pair->t1.z());
+    const bool moved_t2 = second.Step(pair->t1.z() + (1.0 - s) * rise, &pair->t2.z());
+    if (!moved_t1 && !moved_t2) break;
+    helix->rise = pair->t2.z() - pair->t1.z();  // the turn stays (radial positions unchanged)
+  }
 }
 
 }  // namespace
@@ -244,17 +286,7 @@ WrapResult WrapCylinder::Wrap(const Vec3& p_WP, const Vec3& p_WS,
   if (std::abs(pair.t1.z()) > half_length && std::abs(pair.t2.z()) > half_length) return result;
 
   Helix helix = CalcHelix(pair, long_way);
-  HelixSamplesNearEnds near_ends(helix, pair.t1);
-  for (int refinement = 0; !options.single_wrap && refinement < kMaxRefinements; ++refinement) {
-    const int samples = static_cast<int>(helix.Length(radius_) / kHelixSampleSpacing);
-    if (samples < 2) break;
-    near_ends.Update(samples, helix.rise);
-    // As OpenSim does, T2's check uses the helix of the previous T2 started at the new T1.
-    const bool moved_t1 = RefineTangentPoint(p_WP, near_ends.AfterT1(pair.t1.z()), &pair.t1);
-    const bool moved_t2 = RefineTangentPoint(p_WS, near_ends.BeforeT2(pair.t1.z()), &pair.t2);
-    if (!moved_t1 && !moved_t2) break;
-    helix.rise = pair.t2.z() - pair.t1.z();  // the turn stays (radial positions unchanged)
-  }
+  if (!options.single_wrap) RefineTangency(p_WP, p_WS, radius_, &helix, &pair);
 
   result.wrapped = true;
   result.p_WT1 = pair.t1;
