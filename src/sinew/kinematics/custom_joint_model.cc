@@ -2,6 +2,7 @@
 #include <sinew/functions/linear_function.h>
 #include <sinew/kinematics/custom_joint_model.h>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -54,6 +55,10 @@ CustomJointModel::CustomJointModel(std::array<TransformAxisTerm, 6> axes, int nq
     for (int k = 0; k < 3; ++k) {
       if (a.axis == Vec3::Unit(k)) coordinate_axis_[i] = k;
     }
+  }
+  if (!has_curved_axes_) {
+    const double none[6] = {};  // any q: J is the same everywhere
+    EvaluateJ(std::span<const double>(none, static_cast<size_t>(nq_)), constant_J_);
   }
 }
 
@@ -125,6 +130,14 @@ double CustomJointModel::CalcAxisValue(int i, std::span<const double> q) const {
 }
 
 void CustomJointModel::CalcJ(std::span<const double> q, double (*J)[6]) const {
+  if (has_curved_axes_) {
+    EvaluateJ(q, J);
+  } else {
+    std::copy(&constant_J_[0][0], &constant_J_[0][0] + 36, &J[0][0]);
+  }
+}
+
+void CustomJointModel::EvaluateJ(std::span<const double> q, double (*J)[6]) const {
   for (int i = 0; i < 6; ++i) {
     for (int k = 0; k < 6; ++k) J[i][k] = 0.0;
     const TransformAxisTerm& a = axes_[i];

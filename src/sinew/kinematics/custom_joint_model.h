@@ -49,6 +49,8 @@ class CustomJointModel final : public JointModel {
   double CalcAxisValue(int i, std::span<const double> q) const;
   // ds_i/dq_k into J[i][k] (k < nq_), zeroed first.
   void CalcJ(std::span<const double> q, double (*J)[6]) const;
+  // CalcJ from the axes' functions (CalcJ copies constant_J_ instead when no axis is curved).
+  void EvaluateJ(std::span<const double> q, double (*J)[6]) const;
   // sum_{k,l} d2 s_i / dq_k dq_l u_k u_l.
   double CalcSecondTerm(int i, std::span<const double> q, std::span<const double> u) const;
   // The three rotation axes in F at q: a1, R1 a2, R1 R2 a3 (only s_1 and s_2 are evaluated).
@@ -71,6 +73,8 @@ class CustomJointModel final : public JointModel {
   // Whether some axis has a second derivative (kFunction1 or kFunctionN); without one the
   // velocity-product terms have no second-derivative part.
   bool has_curved_axes_ = false;
+  // Without curved axes ds_i/dq_k does not depend on q: CalcJ copies it from here.
+  double constant_J_[6][6] = {};
   std::array<double, 3> fixed_cos_{}, fixed_sin_{};
 };
 
