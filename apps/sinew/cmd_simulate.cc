@@ -162,7 +162,8 @@ void RunSimulate(const SimulateOptions& options) {
     };
   }
   // What NSC's impulse solver did; loudly when steps stopped short of its tolerance (also for a
-  // run stopped by a signal, over the steps it took).
+  // run stopped by a signal, over the steps it took, which keeps its exit code). With --strict
+  // such steps fail the run once every file is written (below).
   const auto* nsc = dynamic_cast<const engine::NscIntegrator*>(integrator.get());
   try {
     RunWithProgress(*integrator, state, options.duration, options.report_interval, options.quiet,
@@ -171,7 +172,9 @@ void RunSimulate(const SimulateOptions& options) {
     if (nsc) ReportNscSolves(nsc->solve_summary(), nsc->nsc_settings(), options.quiet);
     throw;
   }
-  if (nsc) ReportNscSolves(nsc->solve_summary(), nsc->nsc_settings(), options.quiet);
+  if (nsc && !options.strict) {
+    ReportNscSolves(nsc->solve_summary(), nsc->nsc_settings(), options.quiet);
+  }
   if (!options.export_file.empty()) {
     viz::ExportOptions export_options;
     export_options.visual.mode = viz::ParseVisType(options.vis);
@@ -190,6 +193,9 @@ void RunSimulate(const SimulateOptions& options) {
     }
     PrintSceneWarnings(viz::ExportAnimation(spec, motion, options.export_file, export_options),
                        options.verbose);
+  }
+  if (nsc && options.strict) {
+    ReportNscSolves(nsc->solve_summary(), nsc->nsc_settings(), options.quiet, true);
   }
   if (!options.quiet) {
     const auto& stats = integrator->stats();
@@ -243,7 +249,8 @@ void AddSimulateCommand(CLI::App& app) {
                   "Leave out the force of this name (model or external loads; repeatable)");
   cmd->add_flag("--strict", options->strict,
                 "Fail (exit code 2) if anything in the model or the initial states is "
-                "approximated, not simulated or not used");
+                "approximated, not simulated or not used, or (after writing the outputs) if "
+                "NSC's impulse solver left a step above its tolerance");
   cmd->add_option("--export", options->export_file,
                   "Also write the motion as a .glb or self-contained .html viewer (with the "
                   "contact forces as arrows when contacts.sto is written)");

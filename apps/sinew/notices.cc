@@ -124,19 +124,25 @@ void PrintSceneWarnings(const viz::VisualScene& scene, bool verbose) {
 }
 
 void ReportNscSolves(const engine::NscSolveSummary& summary, const engine::NscSettings& settings,
-                     bool quiet) {
+                     bool quiet, bool strict) {
   const char* solver = NscSolverName(settings.solver.method);
   const std::string tolerance = ShowNumber(settings.solver.tolerance) + " m/s";
   if (summary.unconverged > 0) {
-    std::cerr << "sinew: warning: NSC's contact impulse solver (" << solver
-              << ") did NOT reach its tolerance of " << tolerance << " in " << summary.unconverged
-              << " of " << summary.solves << " steps with contacts: it stopped at its limit of "
-              << settings.solver.max_iterations
-              << (settings.solver.max_iterations == 1 ? " iteration" : " iterations")
-              << " with a residual up to " << ShowNumber(summary.worst_residual)
-              << " m/s, so those steps' contact impulses are approximate (contacts.sto's "
-                 "nsc_contact.unconverged_steps counts them over time). Allow more with "
-                 "--nsc-iterations, or loosen --nsc-tolerance\n";
+    std::ostringstream message;
+    message << "NSC's contact impulse solver (" << solver << ") did NOT reach its tolerance of "
+            << tolerance << " in " << summary.unconverged << " of " << summary.solves
+            << " steps with contacts: it stopped at its limit of " << settings.solver.max_iterations
+            << (settings.solver.max_iterations == 1 ? " iteration" : " iterations")
+            << " with a residual up to " << ShowNumber(summary.worst_residual)
+            << " m/s, so those steps' contact impulses are approximate (contacts.sto's "
+               "nsc_contact.unconverged_steps counts them over time). Allow more with "
+               "--nsc-iterations, or loosen --nsc-tolerance";
+    if (strict) {
+      throw Error("--strict: " + message.str() +
+                  ". The output files were written (the whole run), but are not what --strict "
+                  "asks for");
+    }
+    std::cerr << "sinew: warning: " << message.str() << "\n";
     return;
   }
   if (quiet) return;

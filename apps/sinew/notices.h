@@ -42,8 +42,10 @@ void PrintSceneWarnings(const viz::VisualScene& scene, bool verbose);
 /// over the run (`summary`, with `settings`), on stderr. Steps whose solve stopped at the
 /// iteration limit above the tolerance make a loud warning (always: those steps' impulses are
 /// approximate) with their count, the worst residual and what to change; otherwise, unless
-/// `quiet`, one note with the steps solved, the most iterations and the worst residual.
+/// `quiet`, one note with the steps solved, the most iterations and the worst residual. With
+/// `strict` (--strict: no silent approximation) such steps are a sinew::Error with the same
+/// text instead (exit code 2; call it once the run's files are written).
 void ReportNscSolves(const engine::NscSolveSummary& summary, const engine::NscSettings& settings,
-                     bool quiet);
+                     bool quiet, bool strict = false);
 
 }  // namespace sinew::cli

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -237,6 +238,42 @@ TEST_F(SimulateCollisionTest, NscIterationLimitIsHonouredAndUnconvergedStepsAreR
   for (const double r : full_contacts.at("nsc_contact.solver_residual")) EXPECT_LE(r, tolerance);
   EXPECT_NE(full.err.find("reached its tolerance of 1e-06 m/s in all"), std::string::npos)
       << full.err;
+}
+
+// --strict means no silent approximation: an NSC run whose impulse solver left steps above its
+// tolerance (one iteration allowed on the table's four coupled legs, as above) fails with exit
+// code 2 and names them, after writing every output of the whole run (the tables complete,
+// with the steps counted as the warning counts them, and the --export file). With the default
+// limit, where every step meets the tolerance, --strict accepts the same run.
+TEST_F(SimulateCollisionTest, StrictRefusesNscStepsAboveTheSolverTolerance) {
+  const std::string run_options =
+      " --collision --contact nsc --duration 1 --report-interval "
+      "0.001 --quiet --strict --out ";
+  const CliRun run = Run("simulate " + kTable + run_options + Path("out") +
+                         " --nsc-iterations 1 --export " + Path("out.glb"));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  const std::string error =
+      "sinew: error: --strict: NSC's contact impulse solver (apgd) did NOT "
+      "reach its tolerance of 1e-06 m/s in ";
+  ASSERT_NE(run.err.find(error), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("sinew: warning: NSC"), std::string::npos) << run.err;  // said once
+  EXPECT_NE(run.err.find("--nsc-iterations"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("output files were written"), std::string::npos) << run.err;
+  const auto contacts = ReadStoColumns(Path("out/contacts.sto"));
+  ASSERT_EQ(contacts.at("time").size(), 1001u);  // every row, to the end
+  EXPECT_DOUBLE_EQ(contacts.at("time").back(), 1.0);
+  const double unconverged = contacts.at("nsc_contact.unconverged_steps").back();
+  EXPECT_GT(unconverged, 0.0);
+  EXPECT_EQ(NumberAfter(run.err, error), static_cast<long>(unconverged)) << run.err;
+  for (const char* file : {"out/states.sto", "out/bodies.sto", "out/forces.sto"}) {
+    EXPECT_NE(ReadText(Path(file)).find("status=complete"), std::string::npos) << file;
+  }
+  EXPECT_GT(std::filesystem::file_size(Path("out.glb")), 0u);
+  // Every step within the tolerance: --strict has nothing to refuse.
+  const CliRun full = Run("simulate " + kTable + run_options + Path("full"));
+  EXPECT_EQ(full.exit_code, 0) << full.err;
+  EXPECT_EQ(ReadStoColumns(Path("full/contacts.sto")).at("nsc_contact.unconverged_steps").back(),
+            0.0);
 }
 
 // A run stopped by SIGINT still reports the unconverged steps it took (at least those its

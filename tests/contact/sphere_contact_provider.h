@@ -39,9 +39,11 @@ class SphereContactProvider final : public engine::ContactProvider {
     for (size_t i = 0; i < spheres_.size(); ++i) {
       const double r = spheres_[i].radius;
       if (ground_ && centres[i].y() - r < envelope_) {
-        // Ground (body1) to the sphere (body2): the normal is +y, the point the sphere's lowest.
-        contacts.push_back({0, spheres_[i].body, centres[i] - r * Vec3::UnitY(), Vec3::UnitY(),
-                            r - centres[i].y(), friction_, restitution_});
+        // Ground (body1) to the sphere (body2): the normal is +y, the point midway between the
+        // sphere's lowest point and the floor below it (UnilateralContact's convention).
+        const double gap = centres[i].y() - r;
+        contacts.push_back({0, spheres_[i].body, centres[i] - (r + 0.5 * gap) * Vec3::UnitY(),
+                            Vec3::UnitY(), -gap, friction_, restitution_});
       }
       for (size_t j = i + 1; j < spheres_.size(); ++j) {
         const Vec3 d = centres[j] - centres[i];

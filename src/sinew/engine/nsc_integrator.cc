@@ -96,10 +96,15 @@ void NscIntegrator::SolveContacts(const State& state, double h) {
     ContactFrame(c.n_G, t1, t2);
     const Vec3 d[3] = {c.n_G, t1, t2};
     const int body[2] = {c.body1, c.body2};
+    // Each body's impulse acts at its own surface point, half the depth from the midway point
+    // p_G (body1's along +n, body2's along -n), where it is when the gap closes: so a ball's
+    // friction impulse has the ball's radius as its lever however far above the floor its
+    // landing step starts, and a sphere's normal impulse passes through its centre.
+    const Vec3 p_G[2] = {c.p_G + 0.5 * c.depth * c.n_G, c.p_G - 0.5 * c.depth * c.n_G};
     for (int s = 0; s < 2; ++s) {
       Rows& r = rows_[i];
       r.slot[s] = -1;
-      r.arm[s] = c.p_G - state.bodies[body[s]].p_GB;
+      r.arm[s] = p_G[s] - state.bodies[body[s]].p_GB;
       if (body[s] == 0) continue;
       const double sign = s == 0 ? -1.0 : 1.0;
       const Vec3& arm = r.arm[s];

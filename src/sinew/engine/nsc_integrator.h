@@ -6,7 +6,8 @@
 //  1. v_free: the velocities of the constrained step without contact (the "euler" scheme:
 //     M (v_free - v) = h f - J^T mu, J v_free = c(t + h)).
 //  2. Contacts from the ContactProvider at x; per contact three rows D_i (normal, two tangents)
-//     over the bodies' twists.
+//     over the bodies' twists, each body's at its own surface point (p_G -+ depth/2 n_G, not
+//     the midway p_G: the lever its impulse has when the gap closes).
 //  3. The Delassus operator W = D A^-1 D^T, where A^-1 is the inverse mass *constrained by the
 //     joints*: its 6x6 blocks between the bodies in contact, from the KKT system factorized at
 //     x with unit loads on each body in contact (KktSolver::SolveUnitLoadResponses: only the
@@ -125,7 +126,7 @@ class NscIntegrator final : public FixedStepIntegrator {
   struct Rows {
     Eigen::Matrix<double, 3, 6> J[2];
     int slot[2] = {-1, -1};
-    Vec3 arm[2];  // from each body's origin (ground's too) to the contact point, in G
+    Vec3 arm[2];  // from each body's origin (ground's too) to its surface point, in G
   };
   std::vector<Rows> rows_;
   std::vector<int> bodies_;     // bodies in contact (not ground)

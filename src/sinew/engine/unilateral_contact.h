@@ -23,7 +23,10 @@ struct State;
 struct UnilateralContact {
   int body1 = 0;
   int body2 = 0;
-  Vec3 p_G = Vec3::Zero();   ///< the contact point, in G (m)
+  /// The contact point, in G (m): midway between the two surfaces' nearest points, which are
+  /// p_G + depth/2 n_G on body1 and p_G - depth/2 n_G on body2 (where the gap closes or the
+  /// overlap ends). The NSC stepper applies each body's impulse at its own point.
+  Vec3 p_G = Vec3::Zero();
   Vec3 n_G = Vec3::UnitY();  ///< unit normal from body1 towards body2, in G
   double depth = 0.0;        ///< overlap (m); negative: gap
   double friction = 0.0;     ///< Coulomb coefficient mu >= 0 (|tangential| <= mu normal)
