@@ -144,6 +144,11 @@ py::object Simulate(const ModelPtr& model, double duration, double accuracy,
               << solves.worst_residual
               << " m/s): those steps' contact impulses are approximate; raise nsc_iterations "
                  "or loosen nsc_tolerance in sinew.load";
+      // strict: no silent approximation (as `sinew simulate --strict`, which fails after
+      // writing its files; here there is no file, so the run's result is not returned).
+      if (setup.model->options().strict) {
+        throw Error({setup.model->path(), 0}, "", message.str() + " (strict)");
+      }
       if (PyErr_WarnEx(PyExc_UserWarning, message.str().c_str(), 1) != 0) {
         throw py::error_already_set();
       }

@@ -121,6 +121,18 @@ def test_nsc_solver_settings_act_as_the_cli_options_do(cli, tmp_path):
     assert 0 < statistics["nsc_solves"] <= 500
 
 
+def test_strict_refuses_nsc_steps_above_the_solver_tolerance():
+    # strict=True makes the unconverged steps an error instead of a warning (as the CLI's
+    # --strict); with the default settings every step converges and strict changes nothing.
+    model = sinew.load(TABLE, collision=True, contact="nsc", nsc_iterations=1, strict=True)
+    with pytest.raises(sinew.Error, match=r"did NOT reach its tolerance.*\(strict\)"):
+        model.simulate(0.5, report_interval=0.01)
+    strict = sinew.load(TABLE, collision=True, contact="nsc", strict=True).simulate(0.5)
+    plain = sinew.load(TABLE, collision=True, contact="nsc").simulate(0.5)
+    assert strict.statistics["nsc_unconverged_steps"] == 0
+    assert np.array_equal(strict.q, plain.q)
+
+
 def test_nsc_solver_defaults_and_both_methods():
     # The defaults are the library's (APGD, 100, 1e-6 m/s, 0.1 m/s, 0.01 m/s): naming them
     # changes nothing. Gauss-Seidel and APGD at 1e-12 m/s meet it in every step and give the
