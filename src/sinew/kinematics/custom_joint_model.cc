@@ -56,6 +56,11 @@ CustomJointModel::CustomJointModel(std::array<TransformAxisTerm, 6> axes, int nq
       if (a.axis == Vec3::Unit(k)) coordinate_axis_[i] = k;
     }
   }
+  int moving_rotations = 0;
+  for (int i = 0; i < 3; ++i) {
+    moving_rotations += axes_[i].kind == TransformAxisTerm::Kind::kConstant ? 0 : 1;
+  }
+  constant_H_ = !has_curved_axes_ && moving_rotations <= 1;
   if (!has_curved_axes_) {
     const double none[6] = {};  // any q: J is the same everywhere
     EvaluateJ(std::span<const double>(none, static_cast<size_t>(nq_)), constant_J_);
@@ -270,6 +275,7 @@ void CustomJointModel::CalcU(std::span<const double>, std::span<const double> qd
 }
 
 SpatialVec CustomJointModel::CalcHDotU(std::span<const double> q, std::span<const double> u) const {
+  if (constant_H_) return SpatialVec::Zero();  // a Pin-like joint: H_FM does not change
   double J[6][6];
   CalcJ(q, J);
   Vec3 e[3];

@@ -73,6 +73,9 @@ class CustomJointModel final : public JointModel {
   // Whether some axis has a second derivative (kFunction1 or kFunctionN); without one the
   // velocity-product terms have no second-derivative part.
   bool has_curved_axes_ = false;
+  // Without curved axes and with at most one rotation axis that moves, H_FM's columns are
+  // constant in F (the moving axis turns only about itself): Hdot u is exactly zero.
+  bool constant_H_ = false;
   // Without curved axes ds_i/dq_k does not depend on q: CalcJ copies it from here.
   double constant_J_[6][6] = {};
   std::array<double, 3> fixed_cos_{}, fixed_sin_{};
