@@ -45,8 +45,10 @@ void AddContactOptions(CLI::App* cmd, ContactOptions& o) {
   cmd->add_option("--nsc-solver", o.nsc_solver,
                   std::string("With --contact nsc: the contact impulse solver, apgd (accelerated "
                               "projected gradient) or gauss-seidel (projected); default ") +
-                      NscSolverName(d.solver.method))
-      ->check(CLI::IsMember({"apgd", "gauss-seidel"}));
+                      engine::ContactSolverMethodName(d.solver.method))
+      ->check(CLI::IsMember(
+          {engine::ContactSolverMethodName(engine::ContactSolverMethod::kApgd),
+           engine::ContactSolverMethodName(engine::ContactSolverMethod::kGaussSeidel)}));
   cmd->add_option("--nsc-iterations", o.nsc_iterations,
                   "With --contact nsc: the most iterations (apgd) or sweeps (gauss-seidel) of "
                   "one step's impulse solve (default " +
@@ -67,10 +69,6 @@ void AddContactOptions(CLI::App* cmd, ContactOptions& o) {
                   "this (m/s, default " +
                       ShowNumber(d.min_bounce_speed) + ")")
       ->check(FiniteNumber(0.0));
-}
-
-const char* NscSolverName(engine::ContactSolverMethod method) {
-  return method == engine::ContactSolverMethod::kGaussSeidel ? "gauss-seidel" : "apgd";
 }
 
 void ApplyContactOptions(const ContactOptions& o, opensim::OpenSimParser& parser) {
@@ -110,11 +108,8 @@ void ApplyContactOptions(const ContactOptions& o, opensim::OpenSimParser& parser
   parser.SetFrictionSlipSpeed(o.slip_speed);
   if (o.method == "nsc") {
     engine::NscSettings nsc;
-    if (o.nsc_solver) {
-      nsc.solver.method = *o.nsc_solver == "gauss-seidel"
-                              ? engine::ContactSolverMethod::kGaussSeidel
-                              : engine::ContactSolverMethod::kApgd;
-    }
+    // The option's check admits only the methods' names.
+    if (o.nsc_solver) nsc.solver.method = *engine::FindContactSolverMethod(*o.nsc_solver);
     nsc.solver.max_iterations = o.nsc_iterations.value_or(nsc.solver.max_iterations);
     nsc.solver.tolerance = o.nsc_tolerance.value_or(nsc.solver.tolerance);
     nsc.max_recovery_speed = o.nsc_max_recovery_speed.value_or(nsc.max_recovery_speed);

@@ -39,7 +39,4 @@ void AddContactOptions(CLI::App* cmd, ContactOptions& options);
 /// --contact nsc, is an error) and sets them on `parser` before it parses.
 void ApplyContactOptions(const ContactOptions& options, opensim::OpenSimParser& parser);
 
-/// The name --nsc-solver gives `method` ("apgd" or "gauss-seidel").
-const char* NscSolverName(engine::ContactSolverMethod method);
-
 }  // namespace sinew::cli

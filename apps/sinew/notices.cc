@@ -7,8 +7,6 @@
 #include <set>
 #include <sstream>
 
-#include "apps/sinew/contact_options.h"
-
 namespace sinew::cli {
 
 std::string ShowNumber(double value) {
@@ -125,7 +123,7 @@ void PrintSceneWarnings(const viz::VisualScene& scene, bool verbose) {
 
 void ReportNscSolves(const engine::NscSolveSummary& summary, const engine::NscSettings& settings,
                      bool quiet, bool strict) {
-  const char* solver = NscSolverName(settings.solver.method);
+  const char* solver = engine::ContactSolverMethodName(settings.solver.method);
   const std::string tolerance = ShowNumber(settings.solver.tolerance) + " m/s";
   if (summary.unconverged > 0) {
     std::ostringstream message;

@@ -97,9 +97,7 @@ std::vector<model::ParameterOverride> ToParameterOverrides(const std::string& pa
 
 // The name of the library's default NSC impulse solver, as `nsc_solver` takes it.
 std::string DefaultNscSolver() {
-  return engine::NscSettings{}.solver.method == engine::ContactSolverMethod::kGaussSeidel
-             ? "gauss-seidel"
-             : "apgd";
+  return engine::ContactSolverMethodName(engine::NscSettings{}.solver.method);
 }
 
 }  // namespace

@@ -36,14 +36,13 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
   }
   // NSC's stepper: as `sinew simulate --nsc-*` checks it, and only where it runs.
   engine::NscSettings nsc = options.nsc;
-  if (options.nsc_solver != "apgd" && options.nsc_solver != "gauss-seidel") {
+  const auto method = engine::FindContactSolverMethod(options.nsc_solver);
+  if (!method) {
     throw Error(
         {path, 0}, "",
         "nsc_solver must be \"apgd\" or \"gauss-seidel\", not \"" + options.nsc_solver + "\"");
   }
-  nsc.solver.method = options.nsc_solver == "gauss-seidel"
-                          ? engine::ContactSolverMethod::kGaussSeidel
-                          : engine::ContactSolverMethod::kApgd;
+  nsc.solver.method = *method;
   if (nsc.solver.max_iterations < 1) {
     throw Error({path, 0}, "",
                 "nsc_iterations must be >= 1, not " + std::to_string(nsc.solver.max_iterations));

@@ -223,4 +223,16 @@ ContactSolverResult SolveContactImpulses(Eigen::Ref<const MatX> W, Eigen::Ref<co
   return SolveGaussSeidel(W, u_free, target_n, mu, settings, gamma, u);
 }
 
+const char* ContactSolverMethodName(ContactSolverMethod method) {
+  return method == ContactSolverMethod::kGaussSeidel ? "gauss-seidel" : "apgd";
+}
+
+std::optional<ContactSolverMethod> FindContactSolverMethod(std::string_view name) {
+  for (ContactSolverMethod method :
+       {ContactSolverMethod::kApgd, ContactSolverMethod::kGaussSeidel}) {
+    if (name == ContactSolverMethodName(method)) return method;
+  }
+  return std::nullopt;
+}
+
 }  // namespace sinew::engine

@@ -27,6 +27,9 @@
 
 #include <sinew/math/types.h>
 
+#include <optional>
+#include <string_view>
+
 namespace sinew::engine {
 
 /// Which iteration SolveContactImpulses runs.
@@ -34,6 +37,12 @@ enum class ContactSolverMethod {
   kGaussSeidel,  ///< projected block Gauss-Seidel
   kApgd,         ///< accelerated projected gradient descent (Nesterov; the default)
 };
+
+/// The method's name as the CLI (`--nsc-solver`) and Python (`nsc_solver`) spell it: "apgd" or
+/// "gauss-seidel".
+const char* ContactSolverMethodName(ContactSolverMethod method);
+/// The method named `name` (ContactSolverMethodName's spelling); nullopt for any other name.
+std::optional<ContactSolverMethod> FindContactSolverMethod(std::string_view name);
 
 /// The method and iteration limits of SolveContactImpulses.
 struct ContactSolverSettings {
