@@ -83,6 +83,10 @@ class RungeKutta45 final : public Integrator {
  protected:
   void TakeStep(State& state, double t_final) override {
     if (h_ <= 0.0) h_ = settings_.step > 0.0 ? std::min(settings_.step, 1e-3) : 1e-3;
+    // The first stage, the derivative at the step's own state, serves every trial of the step.
+    y0_ = vector_.Pack(state);
+    State scratch = state;
+    Eval(y0_, state.t, scratch, k_[0]);
     for (;;) {
       const double remaining = t_final - state.t;
       double h = std::min(h_, remaining);
@@ -150,9 +154,8 @@ class RungeKutta45 final : public Integrator {
     static constexpr double e[7] = {71.0 / 57600,      0,          -71.0 / 16695, 71.0 / 1920,
                                     -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
     State scratch = state;
-    const VecX y0 = vector_.Pack(state);
+    const VecX& y0 = y0_;  // packed by TakeStep, with k[0]
     VecX* k = k_;
-    Eval(y0, state.t, scratch, k[0]);
     VecX y;
     for (int s = 1; s < 7; ++s) {
       y = y0;
@@ -229,6 +232,7 @@ class RungeKutta45 final : public Integrator {
   StateVector vector_;
   DenseOutput dense_;
   VecX zdot_;
+  VecX y0_;    // the step's start, packed
   VecX k_[7];  // the stages' derivatives
   double h_ = 0.0;
   bool just_rejected_ = false;

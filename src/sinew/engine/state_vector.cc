@@ -3,6 +3,9 @@
 #include <sinew/engine/pose.h>
 #include <sinew/engine/state_vector.h>
 
+#include <cmath>
+#include <limits>
+
 namespace sinew::engine {
 
 StateVector::StateVector(const System& system, const KktSolver& kkt) : system_(system), kkt_(kkt) {
@@ -37,7 +40,12 @@ void StateVector::Unpack(Eigen::Ref<const VecX> y, double t, State& state) const
     BodyState& s = state.bodies[b];
     s.p_GB = y.segment<3>(7 * (b - 1));
     const auto qv = y.segment<4>(7 * (b - 1) + 3);
-    s.quat_GB = Quat(qv[0], qv[1], qv[2], qv[3]).normalized();
+    // A quaternion that is already unit to rounding is kept bit for bit: normalizing it again
+    // could move its last bits, and a state packed and unpacked must stay the same positions
+    // (the KKT factorization made at them is then reused).
+    const Quat quat(qv[0], qv[1], qv[2], qv[3]);
+    const double drift = std::abs(quat.squaredNorm() - 1.0);
+    s.quat_GB = drift <= 4.0 * std::numeric_limits<double>::epsilon() ? quat : quat.normalized();
   }
   for (int c = 0; c < system_.num_coordinates(); ++c) {
     if (system_.IsIntegrated(c)) state.q[c] = y[7 * nb_ + system_.SpeedIndex(c)];
