@@ -174,6 +174,10 @@ TEST_P(JointModelTest, VelocityMapMatchesFiniteDifferences) {
     joint->CalcQDot(q, u, qdot);
     joint->CalcU(q, qdot, u_back);
     for (int i = 0; i < n; ++i) EXPECT_NEAR(u_back[i], u[i], 1e-12) << c.name;
+    // A model that lets callers skip CalcQDot (constraints take N = I, Ndot u = 0) must mean it.
+    if (joint->QDotIsU()) {
+      for (int i = 0; i < n; ++i) EXPECT_EQ(qdot[i], u[i]) << c.name;
+    }
 
     const Mat6X H = joint->CalcH_FM(q);
     ASSERT_EQ(H.cols(), n) << c.name;

@@ -97,7 +97,8 @@ class ParameterizedJointConstraint final : public Constraint {
 
 // q_i - f(t) = 0 on a coordinate of a parameterized joint. Velocity: (N(q) u)_i = f'(t);
 // acceleration: (N udot)_i = f''(t) - (Ndot u)_i, Ndot u by a central difference of N along
-// qdot (exactly zero when qdot_i = u_i, the usual case; Ball/Free rotations are not).
+// qdot (skipped where the joint model says qdot = u, the usual case: then N is the identity
+// and Ndot u is zero; Ball/Free rotations are not).
 class CoordinateMotionConstraint final : public Constraint {
  public:
   CoordinateMotionConstraint(const Joint& joint, int coordinate, const Coordinate& c)
@@ -112,6 +113,11 @@ class CoordinateMotionConstraint final : public Constraint {
     phi[0] = state.q[coordinate_] - Value(state.t, 0);
   }
   void CalcJacobian(const System&, const State& state, Eigen::Ref<MatX> J) const override {
+    if (joint_.model->QDotIsU()) {
+      J.setZero();
+      J(0, spec_.index_in_joint) = 1.0;
+      return;
+    }
     const JointValues q(state.q, joint_.coordinates);
     JointValues u(q.size()), qdot(q.size());
     for (size_t k = 0; k < q.size(); ++k) {
@@ -125,6 +131,10 @@ class CoordinateMotionConstraint final : public Constraint {
     c[0] = Value(state.t, 1);
   }
   void CalcAccelerationRhs(const System&, const State& state, Eigen::Ref<VecX> b) const override {
+    if (joint_.model->QDotIsU()) {  // N is the identity: Ndot u = 0
+      b[0] = Value(state.t, 2);
+      return;
+    }
     const JointValues q(state.q, joint_.coordinates), u(state.u, joint_.coordinates);
     const size_t n = q.size();
     JointValues qdot(n), q_plus(n), q_minus(n), a(n), c(n);

@@ -36,6 +36,7 @@ class CustomJointModel final : public JointModel {
   Mat6X CalcH_FM(std::span<const double> q) const override;
   void CalcQDot(std::span<const double> q, std::span<const double> u,
                 std::span<double> qdot) const override;
+  bool QDotIsU() const override { return true; }
   void CalcU(std::span<const double> q, std::span<const double> qdot,
              std::span<double> u) const override;
   SpatialVec CalcHDotU(std::span<const double> q, std::span<const double> u) const override;

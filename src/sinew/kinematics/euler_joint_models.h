@@ -74,6 +74,7 @@ class WeldJointModel final : public JointModel {
   Mat6X CalcH_FM(std::span<const double>) const override { return Mat6X(6, 0); }
   void CalcQDot(std::span<const double>, std::span<const double>,
                 std::span<double>) const override {}
+  bool QDotIsU() const override { return true; }
   void CalcU(std::span<const double>, std::span<const double>, std::span<double>) const override {}
   SpatialVec CalcHDotU(std::span<const double>, std::span<const double>) const override {
     return SpatialVec::Zero();

@@ -32,6 +32,9 @@ class JointModel {
   /// qdot = N(q) * u, written into `qdot` (nq entries).
   virtual void CalcQDot(std::span<const double> q, std::span<const double> u,
                         std::span<double> qdot) const = 0;
+  /// True when qdot = u at every q (N is the identity, so Ndot u is zero): callers may skip
+  /// CalcQDot. False is always safe.
+  virtual bool QDotIsU() const { return false; }
   /// u from qdot (the inverse of CalcQDot), written into `u`.
   virtual void CalcU(std::span<const double> q, std::span<const double> qdot,
                      std::span<double> u) const = 0;
