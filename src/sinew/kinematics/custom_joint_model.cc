@@ -64,6 +64,7 @@ CustomJointModel::CustomJointModel(std::array<TransformAxisTerm, 6> axes, int nq
   if (!has_curved_axes_) {
     const double none[6] = {};  // any q: J is the same everywhere
     EvaluateJ(std::span<const double>(none, static_cast<size_t>(nq_)), constant_J_);
+    if (constant_H_) constant_H_FM_ = EvaluateH_FM(std::span<const double>(none, static_cast<size_t>(nq_)));
   }
 }
 
@@ -230,6 +231,10 @@ Transform CustomJointModel::CalcX_FM(std::span<const double> q) const {
 }
 
 Mat6X CustomJointModel::CalcH_FM(std::span<const double> q) const {
+  return constant_H_ ? constant_H_FM_ : EvaluateH_FM(q);
+}
+
+Mat6X CustomJointModel::EvaluateH_FM(std::span<const double> q) const {
   double J[6][6];
   CalcJ(q, J);
   Vec3 e[3];
@@ -247,6 +252,7 @@ Mat6X CustomJointModel::CalcH_FM(std::span<const double> q) const {
 }
 
 SpatialVec CustomJointModel::CalcV_FM(std::span<const double> q, std::span<const double> u) const {
+  if (constant_H_) return constant_H_FM_ * Eigen::Map<const VecX>(u.data(), nq_);
   double J[6][6];
   CalcJ(q, J);
   Vec3 e[3];

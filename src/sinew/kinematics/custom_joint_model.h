@@ -52,6 +52,8 @@ class CustomJointModel final : public JointModel {
   void CalcJ(std::span<const double> q, double (*J)[6]) const;
   // CalcJ from the axes' functions (CalcJ copies constant_J_ instead when no axis is curved).
   void EvaluateJ(std::span<const double> q, double (*J)[6]) const;
+  // H_FM from J and the rotation axes (CalcH_FM returns constant_H_FM_ instead when constant).
+  Mat6X EvaluateH_FM(std::span<const double> q) const;
   // sum_{k,l} d2 s_i / dq_k dq_l u_k u_l.
   double CalcSecondTerm(int i, std::span<const double> q, std::span<const double> u) const;
   // The three rotation axes in F at q: a1, R1 a2, R1 R2 a3 (only s_1 and s_2 are evaluated).
@@ -75,8 +77,10 @@ class CustomJointModel final : public JointModel {
   // velocity-product terms have no second-derivative part.
   bool has_curved_axes_ = false;
   // Without curved axes and with at most one rotation axis that moves, H_FM's columns are
-  // constant in F (the moving axis turns only about itself): Hdot u is exactly zero.
+  // constant in F (the moving axis turns only about itself): Hdot u is exactly zero, and
+  // CalcH_FM returns constant_H_FM_.
   bool constant_H_ = false;
+  Mat6X constant_H_FM_;
   // Without curved axes ds_i/dq_k does not depend on q: CalcJ copies it from here.
   double constant_J_[6][6] = {};
   std::array<double, 3> fixed_cos_{}, fixed_sin_{};
