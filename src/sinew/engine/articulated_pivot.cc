@@ -40,26 +40,24 @@ bool ArticulatedPivot::Factorize(const Block& K, int nu) {
   Jinv_.bottomRightCorner<3, 3>() = C_inv;
   Jinv_.bottomLeftCorner<3, 3>().noalias() = -C_inv * J_B.bottomLeftCorner<3, 3>() * A_inv;
   M_ = K.topLeftCorner<6, 6>();
-  S_.noalias() = -Jinv_ * K.block(rows, 6, 6, nu);
-  MS_.noalias() = M_ * S_;
   fixed_nu_ = 0;
   all_locked_ = false;
-  if (nu_ + nc_ == 0) return true;  // the joint rows alone fix the twist
-  // D's scale is that of M_A seen through S: a pivot far below it means a direction with
-  // (nearly) no inertia that the joint leaves free.
-  const double inertia_scale = M_.cwiseAbs().maxCoeff() * S_.colwise().squaredNorm().maxCoeff();
   if (nc_ == 0) {
     switch (nu_) {
       case 1:
-        return FactorizeFixed<1>(inertia_scale);
+        return FactorizeFixed<1>(K);
       case 2:
-        return FactorizeFixed<2>(inertia_scale);
+        return FactorizeFixed<2>(K);
       case 3:
-        return FactorizeFixed<3>(inertia_scale);
+        return FactorizeFixed<3>(K);
       default:
         break;
     }
   }
+  S_.noalias() = -Jinv_ * K.block(rows, 6, 6, nu);
+  MS_.noalias() = M_ * S_;
+  if (nu_ + nc_ == 0) return true;  // the joint rows alone fix the twist
+  const double inertia_scale = InertiaScale(S_);
   all_locked_ = FindLockedSpeeds(K, inertia_scale);
   if (all_locked_) {
     D_.topLeftCorner(nu_, nu_).noalias() = S_.transpose() * MS_;
@@ -98,11 +96,20 @@ bool ArticulatedPivot::FindLockedSpeeds(const Block& K, double inertia_scale) {
   return smallest > kMinPivot * std::max(largest, inertia_scale);
 }
 
+template <typename SMatrix>
+double ArticulatedPivot::InertiaScale(const SMatrix& S) const {
+  return M_.cwiseAbs().maxCoeff() * S.colwise().squaredNorm().maxCoeff();
+}
+
 template <int NU>
-bool ArticulatedPivot::FactorizeFixed(double inertia_scale) {
+bool ArticulatedPivot::FactorizeFixed(const Block& K) {
   using MatNU = Eigen::Matrix<double, NU, NU>;
-  const auto S = S_.template leftCols<NU>();
-  const MatNU D = S.transpose().lazyProduct(MS_.template leftCols<NU>());
+  const Eigen::Matrix<double, 6, NU> S = -Jinv_.lazyProduct(K.template block<6, NU>(6 + NU, 6));
+  const Eigen::Matrix<double, 6, NU> MS = M_.lazyProduct(S);
+  S_ = S;
+  MS_ = MS;
+  const double inertia_scale = InertiaScale(S);
+  const MatNU D = S.transpose().lazyProduct(MS);
   const Eigen::LLT<MatNU> llt(D);
   // The Cholesky pivots L_ii^2 are those of an LU without row exchanges; D is symmetric
   // positive definite when the joint's free directions carry inertia.

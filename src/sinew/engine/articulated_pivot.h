@@ -94,9 +94,14 @@ class ArticulatedPivot {
   // blocked triangular solves cost more than the arithmetic on these few rows).
   template <typename Y>
   void SolveSmallInPlace(Y& y) const;
-  // D's Cholesky check and inverse for fixed_nu_ = NU; false when a pivot is below the scale.
+  // D's scale, that of M_A seen through S: a pivot far below it means a direction with
+  // (nearly) no inertia that the joint leaves free.
+  template <typename SMatrix>
+  double InertiaScale(const SMatrix& S) const;
+  // S, M_A S, and D's Cholesky check and inverse for fixed_nu_ = NU (no coordinate rows), with
+  // sizes known at compile time; false when a pivot is below the scale.
   template <int NU>
-  bool FactorizeFixed(double inertia_scale);
+  bool FactorizeFixed(const Block& K);
   template <int NU, typename WMatrix>
   void SolveCouplingFixed(const Mat3& K, const Eigen::Matrix<double, 6, 6>& MA,
                           Eigen::MatrixBase<WMatrix>& W, Eigen::Matrix<double, 6, 6>& CtW) const;
