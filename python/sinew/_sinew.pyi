@@ -95,8 +95,9 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
     nsc_iterations (>= 1) its most iterations (sweeps) per step; nsc_tolerance (m/s, > 0) the
     largest violation of the contact law it stops at; nsc_max_recovery_speed (m/s, >= 0) the
     fastest an overlap is pushed out; nsc_min_bounce_speed (m/s, >= 0) restitution acts above
-    it. Model.simulate's statistics count the steps whose solve stopped above the tolerance
-    (with a UserWarning) and its contacts table has the solver's columns (docs/contact.md).
+    it. The statistics of Model.simulate, Simulator and Batch count the steps whose solve
+    stopped above the tolerance (with a UserWarning); simulate's contacts table has the
+    solver's columns (docs/contact.md).
     Raises sinew.Error with file, line, component (also for an unknown or ambiguous component,
     a property it lacks, a wrong value, or a ContactMesh file not found: the message lists the
     folders searched).
@@ -214,7 +215,13 @@ class Simulator:
     def step(self, controls: Optional[ArrayLike] = None, repeat: int = 1) -> np.ndarray:
         """Sets the inputs to `controls` (one per actuator; omitted: unchanged), advances
         `repeat` steps (default 1, an action repeat) with them, returns the observation [q, u]
-        (a new array of 2 x coordinates)."""
+        (a new array of 2 x coordinates).
+
+        NSC steps whose impulse solve stopped above the tolerance (statistics'
+        "nsc_unconverged_steps") give a UserWarning from the call in which the first one since
+        the last reset happens (once per reset); with a model loaded strict=True, every call
+        that adds one raises sinew.Error instead (after taking its steps: the state has
+        advanced)."""
     @property
     def t(self) -> float: ...
     @property
@@ -224,6 +231,12 @@ class Simulator:
     @property
     def state(self) -> State:
         """A copy of the current state."""
+    @property
+    def statistics(self) -> Dict[str, Union[int, float]]:
+        """What the steps since the last reset() (or since the Simulator was made) did, with
+        the keys and meanings of Result.statistics: "steps", "rejected", "evaluations"; an NSC
+        model's also "nsc_solves", "nsc_unconverged_steps", "nsc_most_iterations",
+        "nsc_worst_residual" (m/s). A new dict; reset() sets every figure to 0."""
     @property
     def model(self) -> Model: ...
 
@@ -236,7 +249,11 @@ class Batch:
     def reset(self, states: Union[None, State, Sequence[State]] = None) -> None:
         """Every copy from the default state (None), from one State, or copy i from states[i]."""
     def step(self, controls: Optional[ArrayLike] = None) -> None:
-        """Advances every copy one step; controls: [n, actuators] (omit without actuators)."""
+        """Advances every copy one step; controls: [n, actuators] (omit without actuators).
+
+        NSC steps whose solve stopped above the tolerance give one UserWarning per call, naming
+        the copies whose first such step since the last reset it took; with strict=True, every
+        call in which a copy adds one raises sinew.Error instead (after the step)."""
     @property
     def q(self) -> np.ndarray:
         """[n, coordinates] values (a copy)."""
@@ -246,6 +263,10 @@ class Batch:
     @property
     def t(self) -> np.ndarray:
         """[n] times (a copy)."""
+    @property
+    def statistics(self) -> Dict[str, np.ndarray]:
+        """Per copy, Simulator.statistics: the same keys, each an array [n] (int64 counts,
+        float64 "nsc_worst_residual"), counted since the last reset(). A new dict."""
     def state(self, i: int) -> State:
         """A copy of copy i's state."""
     @property

@@ -1,7 +1,9 @@
 // sinew.Batch: n independent copies of one model stepped together by fixed intervals, across a
 // pool of threads with the GIL released. The System is shared read-only by all copies; each
 // copy has its own State, integrator and inputs (a finalized System never changes, so threads
-// may share it: ForceInterfaceTest.TwoThreadsShareOneSystemWithDifferentInputs).
+// may share it: ForceInterfaceTest.TwoThreadsShareOneSystemWithDifferentInputs). Its statistics
+// are a Simulator's per copy, as arrays [n] by key (as t is); NSC steps above the solver's
+// tolerance are reported (ReportNewUnconvergedSteps) after the step() in which they first happen.
 #include <pybind11/stl.h>
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 
 #include "arrays.h"
 #include "bindings.h"
+#include "run_statistics.h"
 #include "simulation_inputs.h"
 #include "state_handle.h"
 #include "stepped_copy.h"
@@ -71,10 +74,28 @@ class Batch {
       throw Error("this model has " + std::to_string(inputs) +
                   " actuators: step needs controls of shape [n, actuators]");
     }
-    py::gil_scoped_release release;
-    pool_->Run(static_cast<int>(n), [&](int i) {
-      copies_[i].Step(data ? data + static_cast<size_t>(i) * inputs : nullptr);
-    });
+    {
+      py::gil_scoped_release release;
+      pool_->Run(static_cast<int>(n), [&](int i) {
+        copies_[i].Step(data ? data + static_cast<size_t>(i) * inputs : nullptr);
+      });
+    }
+    ReportNewUnconvergedSteps(*model_, copies_, "Batch", true);
+  }
+
+  // Every copy's RunStatistics, as one array [n] per key (int64 counts, float64 residuals).
+  py::dict Statistics() const {
+    std::vector<py::dict> per_copy;
+    per_copy.reserve(copies_.size());
+    for (const SteppedCopy& copy : copies_) per_copy.push_back(RunStatistics(copy.integrator()));
+    const py::object array = py::module_::import("numpy").attr("array");
+    py::dict out;
+    for (const auto& [key, value] : per_copy.front()) {
+      py::list column;
+      for (const py::dict& statistics : per_copy) column.append(statistics[key]);
+      out[key] = array(column);
+    }
+    return out;
   }
 
   // A [n, coordinates] array of q (speeds: false) or u (speeds: true).
@@ -126,7 +147,10 @@ void BindBatch(py::module_& m) {
            "from states[i].")
       .def("step", &Batch::Step, py::arg("controls") = py::none(),
            "Advances every copy by one step; controls is an [n, actuators] array (may be "
-           "omitted for a model without actuators).")
+           "omitted for a model without actuators). NSC steps that stop above the solver's "
+           "tolerance give one UserWarning, naming the copies, at the call in which a copy's "
+           "first happens since the reset; with strict=True, sinew.Error at every call in "
+           "which a copy adds one (after the step).")
       .def_property_readonly(
           "q", [](const Batch& b) { return b.Coordinates(false); },
           "Coordinate values, [n, coordinates] (a copy).")
@@ -134,6 +158,11 @@ void BindBatch(py::module_& m) {
           "u", [](const Batch& b) { return b.Coordinates(true); },
           "Coordinate speeds, [n, coordinates] (a copy).")
       .def_property_readonly("t", &Batch::Times, "Times, [n] (a copy).")
+      .def_property_readonly(
+          "statistics", &Batch::Statistics,
+          "Per copy, what its steps since the last reset did: a dict with the keys and "
+          "meanings of Result.statistics (and Simulator.statistics), each an array [n] (a "
+          "new dict).")
       .def("state", &Batch::State, py::arg("i"), "A copy of copy i's state.")
       .def_property_readonly("n", &Batch::size)
       .def_property_readonly("threads", &Batch::threads)

@@ -3,8 +3,8 @@
 // (contacts.sto's columns: contact::ContactTableLabels, then an NSC run's
 // contact::NscContactTable), and write_table, which writes a table with io::StorageWriter
 // (states.sto byte for byte as the CLI writes it).
-// An NSC run's statistics also say what its impulse solver did (a UserWarning when steps stopped
-// above its tolerance).
+// Its statistics (RunStatistics) also say, for an NSC run, what its impulse solver did (a
+// UserWarning when steps stopped above its tolerance).
 // The GIL is released while the engine runs; Ctrl-C (KeyboardInterrupt) stops the run between
 // steps through the driver's stop flag.
 #include <pybind11/stl.h>
@@ -24,10 +24,10 @@
 #include <filesystem>
 #include <map>
 #include <optional>
-#include <sstream>
 
 #include "arrays.h"
 #include "bindings.h"
+#include "run_statistics.h"
 #include "simulation_inputs.h"
 #include "state_handle.h"
 
@@ -124,36 +124,11 @@ py::object Simulate(const ModelPtr& model, double duration, double accuracy,
   const size_t n = time.size();
   py::array_t<double> time_array(n);
   if (n > 0) std::memcpy(time_array.mutable_data(), time.data(), sizeof(double) * n);
-  const auto stats = integrator->stats();
-  py::dict statistics(py::arg("steps") = stats.steps, py::arg("rejected") = stats.rejected,
-                      py::arg("evaluations") = stats.evaluations);
-  // NSC: what its impulse solver did, and a warning when steps stopped above its tolerance
-  // (as `sinew simulate` warns).
-  if (const auto* nsc = dynamic_cast<const engine::NscIntegrator*>(integrator.get())) {
-    const engine::NscSolveSummary& solves = nsc->solve_summary();
-    statistics["nsc_solves"] = solves.solves;
-    statistics["nsc_unconverged_steps"] = solves.unconverged;
-    statistics["nsc_most_iterations"] = solves.most_iterations;
-    statistics["nsc_worst_residual"] = solves.worst_residual;
-    if (solves.unconverged > 0) {
-      std::ostringstream message;
-      message << "NSC's contact impulse solver did NOT reach its tolerance of "
-              << nsc->nsc_settings().solver.tolerance << " m/s in " << solves.unconverged << " of "
-              << solves.solves << " steps with contacts (it stopped at its limit of "
-              << nsc->nsc_settings().solver.max_iterations << " iterations, residual up to "
-              << solves.worst_residual
-              << " m/s): those steps' contact impulses are approximate; raise nsc_iterations "
-                 "or loosen nsc_tolerance in sinew.load";
-      // strict: no silent approximation (as `sinew simulate --strict`, which fails after
-      // writing its files; here there is no file, so the run's result is not returned).
-      if (setup.model->options().strict) {
-        throw Error({setup.model->path(), 0}, "", message.str() + " (strict)");
-      }
-      if (PyErr_WarnEx(PyExc_UserWarning, message.str().c_str(), 1) != 0) {
-        throw py::error_already_set();
-      }
-    }
-  }
+  const py::dict statistics = RunStatistics(*integrator);
+  // NSC steps above the solver's tolerance: a warning, as `sinew simulate` warns (strict: an
+  // error, as `--strict`, which fails after writing its files; here there is no file, so the
+  // run's result is not returned).
+  if (UnconvergedSteps(*integrator) > 0) ReportUnconvergedSteps(*setup.model, *integrator, "");
   py::object result_type = py::module_::import("sinew.result").attr("Result");
   return result_type(py::arg("time") = time_array, py::arg("q") = ToMatrix(q, n, nc),
                      py::arg("u") = ToMatrix(u, n, nc), py::arg("z") = ToMatrix(z, n, nz),

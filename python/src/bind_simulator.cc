@@ -1,14 +1,18 @@
 // Model.simulator and sinew.Simulator: one copy of the model stepped by fixed intervals from
 // Python, for control loops. step(controls) sets the actuators' inputs and returns the
 // observation [q, u] as one new array: nothing else is allocated per call, and the GIL is kept
-// (a step of a small model is shorter than releasing and taking it again).
+// (a step of a small model is shorter than releasing and taking it again). Its statistics are
+// Result.statistics' since the last reset; NSC steps above the solver's tolerance are reported
+// (ReportNewUnconvergedSteps) by the step() call in which they first happen.
 #include <pybind11/stl.h>
 
 #include <cstring>
 #include <optional>
+#include <span>
 
 #include "arrays.h"
 #include "bindings.h"
+#include "run_statistics.h"
 #include "simulation_inputs.h"
 #include "state_handle.h"
 #include "stepped_copy.h"
@@ -45,6 +49,7 @@ class Simulator {
     }
     if (repeat < 1) throw Error("repeat must be >= 1, not " + std::to_string(repeat));
     for (int k = 0; k < repeat; ++k) copy_.Step(controls ? controls->data() : nullptr);
+    ReportNewUnconvergedSteps(*model_, std::span(&copy_, 1), "Simulator", false);
     return Observation();
   }
 
@@ -63,6 +68,7 @@ class Simulator {
 
   const ModelPtr& model() const { return model_; }
   const engine::State& state() const { return copy_.state(); }
+  py::dict Statistics() const { return RunStatistics(copy_.integrator()); }
 
  private:
   ModelPtr model_;
@@ -82,7 +88,9 @@ void BindSimulator(py::module_& m) {
       .def("step", &Simulator::Step, py::arg("controls") = py::none(), py::arg("repeat") = 1,
            "Sets the actuators' inputs to `controls` (one per actuator; omitted: unchanged) and "
            "advances `repeat` steps (default 1) with them; returns the observation [q, u] (a "
-           "new array of 2 x coordinates).")
+           "new array of 2 x coordinates). NSC steps that stop above the solver's tolerance "
+           "give a UserWarning at the call in which the first happens since the reset; with "
+           "strict=True, sinew.Error at every call that adds one (after its steps).")
       .def_property_readonly("t", [](const Simulator& s) { return s.state().t; })
       .def_property_readonly("q", [](const Simulator& s) { return ToArray(s.state().q); })
       .def_property_readonly("u", [](const Simulator& s) { return ToArray(s.state().u); })
@@ -92,7 +100,13 @@ void BindSimulator(py::module_& m) {
             return StateHandle{s.model(), s.state()};
           },
           "A copy of the current state.")
-      .def_property_readonly("model", &Simulator::model);
+      .def_property_readonly("model", &Simulator::model)
+      .def_property_readonly(
+          "statistics", &Simulator::Statistics,
+          "What the steps since the last reset (or since it was made) did, with the keys and "
+          "meanings of Result.statistics: the integrator's steps, rejected, evaluations; for "
+          "NSC also nsc_solves, nsc_unconverged_steps, nsc_most_iterations, nsc_worst_residual "
+          "(a new dict).");
 
   py::class_<ModelHandle, ModelPtr> model =
       py::reinterpret_borrow<py::class_<ModelHandle, ModelPtr>>(m.attr("Model"));

@@ -29,6 +29,7 @@ void SteppedCopy::Reset(const engine::State& state) {
   state_ = state;
   t_start_ = state.t;
   steps_ = 0;
+  reported_unconverged_ = 0;
 }
 
 void SteppedCopy::Step(const double* controls) {

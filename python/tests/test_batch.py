@@ -1,6 +1,7 @@
 """A Batch of 64 copies stepped on 2 threads gives the trajectories of 64 single Simulators bit
 for bit (same integrator history per copy, one System shared read-only), with and without
-actuators; Simulator observations are [q, u]."""
+actuators, and the same statistics; Simulator observations are [q, u]. (NSC statistics and
+warnings: test_contact.py.)"""
 import numpy as np
 
 import sinew
@@ -38,6 +39,8 @@ def test_batch_equals_single_runs_without_actuators():
             observation = simulator.step()
         assert np.array_equal(observation, np.concatenate([q[i], u[i]]))
         assert simulator.t == t[i]
+        assert {key: values[i] for key, values in batch.statistics.items()} == \
+            simulator.statistics
     assert np.all(t == STEPS * H)
     assert np.ptp(q[:, 0]) > 0.5  # the copies did follow different trajectories
 
@@ -85,3 +88,19 @@ def test_step_repeat_equals_repeated_steps():
         observation = one_by_one.step(controls)
     assert np.array_equal(at_once.step(controls, repeat=25), observation)
     assert at_once.t == one_by_one.t == 25 * H
+
+
+def test_simulator_statistics_are_simulates_over_the_same_steps():
+    # Simulator.statistics has Result.statistics' keys and meanings: a run of "euler" steps of
+    # h = 1 ms over 0.2 s takes the steps simulate takes with report_interval = h (both end
+    # step k at k h), so the counts are simulate's; reset() starts them again from zero.
+    model = sinew.load(RESOURCES / "DoublePendulum3D.osim")
+    expected = model.simulate(STEPS * H, integrator="euler", step=H,
+                              report_interval=H).statistics
+    assert expected["steps"] == STEPS
+    simulator = model.simulator(H)
+    for _ in range(STEPS):
+        simulator.step()
+    assert simulator.statistics == expected
+    simulator.reset()
+    assert simulator.statistics == {key: 0 for key in expected}

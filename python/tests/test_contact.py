@@ -4,6 +4,7 @@ contact forces as `sinew render|export --contacts` do (docs/contact.md)."""
 import math
 import os
 import subprocess
+import warnings
 
 import numpy as np
 import pytest
@@ -131,6 +132,138 @@ def test_strict_refuses_nsc_steps_above_the_solver_tolerance():
     plain = sinew.load(TABLE, collision=True, contact="nsc").simulate(0.5)
     assert strict.statistics["nsc_unconverged_steps"] == 0
     assert np.array_equal(strict.q, plain.q)
+
+
+def stepped_table(model, steps, h=1e-3):
+    """A Simulator of `model` stepped `steps` times by h, and the warnings each step gave."""
+    simulator = model.simulator(h)
+    per_step = []
+    for _ in range(steps):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            simulator.step()
+        per_step.append([str(w.message) for w in caught if w.category is UserWarning])
+    return simulator, per_step
+
+
+def test_simulator_statistics_are_simulates_over_the_same_steps():
+    # Simulator.statistics has Result.statistics' keys and meanings, counted since the last
+    # reset. Stepped by NSC's 1 ms to 0.2 s (the table lands at about 0.1 s: a 5 cm fall),
+    # the Simulator takes the steps simulate takes with report_interval = step (both end step
+    # k at t0 + k h), so every figure, the worst residual too, is simulate's. One iteration
+    # leaves landing steps unconverged (docs/contact.md); repeat= steps the same; reset() and
+    # a new Simulator start from zero.
+    model = sinew.load(TABLE, collision=True, contact="nsc", nsc_iterations=1)
+    with pytest.warns(UserWarning, match="did NOT reach"):
+        expected = model.simulate(0.2, step=1e-3, report_interval=1e-3).statistics
+    assert expected["steps"] == 200 and expected["nsc_unconverged_steps"] > 0
+    simulator, _ = stepped_table(model, 200)
+    assert simulator.statistics == expected
+    repeated = model.simulator(1e-3)
+    assert all(value == 0 for value in repeated.statistics.values())
+    with pytest.warns(UserWarning, match="did NOT reach"):
+        repeated.step(repeat=200)
+    assert repeated.statistics == expected
+    simulator.reset()
+    assert simulator.statistics.keys() == expected.keys()
+    assert all(value == 0 for value in simulator.statistics.values())
+    # At the defaults every solve converges, in simulate and the Simulator alike.
+    plain = sinew.load(TABLE, collision=True, contact="nsc")
+    expected = plain.simulate(0.2, step=1e-3, report_interval=1e-3).statistics
+    simulator, messages = stepped_table(plain, 200)
+    assert simulator.statistics == expected
+    assert expected["nsc_unconverged_steps"] == 0 and expected["nsc_solves"] > 0
+    assert not any(messages)
+
+
+def test_simulator_warns_where_unconverged_steps_first_happen_and_strict_raises():
+    # The Simulator's UserWarning comes from the step() in which its statistics first count an
+    # unconverged NSC step, once per reset; with strict=True every step() that adds one raises
+    # sinew.Error (after the step) and at the defaults none does.
+    model = sinew.load(TABLE, collision=True, contact="nsc", nsc_iterations=1)
+    simulator = model.simulator(1e-3)
+    for _ in range(2):  # again after a reset
+        counts, warned = [], []
+        for _ in range(200):
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                simulator.step()
+            counts.append(simulator.statistics["nsc_unconverged_steps"])
+            warned.append([str(w.message) for w in caught])
+        first = next(k for k, count in enumerate(counts) if count > 0)
+        assert [k for k, messages in enumerate(warned) if messages] == [first]
+        assert len(warned[first]) == 1
+        assert warned[first][0].startswith(f"Simulator at t = {(first + 1) * 1e-3:g} s")
+        assert f"tolerance of 1e-06 m/s in {counts[first]} of" in warned[first][0]
+        simulator.reset()
+    strict = sinew.load(TABLE, collision=True, contact="nsc", nsc_iterations=1,
+                        strict=True).simulator(1e-3)
+    raised = 0
+    for _ in range(200):
+        before = strict.statistics["nsc_unconverged_steps"]
+        try:
+            strict.step()
+            failed = False
+        except sinew.Error as error:
+            assert "did NOT reach its tolerance" in str(error) and "(strict)" in str(error)
+            failed = True
+        raised += failed
+        assert failed == (strict.statistics["nsc_unconverged_steps"] > before)
+    assert raised == strict.statistics["nsc_unconverged_steps"] > 0
+    defaults = sinew.load(TABLE, collision=True, contact="nsc", strict=True).simulator(1e-3)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        defaults.step(repeat=200)
+    assert defaults.statistics["nsc_unconverged_steps"] == 0
+
+
+def test_batch_statistics_are_each_copys_simulator_statistics():
+    # Batch.statistics: per key an array [n] (as Batch.t), entry i copy i's statistics, equal
+    # to those of a Simulator stepped from the same state. The copies start 0, 1, 2, 3 cm
+    # higher, so they land at different steps; the one UserWarning of a step() names the copies
+    # whose first unconverged step it took (once per reset), strict=True raises instead.
+    model = sinew.load(TABLE, collision=True, contact="nsc", nsc_iterations=1)
+    n, steps = 4, 250
+    states = []
+    for i in range(n):
+        state = model.default_state()
+        state.set_value("ty", state.value("ty") + 0.01 * i)
+        states.append(state)
+    batch = sinew.Batch(model, n, step=1e-3, threads=2)
+    batch.reset(states)
+    first = [None] * n
+    warned = []
+    for k in range(steps):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            batch.step()
+        unconverged = batch.statistics["nsc_unconverged_steps"]
+        news = [i for i in range(n) if unconverged[i] > 0 and first[i] is None]
+        for i in news:
+            first[i] = k
+        messages = [str(w.message) for w in caught]
+        assert len(messages) == (1 if news else 0), (k, messages)
+        if news:
+            more = f" (and {len(news) - 1} more copies)" if len(news) > 1 else ""
+            assert messages[0].startswith(f"Batch copy {news[0]}{more} at t = ")
+            warned.append(k)
+    assert None not in first and len(set(first)) > 1  # they landed at different steps
+    assert warned == sorted(set(first))
+    statistics = batch.statistics
+    for key, values in statistics.items():
+        assert values.shape == (n,), key
+    for i in range(n):
+        simulator = model.simulator(1e-3, initial_states=states[i])
+        with pytest.warns(UserWarning):
+            simulator.step(repeat=steps)
+        assert {key: values[i] for key, values in statistics.items()} == simulator.statistics
+    batch.reset()
+    assert all(np.all(values == 0) for values in batch.statistics.values())
+    strict = sinew.Batch(sinew.load(TABLE, collision=True, contact="nsc", nsc_iterations=1,
+                                    strict=True), n, step=1e-3, threads=2)
+    with pytest.raises(sinew.Error, match=r"Batch copy 0 \(and 3 more copies\).*\(strict\)"):
+        for _ in range(steps):
+            strict.step()
 
 
 def test_nsc_solver_defaults_and_both_methods():
