@@ -226,6 +226,23 @@ void TreeKktSolver::FactorizeNode(Node& node) {
   }
 }
 
+namespace {
+
+// parent -= C_R^T z_R, C_R and z_R the last R rows of a node's coupling and vector (the
+// constraint rows: C is zero above them), with R known at compile time.
+template <int R, typename CMatrix, typename ZVector, typename PVector>
+void SubtractCouplingRows(const CMatrix& C, const ZVector& z, PVector parent) {
+  parent.noalias() -= C.template bottomRows<R>().transpose().lazyProduct(z.template tail<R>());
+}
+
+// z -= W x_P for a node of N rows known at compile time.
+template <int N, typename WMatrix, typename ZVector, typename PVector>
+void SubtractParentResponse(const WMatrix& W, const PVector& x_parent, ZVector& z) {
+  z.template head<N>().noalias() -= W.template topRows<N>().lazyProduct(x_parent);
+}
+
+}  // namespace
+
 void TreeKktSolver::Solve(const VecX& rhs, VecX& x) const {
   std::vector<NodeVector>& r = scratch_;
   r.resize(nodes_.size());
@@ -233,28 +250,59 @@ void TreeKktSolver::Solve(const VecX& rhs, VecX& x) const {
     r[k].resize(nodes_[k].global.size());
     for (size_t i = 0; i < nodes_[k].global.size(); ++i) r[k][i] = rhs[nodes_[k].global[i]];
   }
-  // Forward: z_k = K_k^-1 r_k, parent's body rows lose C^T z_k.
+  // Forward: z_k = K_k^-1 r_k, parent's body rows lose C^T z_k. The common sizes (a direct
+  // joint's 3 to 6 rows, a parameterized joint's 6) with fixed sizes: Eigen's products of run-time
+  // size cost more than their arithmetic here, and these walks are most of a projection's Newton
+  // iteration on a long chain.
   for (size_t k = nodes_.size(); k-- > 0;) {
-    SolveNode(nodes_[k], r[k]);
-    if (nodes_[k].parent >= 0) {
-      const int rows = NumConstraintRows(nodes_[k]);
-      auto parent_rows = r[nodes_[k].parent].head<6>();
-      if (rows == 6) {  // a joint's six rows alone (the common node), with fixed sizes
-        parent_rows.noalias() -=
-            nodes_[k].C.bottomRows<6>().transpose().lazyProduct(r[k].tail<6>());
-      } else {
-        parent_rows.noalias() -=
-            nodes_[k].C.bottomRows(rows).transpose().lazyProduct(r[k].tail(rows));
-      }
+    const Node& node = nodes_[k];
+    SolveNode(node, r[k]);
+    if (node.parent < 0) continue;
+    const int rows = NumConstraintRows(node);
+    auto parent_rows = r[node.parent].head<6>();
+    switch (rows) {
+      case 3:
+        SubtractCouplingRows<3>(node.C, r[k], parent_rows);
+        break;
+      case 4:
+        SubtractCouplingRows<4>(node.C, r[k], parent_rows);
+        break;
+      case 5:
+        SubtractCouplingRows<5>(node.C, r[k], parent_rows);
+        break;
+      case 6:
+        SubtractCouplingRows<6>(node.C, r[k], parent_rows);
+        break;
+      default:
+        parent_rows.noalias() -= node.C.bottomRows(rows).transpose().lazyProduct(r[k].tail(rows));
+        break;
     }
   }
-  // Backward: x_k = z_k - W_k x_parent.
+  // Backward: x_k = z_k - W_k x_parent (a direct joint's node has 9 to 12 rows).
   x.resize(rhs.size());
   for (size_t k = 0; k < nodes_.size(); ++k) {
-    if (nodes_[k].parent >= 0) {
-      r[k].noalias() -= nodes_[k].W.lazyProduct(r[nodes_[k].parent].head<6>());
+    const Node& node = nodes_[k];
+    if (node.parent >= 0) {
+      const auto x_parent = r[node.parent].head<6>();
+      switch (r[k].size()) {
+        case 9:
+          SubtractParentResponse<9>(node.W, x_parent, r[k]);
+          break;
+        case 10:
+          SubtractParentResponse<10>(node.W, x_parent, r[k]);
+          break;
+        case 11:
+          SubtractParentResponse<11>(node.W, x_parent, r[k]);
+          break;
+        case 12:
+          SubtractParentResponse<12>(node.W, x_parent, r[k]);
+          break;
+        default:
+          r[k].noalias() -= node.W.lazyProduct(x_parent);
+          break;
+      }
     }
-    for (size_t i = 0; i < nodes_[k].global.size(); ++i) x[nodes_[k].global[i]] = r[k][i];
+    for (size_t i = 0; i < node.global.size(); ++i) x[node.global[i]] = r[k][i];
   }
 }
 
