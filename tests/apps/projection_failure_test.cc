@@ -1,8 +1,11 @@
 // `sinew simulate` driven into a position projection failure: a fixed-step integrator given an
-// absurd step on a double pendulum (opensim-core's double_pendulum.osim, two PinJoints starting
-// at -45 and -60 degrees, at rest). The first 10 s step moves the links by ~g h^2 = 1 km, far
-// beyond what the Newton projection can bring back onto the joints. The command must end with
-// exit code 2 and a message saying what failed, when, and what to try, not abort.
+// absurd step on tests/data/sinew/constraints.osim (bodies on FreeJoints held by OpenSim's
+// body constraints: a weld, a point, a point on a line, a constant distance). The first 10 s
+// step moves the free bodies by ~g h^2 = 1 km, far beyond what the Newton projection can bring
+// back onto those constraints. (The fixed-step schemes move bodies along the joint tree, so a
+// model of joints alone stays on its joints at any step: only loops and constraints can fail.)
+// The command must end with exit code 2 and a message saying what failed, when, and what to
+// try, not abort.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -12,8 +15,7 @@
 
 namespace {
 
-const std::string kModel = std::string(SINEW_TEST_DATA_DIR) +
-                           "/opensim-org/opensim-core/OpenSim/Simulation/Test/double_pendulum.osim";
+const std::string kModel = std::string(SINEW_TEST_DATA_DIR) + "/sinew/constraints.osim";
 
 struct CliResult {
   int exit_code = -1;

@@ -3,6 +3,7 @@
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/fixed_step_integrator.h>
 #include <sinew/engine/projection.h>
+#include <sinew/engine/tree_displacement.h>
 
 #include <limits>
 #include <string>
@@ -76,7 +77,7 @@ void FixedStepIntegrator::SolveFreeVelocities(State& state, double h, double t_n
 void FixedStepIntegrator::FinishStep(State& state, double h) {
   ScatterVelocities(system_, kkt_, v_free_, later_);
   v_free_ *= h;  // now the positions' displacement
-  ApplyPositionDisplacement(system_, kkt_, v_free_, later_);
+  ApplyTreeDisplacement(system_, kkt_, v_free_, later_);
   later_.z += h * zdot_;
   ProjectAfterStep(later_, state.t);
   std::swap(state, later_);
@@ -88,7 +89,13 @@ bool FixedStepIntegrator::ProjectWithStartFactorization(State& later) {
   double previous = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration <= kMaxIterations; ++iteration) {
     VecX& phi = phi_;
-    CalcPositionErrors(system_, later, phi);
+    // The step moved the bodies along the tree (ApplyTreeDisplacement); a Newton correction
+    // moves them rigidly, which may leave any constraint.
+    if (iteration == 0) {
+      CalcPositionErrorsAfterTreeDisplacement(system_, later, phi);
+    } else {
+      CalcPositionErrors(system_, later, phi);
+    }
     const double error = phi.size() == 0 ? 0.0 : phi.lpNorm<Eigen::Infinity>();
     if (error <= ConstraintTolerance()) return true;
     if (!(error < 0.1 * previous)) {

@@ -8,6 +8,7 @@
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/projection.h>
+#include <sinew/engine/tree_displacement.h>
 #include <sinew/engine/state_vector.h>
 
 #include <Eigen/LU>
@@ -315,7 +316,7 @@ class LinearizedImplicitEuler final : public FixedStepIntegrator {
     }
     const VecX v1 = x.head(nv);
     ScatterVelocities(system_, kkt_, v1, later);
-    ApplyPositionDisplacement(system_, kkt_, h * v1, later);
+    ApplyTreeDisplacement(system_, kkt_, h * v1, later);
     later.z += h * zdot;  // explicit in z (the loads' z-dependence is not linearized yet)
     ProjectAfterStep(later, state.t);
     state = std::move(later);

@@ -155,15 +155,21 @@ void System::Finalize() {
   // Constraints: joints, coordinate motions, extra.
   finalized_ = true;
   constraints_.clear();
+  held_by_tree_placement_.clear();
   for (size_t j = 0; j < joints_.size(); ++j) {
     constraints_.push_back(MakeJointConstraint(*this, static_cast<int>(j)));
+    held_by_tree_placement_.push_back(!loop_[j]);
   }
   for (int c = 0; c < num_coordinates(); ++c) {
     const Coordinate& coordinate = coordinates_[c];
     if (coordinate.motion == CoordinateMotion::kFree) continue;
     constraints_.push_back(MakeCoordinateMotionConstraint(*this, c));
+    held_by_tree_placement_.push_back(coordinate.motion == CoordinateMotion::kLocked);
   }
-  for (const auto& c : extra_constraints_) constraints_.push_back(c);
+  for (const auto& c : extra_constraints_) {
+    constraints_.push_back(c);
+    held_by_tree_placement_.push_back(false);
+  }
 }
 
 int System::FindBody(std::string_view name) const {

@@ -144,6 +144,10 @@ class System {
   bool HasExtraConstraints() const { return !extra_constraints_.empty(); }
   /// Index in constraints() of the first constraint added with AddConstraint (the others
   /// follow it). Valid after Finalize().
+  /// Whether constraint k holds by construction after the fixed-step schemes' position update
+  /// (ApplyTreeDisplacement): a tree joint's constraint, or the lock of a coordinate (whose
+  /// speed is zero). Loop joints, prescribed motions and extra constraints must be projected.
+  bool HeldByTreePlacement(int k) const { return held_by_tree_placement_[k]; }
   int FirstExtraConstraint() const {
     return static_cast<int>(constraints_.size() - extra_constraints_.size());
   }
@@ -181,6 +185,7 @@ class System {
   std::vector<int> joint_of_body_;
   std::vector<bool> reversed_;
   std::vector<bool> loop_;
+  std::vector<bool> held_by_tree_placement_;  // per constraint
   int num_integrated_ = 0;
   bool finalized_ = false;
 };
