@@ -6,14 +6,11 @@
 #include <BulletCollision/CollisionShapes/btTriangleCallback.h>
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
 #include <BulletCollision/CollisionShapes/btTriangleShape.h>
-#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
-#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
-#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
-#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 #include <LinearMath/btAabbUtil2.h>
 #include <sinew/common/error.h>
 #include <sinew/contact/collision_detection.h>
 #include <sinew/contact/internal/bullet_ellipsoid.h>
+#include <sinew/contact/internal/bullet_penetration.h>
 
 #include <algorithm>
 #include <array>
@@ -274,9 +271,9 @@ struct TriangleContact {
   std::array<Vec3, 3> triangle_G;
 };
 
-// The distance between the segments [p1, q1] and [p2, q2] (closest points of two segments, the
-// clamped solution of the two-parameter least-squares problem).
-double SegmentDistance(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) {
+// The vector from the segment [p1, q1] to the segment [p2, q2] between their closest points
+// (the clamped solution of the two-parameter least-squares problem).
+Vec3 SegmentGap(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) {
   const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
   const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
   const double c = d1.dot(r), b = d1.dot(d2), denom = a * e - b * b;
@@ -289,19 +286,32 @@ double SegmentDistance(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec
     t = 1.0;
     s = std::clamp((b - c) / a, 0.0, 1.0);
   }
-  return (p1 + s * d1 - (p2 + t * d2)).norm();
+  return p2 + t * d2 - (p1 + s * d1);
 }
 
-// A cylinder lies inside the capsule of its axis and radius: two cylinders whose axes are
-// farther apart than their radii and the envelope cannot touch (a cheap test before GJK).
-bool CapsulesApart(const Shape& a, const Transform& X_GA, const Shape& b, const Transform& X_GB,
-                   double envelope) {
+// The gap between two cylinders' axes (from a's to b's, between their closest points). A
+// cylinder lies inside the capsule of its axis and radius: two cylinders whose axes are farther
+// apart than their radii and the envelope cannot touch (a cheap test before GJK).
+Vec3 CylinderAxesGap(const Shape& a, const Transform& X_GA, const Shape& b,
+                     const Transform& X_GB) {
   const auto& ca = static_cast<const btCylinderShape&>(*a.bt);
   const auto& cb = static_cast<const btCylinderShape&>(*b.bt);
   const Vec3 ha = X_GA.R.col(1) * ca.getHalfExtentsWithoutMargin().y();
   const Vec3 hb = X_GB.R.col(1) * cb.getHalfExtentsWithoutMargin().y();
-  return SegmentDistance(X_GA.p - ha, X_GA.p + ha, X_GB.p - hb, X_GB.p + hb) >
-         a.radius + b.radius + envelope;
+  return SegmentGap(X_GA.p - ha, X_GA.p + ha, X_GB.p - hb, X_GB.p + hb);
+}
+
+// Whether the planes normal to `d` (in G, from A towards B) separate the convex shapes A and B,
+// each grown by its margin: A's farthest point along d short of B's nearest (their support
+// points with the margin; a box's is its corner, outside its rounded margin). A certificate:
+// then they cannot touch, and GJK would find them apart (a cheap test before it, exact however
+// near the pair is).
+bool SeparatedAlong(const Vec3& d, const btConvexShape& A, const btTransform& X_GA,
+                    const btConvexShape& B, const btTransform& X_GB) {
+  const btVector3 n = ToBt(d);
+  const btVector3 a = X_GA(A.localGetSupportingVertex(n * X_GA.getBasis()));
+  const btVector3 b = X_GB(B.localGetSupportingVertex(-n * X_GB.getBasis()));
+  return n.dot(a) < n.dot(b);
 }
 
 // Added to the bounding tests by reach (m), so that rounding in them never drops a contact.
@@ -466,29 +476,22 @@ void CollisionDetector::Impl::CollideWithHalfSpace(const Pair& p,
 }
 
 namespace {
-// GJK, and EPA for the penetration, between convex shapes A and B, each inflated by half the
-// envelope (the overlap of the inflated shapes is the true one plus the envelope, and its
-// midway point is the true one's). On overlap sets c's normal (Bullet's, from B towards A),
+// GJK, and EPA for the penetration (BulletPenetration), between convex shapes A and B, each
+// inflated by half the envelope (the overlap of the inflated shapes is the true one plus the
+// envelope, and its midway point is the true one's). On overlap sets c's normal (Bullet's, from B towards A),
 // depth and midway point, and `p_on_B_G` (if given) to Bullet's point, on inflated B.
 bool Penetrate(const btConvexShape* A, const btTransform& X_GA, const btConvexShape* B,
                const btTransform& X_GB, double envelope, CollisionContact& c,
                Vec3* p_on_B_G = nullptr) {
-  btVoronoiSimplexSolver simplex;
-  btGjkEpaPenetrationDepthSolver epa;
-  btGjkPairDetector gjk(A, B, &simplex, &epa);
-  btGjkPairDetector::ClosestPointInput input;
-  input.m_transformA = X_GA;
-  input.m_transformB = X_GB;
-  btPointCollector output;
-  gjk.getClosestPoints(input, output, nullptr);
-  if (!output.m_hasResult || !(output.m_distance < 0.0)) return false;
-  c.n_G = FromBt(output.m_normalOnBInWorld).normalized();
-  const double inflated_depth = -output.m_distance;
+  BulletOverlap output;
+  if (!BulletPenetration(A, X_GA, B, X_GB, output)) return false;
+  c.n_G = FromBt(output.normal_on_B).normalized();
+  const double inflated_depth = -output.distance;
   // EPA may fail on deep or degenerate overlaps: no usable normal, no contact.
   if (!c.n_G.allFinite() || !std::isfinite(inflated_depth)) return false;
   c.depth = inflated_depth - envelope;
-  c.p_G = FromBt(output.m_pointInWorld) - 0.5 * inflated_depth * c.n_G;
-  if (p_on_B_G) *p_on_B_G = FromBt(output.m_pointInWorld);
+  c.p_G = FromBt(output.point_on_B) - 0.5 * inflated_depth * c.n_G;
+  if (p_on_B_G) *p_on_B_G = FromBt(output.point_on_B);
   return true;
 }
 }  // namespace
@@ -504,9 +507,13 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   // origin: two disjoint balls, no contact (the cheapest test first, most pairs are far apart).
   const double reach = a.reach + b.reach + envelope + kReachSlack;
   if ((X_GSa.p - X_GSb.p).squaredNorm() > reach * reach) return;
-  if (a.kind == Kind::kCylinder && b.kind == Kind::kCylinder &&
-      CapsulesApart(a, X_GSa, b, X_GSb, envelope))
-    return;
+  // A candidate separating axis: between the origins, or between two cylinders' axes.
+  Vec3 axis = X_GSb.p - X_GSa.p;
+  if (a.kind == Kind::kCylinder && b.kind == Kind::kCylinder) {
+    axis = CylinderAxesGap(a, X_GSa, b, X_GSb);
+    const double touch = a.radius + b.radius + envelope;
+    if (axis.squaredNorm() > touch * touch) return;
+  }
   const btTransform X_GA = ToBt(X_GSa);
   const btTransform X_GBs = ToBt(X_GSb);
   // Broad phase: the shapes' bounding boxes.
@@ -514,6 +521,7 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   a.bt->getAabb(X_GA, min_a, max_a);
   b.bt->getAabb(X_GBs, min_b, max_b);
   if (!TestAabbAgainstAabb2(min_a, max_a, min_b, max_b)) return;
+  if (axis.squaredNorm() > 0.0 && SeparatedAlong(axis, *a.bt, X_GA, *b.bt, X_GBs)) return;
   // Narrow phase: GJK, and EPA for the penetration.
   CollisionContact c;
   if (!Penetrate(a.bt.get(), X_GA, b.bt.get(), X_GBs, envelope, c)) return;
