@@ -602,8 +602,21 @@ void CollisionDetector::Impl::CollideWithMesh(const Pair& p,
 void CollisionDetector::FindContacts(
     const std::vector<Transform>& X_GB,
     const std::function<void(const CollisionContact&)>& visit) const {
-  // Per-thread scratch (the detector is shared by threads): no allocation once grown.
-  thread_local std::vector<Transform> X_GS;
+  // Per-thread scratch (the detector is shared by threads): no allocation once grown. A visitor
+  // that queries a detector again on this thread gets its own vector (no clobbering).
+  thread_local std::vector<Transform> scratch;
+  thread_local bool scratch_in_use = false;
+  std::vector<Transform> nested;
+  const bool use_scratch = !scratch_in_use;
+  std::vector<Transform>& X_GS = use_scratch ? scratch : nested;
+  scratch_in_use = true;
+  struct Release {
+    bool& in_use;
+    bool release;
+    ~Release() {
+      if (release) in_use = false;
+    }
+  } release{scratch_in_use, use_scratch};
   impl_->CalcShapePoses(X_GB, X_GS);
   for (const Pair& p : impl_->pairs) impl_->Collide(p, X_GS, visit);
 }
