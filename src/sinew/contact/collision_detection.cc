@@ -292,8 +292,7 @@ Vec3 SegmentGap(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) 
 // The gap between two cylinders' axes (from a's to b's, between their closest points). A
 // cylinder lies inside the capsule of its axis and radius: two cylinders whose axes are farther
 // apart than their radii and the envelope cannot touch (a cheap test before GJK).
-Vec3 CylinderAxesGap(const Shape& a, const Transform& X_GA, const Shape& b,
-                     const Transform& X_GB) {
+Vec3 CylinderAxesGap(const Shape& a, const Transform& X_GA, const Shape& b, const Transform& X_GB) {
   const auto& ca = static_cast<const btCylinderShape&>(*a.bt);
   const auto& cb = static_cast<const btCylinderShape&>(*b.bt);
   const Vec3 ha = X_GA.R.col(1) * ca.getHalfExtentsWithoutMargin().y();
@@ -478,8 +477,9 @@ void CollisionDetector::Impl::CollideWithHalfSpace(const Pair& p,
 namespace {
 // GJK, and EPA for the penetration (BulletPenetration), between convex shapes A and B, each
 // inflated by half the envelope (the overlap of the inflated shapes is the true one plus the
-// envelope, and its midway point is the true one's). On overlap sets c's normal (Bullet's, from B towards A),
-// depth and midway point, and `p_on_B_G` (if given) to Bullet's point, on inflated B.
+// envelope, and its midway point is the true one's). On overlap sets c's normal (Bullet's, from
+// B towards A), depth and midway point, and `p_on_B_G` (if given) to Bullet's point, on
+// inflated B.
 bool Penetrate(const btConvexShape* A, const btTransform& X_GA, const btConvexShape* B,
                const btTransform& X_GB, double envelope, CollisionContact& c,
                Vec3* p_on_B_G = nullptr) {
@@ -533,8 +533,7 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
 }
 
 template <class Visit>
-void CollisionDetector::Impl::CollideWithMesh(const Pair& p,
-                                              const std::vector<Transform>& X_GS_all,
+void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<Transform>& X_GS_all,
                                               Visit&& visit) const {
   const Shape& m = shapes[p.i];
   const Shape& s = shapes[p.j];

@@ -52,7 +52,7 @@ Direct DirectEpa(const btConvexShape* A, const btTransform& X_A, const btConvexS
   btGjkEpaSolver2::sResults result;
   if (!btGjkEpaSolver2::Penetration(A, local_A, B, local_B, guess, result)) {
     return result.status == btGjkEpaSolver2::sResults::Separated ? Direct::kApart
-                                                                  : Direct::kUndecided;
+                                                                 : Direct::kUndecided;
   }
   const btVector3 a_to_b = result.witnesses[1] - result.witnesses[0];
   const btScalar length = a_to_b.length();
