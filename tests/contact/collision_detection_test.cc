@@ -65,6 +65,37 @@ TEST(CollisionDetectionTest, CylindersOverlapByTheirRadiiMinusTheirDistance) {
   EXPECT_TRUE(Contacts(detector, X_GB).empty());
 }
 
+// FindContacts keeps the shapes' poses in per-thread scratch: a visitor that queries a detector
+// again on the same thread (here at other poses, between two pairs of the outer query) must
+// leave the outer query's later pairs their own poses.
+TEST(CollisionDetectionTest, AVisitorMayQueryADetectorAgain) {
+  const double r = 0.05;
+  const CollisionDetector outer(TwoCylinders(r), 0.0);  // with a floor at y = 0
+  const CollisionDetector inner(TwoCylinders(r), 0.0);
+  // Body 1 lies 0.01 m into the floor (both rims), body 2 0.08 m above it (they overlap by
+  // 0.02 m): the cylinders' pair is tested first, then each with the floor.
+  const std::vector<Transform> X_outer = {Transform(), Transform::Translation(Vec3(0, 0.04, 0)),
+                                          Transform::Translation(Vec3(0, 0.12, 0))};
+  // Far apart and above the floor: no contact.
+  const std::vector<Transform> X_inner = {Transform(), Transform::Translation(Vec3(0, 1, 0)),
+                                          Transform::Translation(Vec3(0, 3, 0))};
+  const std::vector<CollisionContact> alone = Contacts(outer, X_outer);
+  ASSERT_EQ(alone.size(), 3u);
+  ASSERT_TRUE(Contacts(inner, X_inner).empty());
+  std::vector<CollisionContact> nested;
+  bool inner_empty = true;
+  outer.FindContacts(X_outer, [&](const CollisionContact& c) {
+    nested.push_back(c);
+    inner_empty = inner_empty && Contacts(inner, X_inner).empty();
+  });
+  EXPECT_TRUE(inner_empty);
+  ASSERT_EQ(nested.size(), alone.size());
+  for (size_t k = 0; k < alone.size(); ++k) {
+    EXPECT_EQ(nested[k].depth, alone[k].depth);
+    EXPECT_EQ(nested[k].p_G, alone[k].p_G);
+  }
+}
+
 TEST(CollisionDetectionTest, CylinderSinksIntoTheGroundPlaneByItsLowestPoint) {
   // One upright cylinder (along y, 1 m, radius 0.05) whose bottom is 0.003 m below the plane
   // y = 0.2, and one lying along x whose side is 0.001 m below it.

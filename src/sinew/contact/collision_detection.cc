@@ -6,14 +6,11 @@
 #include <BulletCollision/CollisionShapes/btTriangleCallback.h>
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
 #include <BulletCollision/CollisionShapes/btTriangleShape.h>
-#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
-#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
-#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
-#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 #include <LinearMath/btAabbUtil2.h>
 #include <sinew/common/error.h>
 #include <sinew/contact/collision_detection.h>
 #include <sinew/contact/internal/bullet_ellipsoid.h>
+#include <sinew/contact/internal/bullet_penetration.h>
 
 #include <algorithm>
 #include <array>
@@ -52,6 +49,9 @@ struct Shape {
   Transform X_BS;  // for a cylinder, Bullet's: its axis along S's y
   Kind kind = Kind::kSphere;
   double radius = 0.0;  // of curvature; 0 for a half-space (infinite)
+  // The distance from S's origin of the shape's farthest point (not inflated): the shape lies
+  // in the ball of this radius about S's origin (unused for a half-space).
+  double reach = 0.0;
   int material = 0;
   // Bullet's shape, inflated by half the envelope (its margin) for GJK; null for a half-space.
   std::unique_ptr<btConvexShape> bt;
@@ -113,6 +113,7 @@ Shape MakeCylinder(const CollisionCylinder& c, double inflation) {
   s.X_BS = Transform(RotationYTo(axis / length), 0.5 * (c.p_B_start + c.p_B_end));
   s.radius = c.radius;
   s.material = c.material;
+  s.reach = std::hypot(c.radius, 0.5 * length);
   s.bt = Inflated<btCylinderShape>(Vec3(c.radius, 0.5 * length, c.radius), inflation);
   return s;
 }
@@ -126,6 +127,13 @@ std::vector<Vec3> DistinctPoints(const std::vector<Vec3>& points) {
   std::sort(sorted.begin(), sorted.end(), less);
   sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
   return sorted;
+}
+
+// The largest distance of `points` from the origin.
+double FarthestPoint(const std::vector<Vec3>& points) {
+  double reach = 0.0;
+  for (const Vec3& p : points) reach = std::max(reach, p.norm());
+  return reach;
 }
 
 // Bullet's convex hull of `points`, grown by `inflation` (its margin).
@@ -146,12 +154,14 @@ Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
     case CollisionShapeKind::kSphere:
       s.kind = Kind::kSphere;
       s.radius = g.radius;
+      s.reach = g.radius;
       // The radius is a sphere's margin: a point grown by it.
       s.bt = std::make_unique<btSphereShape>(g.radius + inflation);
       break;
     case CollisionShapeKind::kBox:
       s.kind = Kind::kBox;
       s.radius = kFlatShapeRadius;
+      s.reach = g.half_extents.norm();
       s.bt = Inflated<btBoxShape>(g.half_extents, inflation);
       break;
     case CollisionShapeKind::kHalfSpace:
@@ -162,11 +172,13 @@ Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
       s.kind = Kind::kCylinder;
       s.radius = g.radius;
       s.X_BS = g.X_BS * Transform(RotationYTo(Vec3::UnitZ()), Vec3::Zero());
+      s.reach = std::hypot(g.radius, g.half_length);
       s.bt = Inflated<btCylinderShape>(Vec3(g.radius, g.half_length, g.radius), inflation);
       break;
     case CollisionShapeKind::kEllipsoid: {
       s.kind = Kind::kEllipsoid;
       s.radius = g.radii.minCoeff();  // for SMC's Hertz law: the sharpest principal radius
+      s.reach = g.radii.maxCoeff();
       s.bt = std::make_unique<BulletEllipsoid>(ToBt(g.radii));
       s.bt->setMargin(inflation);
       break;
@@ -176,6 +188,7 @@ Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
       s.radius = kFlatShapeRadius;
       if (g.vertices) s.hull = DistinctPoints(*g.vertices);
       if (s.hull.empty()) throw Error("contact: the mesh '" + g.name + "' has no vertices");
+      s.reach = FarthestPoint(s.hull);
       s.bt = ConvexHull(s.hull, inflation);
       break;
     }
@@ -185,6 +198,7 @@ Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
       if (!g.mesh || g.mesh->triangles.empty())
         throw Error("contact: the mesh '" + g.name + "' has no triangles");
       s.hull = DistinctPoints(g.mesh->vertices);
+      s.reach = FarthestPoint(s.hull);
       auto mesh = std::make_unique<BulletTriangleMesh>();
       const int num_vertices = static_cast<int>(g.mesh->vertices.size());
       for (const std::array<int, 3>& t : g.mesh->triangles) {
@@ -257,9 +271,9 @@ struct TriangleContact {
   std::array<Vec3, 3> triangle_G;
 };
 
-// The distance between the segments [p1, q1] and [p2, q2] (closest points of two segments, the
-// clamped solution of the two-parameter least-squares problem).
-double SegmentDistance(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) {
+// The vector from the segment [p1, q1] to the segment [p2, q2] between their closest points
+// (the clamped solution of the two-parameter least-squares problem).
+Vec3 SegmentGap(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) {
   const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
   const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
   const double c = d1.dot(r), b = d1.dot(d2), denom = a * e - b * b;
@@ -272,20 +286,35 @@ double SegmentDistance(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec
     t = 1.0;
     s = std::clamp((b - c) / a, 0.0, 1.0);
   }
-  return (p1 + s * d1 - (p2 + t * d2)).norm();
+  return p2 + t * d2 - (p1 + s * d1);
 }
 
-// A cylinder lies inside the capsule of its axis and radius: two cylinders whose axes are
-// farther apart than their radii and the envelope cannot touch (a cheap test before GJK).
-bool CapsulesApart(const Shape& a, const Transform& X_GA, const Shape& b, const Transform& X_GB,
-                   double envelope) {
+// The gap between two cylinders' axes (from a's to b's, between their closest points). A
+// cylinder lies inside the capsule of its axis and radius: two cylinders whose axes are farther
+// apart than their radii and the envelope cannot touch (a cheap test before GJK).
+Vec3 CylinderAxesGap(const Shape& a, const Transform& X_GA, const Shape& b, const Transform& X_GB) {
   const auto& ca = static_cast<const btCylinderShape&>(*a.bt);
   const auto& cb = static_cast<const btCylinderShape&>(*b.bt);
   const Vec3 ha = X_GA.R.col(1) * ca.getHalfExtentsWithoutMargin().y();
   const Vec3 hb = X_GB.R.col(1) * cb.getHalfExtentsWithoutMargin().y();
-  return SegmentDistance(X_GA.p - ha, X_GA.p + ha, X_GB.p - hb, X_GB.p + hb) >
-         a.radius + b.radius + envelope;
+  return SegmentGap(X_GA.p - ha, X_GA.p + ha, X_GB.p - hb, X_GB.p + hb);
 }
+
+// Whether the planes normal to `d` (in G, from A towards B) separate the convex shapes A and B,
+// each grown by its margin: A's farthest point along d short of B's nearest (their support
+// points with the margin; a box's is its corner, outside its rounded margin). A certificate:
+// then they cannot touch, and GJK would find them apart (a cheap test before it, exact however
+// near the pair is).
+bool SeparatedAlong(const Vec3& d, const btConvexShape& A, const btTransform& X_GA,
+                    const btConvexShape& B, const btTransform& X_GB) {
+  const btVector3 n = ToBt(d);
+  const btVector3 a = X_GA(A.localGetSupportingVertex(n * X_GA.getBasis()));
+  const btVector3 b = X_GB(B.localGetSupportingVertex(-n * X_GB.getBasis()));
+  return n.dot(a) < n.dot(b);
+}
+
+// Added to the bounding tests by reach (m), so that rounding in them never drops a contact.
+constexpr double kReachSlack = 1e-9;
 
 struct Pair {
   int i = 0;  // a half-space comes first
@@ -302,23 +331,29 @@ struct CollisionDetector::Impl {
   std::vector<Pair> pairs;
   int excluded_at_rest = 0;
 
-  // Each point of the convex shape p.j inside the half-space p.i.
+  // The shapes' poses X_GS (one per shape) at the body poses X_GB: computed once per query, as
+  // a shape is in several pairs.
+  void CalcShapePoses(const std::vector<Transform>& X_GB, std::vector<Transform>& X_GS) const {
+    X_GS.resize(shapes.size());
+    for (size_t k = 0; k < shapes.size(); ++k) X_GS[k] = X_GB[shapes[k].body] * shapes[k].X_BS;
+  }
+  // Each point of the convex shape p.j inside the half-space p.i. X_GS: the shapes' poses.
   template <class Visit>
-  void CollideWithHalfSpace(const Pair& p, const std::vector<Transform>& X_GB, Visit&& visit) const;
+  void CollideWithHalfSpace(const Pair& p, const std::vector<Transform>& X_GS, Visit&& visit) const;
   // Bullet's deepest contact of the convex shapes p.i and p.j, if they overlap.
   template <class Visit>
-  void CollideConvex(const Pair& p, const std::vector<Transform>& X_GB, Visit&& visit) const;
+  void CollideConvex(const Pair& p, const std::vector<Transform>& X_GS, Visit&& visit) const;
   // The contacts of the convex shape p.j with the triangles of the mesh p.i.
   template <class Visit>
-  void CollideWithMesh(const Pair& p, const std::vector<Transform>& X_GB, Visit&& visit) const;
+  void CollideWithMesh(const Pair& p, const std::vector<Transform>& X_GS, Visit&& visit) const;
   template <class Visit>
-  void Collide(const Pair& p, const std::vector<Transform>& X_GB, Visit&& visit) const {
+  void Collide(const Pair& p, const std::vector<Transform>& X_GS, Visit&& visit) const {
     if (shapes[p.i].kind == Kind::kHalfSpace)
-      CollideWithHalfSpace(p, X_GB, visit);
+      CollideWithHalfSpace(p, X_GS, visit);
     else if (shapes[p.i].kind == Kind::kTriangleMesh)
-      CollideWithMesh(p, X_GB, visit);
+      CollideWithMesh(p, X_GS, visit);
     else
-      CollideConvex(p, X_GB, visit);
+      CollideConvex(p, X_GS, visit);
   }
 };
 
@@ -349,6 +384,8 @@ CollisionDetector::CollisionDetector(const CollisionModel& model,
       if (is_mesh(s)) s.mesh_side.closed_convex = IsClosedConvex(*s.source);
     }
   }
+  std::vector<Transform> X_GS_rest;
+  if (!X_GB_rest.empty()) impl_->CalcShapePoses(X_GB_rest, X_GS_rest);
   const int n = static_cast<int>(shapes.size());
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
@@ -382,7 +419,7 @@ CollisionDetector::CollisionDetector(const CollisionModel& model,
       p.material = CombineMaterials(material_of(a.material), material_of(b.material));
       if (!X_GB_rest.empty() && a.body != model::kGroundIndex && b.body != model::kGroundIndex) {
         bool overlaps = false;
-        impl_->Collide(p, X_GB_rest, [&](const CollisionContact&) { overlaps = true; });
+        impl_->Collide(p, X_GS_rest, [&](const CollisionContact&) { overlaps = true; });
         if (overlaps) {
           ++impl_->excluded_at_rest;
           continue;
@@ -412,13 +449,16 @@ std::vector<std::pair<int, int>> CollisionDetector::BodyPairs() const {
 
 template <class Visit>
 void CollisionDetector::Impl::CollideWithHalfSpace(const Pair& p,
-                                                   const std::vector<Transform>& X_GB,
+                                                   const std::vector<Transform>& X_GS_all,
                                                    Visit&& visit) const {
   const Shape& h = shapes[p.i];
   const Shape& s = shapes[p.j];
-  const Transform X_GH = X_GB[h.body] * h.X_BS;
-  const Transform X_GS = X_GB[s.body] * s.X_BS;
+  const Transform& X_GH = X_GS_all[p.i];
+  const Transform& X_GS = X_GS_all[p.j];
   const Vec3 inward_G = X_GH.R.col(0);  // into the solid x > 0
+  // No point of the shape lies deeper than its origin plus its reach: when that is no deeper
+  // than -envelope, no candidate below would be reported.
+  if (!((X_GS.p - X_GH.p).dot(inward_G) + s.reach + kReachSlack > -envelope)) return;
   CollisionContact c;
   c.body1 = h.body;
   c.body2 = s.body;
@@ -435,43 +475,45 @@ void CollisionDetector::Impl::CollideWithHalfSpace(const Pair& p,
 }
 
 namespace {
-// GJK, and EPA for the penetration, between convex shapes A and B, each inflated by half the
-// envelope (the overlap of the inflated shapes is the true one plus the envelope, and its
-// midway point is the true one's). On overlap sets c's normal (Bullet's, from B towards A),
-// depth and midway point, and `p_on_B_G` (if given) to Bullet's point, on inflated B.
+// GJK, and EPA for the penetration (BulletPenetration), between convex shapes A and B, each
+// inflated by half the envelope (the overlap of the inflated shapes is the true one plus the
+// envelope, and its midway point is the true one's). On overlap sets c's normal (Bullet's, from
+// B towards A), depth and midway point, and `p_on_B_G` (if given) to Bullet's point, on
+// inflated B.
 bool Penetrate(const btConvexShape* A, const btTransform& X_GA, const btConvexShape* B,
                const btTransform& X_GB, double envelope, CollisionContact& c,
                Vec3* p_on_B_G = nullptr) {
-  btVoronoiSimplexSolver simplex;
-  btGjkEpaPenetrationDepthSolver epa;
-  btGjkPairDetector gjk(A, B, &simplex, &epa);
-  btGjkPairDetector::ClosestPointInput input;
-  input.m_transformA = X_GA;
-  input.m_transformB = X_GB;
-  btPointCollector output;
-  gjk.getClosestPoints(input, output, nullptr);
-  if (!output.m_hasResult || !(output.m_distance < 0.0)) return false;
-  c.n_G = FromBt(output.m_normalOnBInWorld).normalized();
-  const double inflated_depth = -output.m_distance;
+  BulletOverlap output;
+  if (!BulletPenetration(A, X_GA, B, X_GB, output)) return false;
+  c.n_G = FromBt(output.normal_on_B).normalized();
+  const double inflated_depth = -output.distance;
   // EPA may fail on deep or degenerate overlaps: no usable normal, no contact.
   if (!c.n_G.allFinite() || !std::isfinite(inflated_depth)) return false;
   c.depth = inflated_depth - envelope;
-  c.p_G = FromBt(output.m_pointInWorld) - 0.5 * inflated_depth * c.n_G;
-  if (p_on_B_G) *p_on_B_G = FromBt(output.m_pointInWorld);
+  c.p_G = FromBt(output.point_on_B) - 0.5 * inflated_depth * c.n_G;
+  if (p_on_B_G) *p_on_B_G = FromBt(output.point_on_B);
   return true;
 }
 }  // namespace
 
 template <class Visit>
-void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Transform>& X_GB,
+void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Transform>& X_GS,
                                             Visit&& visit) const {
   const Shape& a = shapes[p.i];
   const Shape& b = shapes[p.j];
-  const Transform X_GSa = X_GB[a.body] * a.X_BS;
-  const Transform X_GSb = X_GB[b.body] * b.X_BS;
-  if (a.kind == Kind::kCylinder && b.kind == Kind::kCylinder &&
-      CapsulesApart(a, X_GSa, b, X_GSb, envelope))
-    return;
+  const Transform& X_GSa = X_GS[p.i];
+  const Transform& X_GSb = X_GS[p.j];
+  // Each shape, grown by half the envelope, lies in the ball of its reach plus that about its
+  // origin: two disjoint balls, no contact (the cheapest test first, most pairs are far apart).
+  const double reach = a.reach + b.reach + envelope + kReachSlack;
+  if ((X_GSa.p - X_GSb.p).squaredNorm() > reach * reach) return;
+  // A candidate separating axis: between the origins, or between two cylinders' axes.
+  Vec3 axis = X_GSb.p - X_GSa.p;
+  if (a.kind == Kind::kCylinder && b.kind == Kind::kCylinder) {
+    axis = CylinderAxesGap(a, X_GSa, b, X_GSb);
+    const double touch = a.radius + b.radius + envelope;
+    if (axis.squaredNorm() > touch * touch) return;
+  }
   const btTransform X_GA = ToBt(X_GSa);
   const btTransform X_GBs = ToBt(X_GSb);
   // Broad phase: the shapes' bounding boxes.
@@ -479,6 +521,7 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   a.bt->getAabb(X_GA, min_a, max_a);
   b.bt->getAabb(X_GBs, min_b, max_b);
   if (!TestAabbAgainstAabb2(min_a, max_a, min_b, max_b)) return;
+  if (axis.squaredNorm() > 0.0 && SeparatedAlong(axis, *a.bt, X_GA, *b.bt, X_GBs)) return;
   // Narrow phase: GJK, and EPA for the penetration.
   CollisionContact c;
   if (!Penetrate(a.bt.get(), X_GA, b.bt.get(), X_GBs, envelope, c)) return;
@@ -490,12 +533,12 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
 }
 
 template <class Visit>
-void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<Transform>& X_GB,
+void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<Transform>& X_GS_all,
                                               Visit&& visit) const {
   const Shape& m = shapes[p.i];
   const Shape& s = shapes[p.j];
-  const Transform X_GM = X_GB[m.body] * m.X_BS;
-  const Transform X_GS = X_GB[s.body] * s.X_BS;
+  const Transform& X_GM = X_GS_all[p.i];
+  const Transform& X_GS = X_GS_all[p.j];
   // Broad phase: the triangles whose bounding boxes meet the convex shape's, both in M (the
   // mesh's hierarchy of boxes, btBvhTriangleMeshShape::processAllTriangles).
   // The shape's box is grown by the triangles' margin (half the envelope).
@@ -558,7 +601,23 @@ void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<T
 void CollisionDetector::FindContacts(
     const std::vector<Transform>& X_GB,
     const std::function<void(const CollisionContact&)>& visit) const {
-  for (const Pair& p : impl_->pairs) impl_->Collide(p, X_GB, visit);
+  // Per-thread scratch (the detector is shared by threads): no allocation once grown. A visitor
+  // that queries a detector again on this thread gets its own vector (no clobbering).
+  thread_local std::vector<Transform> scratch;
+  thread_local bool scratch_in_use = false;
+  std::vector<Transform> nested;
+  const bool use_scratch = !scratch_in_use;
+  std::vector<Transform>& X_GS = use_scratch ? scratch : nested;
+  scratch_in_use = true;
+  struct Release {
+    bool& in_use;
+    bool release;
+    ~Release() {
+      if (release) in_use = false;
+    }
+  } release{scratch_in_use, use_scratch};
+  impl_->CalcShapePoses(X_GB, X_GS);
+  for (const Pair& p : impl_->pairs) impl_->Collide(p, X_GS, visit);
 }
 
 }  // namespace sinew::contact

@@ -1,13 +1,15 @@
 // Collision detection between a collision model's shapes (contact::CollisionModel: the seed's
 // cylinders, OpenSim's ContactSphere, ContactHalfSpace, ContactCylinder, ContactEllipsoid and
 // ContactMesh (its triangles, on ground or on a moving body), environment boxes and planes)
-// through Bullet's collision library: its bounding boxes as the broad phase, GJK/EPA as the
-// narrow phase between convex shapes and between a convex shape and each triangle of a mesh
-// near it (found through the mesh's btBvhTriangleMeshShape, in the mesh's current pose), and
-// the shapes' support vertices against half-spaces (what Bullet's convex-plane algorithm does;
-// several points per pair for boxes, cylinders, hulls and meshes). Of two meshes, one collides
-// as its convex hull against the other's triangles (MeshPairHull: exact when it is closed and
-// convex).
+// through Bullet's collision library. Broad phase, cheapest first, each test conservative (it
+// drops only pairs that cannot touch): a ball about each shape, the gap between two cylinders'
+// axes, Bullet's bounding boxes, and one candidate separating axis (the shapes' support points
+// along it). Narrow phase: GJK/EPA between convex shapes and between a convex shape and each
+// triangle of a mesh near it (found through the mesh's btBvhTriangleMeshShape, in the mesh's
+// current pose), and the shapes' support vertices against half-spaces (what Bullet's
+// convex-plane algorithm does; several points per pair for boxes, cylinders, hulls and meshes).
+// Of two meshes, one collides as its convex hull against the other's triangles (MeshPairHull:
+// exact when it is closed and convex).
 // Stateless per query (no contact caching), so one detector can be shared by threads and by the
 // stages of a Runge-Kutta step.
 #pragma once

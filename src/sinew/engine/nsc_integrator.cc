@@ -120,7 +120,23 @@ void NscIntegrator::SolveContacts(const State& state, double h) {
     }
   }
   SolveBodyBlocks();
-  // W = D A^-1 D^T block by block, u_free = D v_free, and the targets.
+  // Y = A^-1 D^T on the bodies in contact: the twists of each under each contact's unit
+  // impulses (6 rows per body, 3 columns per contact), from the blocks of A^-1.
+  const int nb = static_cast<int>(bodies_.size());
+  Reserve(Y_, 6 * nb, 3 * m);
+  for (int i = 0; i < m; ++i) {
+    for (int target = 0; target < nb; ++target) {
+      Eigen::Matrix<double, 6, 3> Y_ti = Eigen::Matrix<double, 6, 3>::Zero();
+      for (int t = 0; t < 2; ++t) {
+        const int source = rows_[i].slot[t];
+        if (source < 0) continue;
+        Y_ti.noalias() += X_.block<6, 6>(6 * target, 6 * source) * rows_[i].J[t].transpose();
+      }
+      Y_.block<6, 3>(6 * target, 3 * i) = Y_ti;
+    }
+  }
+  // W = D A^-1 D^T = D Y block by block (symmetric: the blocks below the diagonal are the
+  // transposes of those above), u_free = D v_free, and the targets.
   Reserve(W_, 3 * m, 3 * m);
   for (VecX* v : {&u_free_, &u_, &gamma_}) Reserve(*v, 3 * m);
   Reserve(target_, m);
@@ -129,17 +145,15 @@ void NscIntegrator::SolveContacts(const State& state, double h) {
     const UnilateralContact& c = contacts_[k];
     const int body_of[2] = {c.body1, c.body2};
     Eigen::Vector3d u_free = Eigen::Vector3d::Zero(), u_start = Eigen::Vector3d::Zero();
-    for (int i = 0; i < m; ++i) {
+    for (int i = k; i < m; ++i) {
       Eigen::Matrix3d W_ki = Eigen::Matrix3d::Zero();
       for (int s = 0; s < 2; ++s) {
-        for (int t = 0; t < 2; ++t) {
-          const int target = rows_[k].slot[s], source = rows_[i].slot[t];
-          if (target < 0 || source < 0) continue;
-          W_ki.noalias() +=
-              rows_[k].J[s] * X_.block<6, 6>(6 * target, 6 * source) * rows_[i].J[t].transpose();
-        }
+        const int target = rows_[k].slot[s];
+        if (target < 0) continue;
+        W_ki.noalias() += rows_[k].J[s] * Y_.block<6, 3>(6 * target, 3 * i);
       }
       W_.block<3, 3>(3 * k, 3 * i) = W_ki;
+      if (i != k) W_.block<3, 3>(3 * i, 3 * k) = W_ki.transpose();
     }
     for (int s = 0; s < 2; ++s) {
       if (rows_[k].slot[s] < 0) continue;

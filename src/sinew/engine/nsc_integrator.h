@@ -132,7 +132,7 @@ class NscIntegrator final : public FixedStepIntegrator {
   std::vector<int> bodies_;     // bodies in contact (not ground)
   std::vector<int> body_slot_;  // per System body: its slot in bodies_, or -1
   MatX X_;                      // nv x 6 per body in contact: A^-1 columns
-  MatX E_;                      // nv x 3 per contact: A^-1 D_i^T
+  MatX Y_;                      // 6 per body in contact x 3 per contact: A^-1 D^T there
   MatX W_;                      // Delassus operator
   VecX rhs_, solution_;         // the contact impulses' solves
   VecX u_free_, u_, target_, mu_, gamma_;
