@@ -125,6 +125,11 @@ TEST(NscModelsTest, SkeletonDroppedOnTheGroundComesToRest) {
   // Rajagopal2015 (no muscles: a passive skeleton) with the seed's collision cylinders,
   // dropped 5 cm onto a ground plane, h = 1e-3 s, friction 0.6, restitution 0, 3 s: it lands
   // on its feet, folds (no joint stiffness or damping) and lies still.
+  // The impulse solve may take up to 1000 APGD iterations: lying on the floor with about 30
+  // contacts it needs up to about 600 to reach its 1e-6 m/s tolerance. With the default 100 it
+  // stops unconverged in most steps at rest (residuals up to 1.4e-3 m/s, which the CLI warns
+  // of), and those velocity errors keep the pelvis moving at 1-3 mm/s (measured over 6 s);
+  // converged, the pelvis is below 1.3e-6 m/s from 2 s on (docs/contact.md).
   testing::SkeletonOnGround scene = testing::MakeSkeletonOnGround(0.05);
   const engine::System* system = scene.system.get();
   engine::State& state = scene.state;
@@ -132,7 +137,9 @@ TEST(NscModelsTest, SkeletonDroppedOnTheGroundComesToRest) {
   auto& provider = scene.provider;
   engine::IntegratorSettings settings;
   settings.step = 1e-3;
-  engine::NscIntegrator integrator(*system, provider, settings);
+  engine::NscSettings nsc;
+  nsc.solver.max_iterations = 1000;
+  engine::NscIntegrator integrator(*system, provider, settings, nsc);
   const double energy0 = engine::CalcMechanicalEnergy(*system, state);
   double highest = energy0, deepest = 0.0, worst_residual = 0.0, kinetic = 0.0;
   int most_contacts = 0, most_iterations = 0;

@@ -98,12 +98,22 @@ void DropAndSettle(const std::string& integrator_name, double step, double accur
             << " steps\n";
 }
 
-// Semi-implicit Euler at the benchmark's step, 1 ms: it lands, collapses and is at rest by 5 s.
-// The collapse is chaotic: a change of rounding moves when the limbs stop rocking (one rounding
-// had 0.086 J at 3 s, another 0.02 J), so rest is asserted over the last half second of a run
-// long enough for either.
+// Semi-implicit Euler: it lands, collapses and is at rest by 5 s at a step of 0.25 ms. The
+// collapse is chaotic: a change of rounding moves when the limbs stop rocking, so rest is
+// asserted over the last half second of a run long enough for any of them.
+// At the benchmark's 1 ms it does not come to rest: euler applies the contacts' damping and
+// regularized friction explicitly, and on the light distal bodies (toes 0.22 kg, feet, hands)
+// their slopes exceed the explicit limit h c / m_eff < 2, so a foot keeps creeping (0.1-0.17
+// m/s, kinetic energy up to 1 J in bursts, over 10 s), where implicit-euler at 1 ms, with both
+// slopes in its Jacobian, comes to rest (3e-6 J at 10 s) and euler at 0.25 ms nearly so
+// (about 1e-4 J): docs/contact.md. At 1 ms it must still land without sinking through or
+// blowing up.
 TEST(SkeletonDropTest, Rajagopal2015ComesToRestOnTheFloorWithEuler) {
-  DropAndSettle("euler", 1e-3, 0.0, 5.0, true);
+  DropAndSettle("euler", 2.5e-4, 0.0, 5.0, true);
+}
+
+TEST(SkeletonDropTest, Rajagopal2015LandsWithoutSinkingThroughWithEulerAtOneMillisecond) {
+  DropAndSettle("euler", 1e-3, 0.0, 5.0, false);
 }
 
 // RK45 (accuracy 1e-4) through the landing: the contacts are stiff (steps of about 2e-5 s),
