@@ -105,31 +105,51 @@ void PlaceBodies(const System& system, State& state) {
     }
     SpatialVec V_FM_F = SpatialVec::Zero();
     if (H.cols() > 0) V_FM_F = H * Eigen::Map<const VecX>(u.data(), u.size());
+    const JointFrames frames = PlaceBodyThroughJoint(system, j, X_FM, state);
+    BodyState& P = state.bodies[joint.parent];
+    BodyState& B = state.bodies[joint.child];
+    const Vec3 w_FM_G = frames.X_GF.R * V_FM_F.head<3>();
+    const Vec3 v_FM_G = frames.X_GF.R * V_FM_F.tail<3>();
+    const Vec3& p_GM = frames.X_GM.p;
     if (!system.IsReversed(j)) {
-      const BodyState& P = state.bodies[joint.parent];
-      BodyState& B = state.bodies[joint.child];
-      const Transform X_GF = PoseOf(P) * joint.X_PF;
-      const Transform X_GM = X_GF * X_FM;
-      const Transform X_GB = X_GM * joint.X_BM.Inverse();
-      B.p_GB = X_GB.p;
-      B.quat_GB = Quat(X_GB.R).normalized();
-      B.w_GB = P.w_GB + X_GF.R * V_FM_F.head<3>();
-      const Vec3 v_M = PointVelocity(P, X_GM.p) + X_GF.R * V_FM_F.tail<3>();
-      B.v_GB = v_M + B.w_GB.cross(B.p_GB - X_GM.p);
+      B.w_GB = P.w_GB + w_FM_G;
+      const Vec3 v_M = PointVelocity(P, p_GM) + v_FM_G;
+      B.v_GB = v_M + B.w_GB.cross(B.p_GB - p_GM);
     } else {
-      // The child B is placed: X_GP = X_GB X_BM inverse(X_FM) inverse(X_PF).
-      const BodyState& B = state.bodies[joint.child];
-      BodyState& P = state.bodies[joint.parent];
-      const Transform X_GM = PoseOf(B) * joint.X_BM;
-      const Transform X_GF = X_GM * X_FM.Inverse();
-      const Transform X_GP = X_GF * joint.X_PF.Inverse();
-      P.p_GB = X_GP.p;
-      P.quat_GB = Quat(X_GP.R).normalized();
-      P.w_GB = B.w_GB - X_GF.R * V_FM_F.head<3>();
-      const Vec3 v_M = PointVelocity(B, X_GM.p) - X_GF.R * V_FM_F.tail<3>();
-      P.v_GB = v_M + P.w_GB.cross(P.p_GB - X_GM.p);
+      P.w_GB = B.w_GB - w_FM_G;
+      const Vec3 v_M = PointVelocity(B, p_GM) - v_FM_G;
+      P.v_GB = v_M + P.w_GB.cross(P.p_GB - p_GM);
     }
   }
+}
+
+JointFrames PlaceBodyThroughJoint(const System& system, int j, const Transform& X_FM,
+                                  State& state) {
+  const Joint& joint = system.joints()[j];
+  JointFrames frames;
+  Transform X_GB;
+  BodyState* placed = nullptr;
+  if (!system.IsReversed(j)) {
+    frames.X_GF = PoseOf(state.bodies[joint.parent]) * joint.X_PF;
+    frames.X_GM = frames.X_GF * X_FM;
+    X_GB = frames.X_GM * joint.X_BM.Inverse();
+    placed = &state.bodies[joint.child];
+  } else {
+    // The parent is placed: X_GP = X_GB X_BM inverse(X_FM) inverse(X_PF).
+    frames.X_GM = PoseOf(state.bodies[joint.child]) * joint.X_BM;
+    frames.X_GF = frames.X_GM * X_FM.Inverse();
+    X_GB = frames.X_GF * joint.X_PF.Inverse();
+    placed = &state.bodies[joint.parent];
+  }
+  placed->p_GB = X_GB.p;
+  placed->quat_GB = Quat(X_GB.R).normalized();
+  return frames;
+}
+
+Transform CalcJointTransform(const System& system, const State& state, int j) {
+  const Joint& joint = system.joints()[j];
+  return (PoseOf(state.bodies[joint.parent]) * joint.X_PF).Inverse() *
+         PoseOf(state.bodies[joint.child]) * joint.X_BM;
 }
 
 SpatialVec CalcJointVelocity(const System& system, const State& state, int j) {
@@ -149,8 +169,7 @@ void UpdateDirectCoordinates(const System& system, State& state) {
   for (size_t j = 0; j < system.joints().size(); ++j) {
     const Joint& joint = system.joints()[j];
     if (joint.form == JointForm::kParameterized || joint.coordinates.empty()) continue;
-    const Transform X_FM = (PoseOf(state.bodies[joint.parent]) * joint.X_PF).Inverse() *
-                           PoseOf(state.bodies[joint.child]) * joint.X_BM;
+    const Transform X_FM = CalcJointTransform(system, state, static_cast<int>(j));
     // A direct joint has at most 3 coordinates (a Ball); no heap use, as this runs every step.
     std::array<double, 3> q_buffer{}, u_buffer{};
     const size_t n = joint.coordinates.size();

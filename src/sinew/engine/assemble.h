@@ -44,4 +44,16 @@ void SetCoordinateSpeed(const System& system, State& state, std::string_view nam
 /// The spatial velocity of M in F, expressed in F, [w_FM_F; v_FM_F], of joint `j`.
 SpatialVec CalcJointVelocity(const System& system, const State& state, int j);
 
+/// X_FM of joint `j` read off the body poses of `state`.
+Transform CalcJointTransform(const System& system, const State& state, int j);
+
+/// The joint frames in G of a tree joint placed by PlaceBodyThroughJoint.
+struct JointFrames {
+  Transform X_GF, X_GM;
+};
+/// Places the body that tree joint `j` carries (its child; its parent when the joint is used
+/// reversed) from the other body's pose and `X_FM`: X_GB = X_GP X_PF X_FM inverse(X_BM).
+JointFrames PlaceBodyThroughJoint(const System& system, int j, const Transform& X_FM,
+                                  State& state);
+
 }  // namespace sinew::engine

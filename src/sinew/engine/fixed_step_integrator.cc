@@ -92,7 +92,7 @@ bool FixedStepIntegrator::ProjectWithStartFactorization(State& later) {
     // The step moved the bodies along the tree (ApplyTreeDisplacement); a Newton correction
     // moves them rigidly, which may leave any constraint.
     if (iteration == 0) {
-      CalcPositionErrorsAfterTreeDisplacement(system_, later, phi);
+      CalcPositionErrors(system_, later, phi, ErrorRows::kNotHeldByTree);
     } else {
       CalcPositionErrors(system_, later, phi);
     }

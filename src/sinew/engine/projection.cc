@@ -1,11 +1,11 @@
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
+#include <sinew/engine/joint_values.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/projection.h>
 
 #include <cmath>
 #include <limits>
-#include <vector>
 
 namespace sinew::engine {
 namespace {
@@ -13,7 +13,6 @@ namespace {
 // The projections' buffers, one set per thread (a System serves many threads).
 struct ProjectionBuffers {
   VecX phi, rhs, solution, v, mv;
-  std::vector<double> q, du, dq;  // one parameterized joint's coordinates
 };
 ProjectionBuffers& Buffers() {
   thread_local ProjectionBuffers buffers;
@@ -28,14 +27,20 @@ VecX CalcPositionErrors(const System& system, const State& state) {
   return phi;
 }
 
-void CalcPositionErrors(const System& system, const State& state, VecX& phi) {
+void CalcPositionErrors(const System& system, const State& state, VecX& phi, ErrorRows rows) {
+  const auto& constraints = system.constraints();
   int n = 0;
-  for (const auto& c : system.constraints()) n += c->NumEquations();
+  for (const auto& c : constraints) n += c->NumEquations();
   phi.resize(n);
   int row = 0;
-  for (const auto& c : system.constraints()) {
-    c->CalcPositionError(system, state, phi.segment(row, c->NumEquations()));
-    row += c->NumEquations();
+  for (size_t k = 0; k < constraints.size(); ++k) {
+    const int m = constraints[k]->NumEquations();
+    if (rows == ErrorRows::kNotHeldByTree && system.HeldByTreePlacement(static_cast<int>(k))) {
+      phi.segment(row, m).setZero();
+    } else {
+      constraints[k]->CalcPositionError(system, state, phi.segment(row, m));
+    }
+    row += m;
   }
 }
 
@@ -58,21 +63,18 @@ void ApplyPositionDisplacement(const System& system, const KktSolver& kkt, const
     s.quat_GB = (QuatFromRotationVector(dx.segment<3>(kkt.BodyColumn(b))) * s.quat_GB).normalized();
     s.p_GB += dx.segment<3>(kkt.BodyColumn(b) + 3);
   }
-  std::vector<double>& q = Buffers().q;
-  std::vector<double>& du = Buffers().du;
-  std::vector<double>& dq = Buffers().dq;
+  AdvanceIntegratedCoordinates(system, kkt, dx, state);
+}
+
+void AdvanceIntegratedCoordinates(const System& system, const KktSolver& kkt, const VecX& dx,
+                                  State& state) {
   for (const Joint& joint : system.joints()) {
     if (joint.form != JointForm::kParameterized || joint.coordinates.empty()) continue;
-    const size_t n = joint.coordinates.size();
-    q.resize(n);
-    du.resize(n);
-    dq.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-      q[i] = state.q[joint.coordinates[i]];
-      du[i] = dx[kkt.SpeedColumn(joint.coordinates[i])];
-    }
+    const JointValues q(state.q, joint.coordinates);
+    JointValues du(q.size()), dq(q.size());
+    for (size_t i = 0; i < q.size(); ++i) du[i] = dx[kkt.SpeedColumn(joint.coordinates[i])];
     joint.model->CalcQDot(q, du, dq);
-    for (size_t i = 0; i < n; ++i) state.q[joint.coordinates[i]] += dq[i];
+    for (size_t i = 0; i < q.size(); ++i) state.q[joint.coordinates[i]] += dq[i];
   }
 }
 

@@ -11,8 +11,13 @@ namespace sinew::engine {
 
 /// All constraint position errors phi (in KktSolver equation order).
 VecX CalcPositionErrors(const System& system, const State& state);
+/// Which constraints CalcPositionErrors evaluates: all of them, or all but those the
+/// fixed-step schemes' tree update holds by construction (System::HeldByTreePlacement), whose
+/// rows are then zero (right after ApplyTreeDisplacement they are, to rounding).
+enum class ErrorRows { kAll, kNotHeldByTree };
 /// The same into `phi` (resized; no heap use once it has the size).
-void CalcPositionErrors(const System& system, const State& state, VecX& phi);
+void CalcPositionErrors(const System& system, const State& state, VecX& phi,
+                        ErrorRows rows = ErrorRows::kAll);
 /// All constraint velocity errors J v - c.
 VecX CalcVelocityErrors(const System& system, const State& state, KktSolver& kkt);
 
@@ -31,6 +36,9 @@ void ProjectVelocities(const System& system, State& state, KktSolver& kkt);
 /// G) and translations, and for integrated coordinates dq = N(q) du.
 void ApplyPositionDisplacement(const System& system, const KktSolver& kkt, const VecX& dx,
                                State& state);
+/// Its second part alone: dq = N(q) du for the coordinates of every parameterized joint.
+void AdvanceIntegratedCoordinates(const System& system, const KktSolver& kkt, const VecX& dx,
+                                  State& state);
 
 /// Moves `state` onto the constraints (positions, then velocities) with tolerance `tolerance`;
 /// use before integrating a state whose coordinates were set by hand. Throws on failure.

@@ -142,12 +142,12 @@ class System {
   bool HasLoops() const { return std::find(loop_.begin(), loop_.end(), true) != loop_.end(); }
   /// Whether constraints were added with AddConstraint (couplers, welds, ...).
   bool HasExtraConstraints() const { return !extra_constraints_.empty(); }
-  /// Index in constraints() of the first constraint added with AddConstraint (the others
-  /// follow it). Valid after Finalize().
   /// Whether constraint k holds by construction after the fixed-step schemes' position update
   /// (ApplyTreeDisplacement): a tree joint's constraint, or the lock of a coordinate (whose
   /// speed is zero). Loop joints, prescribed motions and extra constraints must be projected.
   bool HeldByTreePlacement(int k) const { return held_by_tree_placement_[k]; }
+  /// Index in constraints() of the first constraint added with AddConstraint (the others
+  /// follow it). Valid after Finalize().
   int FirstExtraConstraint() const {
     return static_cast<int>(constraints_.size() - extra_constraints_.size());
   }

@@ -17,17 +17,12 @@ namespace sinew::engine {
 /// - then every body is placed from its inboard body through its joint, walking out from
 ///   ground: X_GB = X_GP X_PF X_FM inverse(X_BM).
 /// Both updates are first order and differ by O(|dx|^2); this one leaves the tree's joints
-/// satisfied to rounding, so the projection after a step only has loop joints and extra
-/// constraints (couplers, locks and prescribed motions of coordinates) left to correct.
-/// `state` must hold the step's new velocities (it reads each direct joint's relative twist
-/// from dx, and its coordinates from state.q).
+/// satisfied to rounding (and locked coordinates, whose speeds are zero), so the projection after
+/// a step only has loop joints, prescribed motions and extra constraints (couplers, ...) left to
+/// correct (System::HeldByTreePlacement; CalcPositionErrors with ErrorRows::kNotHeldByTree).
+/// Each direct joint's relative rotation is read from dx at the poses of `state`, its
+/// coordinates from state.q.
 void ApplyTreeDisplacement(const System& system, const KktSolver& kkt, const VecX& dx,
                            State& state);
-
-/// The position errors of all constraints (as CalcPositionErrors) right after
-/// ApplyTreeDisplacement: those it holds by construction (System::HeldByTreePlacement) are
-/// zero to rounding and are not evaluated; the others are.
-void CalcPositionErrorsAfterTreeDisplacement(const System& system, const State& state,
-                                             VecX& phi);
 
 }  // namespace sinew::engine
