@@ -89,8 +89,16 @@ KktSolver::KktSolver(const System& system, Method method) : system_(system), met
         std::make_unique<TreeKktSolver>(system, nv_, body_columns, speed_columns, tree_constraints_,
                                         tree_row_, columns_, method_ == Method::kTree);
     G_ = MatX::Zero(ne_, nv_);
-    Y_ = MatX::Zero(nv_ + nc_tree_, ne_);
     S_ = MatX::Zero(ne_, ne_);
+    if (ne_ > 0) {
+      std::vector<int> extra_columns;
+      for (int k : extra_constraints_) {
+        for (int g : columns_[k]) {
+          if (g >= 0) extra_columns.push_back(g);
+        }
+      }
+      tree_->SetExtraRowColumns(ne_, extra_columns);
+    }
   }
 }
 
@@ -136,7 +144,7 @@ void KktSolver::FactorizeMatrices(const State& state) {
   tree_->Factorize(mass_, jacobian_);
   residual_check_ = false;
   if (ne_ == 0) return;
-  // The extra rows G over the velocity unknowns, then Y = K_T^-1 G^T and S = G Y.
+  // The extra rows G over the velocity unknowns, then S = G K_T^-1 G^T.
   G_.setZero();
   for (int k : extra_constraints_) {
     const MatX& J = jacobian_[k];
@@ -144,13 +152,7 @@ void KktSolver::FactorizeMatrices(const State& state) {
       if (columns_[k][j] >= 0) G_.block(extra_row_[k], columns_[k][j], J.rows(), 1) += J.col(j);
     }
   }
-  tree_rhs_.setZero(nv_ + nc_tree_);
-  for (int i = 0; i < ne_; ++i) {
-    tree_rhs_.head(nv_) = G_.row(i).transpose();
-    tree_->Solve(tree_rhs_, y_);
-    Y_.col(i) = y_;
-  }
-  S_.noalias() = G_ * Y_.topRows(nv_);
+  tree_->FactorizeExtraRows(G_, S_);
   schur_.setThreshold(kSchurThreshold);
   schur_.compute(S_);
   // Redundant extra constraints: the multipliers are least-squares ones, exact only when the
@@ -201,18 +203,15 @@ void KktSolver::Solve(const VecX& rhs, VecX& x) const {
     return;
   }
   GatherTreeRhs(rhs, tree_rhs_);
-  tree_->Solve(tree_rhs_, y_);
   const auto& constraints = system_.constraints();
-  // The extra constraints (ne_ > 0 here): the Schur complement on their rows.
+  // The extra constraints (ne_ > 0 here): the Schur complement on their rows, inside the tree
+  // solve.
   g_.resize(ne_);
   for (int k : extra_constraints_) {
     const int n = constraints[k]->NumEquations();
-    g_.segment(extra_row_[k], n) = -rhs.segment(nv_ + row_[k], n);
+    g_.segment(extra_row_[k], n) = rhs.segment(nv_ + row_[k], n);
   }
-  g_.noalias() += G_ * y_.head(nv_);
-  mu_.resize(ne_);
-  mu_.noalias() = schur_inverse_ * g_;
-  y_.noalias() -= Y_ * mu_;
+  tree_->SolveWithExtraRows(tree_rhs_, g_, schur_inverse_, y_, mu_);
   for (int k : extra_constraints_) {
     const int n = constraints[k]->NumEquations();
     x.segment(nv_ + row_[k], n) = mu_.segment(extra_row_[k], n);
@@ -232,11 +231,12 @@ bool KktSolver::SolveUnitLoadResponses(int source, const std::vector<int>& targe
   if (ne_ == 0) return true;
   // The Schur complement's correction x -= Y mu with mu = S^-1 (G y0), where G y0 for the unit
   // loads is Y_s^T (the source's rows of Y): out_t -= Y_t S^-1 Y_s^T.
+  const MatX& Y = tree_->ExtraRowResponses();
   unit_mu_.resize(ne_, 6);
-  unit_mu_.noalias() = schur_inverse_ * Y_.middleRows<6>(BodyColumn(source)).transpose();
+  unit_mu_.noalias() = schur_inverse_ * Y.middleRows<6>(BodyColumn(source)).transpose();
   for (size_t t = 0; t < targets.size(); ++t) {
     out.block<6, 6>(6 * static_cast<Eigen::Index>(t), 0).noalias() -=
-        Y_.middleRows<6>(BodyColumn(targets[t])) * unit_mu_;
+        Y.middleRows<6>(BodyColumn(targets[t])) * unit_mu_;
   }
   return true;
 }

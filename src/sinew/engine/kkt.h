@@ -9,8 +9,11 @@
 // Solved in linear time: the tree constraints (the joints that place bodies, and locks and
 // prescribed motions of their coordinates) by the tree elimination of TreeKktSolver; every
 // other constraint (loop joints, couplers, welds, any extra rows G x = g) by a Schur
-// complement: Y = K_T^-1 G^T (one tree solve per extra row), S = G Y, then
-//   y0 = K_T^-1 r,  S mu = G y0 - g,  x = y0 - Y mu.
+// complement S = G K_T^-1 G^T, then
+//   S mu = G K_T^-1 r - g,  x = K_T^-1 (r - G^T mu).
+// The tree elimination is an L D L^T factorization of the symmetric K_T, so S and G K_T^-1 r
+// come from forward sweeps alone, on the nodes between G's columns and ground, and a solve is
+// one tree solve with mu's correction between its sweeps (TreeKktSolver::FactorizeExtraRows).
 // S is symmetric positive semidefinite; it is factorized by a complete orthogonal
 // decomposition that treats pivots below 1e-10 of the largest as zero, so redundant but
 // consistent constraints (a planar loop of pins) get the minimum-norm multipliers instead of
@@ -83,10 +86,11 @@ class KktSolver {
   /// block t is the part of Solve([e_j; 0]) at target t's twist, for j over source's six
   /// columns. The tree part visits only the tree paths between the bodies and ground
   /// (TreeKktSolver::SolveUnitLoadResponses); constraints outside the tree add the Schur
-  /// complement's correction from the Y = K_T^-1 G^T and S^-1 that Factorize keeps:
+  /// complement's correction from Y = K_T^-1 G^T (TreeKktSolver::ExtraRowResponses) and the
+  /// S^-1 that Factorize keeps:
   ///   out_t -= Y_t S^-1 Y_s^T
   /// (Y_t, Y_s: Y's rows at the target's and the source's twist; G K_T^-1 e_j = Y_s^T e_j as
-  /// K_T is symmetric), no further tree solve. A rank-deficient S goes by its pseudo-inverse,
+  /// K_T is symmetric), one backward sweep per factorization. A rank-deficient S goes by its pseudo-inverse,
   /// exact here as unit loads are always consistent with the constraints (unlike Solve, no
   /// residual is checked). No heap use once warm. Returns false, doing nothing, for the kDense
   /// method: then use Solve. Bodies must not be ground.
@@ -127,10 +131,10 @@ class KktSolver {
   std::vector<int> tree_constraints_, tree_row_;  // tree_row_ per constraint (-1: extra)
   int nc_tree_ = 0;
   std::unique_ptr<TreeKktSolver> tree_;
-  // Schur part: the extra constraints, G (ne x nv), Y = K_T^-1 G^T, S = G Y.
+  // Schur part: the extra constraints, G (ne x nv), S = G K_T^-1 G^T.
   std::vector<int> extra_constraints_, extra_row_;  // extra_row_ per constraint (-1: tree)
   int ne_ = 0;
-  MatX G_, Y_, S_;
+  MatX G_, S_;
   Eigen::CompleteOrthogonalDecomposition<MatX> schur_;  // tells S's rank
   Eigen::PartialPivLU<MatX> schur_lu_;                  // inverts a full-rank S in place
   MatX schur_inverse_;  // S^-1, or its pseudo-inverse when S is rank-deficient (ne x ne, small)

@@ -2,6 +2,7 @@
 #include <sinew/engine/system.h>
 #include <sinew/engine/tree_solver.h>
 
+#include <algorithm>
 #include <string>
 
 namespace sinew::engine {
@@ -11,8 +12,9 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
                              const std::vector<int>& tree_constraints,
                              const std::vector<int>& equation_rows,
                              const std::vector<std::vector<int>>& columns, bool articulated)
-    : system_(system) {
+    : system_(system), size_(nv) {
   const auto& constraints = system.constraints();
+  for (int k : tree_constraints) size_ += constraints[k]->NumEquations();
   const int num_joints = static_cast<int>(system.joints().size());
   std::vector<int> node_of_joint(num_joints, -1), node_of_body(system.num_bodies(), -1);
   for (int j : system.tree_order()) {
@@ -244,6 +246,11 @@ void SubtractParentResponse(const WMatrix& W, const PVector& x_parent, ZVector& 
 }  // namespace
 
 void TreeKktSolver::Solve(const VecX& rhs, VecX& x) const {
+  SolveForward(rhs);
+  SolveBackward(x);
+}
+
+void TreeKktSolver::SolveForward(const VecX& rhs) const {
   std::vector<NodeVector>& r = scratch_;
   r.resize(nodes_.size());
   for (size_t k = 0; k < nodes_.size(); ++k) {
@@ -278,8 +285,12 @@ void TreeKktSolver::Solve(const VecX& rhs, VecX& x) const {
         break;
     }
   }
+}
+
+void TreeKktSolver::SolveBackward(VecX& x) const {
+  std::vector<NodeVector>& r = scratch_;
   // Backward: x_k = z_k - W_k x_parent (a direct joint's node has 9 to 12 rows).
-  x.resize(rhs.size());
+  x.resize(size_);
   for (size_t k = 0; k < nodes_.size(); ++k) {
     const Node& node = nodes_[k];
     if (node.parent >= 0) {
@@ -351,6 +362,105 @@ void TreeKktSolver::SolveUnitLoadResponses(int source, const std::vector<int>& t
     out.block<6, 6>(6 * static_cast<Eigen::Index>(t), 0) =
         blocks_[node_of_body_[targets[t]]].topRows<6>();
   }
+}
+
+void TreeKktSolver::SetExtraRowColumns(int ne, const std::vector<int>& columns) {
+  ne_ = ne;
+  std::vector<int> node_of_global;
+  for (size_t k = 0; k < nodes_.size(); ++k) {
+    for (int g : nodes_[k].global) {
+      if (g >= static_cast<int>(node_of_global.size())) node_of_global.resize(g + 1, -1);
+      node_of_global[g] = static_cast<int>(k);
+    }
+  }
+  std::vector<char> on_path(nodes_.size(), 0);
+  for (int g : columns) {
+    if (g < 0 || g >= static_cast<int>(node_of_global.size()) || node_of_global[g] < 0) {
+      throw Error("engine: an extra constraint row reaches a velocity outside the tree");
+    }
+    for (int k = node_of_global[g]; k >= 0 && !on_path[k]; k = nodes_[k].parent) on_path[k] = 1;
+  }
+  extra_nodes_.clear();
+  extra_F_.assign(nodes_.size(), MatX());
+  extra_Z_.assign(nodes_.size(), MatX());
+  for (size_t k = nodes_.size(); k-- > 0;) {
+    if (!on_path[k]) continue;
+    extra_nodes_.push_back(static_cast<int>(k));
+    extra_F_[k] = MatX::Zero(static_cast<Eigen::Index>(nodes_[k].global.size()), ne);
+    extra_Z_[k] = extra_F_[k];
+  }
+  extra_Y_current_ = false;
+}
+
+void TreeKktSolver::SolveNodeColumns(const Node& node, MatX& x) const {
+  // Column by column: the pivots' one-column solves have every size fixed, which costs less
+  // than their multi-column forms with a run-time column count.
+  for (Eigen::Index c = 0; c < x.cols(); ++c) {
+    column_scratch_ = x.col(c);
+    SolveNode(node, column_scratch_);
+    x.col(c) = column_scratch_;
+  }
+}
+
+void TreeKktSolver::FactorizeExtraRows(const MatX& G, MatX& S) {
+  // F starts as G^T on each node's velocity unknowns (zero on its constraint rows).
+  for (int k : extra_nodes_) {
+    const Node& node = nodes_[k];
+    MatX& F = extra_F_[k];
+    F.setZero();
+    for (int i = 0; i < 6 + node.num_speeds; ++i) F.row(i) = G.col(node.global[i]).transpose();
+  }
+  // Leaves first, as Solve's forward sweep: Z_k = K_k^-1 F_k, the parent's twist rows of F lose
+  // C^T Z_k (C is zero above the constraint rows).
+  S.setZero(ne_, ne_);
+  for (int k : extra_nodes_) {
+    const Node& node = nodes_[k];
+    MatX& Z = extra_Z_[k];
+    Z = extra_F_[k];
+    SolveNodeColumns(node, Z);
+    if (node.parent >= 0) {
+      const int rows = NumConstraintRows(node);
+      extra_F_[node.parent].topRows<6>().noalias() -=
+          node.C.bottomRows(rows).transpose().lazyProduct(Z.bottomRows(rows));
+    }
+    S.noalias() += extra_F_[k].transpose().lazyProduct(Z);
+  }
+  extra_Y_current_ = false;
+}
+
+void TreeKktSolver::SolveWithExtraRows(const VecX& rhs, const VecX& e, const MatX& S_inverse,
+                                       VecX& x, VecX& mu) const {
+  SolveForward(rhs);
+  std::vector<NodeVector>& z = scratch_;
+  // G K^-1 rhs = sum F_k^T z_k (the L D L^T form, as S).
+  VecX& g = extra_g_;  // G K^-1 rhs - e
+  g = -e;
+  for (int k : extra_nodes_) g.noalias() += extra_F_[k].transpose().lazyProduct(z[k]);
+  mu.resize(ne_);
+  mu.noalias() = S_inverse.lazyProduct(g);
+  for (int k : extra_nodes_) z[k].noalias() -= extra_Z_[k].lazyProduct(mu);
+  SolveBackward(x);
+}
+
+const MatX& TreeKktSolver::ExtraRowResponses() const {
+  if (extra_Y_current_) return extra_Y_;
+  // The backward sweep on Z (zero off the extra rows' nodes): Y_k = Z_k - W_k Y_parent.
+  extra_Y_blocks_.resize(nodes_.size());
+  extra_Y_.setZero(size_, ne_);
+  for (size_t k = 0; k < nodes_.size(); ++k) {
+    const Node& node = nodes_[k];
+    MatX& Y = extra_Y_blocks_[k];
+    if (extra_Z_[k].size() > 0) {
+      Y = extra_Z_[k];
+    } else {
+      Y.setZero(static_cast<Eigen::Index>(node.global.size()), ne_);
+    }
+    if (node.parent >= 0)
+      Y.noalias() -= node.W.lazyProduct(extra_Y_blocks_[node.parent].topRows<6>());
+    for (size_t i = 0; i < node.global.size(); ++i) extra_Y_.row(node.global[i]) = Y.row(i);
+  }
+  extra_Y_current_ = true;
+  return extra_Y_;
 }
 
 }  // namespace sinew::engine

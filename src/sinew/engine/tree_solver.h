@@ -41,6 +41,26 @@ class TreeKktSolver {
   /// Solves with the last factorization: rhs and x are [velocities; tree rows] (x is resized;
   /// no heap use once it has its size).
   void Solve(const VecX& rhs, VecX& x) const;
+  /// Extra constraint rows G (ne of them, over the velocity unknowns only) that the caller
+  /// eliminates by a Schur complement on top of the tree; `columns` are the velocity columns
+  /// where G may be nonzero. Call once, before FactorizeExtraRows.
+  void SetExtraRowColumns(int ne, const std::vector<int>& columns);
+  /// With the last Factorize: S = G K^-1 G^T (ne x ne) into `S`. The tree's block elimination
+  /// is an L D L^T factorization of the symmetric K (D the node blocks K_k), so
+  ///   S = (L^-1 G^T)^T D^-1 (L^-1 G^T) = sum over nodes of F_k^T K_k^-1 F_k,
+  /// F = L^-1 G^T the forward sweep of G^T's columns, zero outside the nodes between G's
+  /// columns and ground: only those nodes are visited, and F_k and Z_k = K_k^-1 F_k are kept
+  /// for the solves. No heap use once warm.
+  void FactorizeExtraRows(const MatX& G, MatX& S);
+  /// Solves [K G^T; G 0] [x; mu] = [rhs; e] with the last FactorizeExtraRows and S^-1 (or a
+  /// pseudo-inverse) in `S_inverse`, as one tree solve: after the forward sweep gives z =
+  /// D^-1 L^-1 rhs, mu = S^-1 (sum F_k^T z_k - e) and z_k -= Z_k mu on the extra rows' nodes,
+  /// then the backward sweep. x as in Solve; mu resized to ne.
+  void SolveWithExtraRows(const VecX& rhs, const VecX& e, const MatX& S_inverse, VecX& x,
+                          VecX& mu) const;
+  /// Y = K^-1 G^T ((nv + tree rows) x ne) of the last FactorizeExtraRows, made by one backward
+  /// sweep on the first call after it.
+  const MatX& ExtraRowResponses() const;
   /// Node blocks the last Factorize eliminated as articulated pivots.
   int num_articulated_nodes() const;
   /// Node blocks the last Factorize eliminated as direct pivots (the rest by generic LU).
@@ -125,7 +145,14 @@ class TreeKktSolver {
         break;
     }
   }
+  // The two halves of Solve on scratch_: the forward sweep leaves z = D^-1 L^-1 rhs per node,
+  // the backward one turns z into x.
+  void SolveForward(const VecX& rhs) const;
+  void SolveBackward(VecX& x) const;
+  // A node's block solve on every column of x.
+  void SolveNodeColumns(const Node& node, MatX& x) const;
   const System& system_;
+  Eigen::Index size_;              // velocities and tree rows: the length of rhs and x
   std::vector<Node> nodes_;        // in tree order (a node after its parent)
   std::vector<int> node_of_body_;  // per System body, its node (-1: ground)
   mutable std::vector<NodeVector> scratch_;
@@ -136,6 +163,16 @@ class TreeKktSolver {
   mutable std::vector<long> forward_mark_, backward_mark_;
   mutable std::vector<int> stack_;
   mutable long calls_ = 0;
+  // Extra rows (SetExtraRowColumns): the nodes between their columns and ground, leaves first,
+  // and per node (indexed like nodes_, empty off those nodes) F_k and Z_k = K_k^-1 F_k.
+  int ne_ = 0;
+  std::vector<int> extra_nodes_;
+  std::vector<MatX> extra_F_, extra_Z_;
+  mutable std::vector<MatX> extra_Y_blocks_;  // ExtraRowResponses' per-node rows
+  mutable MatX extra_Y_;
+  mutable VecX extra_g_;
+  mutable bool extra_Y_current_ = false;
+  mutable NodeVector column_scratch_;
 };
 
 }  // namespace sinew::engine
