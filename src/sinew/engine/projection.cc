@@ -112,7 +112,7 @@ bool ProjectPositions(const System& system, State& state, double tolerance, KktS
 
 void ProjectVelocities(const System& system, State& state, KktSolver& kkt) {
   const int nv = kkt.num_velocities();
-  kkt.Factorize(state);
+  if (!kkt.IsFactorizedAt(state)) kkt.Factorize(state);
   ProjectionBuffers& buffers = Buffers();
   buffers.v.resize(nv);
   GatherVelocities(system, kkt, state, buffers.v);

@@ -29,7 +29,9 @@ bool ProjectPositions(const System& system, State& state, double tolerance, KktS
                       int max_iterations = 10, long* factorizations = nullptr);
 
 /// Replaces the velocities by the nearest (mass-weighted) ones with J v = c. Uses the positions
-/// of `state` (refactorizes `kkt`).
+/// of `state` (refactorizes `kkt` unless it is already factorized at exactly these positions,
+/// as after an rk45 step whose positions needed no projection: its last stage was evaluated
+/// there).
 void ProjectVelocities(const System& system, State& state, KktSolver& kkt);
 
 /// Applies a position displacement dx in KKT velocity order: body rotations (rotation vector in
