@@ -118,7 +118,19 @@ bool ArticulatedPivot::FactorizeFixed(const Block& K) {
       !(pivots.minCoeff() > kMinPivot * std::max(pivots.maxCoeff(), inertia_scale))) {
     return false;
   }
-  Dinv_.template topLeftCorner<NU, NU>() = llt.solve(MatNU::Identity());
+  // D^-1 = L^-T L^-1, L^-1 by forward substitution with every size fixed (the LLT's solve on an
+  // identity goes through Eigen's blocked triangular solver, which costs more than this).
+  const MatNU& L = llt.matrixLLT();  // its lower triangle is L
+  MatNU L_inv = MatNU::Zero();
+  for (int j = 0; j < NU; ++j) {
+    L_inv(j, j) = 1.0 / L(j, j);
+    for (int i = j + 1; i < NU; ++i) {
+      double sum = 0.0;
+      for (int k = j; k < i; ++k) sum += L(i, k) * L_inv(k, j);
+      L_inv(i, j) = -sum / L(i, i);
+    }
+  }
+  Dinv_.template topLeftCorner<NU, NU>().noalias() = L_inv.transpose().lazyProduct(L_inv);
   fixed_nu_ = NU;
   return true;
 }
