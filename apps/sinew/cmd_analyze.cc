@@ -1,5 +1,5 @@
 // `sinew analyze MODEL.osim --motion F.mot --out DIR [--coordinates a,b]
-//  [--cylinder-refinement several-wraps|always]`: OpenSim
+//  [--cylinder-refinement several-wraps|opensim-4.4|always]`: OpenSim
 // MuscleAnalysis-style tables of every geometry path (muscles, path springs, ligaments) over a
 // motion: Length.sto, LengtheningSpeed.sto and MomentArm_<coordinate>.sto; and, when the file
 // is a states file holding muscles' activation and fiber_length, FiberLength.sto,

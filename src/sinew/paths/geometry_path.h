@@ -123,15 +123,24 @@ struct PathState {
   WrapPasses wrap_passes;
 };
 
-/// When OpenSim's WrapCylinder refines its tangent points toward tangency with the helix
-/// (docs/wrapping.md). OpenSim 4.4 stopped refining on a path with a single wrap object (a
+/// When and how OpenSim's WrapCylinder refines its tangent points toward tangency with the
+/// helix (docs/wrapping.md). OpenSim 4.4 stopped refining on a path with a single wrap object (a
 /// speed-up, opensim-core pull request 3125, February 2022); every earlier OpenSim (2.x, 3.x,
 /// 4.0 to 4.3) refines on every path. Results written by those versions, such as OpenSim's
-/// std_arm26_states.sto, need kAlways (docs/forward.md).
+/// std_arm26_states.sto, need kAlways (docs/forward.md). OpenSim 4.4.1 (May 2023) changed
+/// which helix sample the second tangent point is checked against (WrapOptions::
+/// t2_checked_after_t1_moves); results of OpenSim 4.4.0, such as MyoConverter's reference
+/// moment arms, need kSeveralWrapsOpenSim44.
 enum class CylinderRefinement {
-  kSeveralWraps,  ///< OpenSim 4.4 and later: only on paths with two or more wrap objects
-  kAlways,        ///< OpenSim before 4.4: on every path
+  kSeveralWraps,           ///< OpenSim 4.4.1 and later: only on paths with two or more wrap objects
+  kSeveralWrapsOpenSim44,  ///< OpenSim 4.4.0: the same paths, T2 checked as before 4.4.1
+  kAlways,                 ///< OpenSim before 4.4: on every path, T2 checked as before 4.4.1
 };
+
+/// The rule named `name`, as `--cylinder-refinement` and Python's `cylinder_refinement` take
+/// it: "several-wraps" (kSeveralWraps), "opensim-4.4" (kSeveralWrapsOpenSim44) or "always"
+/// (kAlways); nullopt for any other name.
+std::optional<CylinderRefinement> FindCylinderRefinement(const std::string& name);
 
 /// With several wrap objects, OpenSim repeats its wrapping passes at most this many times...
 inline constexpr int kMaxWrapPasses = 8;
