@@ -314,6 +314,7 @@ void TangentPointReads::Place(PathPointState& point) {
   const size_t w = static_cast<size_t>(point.wrap);
   const size_t which = static_cast<size_t>(point.tangent);
   p_GP_current[w][which] = point.p_GP;
+  point.p_BP_placed = point.p_BP;
   if (read[w][which]) {
     point.p_BP = p_BP_read[w][which];
     point.p_GP = p_GP_read[w][which];

@@ -45,6 +45,10 @@ struct PathPointState {
   int body = model::kGroundIndex;
   Vec3 p_BP = Vec3::Zero();  ///< In the body frame (m).
   Vec3 p_GP = Vec3::Zero();  ///< In ground (m).
+  /// Tangent points: where the last wrapping pass put the point, in the body frame (m). Equal to
+  /// p_BP except for a stale tangent point (PathState::stale_tangent_points), whose p_BP is
+  /// where OpenSim first read it; OpenSim applies the point's forces here (docs/paths.md).
+  Vec3 p_BP_placed = Vec3::Zero();
   /// Moving points: dp_BP/dq for the coordinate of each location component (kNone: none).
   std::array<int, 3> coordinates{model::kNone, model::kNone, model::kNone};
   std::array<Vec3, 3> dp_BP_dq{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
@@ -72,7 +76,8 @@ struct TangentPointReads {
   void Reset(int num_wraps);
   /// Reads `point`: the first read of a tangent point keeps its location, later reads give it.
   void Read(PathPointState& point);
-  /// A tangent point just placed: remembers where it is, and takes the location read, if any.
+  /// A tangent point just placed: remembers where it is (also in its p_BP_placed), and takes
+  /// the location read, if any.
   void Place(PathPointState& point);
   /// Where a path point is now (for the surfaces), in ground.
   Vec3 CurrentLocation(const PathPointState& point) const;
