@@ -1,10 +1,11 @@
 // `sinew analyze MODEL.osim --motion F.mot --out DIR [--coordinates a,b]
-//  [--cylinder-refinement several-wraps|always]`: OpenSim
+//  [--cylinder-refinement several-wraps|opensim-4.4|always]`: OpenSim
 // MuscleAnalysis-style tables of every geometry path (muscles, path springs, ligaments) over a
 // motion: Length.sto, LengtheningSpeed.sto and MomentArm_<coordinate>.sto; and, when the file
 // is a states file holding muscles' activation and fiber_length, FiberLength.sto,
 // TendonLength.sto, ActiveFiberForce.sto, PassiveFiberForce.sto and TendonForce.sto of those
-// muscles (muscle_tables.h).
+// muscles (muscle_tables.h). The moment arms are OpenSim's (PathAnalysis::opensim_moment_arm:
+// -dL/dq except where several wrap objects leave a tangent point stale, docs/paths.md).
 #include <sinew/common/error.h>
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
@@ -152,7 +153,7 @@ void Run(const Options& options) {
       speeds.AppendRow(t, analysis.lengthening_speeds());
     }
     for (size_t k = 0; k < coordinates.size(); ++k) {
-      for (size_t p = 0; p < num_paths; ++p) row[p] = analysis.moment_arm(k, p);
+      for (size_t p = 0; p < num_paths; ++p) row[p] = analysis.opensim_moment_arm(k, p);
       moment_arms[k].AppendRow(t, row);
     }
     if (!muscle_tables.empty()) {

@@ -3,7 +3,7 @@
 //  [--excitation NAME=KIND:ARGS]... [--controls FILE] [--external-loads FILE.xml]...
 //  [--disable-force NAME]... [--strict] [--export FILE] [--verbose] [--quiet]
 //  [--report-constraint-forces] [--equilibrate-muscles] [--rename-force-class OLD=NEW]
-//  [--cylinder-refinement several-wraps|always]
+//  [--cylinder-refinement several-wraps|opensim-4.4|always]
 //  [--collision [--contact smc|nsc] [--ground-plane H] [material options] [--nsc-solver
 //  apgd|gauss-seidel] [--nsc-iterations N] [--nsc-tolerance TOL] ...] --out DIR`: a forward
 //  simulation of what the OpenSim parser

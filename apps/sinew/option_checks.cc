@@ -59,16 +59,17 @@ void CheckSimulationSize(double duration, double report_interval, double step) {
 }
 
 paths::CylinderRefinement CylinderRefinementOption(const std::string& text) {
-  return text == "always" ? paths::CylinderRefinement::kAlways
-                          : paths::CylinderRefinement::kSeveralWraps;
+  return paths::FindCylinderRefinement(text).value_or(paths::CylinderRefinement::kSeveralWraps);
 }
 
 void AddCylinderRefinementOption(CLI::App* cmd, std::string& cylinder_refinement) {
   cmd->add_option("--cylinder-refinement", cylinder_refinement,
-                  "When a WrapCylinder refines its tangent points: several-wraps (OpenSim 4.4 "
-                  "and later: only on paths with two or more wrap objects; the default) or "
-                  "always (every OpenSim before 4.4, to compare with results it wrote)")
-      ->check(CLI::IsMember({"several-wraps", "always"}));
+                  "When and how a WrapCylinder refines its tangent points: several-wraps "
+                  "(OpenSim 4.4.1 and later: only on paths with two or more wrap objects; the "
+                  "default), opensim-4.4 (the same paths, the second tangent point checked as "
+                  "OpenSim 4.4.0 and earlier did) or always (every OpenSim before 4.4, to "
+                  "compare with results it wrote)")
+      ->check(CLI::IsMember({"several-wraps", "opensim-4.4", "always"}));
 }
 
 void AddMuscleOptions(CLI::App* cmd, bool& equilibrate, std::vector<std::string>& renames,

@@ -30,10 +30,10 @@ CLI::Validator WholeNumber(int min);
 /// rows at most kMaxOutputRows and, when `step` > 0, `duration` / `step` steps at most kMaxSteps.
 void CheckSimulationSize(double duration, double report_interval, double step);
 
-/// The rule --cylinder-refinement names ("always" or "several-wraps").
+/// The rule --cylinder-refinement names ("several-wraps", "opensim-4.4" or "always").
 paths::CylinderRefinement CylinderRefinementOption(const std::string& text);
 
-/// Adds --cylinder-refinement several-wraps|always (into `cylinder_refinement`, checked), as
+/// Adds --cylinder-refinement several-wraps|opensim-4.4|always (into `cylinder_refinement`, checked), as
 /// `simulate`, `forward` and `analyze` take it.
 void AddCylinderRefinementOption(CLI::App* cmd, std::string& cylinder_refinement);
 

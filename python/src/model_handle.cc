@@ -29,9 +29,10 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
     throw Error({path, 0}, "",
                 "contact must be \"nsc\" or \"smc\", not \"" + options.contact + "\"");
   }
-  if (options.cylinder_refinement != "several-wraps" && options.cylinder_refinement != "always") {
+  if (!paths::FindCylinderRefinement(options.cylinder_refinement)) {
     throw Error({path, 0}, "",
-                "cylinder_refinement must be \"several-wraps\" or \"always\", not \"" +
+                "cylinder_refinement must be \"several-wraps\", \"opensim-4.4\" or \"always\", "
+                "not \"" +
                     options.cylinder_refinement + "\"");
   }
   // NSC's stepper: as `sinew simulate --nsc-*` checks it, and only where it runs.
@@ -80,9 +81,7 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
                                                    : opensim::ContactMethod::kNsc);
   parser.SetNscSettings(nsc);
   parser.SetStrict(options.strict);
-  parser.SetCylinderRefinement(options.cylinder_refinement == "always"
-                                   ? paths::CylinderRefinement::kAlways
-                                   : paths::CylinderRefinement::kSeveralWraps);
+  parser.SetCylinderRefinement(*paths::FindCylinderRefinement(options.cylinder_refinement));
   parser.SetControlsFile(options.controls_file);
   for (const std::string& dir : options.geometry_dirs) parser.AddGeometryDir(dir);
   handle->system_ = std::make_unique<engine::System>();

@@ -27,7 +27,8 @@ struct LoadOptions {
   std::string nsc_solver = "apgd";
   engine::NscSettings nsc;  ///< its solver.method is set from nsc_solver
   bool strict = false;
-  /// When cylinders refine their tangent points: "several-wraps" (OpenSim 4.4+) or "always"
+  /// When cylinders refine their tangent points: "several-wraps" (OpenSim 4.4.1+),
+  /// "opensim-4.4" (OpenSim 4.4.0) or "always"
   /// (paths::CylinderRefinement), as `sinew simulate --cylinder-refinement`.
   std::string cylinder_refinement = "several-wraps";
   std::string controls_file;  ///< an OpenSim ControlSet file, "" for none

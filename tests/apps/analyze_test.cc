@@ -2,12 +2,18 @@
 // lengths, moment arms that are the derivatives of the written lengths, wraps left out said
 // loudly, and bad input -> exit code 2 naming what is wrong.
 #include <gtest/gtest.h>
+#include <sinew/io/osim_reader.h>
+#include <sinew/kinematics/coordinate_couplers.h>
+#include <sinew/kinematics/kinematic_tree.h>
+#include <sinew/paths/path_analysis.h>
+#include <sinew/paths/path_set.h>
 
 #include <Eigen/Dense>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "apps/cli_test_util.h"
 #include "apps/unsupported_wraps.h"
@@ -241,6 +247,78 @@ TEST_F(AnalyzeCliTest, CylinderRefinementOptionChangesOnlyPathsOverOneCylinder) 
                              " --cylinder-refinement sometimes");
   EXPECT_EQ(bad.exit_code, 2) << bad.err;
   EXPECT_NE(bad.err.find("--cylinder-refinement"), std::string::npos) << bad.err;
+}
+
+TEST_F(AnalyzeCliTest, OpenSim44RuleChangesOnlyPathsWhoseCylinderRefinesInSeveralSteps) {
+  // arm26 at elbow flexion 2 rad, shoulder 0 (docs/wrapping.md, WrapCylinder step 5): only the
+  // elbow cylinder wraps TRIlong (three wrap objects, so it refines, over several steps there),
+  // and OpenSim 4.4.0's check of the second tangent point moves TRIlong's elbow moment arm by
+  // about 3e-6 m from 4.4.1's; BRA, TRIlat and TRImed (one wrap object each) are not refined
+  // under either rule: identical.
+  const std::string motion = Path("arm.mot");
+  {
+    std::ofstream out(motion);
+    out << "arm\nversion=1\nnRows=1\nnColumns=3\ninDegrees=no\nendheader\n"
+           "time\tr_shoulder_elev\tr_elbow_flex\n0\t0\t2\n";
+  }
+  StoTable arms[2];
+  const char* rules[2] = {"several-wraps", "opensim-4.4"};
+  for (int k = 0; k < 2; ++k) {
+    const std::string out = Path(std::string("out_") + rules[k]);
+    const CliRun r = Analyze(kArm26 + " --motion " + motion + " --out " + out +
+                             " --cylinder-refinement " + rules[k]);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    arms[k] = ReadStoTable(out + "/MomentArm_r_elbow_flex.sto");
+    ASSERT_EQ(arms[k].rows.size(), 1u);
+  }
+  const int tri_long = arms[0].Column("TRIlong");
+  ASSERT_GE(tri_long, 0);
+  EXPECT_GT(std::abs(arms[1].rows[0][tri_long] - arms[0].rows[0][tri_long]), 1e-6);
+  for (const char* same : {"BRA", "TRIlat", "TRImed", "BIClong", "BICshort"}) {
+    const int c = arms[0].Column(same);
+    ASSERT_GE(c, 0) << same;
+    EXPECT_EQ(arms[1].rows[0][c], arms[0].rows[0][c]) << same;
+  }
+}
+
+TEST_F(AnalyzeCliTest, MomentArmTablesAreOpenSimsWhereTangentPointsAreStale) {
+  // arm26 at shoulder elevation 1.9635 rad, elbow 0 (a MyoConverter sweep pose): TRIlong's
+  // three wrap objects leave tangent points stale (docs/paths.md), where OpenSim's moment arm
+  // is not -dL/dq. The table holds OpenSim's (PathAnalysis::opensim_moment_arm), 7.9e-3 m
+  // from Sinew's -dL/dq (PathAnalysis::moment_arm) there.
+  const std::string motion = Path("arm.mot");
+  {
+    std::ofstream out(motion);
+    out << "arm\nversion=1\nnRows=1\nnColumns=3\ninDegrees=no\nendheader\n"
+           "time\tr_shoulder_elev\tr_elbow_flex\n0\t1.9635\t0\n";
+  }
+  const CliRun r = Analyze(kArm26 + " --motion " + motion + " --out " + Path("out"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const StoTable table = ReadStoTable(Path("out") + "/MomentArm_r_shoulder_elev.sto");
+  ASSERT_EQ(table.rows.size(), 1u);
+  const int column = table.Column("TRIlong");
+  ASSERT_GE(column, 0);
+
+  const sinew::model::ModelSpec spec = sinew::io::ReadOsim(kArm26);
+  const sinew::kinematics::KinematicTree tree(spec);
+  const sinew::kinematics::CoordinateCouplers couplers(spec);
+  const sinew::paths::PathSet paths(spec);
+  const int shoulder = spec.FindCoordinate("r_shoulder_elev");
+  const int elbow = spec.FindCoordinate("r_elbow_flex");
+  ASSERT_GE(shoulder, 0);
+  ASSERT_GE(elbow, 0);
+  std::vector<double> q = tree.default_q();
+  q[static_cast<size_t>(shoulder)] = 1.9635;
+  q[static_cast<size_t>(elbow)] = 0.0;
+  sinew::paths::PathAnalysis analysis(spec, tree, couplers, paths, {shoulder});
+  analysis.Calc(q, std::vector<double>(q.size(), 0.0));
+  size_t path = 0;
+  while (path < paths.paths().size() && paths.paths()[path].name() != "TRIlong") ++path;
+  ASSERT_LT(path, paths.paths().size());
+  const double written = table.rows[0][column];
+  // The table's 17 significant digits read back to the same double.
+  EXPECT_EQ(written, analysis.opensim_moment_arm(0, path));
+  EXPECT_GT(std::abs(written - analysis.moment_arm(0, path)), 5e-3);
 }
 
 TEST_F(AnalyzeCliTest, UnknownCoordinateIsAnErrorNamingIt) {

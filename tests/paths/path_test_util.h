@@ -43,8 +43,9 @@ inline std::string WriteWrapAllVisWithActiveTorus() {
 
 /// A model with everything the path code needs.
 struct PathModel {
-  explicit PathModel(const std::string& file)
-      : spec(io::ReadOsim(file)), tree(spec), couplers(spec), paths(spec) {}
+  explicit PathModel(const std::string& file,
+                     CylinderRefinement refinement = CylinderRefinement::kSeveralWraps)
+      : spec(io::ReadOsim(file)), tree(spec), couplers(spec), paths(spec, refinement) {}
   model::ModelSpec spec;
   kinematics::KinematicTree tree;
   kinematics::CoordinateCouplers couplers;

@@ -190,10 +190,12 @@ class ForcedSingleWrapSurface final : public WrapSurface {
 // OpenSim's cylinder rule by version (docs/wrapping.md): OpenSim 4.4 and later refine a
 // cylinder's tangent points only on paths with two or more wrap objects, every earlier version
 // on every path. arm26's BRA (one wrap object, the elbow cylinder, wrapped at full extension)
-// built with CylinderRefinement::kSeveralWraps asks its cylinder for a single wrap; built with
-// kAlways it gets, bit for bit, what the cylinder gives when told to refine, and refining
-// shortens it (the refinement takes out the kink between the straight segments and the helix).
-// TRIlong's path (three wrap objects) is the same under both rules.
+// built with CylinderRefinement::kSeveralWrapsOpenSim44 asks its cylinder for a single wrap;
+// built with kAlways it gets, bit for bit, what the cylinder gives when told to refine, and
+// refining shortens it (the refinement takes out the kink between the straight segments and
+// the helix). TRIlong's path (three wrap objects) is the same under both rules. OpenSim 4.4.1
+// changed how the second tangent point is checked (kSeveralWraps): told to refine, BRA's
+// cylinder then gives other tangent points.
 TEST(PathWrapRulesTest, CylinderRefinementFollowsTheOpenSimVersionsRule) {
   const PathModel m(kArm26);
   const int elbow = m.spec.FindCoordinate("r_elbow_flex");
@@ -220,7 +222,8 @@ TEST(PathWrapRulesTest, CylinderRefinementFollowsTheOpenSimVersionsRule) {
     return PathState();
   };
   std::shared_ptr<ForcedSingleWrapSurface> told_to_refine;
-  const PathState since_4_4 = state_of("BRA", CylinderRefinement::kSeveralWraps, &told_to_refine);
+  const PathState since_4_4 =
+      state_of("BRA", CylinderRefinement::kSeveralWrapsOpenSim44, &told_to_refine);
   const PathState before_4_4 = state_of("BRA", CylinderRefinement::kAlways);
   ASSERT_TRUE(PathModel::IsWrapped(since_4_4));
   ASSERT_TRUE(PathModel::IsWrapped(before_4_4));
@@ -235,7 +238,18 @@ TEST(PathWrapRulesTest, CylinderRefinementFollowsTheOpenSimVersionsRule) {
               unrefined.length, before_4_4.length);
   EXPECT_LT(before_4_4.length, unrefined.length);
   EXPECT_EQ(state_of("TRIlong", CylinderRefinement::kAlways).length,
-            state_of("TRIlong", CylinderRefinement::kSeveralWraps).length);
+            state_of("TRIlong", CylinderRefinement::kSeveralWrapsOpenSim44).length);
+  // OpenSim 4.4.1's check of T2, told to refine: the same wrap, other tangent points.
+  std::shared_ptr<ForcedSingleWrapSurface> told_to_refine_4_4_1;
+  const PathState since_4_4_1 =
+      state_of("BRA", CylinderRefinement::kSeveralWraps, &told_to_refine_4_4_1);
+  ASSERT_EQ(since_4_4_1.points.size(), before_4_4.points.size());
+  double moved = 0.0;
+  for (size_t i = 0; i < before_4_4.points.size(); ++i) {
+    moved = std::max(moved, (since_4_4_1.points[i].p_GP - before_4_4.points[i].p_GP).norm());
+  }
+  std::printf("BRA's tangent points refined as OpenSim 4.4.1 checks them: %.3g m away\n", moved);
+  EXPECT_GT(moved, 1e-6);
 }
 
 }  // namespace

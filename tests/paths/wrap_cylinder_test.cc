@@ -24,8 +24,8 @@ using testing::PathLength;
 constexpr double kRadius = 0.02;
 constexpr double kLongCylinder = 100.0;  // long enough that the length rule never drops a wrap
 // Arc points asked for, so the drawn arc is checked too.
-const WrapOptions kSingle{WrapOptions::Method::kHybrid, true, true, {}};
-const WrapOptions kMultiple{WrapOptions::Method::kHybrid, false, true, {}};
+const WrapOptions kSingle{WrapOptions::Method::kHybrid, true, true, {}, true};
+const WrapOptions kMultiple{WrapOptions::Method::kHybrid, false, true, {}, true};
 
 Vec3 Radial(const Vec3& p) { return {p.x(), p.y(), 0.0}; }
 // A point given in radii.

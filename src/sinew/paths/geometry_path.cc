@@ -33,6 +33,13 @@ const model::WrapObjectSpec* FindWrapObject(const model::ModelSpec& spec, const 
 
 }  // namespace
 
+std::optional<CylinderRefinement> FindCylinderRefinement(const std::string& name) {
+  if (name == "several-wraps") return CylinderRefinement::kSeveralWraps;
+  if (name == "opensim-4.4") return CylinderRefinement::kSeveralWrapsOpenSim44;
+  if (name == "always") return CylinderRefinement::kAlways;
+  return std::nullopt;
+}
+
 GeometryPath::GeometryPath(const model::ModelSpec& spec, const model::ForceSpec& owner,
                            CylinderRefinement refinement)
     : name_(owner.name), component_(owner.path), where_(owner.where), refinement_(refinement) {
@@ -205,7 +212,8 @@ bool GeometryPath::ApplyWrap(int w, std::span<const double> q, std::span<const T
   const Transform X_GW = X_GB[wrap.body] * wrap.X_BW;
   const Transform X_WG = X_GW.Inverse();
   WrapOptions options = wrap.options;
-  options.single_wrap = wraps_.size() == 1 && refinement_ == CylinderRefinement::kSeveralWraps;
+  options.single_wrap = wraps_.size() == 1 && refinement_ != CylinderRefinement::kAlways;
+  options.t2_checked_after_t1_moves = refinement_ == CylinderRefinement::kSeveralWraps;
   options.with_arc_points = with_arc_points;
   if (wrap.second_body != model::kNone) options.X_WV = X_WG * X_GB[wrap.second_body] * wrap.X_BV;
   double best_change = std::numeric_limits<double>::infinity();
@@ -306,6 +314,7 @@ void TangentPointReads::Place(PathPointState& point) {
   const size_t w = static_cast<size_t>(point.wrap);
   const size_t which = static_cast<size_t>(point.tangent);
   p_GP_current[w][which] = point.p_GP;
+  point.p_BP_placed = point.p_BP;
   if (read[w][which]) {
     point.p_BP = p_BP_read[w][which];
     point.p_GP = p_GP_read[w][which];

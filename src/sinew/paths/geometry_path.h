@@ -45,6 +45,10 @@ struct PathPointState {
   int body = model::kGroundIndex;
   Vec3 p_BP = Vec3::Zero();  ///< In the body frame (m).
   Vec3 p_GP = Vec3::Zero();  ///< In ground (m).
+  /// Tangent points: where the last wrapping pass put the point, in the body frame (m). Equal to
+  /// p_BP except for a stale tangent point (PathState::stale_tangent_points), whose p_BP is
+  /// where OpenSim first read it; OpenSim applies the point's forces here (docs/paths.md).
+  Vec3 p_BP_placed = Vec3::Zero();
   /// Moving points: dp_BP/dq for the coordinate of each location component (kNone: none).
   std::array<int, 3> coordinates{model::kNone, model::kNone, model::kNone};
   std::array<Vec3, 3> dp_BP_dq{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
@@ -72,7 +76,8 @@ struct TangentPointReads {
   void Reset(int num_wraps);
   /// Reads `point`: the first read of a tangent point keeps its location, later reads give it.
   void Read(PathPointState& point);
-  /// A tangent point just placed: remembers where it is, and takes the location read, if any.
+  /// A tangent point just placed: remembers where it is (also in its p_BP_placed), and takes
+  /// the location read, if any.
   void Place(PathPointState& point);
   /// Where a path point is now (for the surfaces), in ground.
   Vec3 CurrentLocation(const PathPointState& point) const;
@@ -123,15 +128,24 @@ struct PathState {
   WrapPasses wrap_passes;
 };
 
-/// When OpenSim's WrapCylinder refines its tangent points toward tangency with the helix
-/// (docs/wrapping.md). OpenSim 4.4 stopped refining on a path with a single wrap object (a
+/// When and how OpenSim's WrapCylinder refines its tangent points toward tangency with the
+/// helix (docs/wrapping.md). OpenSim 4.4 stopped refining on a path with a single wrap object (a
 /// speed-up, opensim-core pull request 3125, February 2022); every earlier OpenSim (2.x, 3.x,
 /// 4.0 to 4.3) refines on every path. Results written by those versions, such as OpenSim's
-/// std_arm26_states.sto, need kAlways (docs/forward.md).
+/// std_arm26_states.sto, need kAlways (docs/forward.md). OpenSim 4.4.1 (May 2023) changed
+/// which helix sample the second tangent point is checked against (WrapOptions::
+/// t2_checked_after_t1_moves); results of OpenSim 4.4.0, such as MyoConverter's reference
+/// moment arms, need kSeveralWrapsOpenSim44.
 enum class CylinderRefinement {
-  kSeveralWraps,  ///< OpenSim 4.4 and later: only on paths with two or more wrap objects
-  kAlways,        ///< OpenSim before 4.4: on every path
+  kSeveralWraps,           ///< OpenSim 4.4.1 and later: only on paths with two or more wrap objects
+  kSeveralWrapsOpenSim44,  ///< OpenSim 4.4.0: the same paths, T2 checked as before 4.4.1
+  kAlways,                 ///< OpenSim before 4.4: on every path, T2 checked as before 4.4.1
 };
+
+/// The rule named `name`, as `--cylinder-refinement` and Python's `cylinder_refinement` take
+/// it: "several-wraps" (kSeveralWraps), "opensim-4.4" (kSeveralWrapsOpenSim44) or "always"
+/// (kAlways); nullopt for any other name.
+std::optional<CylinderRefinement> FindCylinderRefinement(const std::string& name);
 
 /// With several wrap objects, OpenSim repeats its wrapping passes at most this many times...
 inline constexpr int kMaxWrapPasses = 8;

@@ -15,11 +15,14 @@ PathAnalysis::PathAnalysis(const model::ModelSpec& spec, const kinematics::Kinem
       X_GB_(static_cast<size_t>(tree.num_bodies())),
       V_GB_(static_cast<size_t>(tree.num_bodies())),
       dL_du_(static_cast<size_t>(tree.num_coordinates())),
+      shifted_dL_du_(dL_du_.size()),
       alone_(coordinates_.size(), -1),
       solved_index_(coordinates_.size(), 0),
       lengths_(paths.paths().size()),
       speeds_(paths.paths().size()),
-      moment_arms_(coordinates_.size() * paths.paths().size()) {
+      moment_arms_(coordinates_.size() * paths.paths().size()),
+      stale_(paths.paths().size(), 0),
+      opensim_moment_arms_(moment_arms_.size()) {
   // A coordinate that is not locked and in no coupler is in no constraint row: its coupling
   // vector is e_j at every pose (CalcCouplingVectors), so only the others are solved for.
   for (size_t k = 0; k < coordinates_.size(); ++k) {
@@ -69,6 +72,7 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
   for (size_t p = 0; p < num_paths; ++p) {
     paths_.paths()[p].CalcState(q, X_GB_, state_);
     lengths_[p] = state_.length;
+    stale_[p] = moment_arms && state_.stale_tangent_points > 0;
     if (!moment_arms) {
       speeds_[p] = CalcLengtheningSpeed(state_, X_GB_, V_GB_, u);
       continue;
@@ -108,7 +112,24 @@ void PathAnalysis::Calc(std::span<const double> q, std::span<const double> u) {
       }
       *r = sum;
     }
+    // OpenSim's moment arms differ only where tangent points are stale.
+    if (!stale_[p]) continue;
+    shifted_dL_du_ = dL_du_;
+    AddStaleTangentPointShift(state_, X_GB_, columns_, shifted_dL_du_);
+    for (size_t k = 0; k < coordinates_.size(); ++k) {
+      opensim_moment_arms_[k * num_paths + p] = MinusCoupled(k, shifted_dL_du_.data());
+    }
   }
+}
+
+double PathAnalysis::MinusCoupled(size_t k, const double* g) const {
+  if (alone_[k] >= 0) return -g[alone_[k]];
+  double sum = 0.0;
+  const size_t s = solved_index_[k];
+  for (size_t e = coupled_begin_[s]; e < coupled_begin_[s + 1]; ++e) {
+    sum -= coupled_[e].coupling * g[coupled_[e].coordinate];
+  }
+  return sum;
 }
 
 }  // namespace sinew::paths

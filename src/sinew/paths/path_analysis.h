@@ -36,6 +36,16 @@ class PathAnalysis {
   /// k-th coordinate of the list: -c . dL/du with c OpenSim's coupling vector; for a
   /// FunctionBasedPath, as OpenSim, -dL/dq_k alone (0 about a coordinate it does not list).
   double moment_arm(size_t k, size_t p) const { return moment_arms_[k * lengths_.size() + p]; }
+  /// OpenSim's moment arm, as its MomentArmSolver (MuscleAnalysis) computes it, and what `sinew
+  /// analyze` writes: moment_arm(k, p), except on a path with stale tangent points (several
+  /// wrap objects), where OpenSim pulls them along the directions from the locations it read
+  /// first but applies the forces where the points are now (AddStaleTangentPointShift); there
+  /// it is not a derivative of the length (docs/paths.md), and Sinew's dynamics use
+  /// moment_arm.
+  double opensim_moment_arm(size_t k, size_t p) const {
+    const size_t i = k * lengths_.size() + p;
+    return stale_[p] ? opensim_moment_arms_[i] : moment_arms_[i];
+  }
   const std::vector<int>& coordinates() const { return coordinates_; }
 
  private:
@@ -49,7 +59,7 @@ class PathAnalysis {
   std::vector<SpatialVec> V_GB_;
   SpeedColumns columns_;
   PathState state_;
-  std::vector<double> dL_du_;
+  std::vector<double> dL_du_, shifted_dL_du_;
   // Per moment-arm coordinate: the coordinate itself when no constraint row involves it (it
   // moves alone, coupling 1), else -1 and its place in solved_coordinates_.
   std::vector<int> alone_;
@@ -66,6 +76,13 @@ class PathAnalysis {
   std::vector<Coupled> coupled_;
   std::vector<size_t> coupled_begin_;
   std::vector<double> lengths_, speeds_, moment_arms_;
+  // Per path: whether it has stale tangent points at this pose; only then are its
+  // opensim_moment_arms_ filled (else they are its moment_arms_).
+  std::vector<char> stale_;
+  std::vector<double> opensim_moment_arms_;
+
+  // -c . g for the k-th moment-arm coordinate (c its coupling vector at this pose).
+  double MinusCoupled(size_t k, const double* g) const;
 };
 
 }  // namespace sinew::paths

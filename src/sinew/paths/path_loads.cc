@@ -129,6 +129,25 @@ void CalcLengthGradient(const PathState& state, std::span<const Transform> X_GB,
   for (const LengthSlope& s : state.slopes) dL_du[s.coordinate] += s.dL_dq;
 }
 
+void AddStaleTangentPointShift(const PathState& state, std::span<const Transform> X_GB,
+                               const SpeedColumns& columns, std::span<double> dL_du) {
+  if (state.stale_tangent_points == 0) return;
+  std::vector<BodyWrench>& wrenches = EmptyWrenches();
+  const size_t n = state.points.size();
+  for (size_t i = 0; i < n; ++i) {
+    const PathPointState& p = state.points[i];
+    if (p.wrap < 0 || p.p_BP_placed == p.p_BP) continue;
+    // The pull of a tension of -1 along the segments to points of other bodies (OpenSim skips
+    // a segment within one body; Sinew's forces along it, at the points as read, cancel).
+    Vec3 push = Vec3::Zero();
+    if (i + 1 < n && state.points[i + 1].body != p.body) push -= state.e_G[i];
+    if (i > 0 && state.points[i - 1].body != p.body) push += state.e_G[i - 1];
+    AddPointForce(X_GB, p.body, p.p_BP_placed, push, wrenches);
+    AddPointForce(X_GB, p.body, p.p_BP, -push, wrenches);
+  }
+  AddWrenchPowers(wrenches, columns, dL_du);
+}
+
 double CalcLengtheningSpeed(const PathState& state, std::span<const Transform> X_GB,
                             std::span<const SpatialVec> V_GB, std::span<const double> u) {
   // A FunctionBasedPath: its lengthening_speed_function(q, u) when given, else sum dL/dq u.

@@ -52,6 +52,17 @@ void AddGeneralizedForces(const PathLoads& loads, std::span<const Transform> X_G
 void CalcLengthGradient(const PathState& state, std::span<const Transform> X_GB,
                         const SpeedColumns& columns, std::span<double> dL_du);
 
+/// OpenSim's moment arms where tangent points are stale (several wrap objects, docs/paths.md):
+/// OpenSim's MomentArmSolver, like its GeometryPath::produceForces, pulls a tangent point along
+/// the directions from the ground locations it read first (Sinew's e_G) but applies the force
+/// where the point is now (PathPointState::p_BP_placed), and only along segments to points of
+/// other bodies. This adds to `dL_du` (CalcLengthGradient's) the generalized force, at a
+/// tension of -1, of moving each stale tangent point's forces from p_BP to p_BP_placed, so
+/// that -c . dL_du becomes OpenSim's moment arm; it is then no longer a derivative of the
+/// length. Adds nothing for a path without stale tangent points.
+void AddStaleTangentPointShift(const PathState& state, std::span<const Transform> X_GB,
+                               const SpeedColumns& columns, std::span<double> dL_du);
+
 /// The lengthening speed dL/dt (m/s): the sum over straight segments of e_i . (v_(i+1) - v_i),
 /// with each point's velocity in ground from its body's V_GB (kinematics::CalcBodyVelocities)
 /// plus, for moving points, R_GB dp_BP/dq u of its coordinates. A FunctionBasedPath: its

@@ -191,9 +191,11 @@ class TangentPointRefinement {
 // s = 1 / samples, T2 against the one at 1 - 1 / samples, the helix sampled every 2 mm, until
 // neither moves or 100 times. The points move along their generators only, so the helix's turn
 // and the samples' positions about the axis stay; those are recomputed only when the number
-// of samples changes, and the heights follow T1 and the rise.
-void RefineTangency(const Vec3& p_WP, const Vec3& p_WS, double radius, Helix* helix,
-                    TangentPair* pair) {
+// of samples changes, and the heights follow T1 and the rise. `t2_after_t1`: T2's sample is
+// on the helix started at T1 as T1's step left it (OpenSim 4.4.1 and later), else as the step
+// found it (WrapOptions::t2_checked_after_t1_moves).
+void RefineTangency(const Vec3& p_WP, const Vec3& p_WS, double radius, bool t2_after_t1,
+                    Helix* helix, TangentPair* pair) {
   const double arc = radius * helix->turn;
   const double arc_squared = arc * arc;
   TangentPointRefinement first(p_WP, pair->t1), second(p_WS, pair->t2);
@@ -223,9 +225,12 @@ void RefineTangency(const Vec3& p_WP, const Vec3& p_WS, double radius, Helix* he
         second.SetSample(before_t2.x(), before_t2.y());
       }
     }
-    // As OpenSim does, T2's check uses the helix of the previous T2 started at the new T1.
-    const bool moved_t1 = first.Step(pair->t1.z() + s * rise, &pair->t1.z());
-    const bool moved_t2 = second.Step(pair->t1.z() + (1.0 - s) * rise, &pair->t2.z());
+    // OpenSim 4.4.1 and later check T2 against the previous helix started at the new T1;
+    // earlier versions against the previous helix itself.
+    const double t1_z = pair->t1.z();
+    const bool moved_t1 = first.Step(t1_z + s * rise, &pair->t1.z());
+    const double helix_start = t2_after_t1 ? pair->t1.z() : t1_z;
+    const bool moved_t2 = second.Step(helix_start + (1.0 - s) * rise, &pair->t2.z());
     if (!moved_t1 && !moved_t2) break;
     helix->rise = pair->t2.z() - pair->t1.z();  // the turn stays (radial positions unchanged)
   }
@@ -286,7 +291,9 @@ WrapResult WrapCylinder::Wrap(const Vec3& p_WP, const Vec3& p_WS,
   if (std::abs(pair.t1.z()) > half_length && std::abs(pair.t2.z()) > half_length) return result;
 
   Helix helix = CalcHelix(pair, long_way);
-  if (!options.single_wrap) RefineTangency(p_WP, p_WS, radius_, &helix, &pair);
+  if (!options.single_wrap) {
+    RefineTangency(p_WP, p_WS, radius_, options.t2_checked_after_t1_moves, &helix, &pair);
+  }
 
   result.wrapped = true;
   result.p_WT1 = pair.t1;

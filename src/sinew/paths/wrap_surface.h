@@ -38,6 +38,12 @@ struct WrapOptions {
   /// Surfaces on two frames only (WrapDoubleCylinderObst): the pose of the second frame V (the
   /// V cylinder's, fixed to another body) in W at this pose. The path sets it; others ignore it.
   Transform X_WV;
+  /// How a refining WrapCylinder checks its second tangent point T2 in each refinement step:
+  /// against the helix sample next to T2 placed after T1 moved in that step (OpenSim 4.4.1 and
+  /// later; true), or against the sample of the helix the step started with (OpenSim up to
+  /// 4.4.0, which sampled the helix from T1's axis point taken before the step; false). The two
+  /// refine to tangent points a few 1e-5 m apart along the cylinder (docs/wrapping.md).
+  bool t2_checked_after_t1_moves = true;
 };
 
 /// What wrapping the segment from P to S over a surface gives, all in the surface frame W.
