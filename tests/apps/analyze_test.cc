@@ -39,6 +39,26 @@ const std::string kArm26 = kData + "/MyoHub/myoconverter/models/osim/Arm26/arm26
 class AnalyzeCliTest : public sinew::testing::CliTest {
  protected:
   CliRun Analyze(const std::string& args) const { return Run("analyze " + args); }
+  // A one-row arm26 motion at shoulder elevation and elbow flexion (radians); its path.
+  std::string WriteArmPose(double shoulder, double elbow) const {
+    const std::string motion = Path("arm.mot");
+    std::ofstream out(motion);
+    out << "arm\nversion=1\nnRows=1\nnColumns=3\ninDegrees=no\nendheader\n"
+           "time\tr_shoulder_elev\tr_elbow_flex\n0\t"
+        << shoulder << "\t" << elbow << "\n";
+    return motion;
+  }
+  // arm26's elbow moment arms at `motion` with `options` (e.g. a cylinder-refinement rule);
+  // `name` keeps each call's output folder apart.
+  StoTable ElbowMomentArms(const std::string& motion, const std::string& options,
+                           const std::string& name) const {
+    const std::string out = Path(name);
+    const CliRun r = Analyze(kArm26 + " --motion " + motion + " --out " + out + options);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    StoTable arms = ReadStoTable(out + "/MomentArm_r_elbow_flex.sto");
+    EXPECT_EQ(arms.rows.size(), 1u);
+    return arms;
+  }
 };
 
 TEST_F(AnalyzeCliTest, Gait1018LengthsMatchOpenSimAndMomentArmsAreDerivatives) {
@@ -218,20 +238,12 @@ TEST_F(AnalyzeCliTest, CylinderRefinementOptionChangesOnlyPathsOverOneCylinder) 
   // only under "always", so its elbow moment arm differs between the rules (by 2.2e-4 m);
   // TRIlong (three wrap objects) is refined under both rules and BIClong, BICshort (no
   // cylinder) never: those are identical.
-  const std::string motion = Path("arm.mot");
-  {
-    std::ofstream out(motion);
-    out << "arm\nversion=1\nnRows=1\nnColumns=3\ninDegrees=yes\nendheader\n"
-           "time\tr_shoulder_elev\tr_elbow_flex\n0\t0\t0\n";
-  }
+  const std::string motion = WriteArmPose(0.0, 0.0);
   StoTable arms[3];
   const char* rules[3] = {"", " --cylinder-refinement several-wraps",
                           " --cylinder-refinement always"};
   for (int k = 0; k < 3; ++k) {
-    const std::string out = Path("out" + std::to_string(k));
-    const CliRun r = Analyze(kArm26 + " --motion " + motion + " --out " + out + rules[k]);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    arms[k] = ReadStoTable(out + "/MomentArm_r_elbow_flex.sto");
+    arms[k] = ElbowMomentArms(motion, rules[k], "out" + std::to_string(k));
     ASSERT_EQ(arms[k].rows.size(), 1u);
   }
   const int bra = arms[0].Column("BRA");
@@ -255,20 +267,12 @@ TEST_F(AnalyzeCliTest, OpenSim44RuleChangesOnlyPathsWhoseCylinderRefinesInSevera
   // and OpenSim 4.4.0's check of the second tangent point moves TRIlong's elbow moment arm by
   // about 3e-6 m from 4.4.1's; BRA, TRIlat and TRImed (one wrap object each) are not refined
   // under either rule: identical.
-  const std::string motion = Path("arm.mot");
-  {
-    std::ofstream out(motion);
-    out << "arm\nversion=1\nnRows=1\nnColumns=3\ninDegrees=no\nendheader\n"
-           "time\tr_shoulder_elev\tr_elbow_flex\n0\t0\t2\n";
-  }
+  const std::string motion = WriteArmPose(0.0, 2.0);
   StoTable arms[2];
   const char* rules[2] = {"several-wraps", "opensim-4.4"};
   for (int k = 0; k < 2; ++k) {
-    const std::string out = Path(std::string("out_") + rules[k]);
-    const CliRun r = Analyze(kArm26 + " --motion " + motion + " --out " + out +
-                             " --cylinder-refinement " + rules[k]);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    arms[k] = ReadStoTable(out + "/MomentArm_r_elbow_flex.sto");
+    arms[k] = ElbowMomentArms(motion, std::string(" --cylinder-refinement ") + rules[k],
+                              std::string("out_") + rules[k]);
     ASSERT_EQ(arms[k].rows.size(), 1u);
   }
   const int tri_long = arms[0].Column("TRIlong");
@@ -286,12 +290,7 @@ TEST_F(AnalyzeCliTest, MomentArmTablesAreOpenSimsWhereTangentPointsAreStale) {
   // three wrap objects leave tangent points stale (docs/paths.md), where OpenSim's moment arm
   // is not -dL/dq. The table holds OpenSim's (PathAnalysis::opensim_moment_arm), 7.9e-3 m
   // from Sinew's -dL/dq (PathAnalysis::moment_arm) there.
-  const std::string motion = Path("arm.mot");
-  {
-    std::ofstream out(motion);
-    out << "arm\nversion=1\nnRows=1\nnColumns=3\ninDegrees=no\nendheader\n"
-           "time\tr_shoulder_elev\tr_elbow_flex\n0\t1.9635\t0\n";
-  }
+  const std::string motion = WriteArmPose(1.9635, 0.0);
   const CliRun r = Analyze(kArm26 + " --motion " + motion + " --out " + Path("out"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const StoTable table = ReadStoTable(Path("out") + "/MomentArm_r_shoulder_elev.sto");
