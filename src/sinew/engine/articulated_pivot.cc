@@ -13,11 +13,12 @@ constexpr double kMinPivot = 1e-14;
 }  // namespace
 
 bool Invert3(const Mat3& A, Mat3& inverse) {
+  // The cofactors once, for the determinant and the inverse both.
   const double scale = A.cwiseAbs().maxCoeff();
-  const double det = A.determinant();
-  if (!(std::abs(det) > 1e-10 * scale * scale * scale)) return false;
-  inverse = A.inverse();
-  return true;
+  double det = 0.0;
+  bool invertible = false;
+  A.computeInverseAndDetWithCheck(inverse, det, invertible, 1e-10 * scale * scale * scale);
+  return invertible;
 }
 
 bool ArticulatedPivot::Factorize(const Block& K, int nu) {

@@ -35,7 +35,9 @@ Eigen::Matrix<double, 6, 6> CalcBodyMassMatrix(const Body& body, const Quat& qua
   const Mat3 cx = Skew(c);
   const double m = body.mass;
   Eigen::Matrix<double, 6, 6> M;
-  M.block<3, 3>(0, 0) = I_G - m * cx * cx;
+  // -[c]x [c]x = |c|^2 I - c c^T (the parallel-axis term, without a 3 x 3 product).
+  M.block<3, 3>(0, 0) = I_G - m * (c * c.transpose());
+  M.block<3, 3>(0, 0).diagonal().array() += m * c.squaredNorm();
   M.block<3, 3>(0, 3) = m * cx;
   M.block<3, 3>(3, 0) = -m * cx;
   M.block<3, 3>(3, 3) = m * Mat3::Identity();
