@@ -181,10 +181,19 @@ ContactSolverResult SolveApgd(Eigen::Ref<const MatX> W, Eigen::Ref<const VecX> u
       u_best = u;
     }
     if (residual <= settings.tolerance) break;
-    // Nesterov's momentum, restarted (theta = 1, no momentum) when the step went uphill.
+    // Nesterov's momentum, restarted (theta = 1, no momentum) when the step went uphill:
+    // when the gradient mapping G = L D^-1 (y - x), the step P actually took, points along
+    // x - x_previous (O'Donoghue-Candes' gradient scheme with G for the gradient, as for
+    // projected steps). The raw gradient would restart nearly every iteration at contacts
+    // the projection holds (a sliding contact's gradient is its slip, which P turns into
+    // a step along the disc's edge), leaving plain projected gradient steps.
     const double theta_next = 0.5 * theta * (std::sqrt(theta * theta + 4.0) - theta);
     const double beta = theta * (1.0 - theta) / (theta * theta + theta_next);
-    if (gradient.dot(x - x_previous) > 0.0) {
+    double uphill = 0.0;
+    for (Eigen::Index j = 0; j < n; ++j) {
+      if (D[j] > 0.0) uphill += (y[j] - x[j]) * (x[j] - x_previous[j]) / D[j];
+    }
+    if (uphill > 0.0) {
       y = x;
       Wy = Wx;
       theta = 1.0;
