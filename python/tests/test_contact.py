@@ -267,7 +267,7 @@ def test_batch_statistics_are_each_copys_simulator_statistics():
 
 
 def test_nsc_solver_defaults_and_both_methods():
-    # The defaults are the library's (APGD, 100, 1e-6 m/s, 0.1 m/s, 0.01 m/s): naming them
+    # The defaults are the library's (APGD, 1000, 1e-6 m/s, 0.1 m/s, 0.01 m/s): naming them
     # changes nothing. Gauss-Seidel and APGD at 1e-12 m/s meet it in every step and give the
     # ball (launched sideways at 1 m/s by its initial speed: lands, rolls, bounces, rests) the
     # same speeds: each leaves the contact's velocity within the tolerance of the law's, 2 tol
@@ -275,7 +275,7 @@ def test_nsc_solver_defaults_and_both_methods():
     # 0.1 m for the spin).
     default = sinew.load(BALL, collision=True, contact="nsc").simulate(0.5)
     named = sinew.load(BALL, collision=True, contact="nsc", nsc_solver="apgd",
-                       nsc_iterations=100, nsc_tolerance=1e-6, nsc_max_recovery_speed=0.1,
+                       nsc_iterations=1000, nsc_tolerance=1e-6, nsc_max_recovery_speed=0.1,
                        nsc_min_bounce_speed=0.01).simulate(0.5)
     assert np.array_equal(default.q, named.q) and np.array_equal(default.u, named.u)
     assert np.array_equal(default.contacts, named.contacts)
