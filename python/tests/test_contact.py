@@ -289,11 +289,12 @@ def test_nsc_solver_defaults_and_both_methods():
         assert runs[solver].statistics["nsc_unconverged_steps"] == 0
         assert runs[solver].statistics["nsc_worst_residual"] <= 1e-12
     # One sweep solves a single sphere contact exactly (its normal and tangential rows are
-    # decoupled and W_tt is isotropic); APGD's first step, scaled by 1 / (W_nn L) on all three
-    # rows, cannot be exact on both the normal row (needs L = 1) and the tangential ones (L =
-    # W_tt / W_nn = 1 + m r^2 / I = 3.5), so the landing takes it more than one iteration.
+    # decoupled and W_tt is isotropic); so does APGD's first step, scaled by 1 / W_nn on the
+    # normal row and 1 / lambda_max(W_tt) on the tangential ones: the scaled W is the identity
+    # and L = 1. (Scaled by 1 / W_nn on all three rows, as before 2026-11-28, it could not be
+    # exact on both, W_tt / W_nn = 1 + m r^2 / I = 3.5, and the landing took more than one.)
     assert runs["gauss-seidel"].statistics["nsc_most_iterations"] == 1
-    assert runs["apgd"].statistics["nsc_most_iterations"] > 1
+    assert runs["apgd"].statistics["nsc_most_iterations"] == 1
     steps = max(run.statistics["nsc_solves"] for run in runs.values())
     bound = 2 * 1e-12 * steps
     apgd, gauss_seidel = runs["apgd"], runs["gauss-seidel"]
