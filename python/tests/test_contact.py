@@ -267,7 +267,7 @@ def test_batch_statistics_are_each_copys_simulator_statistics():
 
 
 def test_nsc_solver_defaults_and_both_methods():
-    # The defaults are the library's (APGD, 100, 1e-6 m/s, 0.1 m/s, 0.01 m/s): naming them
+    # The defaults are the library's (APGD, 1000, 1e-6 m/s, 0.1 m/s, 0.01 m/s): naming them
     # changes nothing. Gauss-Seidel and APGD at 1e-12 m/s meet it in every step and give the
     # ball (launched sideways at 1 m/s by its initial speed: lands, rolls, bounces, rests) the
     # same speeds: each leaves the contact's velocity within the tolerance of the law's, 2 tol
@@ -275,7 +275,7 @@ def test_nsc_solver_defaults_and_both_methods():
     # 0.1 m for the spin).
     default = sinew.load(BALL, collision=True, contact="nsc").simulate(0.5)
     named = sinew.load(BALL, collision=True, contact="nsc", nsc_solver="apgd",
-                       nsc_iterations=100, nsc_tolerance=1e-6, nsc_max_recovery_speed=0.1,
+                       nsc_iterations=1000, nsc_tolerance=1e-6, nsc_max_recovery_speed=0.1,
                        nsc_min_bounce_speed=0.01).simulate(0.5)
     assert np.array_equal(default.q, named.q) and np.array_equal(default.u, named.u)
     assert np.array_equal(default.contacts, named.contacts)
@@ -289,11 +289,12 @@ def test_nsc_solver_defaults_and_both_methods():
         assert runs[solver].statistics["nsc_unconverged_steps"] == 0
         assert runs[solver].statistics["nsc_worst_residual"] <= 1e-12
     # One sweep solves a single sphere contact exactly (its normal and tangential rows are
-    # decoupled and W_tt is isotropic); APGD's first step, scaled by 1 / (W_nn L) on all three
-    # rows, cannot be exact on both the normal row (needs L = 1) and the tangential ones (L =
-    # W_tt / W_nn = 1 + m r^2 / I = 3.5), so the landing takes it more than one iteration.
+    # decoupled and W_tt is isotropic); so does APGD's first step, scaled by 1 / W_nn on the
+    # normal row and 1 / lambda_max(W_tt) on the tangential ones: the scaled W is the identity
+    # and L = 1. (Scaled by 1 / W_nn on all three rows, as before 2026-11-28, it could not be
+    # exact on both, W_tt / W_nn = 1 + m r^2 / I = 3.5, and the landing took more than one.)
     assert runs["gauss-seidel"].statistics["nsc_most_iterations"] == 1
-    assert runs["apgd"].statistics["nsc_most_iterations"] > 1
+    assert runs["apgd"].statistics["nsc_most_iterations"] == 1
     steps = max(run.statistics["nsc_solves"] for run in runs.values())
     bound = 2 * 1e-12 * steps
     apgd, gauss_seidel = runs["apgd"], runs["gauss-seidel"]

@@ -116,12 +116,23 @@ ContactSolverResult SolveApgd(Eigen::Ref<const MatX> W, Eigen::Ref<const VecX> u
   auto Wy = workspace.Wy.head(n), gradient = workspace.gradient.head(n);
   auto D = workspace.scale.head(n), best = workspace.best.head(n),
        u_best = workspace.u_best.head(n);
-  // The step's scaling D: 1 / W_nn for the three rows of a contact (a scalar per contact keeps
-  // the cone and P unchanged), 0 for contacts that cannot move.
+  // The step's scaling D: per contact 1 / W_nn on the normal row and 1 / lambda_max(W_tt) on
+  // both tangential rows (a scalar on the tangent plane keeps P's fixed points Coulomb's law:
+  // the slip stays opposite gamma_t), 0 for contacts that cannot move. One scalar 1 / W_nn for
+  // all three rows left L set by contacts whose W_tt is 40-50 times their W_nn (an elbow
+  // folded on itself in Rajagopal2015's resting pose), a short step for every other contact.
   const double largest = W.diagonal().cwiseAbs().maxCoeff();
   for (int i = 0; i < m; ++i) {
-    const double w_nn = W(3 * i, 3 * i);
-    D.segment<3>(3 * i).setConstant(w_nn > 1e-14 * largest ? 1.0 / w_nn : 0.0);
+    const int r = 3 * i;
+    const double w_nn = W(r, r);
+    if (!(w_nn > 1e-14 * largest)) {
+      D.segment<3>(r).setZero();
+      continue;
+    }
+    D[r] = 1.0 / w_nn;
+    D[r + 1] = D[r + 2] =
+        1.0 / std::max(LargestEigenvalue(W(r + 1, r + 1), W(r + 1, r + 2), W(r + 2, r + 2)),
+                       1e-14 * largest);
   }
   // The gradient of f at v, from W v: u_free + W v - target on the normal rows.
   auto gradient_at = [&](const auto& Wv) {
@@ -181,10 +192,19 @@ ContactSolverResult SolveApgd(Eigen::Ref<const MatX> W, Eigen::Ref<const VecX> u
       u_best = u;
     }
     if (residual <= settings.tolerance) break;
-    // Nesterov's momentum, restarted (theta = 1, no momentum) when the step went uphill.
+    // Nesterov's momentum, restarted (theta = 1, no momentum) when the step went uphill:
+    // when the gradient mapping G = L D^-1 (y - x), the step P actually took, points along
+    // x - x_previous (O'Donoghue-Candes' gradient scheme with G for the gradient, as for
+    // projected steps). The raw gradient would restart nearly every iteration at contacts
+    // the projection holds (a sliding contact's gradient is its slip, which P turns into
+    // a step along the disc's edge), leaving plain projected gradient steps.
     const double theta_next = 0.5 * theta * (std::sqrt(theta * theta + 4.0) - theta);
     const double beta = theta * (1.0 - theta) / (theta * theta + theta_next);
-    if (gradient.dot(x - x_previous) > 0.0) {
+    double uphill = 0.0;
+    for (Eigen::Index j = 0; j < n; ++j) {
+      if (D[j] > 0.0) uphill += (y[j] - x[j]) * (x[j] - x_previous[j]) / D[j];
+    }
+    if (uphill > 0.0) {
       y = x;
       Wy = Wx;
       theta = 1.0;
