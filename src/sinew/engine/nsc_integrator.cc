@@ -12,13 +12,17 @@ namespace {
 
 // Grows `m` to at least rows x cols (never shrinks, so a step with fewer contacts than an
 // earlier one allocates nothing); callers use its top-left corner.
+// Buffers sized by the number of contacts grow to twice what is asked (the blocks in use are
+// their top-left corners): a run whose contacts keep rising by one or two reallocates a few
+// times (log2 of its largest count), not at every new largest count.
+Eigen::Index Grown(Eigen::Index have, Eigen::Index need) {
+  return need <= have ? have : 2 * need;
+}
 void Reserve(MatX& m, Eigen::Index rows, Eigen::Index cols) {
-  if (m.rows() < rows || m.cols() < cols) {
-    m.resize(std::max(m.rows(), rows), std::max(m.cols(), cols));
-  }
+  if (m.rows() < rows || m.cols() < cols) m.resize(Grown(m.rows(), rows), Grown(m.cols(), cols));
 }
 void Reserve(VecX& v, Eigen::Index size) {
-  if (v.size() < size) v.resize(size);
+  if (v.size() < size) v.resize(Grown(v.size(), size));
 }
 
 }  // namespace
@@ -138,6 +142,7 @@ void NscIntegrator::SolveContacts(const State& state, double h) {
   // W = D A^-1 D^T = D Y block by block (symmetric: the blocks below the diagonal are the
   // transposes of those above), u_free = D v_free, and the targets.
   Reserve(W_, 3 * m, 3 * m);
+  workspace_.Reserve(W_.rows());  // the impulse solver's buffers grow with W's
   for (VecX* v : {&u_free_, &u_, &gamma_}) Reserve(*v, 3 * m);
   Reserve(target_, m);
   Reserve(mu_, m);
@@ -193,6 +198,9 @@ void NscIntegrator::SolveContacts(const State& state, double h) {
   }
   kkt_.Solve(rhs_, solution_);
   v_free_ += solution_.head(nv);
+  // A copy assignment would size the vector exactly: grow it as the buffers above.
+  if (previous_contacts_.capacity() < contacts_.size())
+    previous_contacts_.reserve(Grown(0, static_cast<Eigen::Index>(contacts_.size())));
   previous_contacts_ = contacts_;
   Reserve(previous_gamma_, 3 * m);
   previous_gamma_.head(3 * m) = gamma;
