@@ -144,7 +144,7 @@ class KktSolver {
   VecX factorized_positions_;
   mutable VecX positions_;
   long num_factorizations_ = 0;
-  // Buffers of Solve, so that it allocates nothing.
+  // Buffers of Solve, so that it allocates nothing (g_: the extra rows' right-hand side).
   mutable VecX tree_rhs_, y_, g_, mu_, residual_;
   // Buffer of SolveUnitLoadResponses: S^-1 Y_s^T (ne x 6).
   mutable Eigen::Matrix<double, Eigen::Dynamic, 6> unit_mu_;

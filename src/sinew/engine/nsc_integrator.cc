@@ -10,11 +10,10 @@
 namespace sinew::engine {
 namespace {
 
-// Grows `m` to at least rows x cols (never shrinks, so a step with fewer contacts than an
-// earlier one allocates nothing); callers use its top-left corner.
-// Buffers sized by the number of contacts grow to twice what is asked (the blocks in use are
-// their top-left corners): a run whose contacts keep rising by one or two reallocates a few
-// times (log2 of its largest count), not at every new largest count.
+// The buffers sized by the number of contacts never shrink (a step with fewer contacts than an
+// earlier one allocates nothing; callers use their top-left corners) and grow to twice what is
+// asked: a run whose contacts keep rising by one or two reallocates about log2 of its largest
+// count times, not at every new largest count.
 Eigen::Index Grown(Eigen::Index have, Eigen::Index need) {
   return need <= have ? have : 2 * need;
 }
@@ -200,7 +199,7 @@ void NscIntegrator::SolveContacts(const State& state, double h) {
   v_free_ += solution_.head(nv);
   // A copy assignment would size the vector exactly: grow it as the buffers above.
   if (previous_contacts_.capacity() < contacts_.size())
-    previous_contacts_.reserve(Grown(0, static_cast<Eigen::Index>(contacts_.size())));
+    previous_contacts_.reserve(2 * contacts_.size());
   previous_contacts_ = contacts_;
   Reserve(previous_gamma_, 3 * m);
   previous_gamma_.head(3 * m) = gamma;

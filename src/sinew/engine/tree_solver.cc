@@ -2,7 +2,6 @@
 #include <sinew/engine/system.h>
 #include <sinew/engine/tree_solver.h>
 
-#include <algorithm>
 #include <string>
 
 namespace sinew::engine {
