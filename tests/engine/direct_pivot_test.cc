@@ -14,7 +14,7 @@ namespace sinew::engine {
 namespace {
 
 using Mat6 = Eigen::Matrix<double, 6, 6>;
-using Block = DirectPivot::Block;
+using Block = MatX;  // a node block (the pivot reads a view of it)
 
 using testing::SpatialInertia;
 

@@ -46,8 +46,8 @@ bool Invert3(const Mat3& A, Mat3& inverse);
 /// heap use.
 class ArticulatedPivot {
  public:
-  /// A node block (at most 24 x 24), as TreeKktSolver holds it.
-  using Block = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 24, 24>;
+  /// A node block (at most 24 x 24): a view of where TreeKktSolver keeps it.
+  using Block = Eigen::Ref<const MatX>;
 
   /// Factorizes `K` with `nu` joint speeds (the rest of its rows past the joint rows are
   /// coordinate rows). Returns false, and the caller must use a generic factorization, when J_B

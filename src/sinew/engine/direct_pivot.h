@@ -32,8 +32,8 @@ namespace sinew::engine {
 /// heap use.
 class DirectPivot {
  public:
-  /// A node block (at most 24 x 24), as TreeKktSolver holds it.
-  using Block = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 24, 24>;
+  /// A node block (at most 24 x 24): a view of where TreeKktSolver keeps it.
+  using Block = Eigen::Ref<const MatX>;
 
   /// Factorizes `K` (6 + m rows, m the joint rows, 3 <= m <= 6). Returns false, and the caller
   /// must use a generic factorization, when the joint rows do not have the layout above with an

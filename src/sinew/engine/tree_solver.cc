@@ -3,6 +3,7 @@
 #include <sinew/engine/tree_solver.h>
 
 #include <string>
+#include <utility>
 
 namespace sinew::engine {
 
@@ -100,20 +101,40 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
       node.fits = Pivot::kDirect;
     }
   }
+  lu_.resize(nodes_.size());
+  int rows = 0, block = 0;
   for (Node& node : nodes_) {
     const int n = static_cast<int>(node.global.size());
     if (n > kMaxNode) throw Error("engine: a joint block is too large for the tree solver");
-    node.K = NodeMatrix::Zero(n, n);
-    node.C = NodeCoupling::Zero(n, 6);
-    node.W = NodeCoupling::Zero(n, 6);
+    node.size = n;
+    node.row = rows;
+    node.block = block;
+    rows += n;
+    block += n * n;
+    if (node.fits == Pivot::kArticulated) {
+      node.pivot = static_cast<int>(articulated_.size());
+      articulated_.emplace_back();
+    } else if (node.fits == Pivot::kDirect) {
+      node.pivot = static_cast<int>(direct_.size());
+      direct_.emplace_back();
+    }
   }
+  for (const Node& node : nodes_)
+    global_of_row_.insert(global_of_row_.end(), node.global.begin(), node.global.end());
+  blocks_.assign(block, 0.0);
+  couplings_.assign(6 * static_cast<size_t>(rows), 0.0);
+  responses_.assign(6 * static_cast<size_t>(rows), 0.0);
+  z_.setZero(rows);
 }
 
 void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& mass,
                               const std::vector<MatX>& jacobian) {
   // Every entry outside the mass block and the constraint entries stays zero from construction.
-  for (Node& node : nodes_) {
-    node.K.topLeftCorner<6, 6>() = mass[node.body];
+  for (size_t k = 0; k < nodes_.size(); ++k) {
+    const Node& node = nodes_[k];
+    BlockView K = this->K(static_cast<int>(k));
+    CouplingView C = this->C(static_cast<int>(k));
+    K.topLeftCorner<6, 6>() = mass[node.body];
     for (size_t i = 0; i < node.constraints.size(); ++i) {
       const MatX& J = jacobian[node.constraints[i]];
       const Placement& placement = node.placements[i];
@@ -123,9 +144,9 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
           // A joint's six rows on a whole twist (the common run), with fixed sizes.
           const auto block = J.middleCols<6>(run.jac_col);
           if (run.col >= 0) {
-            node.K.block<6, 6>(placement.first_row, run.col) = block;
+            K.block<6, 6>(placement.first_row, run.col) = block;
           } else {
-            node.C.block<6, 6>(placement.first_row, -1 - run.col) = block;
+            C.block<6, 6>(placement.first_row, -1 - run.col) = block;
           }
           continue;
         }
@@ -133,37 +154,38 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
         if (run.col >= 0) {
           // The lower triangle only: the pivots read no more, and the LU fills the upper
           // triangle from it when it is used (FactorizeNode).
-          node.K.block(placement.first_row, run.col, rows, run.width) = block;
+          K.block(placement.first_row, run.col, rows, run.width) = block;
         } else {
           // Inboard columns run downwards from -1 - col.
-          node.C.block(placement.first_row, -1 - run.col, rows, run.width) = block;
+          C.block(placement.first_row, -1 - run.col, rows, run.width) = block;
         }
       }
     }
   }
   // Leaves first: eliminate each node into its parent's body block.
-  for (auto it = nodes_.rbegin(); it != nodes_.rend(); ++it) {
-    Node& node = *it;
-    FactorizeNode(node);
+  for (int k = static_cast<int>(nodes_.size()); k-- > 0;) {
+    const Node& node = nodes_[k];
+    FactorizeNode(k);
     if (node.parent < 0) continue;
-    auto parent_block = nodes_[node.parent].K.topLeftCorner<6, 6>();
+    auto parent_block = K(node.parent).topLeftCorner<6, 6>();
+    const ConstCouplingView C = std::as_const(*this).C(k);
+    CouplingView W = this->W(k);
     Eigen::Matrix<double, 6, 6> CtW;
     if (node.used == Pivot::kArticulated) {
       // Closed form: C is J_P in the joint rows and zero elsewhere.
-      const Eigen::Matrix<double, 6, 6> J_P = node.C.middleRows<6>(6 + node.num_speeds);
-      node.pivot.SolveCoupling(J_P, node.W, CtW);
+      const Eigen::Matrix<double, 6, 6> J_P = C.middleRows<6>(6 + node.num_speeds);
+      articulated_[node.pivot].SolveCoupling(J_P, W, CtW);
       parent_block -= CtW;
     } else if (node.used == Pivot::kDirect) {
-      node.direct.SolveCoupling(node.C.bottomRows(NumConstraintRows(node)), node.W, CtW);
+      direct_[node.pivot].SolveCoupling(C.bottomRows(NumConstraintRows(node)), W, CtW);
       parent_block -= CtW;
     } else {
-      node.W = node.C;
-      SolveNode(node, node.W);
+      W = C;
+      SolveNode(k, W);
       // C is zero in the twist and speed rows; a coefficient-wise product on the constraint
       // rows instead of Eigen's blocked GEMM, which these small sizes do not repay.
       const int rows = NumConstraintRows(node);
-      parent_block.noalias() -=
-          node.C.bottomRows(rows).transpose().lazyProduct(node.W.bottomRows(rows));
+      parent_block.noalias() -= C.bottomRows(rows).transpose().lazyProduct(W.bottomRows(rows));
     }
   }
 }
@@ -201,23 +223,25 @@ bool TreeKktSolver::FitsDirectPivot(const Node& node, int joint) const {
          node.constraints.size() == 1 && node.constraints[0] == joint;
 }
 
-void TreeKktSolver::FactorizeNode(Node& node) {
+void TreeKktSolver::FactorizeNode(int k) {
+  Node& node = nodes_[k];
+  BlockView K = this->K(k);
   node.used = Pivot::kLu;
-  if (node.fits == Pivot::kArticulated && node.pivot.Factorize(node.K, node.num_speeds)) {
+  if (node.fits == Pivot::kArticulated && articulated_[node.pivot].Factorize(K, node.num_speeds)) {
     node.used = Pivot::kArticulated;
     return;
   }
-  if (node.fits == Pivot::kDirect && node.direct.Factorize(node.K)) {
+  if (node.fits == Pivot::kDirect && direct_[node.pivot].Factorize(K)) {
     node.used = Pivot::kDirect;
     return;
   }
   // Factorize wrote the constraint rows' entries below the diagonal only: J^T from J.
   const int first = 6 + node.num_speeds, rows = NumConstraintRows(node);
-  node.K.block(0, first, first, rows) = node.K.block(first, 0, rows, first).transpose();
-  node.lu.compute(node.K);
+  K.block(0, first, first, rows) = K.block(first, 0, rows, first).transpose();
+  lu_[k].compute(K);
   // Partial pivoting puts each column's largest entry on U's diagonal: a pivot that is tiny
   // next to the largest one means a singular block.
-  const auto pivots = node.lu.matrixLU().diagonal().cwiseAbs();
+  const auto pivots = lu_[k].matrixLU().diagonal().cwiseAbs();
   const double rcond = pivots.minCoeff() / pivots.maxCoeff();
   if (!(rcond > 1e-14)) {
     throw Error({}, system_.bodies()[node.body].name,
@@ -250,77 +274,81 @@ void TreeKktSolver::Solve(const VecX& rhs, VecX& x) const {
 }
 
 void TreeKktSolver::SolveForward(const VecX& rhs) const {
-  std::vector<NodeVector>& r = scratch_;
-  r.resize(nodes_.size());
-  for (size_t k = 0; k < nodes_.size(); ++k) {
-    r[k].resize(nodes_[k].global.size());
-    for (size_t i = 0; i < nodes_[k].global.size(); ++i) r[k][i] = rhs[nodes_[k].global[i]];
-  }
+  for (size_t r = 0; r < global_of_row_.size(); ++r) z_[r] = rhs[global_of_row_[r]];
   // Forward: z_k = K_k^-1 r_k, parent's body rows lose C^T z_k. The common sizes (a direct
   // joint's 3 to 6 rows, a parameterized joint's 6) with fixed sizes: Eigen's products of run-time
   // size cost more than their arithmetic here, and these walks are most of a projection's Newton
   // iteration on a long chain.
-  for (size_t k = nodes_.size(); k-- > 0;) {
+  for (int k = static_cast<int>(nodes_.size()); k-- > 0;) {
     const Node& node = nodes_[k];
-    SolveNode(node, r[k]);
+    auto z = Z(k);
+    if (node.used == Pivot::kArticulated) {
+      // (its fixed-size solves run faster on a vector of their own than on a view of z_)
+      NodeVector z_k = z;
+      SolveNode(k, z_k);
+      z = z_k;
+    } else {
+      SolveNode(k, z);
+    }
     if (node.parent < 0) continue;
     const int rows = NumConstraintRows(node);
-    auto parent_rows = r[node.parent].head<6>();
+    auto parent_rows = Z(node.parent).head<6>();
+    const ConstCouplingView C = this->C(k);
     switch (rows) {
       case 3:
-        SubtractCouplingRows<3>(node.C, r[k], parent_rows);
+        SubtractCouplingRows<3>(C, z, parent_rows);
         break;
       case 4:
-        SubtractCouplingRows<4>(node.C, r[k], parent_rows);
+        SubtractCouplingRows<4>(C, z, parent_rows);
         break;
       case 5:
-        SubtractCouplingRows<5>(node.C, r[k], parent_rows);
+        SubtractCouplingRows<5>(C, z, parent_rows);
         break;
       case 6:
-        SubtractCouplingRows<6>(node.C, r[k], parent_rows);
+        SubtractCouplingRows<6>(C, z, parent_rows);
         break;
       default:
-        parent_rows.noalias() -= node.C.bottomRows(rows).transpose().lazyProduct(r[k].tail(rows));
+        parent_rows.noalias() -= C.bottomRows(rows).transpose().lazyProduct(z.tail(rows));
         break;
     }
   }
 }
 
 void TreeKktSolver::SolveBackward(VecX& x) const {
-  std::vector<NodeVector>& r = scratch_;
   // Backward: x_k = z_k - W_k x_parent (a direct joint's node has 9 to 12 rows).
   x.resize(size_);
-  for (size_t k = 0; k < nodes_.size(); ++k) {
+  for (int k = 0; k < static_cast<int>(nodes_.size()); ++k) {
     const Node& node = nodes_[k];
-    if (node.parent >= 0) {
-      const auto x_parent = r[node.parent].head<6>();
-      switch (r[k].size()) {
-        case 9:
-          SubtractParentResponse<9>(node.W, x_parent, r[k]);
-          break;
-        case 10:
-          SubtractParentResponse<10>(node.W, x_parent, r[k]);
-          break;
-        case 11:
-          SubtractParentResponse<11>(node.W, x_parent, r[k]);
-          break;
-        case 12:
-          SubtractParentResponse<12>(node.W, x_parent, r[k]);
-          break;
-        default:
-          r[k].noalias() -= node.W.lazyProduct(x_parent);
-          break;
-      }
+    if (node.parent < 0) continue;
+    auto z = Z(k);
+    const auto x_parent = Z(node.parent).head<6>();
+    const ConstCouplingView W = this->W(k);
+    switch (z.size()) {
+      case 9:
+        SubtractParentResponse<9>(W, x_parent, z);
+        break;
+      case 10:
+        SubtractParentResponse<10>(W, x_parent, z);
+        break;
+      case 11:
+        SubtractParentResponse<11>(W, x_parent, z);
+        break;
+      case 12:
+        SubtractParentResponse<12>(W, x_parent, z);
+        break;
+      default:
+        z.noalias() -= W.lazyProduct(x_parent);
+        break;
     }
-    for (size_t i = 0; i < node.global.size(); ++i) x[node.global[i]] = r[k][i];
   }
+  for (size_t r = 0; r < global_of_row_.size(); ++r) x[global_of_row_[r]] = z_[r];
 }
 
 void TreeKktSolver::SolveUnitLoadResponses(int source, const std::vector<int>& targets,
                                            Eigen::Ref<MatX> out) const {
   const size_t n = nodes_.size();
-  if (blocks_.size() != n) {
-    blocks_.resize(n);
+  if (unit_blocks_.size() != n) {
+    unit_blocks_.resize(n);
     forward_mark_.assign(n, 0);
     backward_mark_.assign(n, 0);
   }
@@ -328,17 +356,17 @@ void TreeKktSolver::SolveUnitLoadResponses(int source, const std::vector<int>& t
   // Forward, along the path from the source to ground: z_k = K_k^-1 r_k, and the parent's body
   // rows lose C^T z_k (every other node's right-hand side stays zero).
   int k = node_of_body_[source];
-  blocks_[k].setZero(nodes_[k].global.size(), 6);
-  blocks_[k].topRows<6>().setIdentity();
+  unit_blocks_[k].setZero(nodes_[k].size, 6);
+  unit_blocks_[k].topRows<6>().setIdentity();
   while (k >= 0) {
     forward_mark_[k] = call;
-    SolveNode(nodes_[k], blocks_[k]);
+    SolveNode(k, unit_blocks_[k]);
     const int parent = nodes_[k].parent;
     if (parent >= 0) {
-      blocks_[parent].setZero(nodes_[parent].global.size(), 6);
+      unit_blocks_[parent].setZero(nodes_[parent].size, 6);
       const int rows = NumConstraintRows(nodes_[k]);
-      blocks_[parent].topRows<6>().noalias() -=
-          nodes_[k].C.bottomRows(rows).transpose().lazyProduct(blocks_[k].bottomRows(rows));
+      unit_blocks_[parent].topRows<6>().noalias() -=
+          C(k).bottomRows(rows).transpose().lazyProduct(unit_blocks_[k].bottomRows(rows));
     }
     k = parent;
   }
@@ -352,14 +380,14 @@ void TreeKktSolver::SolveUnitLoadResponses(int source, const std::vector<int>& t
     }
     for (size_t i = stack_.size(); i-- > 0;) {
       const int j = stack_[i];
-      if (forward_mark_[j] != call) blocks_[j].setZero(nodes_[j].global.size(), 6);
+      if (forward_mark_[j] != call) unit_blocks_[j].setZero(nodes_[j].size, 6);
       const int parent = nodes_[j].parent;
       if (parent >= 0)
-        blocks_[j].noalias() -= nodes_[j].W.lazyProduct(blocks_[parent].topRows<6>());
+        unit_blocks_[j].noalias() -= W(j).lazyProduct(unit_blocks_[parent].topRows<6>());
       backward_mark_[j] = call;
     }
     out.block<6, 6>(6 * static_cast<Eigen::Index>(t), 0) =
-        blocks_[node_of_body_[targets[t]]].topRows<6>();
+        unit_blocks_[node_of_body_[targets[t]]].topRows<6>();
   }
 }
 
@@ -380,23 +408,20 @@ void TreeKktSolver::SetExtraRowColumns(int ne, const std::vector<int>& columns) 
     for (int k = node_of_global[g]; k >= 0 && !on_path[k]; k = nodes_[k].parent) on_path[k] = 1;
   }
   extra_nodes_.clear();
-  extra_F_.assign(nodes_.size(), MatX());
-  extra_Z_.assign(nodes_.size(), MatX());
   for (size_t k = nodes_.size(); k-- > 0;) {
-    if (!on_path[k]) continue;
-    extra_nodes_.push_back(static_cast<int>(k));
-    extra_F_[k] = MatX::Zero(static_cast<Eigen::Index>(nodes_[k].global.size()), ne);
-    extra_Z_[k] = extra_F_[k];
+    if (on_path[k]) extra_nodes_.push_back(static_cast<int>(k));
   }
+  extra_F_.assign(global_of_row_.size() * ne, 0.0);
+  extra_Z_.assign(global_of_row_.size() * ne, 0.0);
   extra_Y_current_ = false;
 }
 
-void TreeKktSolver::SolveNodeColumns(const Node& node, MatX& x) const {
+void TreeKktSolver::SolveNodeColumns(int k, Eigen::Ref<MatX> x) const {
   // Column by column: the pivots' one-column solves have every size fixed, which costs less
   // than their multi-column forms with a run-time column count.
   for (Eigen::Index c = 0; c < x.cols(); ++c) {
     column_scratch_ = x.col(c);
-    SolveNode(node, column_scratch_);
+    SolveNode(k, column_scratch_);
     x.col(c) = column_scratch_;
   }
 }
@@ -405,7 +430,7 @@ void TreeKktSolver::FactorizeExtraRows(const MatX& G, MatX& S) {
   // F starts as G^T on each node's velocity unknowns (zero on its constraint rows).
   for (int k : extra_nodes_) {
     const Node& node = nodes_[k];
-    MatX& F = extra_F_[k];
+    BlockView F = ExtraF(k);
     F.setZero();
     for (int i = 0; i < 6 + node.num_speeds; ++i) F.row(i) = G.col(node.global[i]).transpose();
   }
@@ -414,15 +439,15 @@ void TreeKktSolver::FactorizeExtraRows(const MatX& G, MatX& S) {
   S.setZero(ne_, ne_);
   for (int k : extra_nodes_) {
     const Node& node = nodes_[k];
-    MatX& Z = extra_Z_[k];
-    Z = extra_F_[k];
-    SolveNodeColumns(node, Z);
+    BlockView Zk = ExtraZ(k);
+    Zk = ExtraF(k);
+    SolveNodeColumns(k, Zk);
     if (node.parent >= 0) {
       const int rows = NumConstraintRows(node);
-      extra_F_[node.parent].topRows<6>().noalias() -=
-          node.C.bottomRows(rows).transpose().lazyProduct(Z.bottomRows(rows));
+      ExtraF(node.parent).topRows<6>().noalias() -=
+          C(k).bottomRows(rows).transpose().lazyProduct(Zk.bottomRows(rows));
     }
-    S.noalias() += extra_F_[k].transpose().lazyProduct(Z);
+    S.noalias() += ExtraF(k).transpose().lazyProduct(Zk);
   }
   extra_Y_current_ = false;
 }
@@ -430,14 +455,13 @@ void TreeKktSolver::FactorizeExtraRows(const MatX& G, MatX& S) {
 void TreeKktSolver::SolveWithExtraRows(const VecX& rhs, const VecX& e, const MatX& S_inverse,
                                        VecX& x, VecX& mu) const {
   SolveForward(rhs);
-  std::vector<NodeVector>& z = scratch_;
   // G K^-1 rhs = sum F_k^T z_k (the L D L^T form, as S).
   VecX& g = extra_g_;  // G K^-1 rhs - e
   g = -e;
-  for (int k : extra_nodes_) g.noalias() += extra_F_[k].transpose().lazyProduct(z[k]);
+  for (int k : extra_nodes_) g.noalias() += ExtraF(k).transpose().lazyProduct(Z(k));
   mu.resize(ne_);
   mu.noalias() = S_inverse.lazyProduct(g);
-  for (int k : extra_nodes_) z[k].noalias() -= extra_Z_[k].lazyProduct(mu);
+  for (int k : extra_nodes_) Z(k).noalias() -= ExtraZ(k).lazyProduct(mu);
   SolveBackward(x);
 }
 
@@ -449,13 +473,9 @@ const MatX& TreeKktSolver::ExtraRowResponses() const {
   for (size_t k = 0; k < nodes_.size(); ++k) {
     const Node& node = nodes_[k];
     MatX& Y = extra_Y_blocks_[k];
-    if (extra_Z_[k].size() > 0) {
-      Y = extra_Z_[k];
-    } else {
-      Y.setZero(static_cast<Eigen::Index>(node.global.size()), ne_);
-    }
+    Y = ExtraZ(static_cast<int>(k));  // zero off the extra rows' nodes
     if (node.parent >= 0)
-      Y.noalias() -= node.W.lazyProduct(extra_Y_blocks_[node.parent].topRows<6>());
+      Y.noalias() -= W(static_cast<int>(k)).lazyProduct(extra_Y_blocks_[node.parent].topRows<6>());
     for (size_t i = 0; i < node.global.size(); ++i) extra_Y_.row(node.global[i]) = Y.row(i);
   }
   extra_Y_current_ = true;

@@ -92,7 +92,6 @@ class TreeKktSolver {
   // fixed-capacity matrices keep them off the heap.
   static constexpr int kMaxNode = 24;
   using NodeMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxNode, kMaxNode>;
-  using NodeCoupling = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kMaxNode, 6>;
   using NodeVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxNode, 1>;
 
  public:
@@ -112,62 +111,95 @@ class TreeKktSolver {
     std::vector<int> constraints;
     std::vector<std::vector<Entry>> entries;  // per constraint: where its J entries go
     std::vector<Placement> placements;        // the same, by runs of columns
-    NodeMatrix K;                             // pivot block (n x n)
-    NodeCoupling C;                           // coupling to the inboard body's twist (n x 6)
-    NodeCoupling W;                           // K^-1 C
-    Eigen::PartialPivLU<NodeMatrix> lu;
-    ArticulatedPivot pivot;
-    DirectPivot direct;
+    int size = 0;                             // n: its unknowns (global.size())
+    int row = 0;     // its first row in the node-ordered arrays (the earlier nodes' sizes)
+    int block = 0;   // where its K starts in blocks_ (the earlier nodes' n^2)
+    int pivot = -1;  // its closed-form pivot in articulated_ or direct_ (by `fits`), or -1
   };
+  // A node's pivot block K (n x n), coupling C to the inboard body's twist (n x 6), W = K^-1 C,
+  // and its part of the solves' vector z, as views of the dense arrays below.
+  using BlockView = Eigen::Map<MatX>;
+  using ConstBlockView = Eigen::Map<const MatX>;
+  using CouplingView = Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6>>;
+  using ConstCouplingView = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 6>>;
+  BlockView K(int k) { return {blocks_.data() + nodes_[k].block, nodes_[k].size, nodes_[k].size}; }
+  CouplingView C(int k) { return {couplings_.data() + 6 * nodes_[k].row, nodes_[k].size, 6}; }
+  ConstCouplingView C(int k) const {
+    return {couplings_.data() + 6 * nodes_[k].row, nodes_[k].size, 6};
+  }
+  CouplingView W(int k) { return {responses_.data() + 6 * nodes_[k].row, nodes_[k].size, 6}; }
+  ConstCouplingView W(int k) const {
+    return {responses_.data() + 6 * nodes_[k].row, nodes_[k].size, 6};
+  }
+  auto Z(int k) const { return z_.segment(nodes_[k].row, nodes_[k].size); }
+  // A node's F_k and Z_k of the extra rows (n x ne; zero off their nodes).
+  BlockView ExtraF(int k) { return {extra_F_.data() + nodes_[k].row * ne_, nodes_[k].size, ne_}; }
+  ConstBlockView ExtraF(int k) const {
+    return {extra_F_.data() + nodes_[k].row * ne_, nodes_[k].size, ne_};
+  }
+  BlockView ExtraZ(int k) { return {extra_Z_.data() + nodes_[k].row * ne_, nodes_[k].size, ne_}; }
+  ConstBlockView ExtraZ(int k) const {
+    return {extra_Z_.data() + nodes_[k].row * ne_, nodes_[k].size, ne_};
+  }
   // Whether node's block has the articulated layout: a parameterized joint's 6 rows first, then
   // rows on the joint speeds only.
   bool FitsArticulatedPivot(const Node& node, int joint) const;
   // Whether node's block is a direct joint's alone: the twist and the joint's rows.
   bool FitsDirectPivot(const Node& node, int joint) const;
   // The node's constraint rows, its last rows: the coupling C is zero above them.
-  static int NumConstraintRows(const Node& node) {
-    return static_cast<int>(node.global.size()) - 6 - node.num_speeds;
-  }
-  // Factorizes one node's block (the articulated pivot where it applies, else the LU).
-  void FactorizeNode(Node& node);
-  // x = K^-1 x with node's factorization.
+  static int NumConstraintRows(const Node& node) { return node.size - 6 - node.num_speeds; }
+  // Factorizes node k's block (the articulated pivot where it applies, else the LU).
+  void FactorizeNode(int k);
+  // x = K^-1 x with node k's factorization.
   template <typename X>
-  static void SolveNode(const Node& node, X& x) {
+  void SolveNode(int k, X& x) const {
+    const Node& node = nodes_[k];
     switch (node.used) {
       case Pivot::kArticulated:
-        node.pivot.SolveInPlace(x);
+        articulated_[node.pivot].SolveInPlace(x);
         break;
       case Pivot::kDirect:
-        node.direct.SolveInPlace(x);
+        direct_[node.pivot].SolveInPlace(x);
         break;
-      case Pivot::kLu:
-        x = node.lu.solve(x);
+      case Pivot::kLu:  // (Eigen's LU solves in place when x is its own right-hand side)
+        x = lu_[k].solve(x);
         break;
     }
   }
-  // The two halves of Solve on scratch_: the forward sweep leaves z = D^-1 L^-1 rhs per node,
+  // The two halves of Solve on z_: the forward sweep leaves z = D^-1 L^-1 rhs per node,
   // the backward one turns z into x.
   void SolveForward(const VecX& rhs) const;
   void SolveBackward(VecX& x) const;
-  // A node's block solve on every column of x.
-  void SolveNodeColumns(const Node& node, MatX& x) const;
+  // Node k's block solve on every column of x.
+  void SolveNodeColumns(int k, Eigen::Ref<MatX> x) const;
   const System& system_;
-  Eigen::Index size_;              // velocities and tree rows: the length of rhs and x
-  std::vector<Node> nodes_;        // in tree order (a node after its parent)
-  std::vector<int> node_of_body_;  // per System body, its node (-1: ground)
-  mutable std::vector<NodeVector> scratch_;
+  Eigen::Index size_;        // velocities and tree rows: the length of rhs and x
+  std::vector<Node> nodes_;  // in tree order (a node after its parent)
+  // The nodes' matrices and factors, apart from the nodes, each kind in one dense array in node
+  // order, so that a sweep walks memory in order: on a long chain they outgrow the cache, and
+  // nodes holding every kind (each sized for the largest block) spread what a solve reads over
+  // 16 kB per node, which the hardware's prefetching does not follow.
+  std::vector<double> blocks_;                       // each node's K, n x n (Node::block)
+  std::vector<double> couplings_;                    // each node's C, n x 6 (Node::row)
+  std::vector<double> responses_;                    // each node's W, n x 6
+  std::vector<Eigen::PartialPivLU<NodeMatrix>> lu_;  // per node, the generic LU (the fallback)
+  std::vector<ArticulatedPivot> articulated_;        // the nodes that fit one (Node::pivot)
+  std::vector<DirectPivot> direct_;                  // likewise
+  std::vector<int> node_of_body_;                    // per System body, its node (-1: ground)
+  mutable VecX z_;                                   // the solves' vector, node by node (Node::row)
+  std::vector<int> global_of_row_;                   // the global index of each of z_'s rows
   // SolveUnitLoadResponses: per node six right-hand sides, and marks of the nodes a call has
   // visited forward (on the source's path) and backward (solved), by call number.
   using NodeBlock = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kMaxNode, 6>;
-  mutable std::vector<NodeBlock> blocks_;
+  mutable std::vector<NodeBlock> unit_blocks_;
   mutable std::vector<long> forward_mark_, backward_mark_;
   mutable std::vector<int> stack_;
   mutable long calls_ = 0;
   // Extra rows (SetExtraRowColumns): the nodes between their columns and ground, leaves first,
-  // and per node (indexed like nodes_, empty off those nodes) F_k and Z_k = K_k^-1 F_k.
+  // and per node (ExtraF, ExtraZ: zero off those nodes) F_k and Z_k = K_k^-1 F_k.
   int ne_ = 0;
   std::vector<int> extra_nodes_;
-  std::vector<MatX> extra_F_, extra_Z_;
+  std::vector<double> extra_F_, extra_Z_;     // F_k, Z_k node by node (at Node::row times ne)
   mutable std::vector<MatX> extra_Y_blocks_;  // ExtraRowResponses' per-node rows
   mutable MatX extra_Y_;
   mutable VecX extra_g_;
