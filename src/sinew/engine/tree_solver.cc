@@ -17,6 +17,7 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
   for (int k : tree_constraints) size_ += constraints[k]->NumEquations();
   const int num_joints = static_cast<int>(system.joints().size());
   std::vector<int> node_of_joint(num_joints, -1), node_of_body(system.num_bodies(), -1);
+  std::vector<std::vector<ColumnRun>> node_runs(system.tree_order().size());
   for (int j : system.tree_order()) {
     const Joint& joint = system.joints()[j];
     Node node;
@@ -74,12 +75,12 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
       }
     }
     // Runs of columns, from the first row's entries (every row maps its columns alike).
-    Placement placement;
-    placement.first_row = first_row;
+    std::vector<ColumnRun>& runs = node_runs[node_of_joint[joint]];
+    const size_t first_run = runs.size();
     for (const Entry& e : entries) {
       if (e.jac_row != 0) break;
-      if (!placement.runs.empty()) {
-        ColumnRun& last = placement.runs.back();
+      if (runs.size() > first_run) {
+        ColumnRun& last = runs.back();
         const bool same_side = (last.col >= 0) == (e.col >= 0);
         const int next = last.col >= 0 ? last.col + last.width : last.col - last.width;
         if (same_side && e.jac_col == last.jac_col + last.width && e.col == next) {
@@ -87,9 +88,8 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
           continue;
         }
       }
-      placement.runs.push_back({e.jac_col, e.col, 1});
+      runs.push_back({k, first_row, constraints[k]->NumEquations(), e.jac_col, e.col, 1});
     }
-    node.placements.push_back(std::move(placement));
     node.entries.push_back(std::move(entries));
   }
   for (int j = 0; j < num_joints; ++j) {
@@ -119,8 +119,13 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
       direct_.emplace_back();
     }
   }
-  for (const Node& node : nodes_)
+  for (size_t k = 0; k < nodes_.size(); ++k) {
+    Node& node = nodes_[k];
     global_of_row_.insert(global_of_row_.end(), node.global.begin(), node.global.end());
+    node.first_run = static_cast<int>(runs_.size());
+    runs_.insert(runs_.end(), node_runs[k].begin(), node_runs[k].end());
+    node.end_run = static_cast<int>(runs_.size());
+  }
   blocks_.assign(block, 0.0);
   couplings_.assign(6 * static_cast<size_t>(rows), 0.0);
   responses_.assign(6 * static_cast<size_t>(rows), 0.0);
@@ -135,30 +140,27 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
     BlockView K = this->K(static_cast<int>(k));
     CouplingView C = this->C(static_cast<int>(k));
     K.topLeftCorner<6, 6>() = mass[node.body];
-    for (size_t i = 0; i < node.constraints.size(); ++i) {
-      const MatX& J = jacobian[node.constraints[i]];
-      const Placement& placement = node.placements[i];
-      const int rows = static_cast<int>(J.rows());
-      for (const ColumnRun& run : placement.runs) {
-        if (rows == 6 && run.width == 6) {
-          // A joint's six rows on a whole twist (the common run), with fixed sizes.
-          const auto block = J.middleCols<6>(run.jac_col);
-          if (run.col >= 0) {
-            K.block<6, 6>(placement.first_row, run.col) = block;
-          } else {
-            C.block<6, 6>(placement.first_row, -1 - run.col) = block;
-          }
-          continue;
-        }
-        const auto block = J.middleCols(run.jac_col, run.width);
+    for (int r = node.first_run; r < node.end_run; ++r) {
+      const ColumnRun& run = runs_[r];
+      const MatX& J = jacobian[run.constraint];
+      if (run.rows == 6 && run.width == 6) {
+        // A joint's six rows on a whole twist (the common run), with fixed sizes.
+        const auto block = J.middleCols<6>(run.jac_col);
         if (run.col >= 0) {
-          // The lower triangle only: the pivots read no more, and the LU fills the upper
-          // triangle from it when it is used (FactorizeNode).
-          K.block(placement.first_row, run.col, rows, run.width) = block;
+          K.block<6, 6>(run.first_row, run.col) = block;
         } else {
-          // Inboard columns run downwards from -1 - col.
-          C.block(placement.first_row, -1 - run.col, rows, run.width) = block;
+          C.block<6, 6>(run.first_row, -1 - run.col) = block;
         }
+        continue;
+      }
+      const auto block = J.middleCols(run.jac_col, run.width);
+      if (run.col >= 0) {
+        // The lower triangle only: the pivots read no more, and the LU fills the upper
+        // triangle from it when it is used (FactorizeNode).
+        K.block(run.first_row, run.col, run.rows, run.width) = block;
+      } else {
+        // Inboard columns run downwards from -1 - col.
+        C.block(run.first_row, -1 - run.col, run.rows, run.width) = block;
       }
     }
   }

@@ -80,13 +80,11 @@ class TreeKktSolver {
     int jac_row, jac_col;
   };
   // Consecutive Jacobian columns of one constraint that land in consecutive local columns (or
-  // inboard body columns): copied into the node block as one block, rows and transpose.
+  // inboard body columns): copied into the node block as one block.
   struct ColumnRun {
+    int constraint;           // its index in System::constraints()
+    int first_row, rows;      // the local rows of the constraint's equations
     int jac_col, col, width;  // col as in Entry
-  };
-  struct Placement {
-    int first_row = 0;  // local row of the constraint's first equation
-    std::vector<ColumnRun> runs;
   };
   // Node blocks never exceed 24 rows (6 twist + 6 speeds + 6 joint rows + 6 coordinate rows):
   // fixed-capacity matrices keep them off the heap.
@@ -110,7 +108,7 @@ class TreeKktSolver {
     std::vector<int> global;  // global index of each local variable
     std::vector<int> constraints;
     std::vector<std::vector<Entry>> entries;  // per constraint: where its J entries go
-    std::vector<Placement> placements;        // the same, by runs of columns
+    int first_run = 0, end_run = 0;           // the same, by runs of columns, in runs_
     int size = 0;                             // n: its unknowns (global.size())
     int row = 0;     // its first row in the node-ordered arrays (the earlier nodes' sizes)
     int block = 0;   // where its K starts in blocks_ (the earlier nodes' n^2)
@@ -185,9 +183,10 @@ class TreeKktSolver {
   std::vector<Eigen::PartialPivLU<NodeMatrix>> lu_;  // per node, the generic LU (the fallback)
   std::vector<ArticulatedPivot> articulated_;        // the nodes that fit one (Node::pivot)
   std::vector<DirectPivot> direct_;                  // likewise
-  std::vector<int> node_of_body_;                    // per System body, its node (-1: ground)
-  mutable VecX z_;                                   // the solves' vector, node by node (Node::row)
-  std::vector<int> global_of_row_;                   // the global index of each of z_'s rows
+  std::vector<ColumnRun> runs_;     // every node's, in node order (Node::first_run)
+  std::vector<int> node_of_body_;   // per System body, its node (-1: ground)
+  mutable VecX z_;                  // the solves' vector, node by node (Node::row)
+  std::vector<int> global_of_row_;  // the global index of each of z_'s rows
   // SolveUnitLoadResponses: per node six right-hand sides, and marks of the nodes a call has
   // visited forward (on the source's path) and backward (solved), by call number.
   using NodeBlock = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kMaxNode, 6>;
