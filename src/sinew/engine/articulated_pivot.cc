@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace sinew::engine {
 namespace {
@@ -69,8 +70,9 @@ bool ArticulatedPivot::Factorize(const Block& K, int nu) {
   small.topRightCorner(nu_, nc_) = K.block(12 + nu_, 6, nc_, nu_).transpose();
   small.bottomLeftCorner(nc_, nu_) = K.block(12 + nu_, 6, nc_, nu_);
   small.bottomRightCorner(nc_, nc_).setZero();
-  small_.compute(small);
-  const auto pivots = small_.matrixLU().diagonal().cwiseAbs();
+  if (!small_) small_ = std::make_unique<Eigen::PartialPivLU<Small>>();
+  small_->compute(small);
+  const auto pivots = small_->matrixLU().diagonal().cwiseAbs();
   return pivots.minCoeff() > kMinPivot * std::max(pivots.maxCoeff(), inertia_scale);
 }
 

@@ -35,6 +35,7 @@
 
 #include <Eigen/LU>
 #include <array>
+#include <memory>
 
 namespace sinew::engine {
 
@@ -79,7 +80,10 @@ class ArticulatedPivot {
   Eigen::Matrix<double, 6, 6> M_ = Eigen::Matrix<double, 6, 6>::Zero();     // M_A
   Eigen::Matrix<double, 6, 6> Jinv_ = Eigen::Matrix<double, 6, 6>::Zero();  // J_B^-1
   Six S_, MS_;                                                              // S and M_A S
-  Eigen::PartialPivLU<Small> small_;                                        // [D N^T; N 0]
+  // [D N^T; N 0]'s LU, made on the first factorization that needs it (a joint with coordinate
+  // rows, or more than 3 speeds): kept apart, as most nodes never use its 1.3 kB, and a long
+  // chain's pivots then fit the cache better.
+  std::unique_ptr<Eigen::PartialPivLU<Small>> small_;
   // Every speed locked or prescribed one by one (a locked joint, e.g. a hung skeleton's pelvis):
   // N is square with one nonzero per row, N(i, locked_speed_[i]) = lock_scale_[i], in distinct
   // columns. Then [D N^T; N 0] is solved without a factorization: u = N^-1 y_mu and
@@ -132,8 +136,8 @@ void ArticulatedPivot::SolveSmallInPlace(Y& y) const {
     for (int i = 0; i < nc_; ++i) y.row(nu_ + i) = u.row(locked_speed_[i]) / lock_scale_[i];
     return;
   }
-  y = small_.permutationP() * y;
-  const Small& LU = small_.matrixLU();
+  y = small_->permutationP() * y;
+  const Small& LU = small_->matrixLU();
   for (int i = 1; i < n; ++i) {
     for (int k = 0; k < i; ++k) y.row(i) -= LU(i, k) * y.row(k);
   }
