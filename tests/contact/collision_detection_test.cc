@@ -198,6 +198,89 @@ TEST(CollisionDetectionTest, EnvelopeReportsTheExactGapOfEveryShape) {
   EXPECT_THROW(CollisionDetector(TwoCylinders(0.05), std::nullopt, {}, -1e-3), Error);
 }
 
+// A box (half extents 0.1, 0.05, 0.1 m) on body 1 and a ground box whose top face is y = 0.
+CollisionModel BoxOnAGroundBox() {
+  CollisionModel model;
+  model.family = {0, 1};
+  CollisionGeometry ground;
+  ground.name = "ground_box";
+  ground.kind = CollisionShapeKind::kBox;
+  ground.body = 0;
+  ground.X_BS = Transform::Translation(Vec3(0, -0.25, 0));
+  ground.half_extents = Vec3(1.0, 0.25, 1.0);
+  CollisionGeometry box = ground;
+  box.name = "box";
+  box.body = 1;
+  box.X_BS = Transform();
+  box.half_extents = Vec3(0.1, 0.05, 0.1);
+  model.geometry = {ground, box};
+  return model;
+}
+
+// The corners (in G) of the box's face y = -0.05 at the pose X_GB, and the contacts' points
+// matched to them: each contact within `tolerance` of a corner carried up (along +y) by half
+// the contact's depth, every contact at a distinct corner.
+void ExpectContactsAtCorners(const std::vector<CollisionContact>& contacts, const Transform& X_GB,
+                             const std::vector<Vec3>& corners_B, double tolerance) {
+  std::vector<bool> used(corners_B.size(), false);
+  for (const CollisionContact& c : contacts) {
+    bool matched = false;
+    for (size_t k = 0; k < corners_B.size() && !matched; ++k) {
+      const Vec3 midway = X_GB * corners_B[k] + 0.5 * c.depth * Vec3::UnitY();
+      if (!used[k] && (c.p_G - midway).norm() < tolerance) used[k] = matched = true;
+    }
+    EXPECT_TRUE(matched) << "a contact at " << c.p_G.transpose() << " at no corner";
+  }
+}
+
+TEST(CollisionDetectionTest, BoxOnABoxTouchesAtTheCornersOfItsFaceByTheirClosedForms) {
+  // Bullet's box-box detector gives a face's points (GJK and EPA alone give one, and a box on
+  // one point tips): four corners flat, two on a tilted box's lowest edge, each with its own
+  // depth, exact to rounding, with or without an envelope (then gaps below it too).
+  const std::vector<Vec3> bottom = {Vec3(0.1, -0.05, 0.1), Vec3(0.1, -0.05, -0.1),
+                                    Vec3(-0.1, -0.05, 0.1), Vec3(-0.1, -0.05, -0.1)};
+  const double theta = 0.1;  // the tilt about z: the edge x = -0.1 lowest
+  const Mat3 R_tilt = Eigen::AngleAxisd(theta, Vec3::UnitZ()).toRotationMatrix();
+  const double lowest = 0.1 * std::sin(theta) + 0.05 * std::cos(theta);  // below the centre
+  const Mat3 R_turn = Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY()).toRotationMatrix();
+  for (const double envelope : {0.0, 2e-3}) {
+    SCOPED_TRACE("envelope " + std::to_string(envelope));
+    const CollisionDetector detector(BoxOnAGroundBox(), std::nullopt, {}, envelope);
+    ASSERT_EQ(detector.num_pairs(), 1);
+    // Each case: the pose, the corners expected to touch, their depth.
+    struct Case {
+      Transform X_GB;
+      std::vector<Vec3> corners;
+      double depth;
+    };
+    std::vector<Case> cases = {
+        {Transform::Translation(Vec3(0.3, 0.05 - 3e-3, -0.2)), bottom, 3e-3},  // flat
+        {Transform(R_turn, Vec3(0, 0.05 - 1e-3, 0)), bottom, 1e-3},            // turned 45 deg
+        {Transform(R_tilt, Vec3(0, lowest - 2e-3, 0)), {bottom[2], bottom[3]}, 2e-3}};  // edge
+    if (envelope > 0.0) {
+      cases.push_back({Transform::Translation(Vec3(0, 0.05 + 1.5e-3, 0)), bottom, -1.5e-3});
+      cases.push_back(
+          {Transform(R_tilt, Vec3(0, lowest + 5e-4, 0)), {bottom[2], bottom[3]}, -5e-4});
+    }
+    for (const Case& k : cases) {
+      const std::vector<CollisionContact> c = Contacts(detector, {Transform(), k.X_GB});
+      ASSERT_EQ(c.size(), k.corners.size());
+      for (const CollisionContact& contact : c) {
+        EXPECT_NEAR(contact.depth, k.depth, 1e-12);
+        // From body1 towards body2: from ground up, or from the box down.
+        const Vec3 up = contact.body1 == 0 ? contact.n_G : Vec3(-contact.n_G);
+        EXPECT_NEAR((up - Vec3::UnitY()).norm(), 0.0, 1e-12);
+        EXPECT_NEAR(contact.radius, kFlatShapeRadius / 2, 1e-15);
+      }
+      ExpectContactsAtCorners(c, k.X_GB, k.corners, 1e-12);
+    }
+    // Beyond the envelope (or just apart without one): nothing.
+    EXPECT_TRUE(Contacts(detector,
+                         {Transform(), Transform::Translation(Vec3(0, 0.05 + envelope + 5e-4, 0))})
+                    .empty());
+  }
+}
+
 TEST(CollisionDetectionTest, SkeletonAtRestTouchesNothingAndNeverItsParents) {
   // The seed's Rajagopal2015 with EnableCollision: no allowed pair of its cylinders overlaps
   // in the default pose (nothing needs leaving out), and none is a parent and its child.

@@ -102,9 +102,9 @@ TEST(SmoothContactTest, SlidingSphereRollsAtFiveSeventhsOfItsSpeed) {
 // A 1 kg box (half extents 0.1, 0.05, 0.1 m) on a plane tilted by `angle` about z (downhill
 // +x cos a - y sin a), material E = 1e8 Pa, nu = 0.3, u = 0.5, e = 0.5, slip speed 1e-3 m/s,
 // through the force element itself (the box on the free body, the incline a ground
-// half-space). Starts at rest on its four corners at their Hertz depth. Returns the downhill
-// speed at 0.5 s and 1 s.
-std::pair<double, double> BoxDownhillSpeeds(double angle, double mu) {
+// half-space, or with `on_box` a ground box whose top face is that plane). Starts at rest on
+// its four corners at their Hertz depth. Returns the downhill speed at 0.5 s and 1 s.
+std::pair<double, double> BoxDownhillSpeeds(double angle, double mu, bool on_box = false) {
   const Vec3 h(0.1, 0.05, 0.1);
   const double m = 1.0;
   const model::ModelSpec spec =
@@ -129,16 +129,24 @@ std::pair<double, double> BoxDownhillSpeeds(double angle, double mu) {
   const Vec3 normal(std::sin(angle), std::cos(angle), 0);
   Mat3 R_GS;
   R_GS << -normal, downhill, Vec3::UnitZ();  // S's x into the solid
-  model.geometry.push_back(
-      {"incline", CollisionShapeKind::kHalfSpace, 0, Transform(R_GS, Vec3::Zero())});
+  if (on_box) {  // 6 m downhill, 2 m across, 1 m thick: S's y along the normal
+    Mat3 R_GF;
+    R_GF << downhill, normal, Vec3::UnitZ();
+    model.geometry.push_back({"incline", CollisionShapeKind::kBox, 0,
+                              Transform(R_GF, -0.5 * normal), 0.0, Vec3(3.0, 0.5, 1.0)});
+  } else {
+    model.geometry.push_back(
+        {"incline", CollisionShapeKind::kHalfSpace, 0, Transform(R_GS, Vec3::Zero())});
+  }
   model.geometry.push_back({"box", CollisionShapeKind::kBox, 1, Transform(), 0.0, h});
   auto detector = std::make_shared<CollisionDetector>(model, std::nullopt);
   system.AddForceElement(std::make_shared<SmoothCollisionForce>(
       "smc", detector, std::vector<double>{0.0, m}, 1e-3,
       std::vector<ContactForce::RecordGroup>{{"box", 1}}, std::vector<ContactForce::PairGroup>{}));
   system.Finalize();
-  const double d =
-      HertzDepth(m * kG * std::cos(angle) / 4.0, SameMaterialModulus(material), kFlatShapeRadius);
+  // Two boxes' radii combine to half a box's (kFlatShapeRadius each).
+  const double d = HertzDepth(m * kG * std::cos(angle) / 4.0, SameMaterialModulus(material),
+                              on_box ? kFlatShapeRadius / 2 : kFlatShapeRadius);
   engine::State state = engine::MakeDefaultState(system);
   const Vec3 p = (h.y() - d) * normal;
   engine::SetCoordinateValue(system, state, "rz", -angle);
@@ -159,23 +167,27 @@ TEST(SmoothContactTest, BoxCreepsBelowTheFrictionAngleAndSlidesAboveIt) {
   // u f_n s / sqrt(s^2 + v_s^2) balances m g sin a, with f_n summing to m g cos a over the
   // corners, at the creep s = v_s tan(a) / sqrt(u^2 - tan(a)^2) (1.06 mm/s here): the creep is
   // bounded by the regularization, and vanishes with v_s.
-  const double below = 20.0 * std::numbers::pi / 180.0;
-  const auto [creep_half, creep] = BoxDownhillSpeeds(below, kMu);
-  const double t = std::tan(below);
-  const double creep_closed = kVs * t / std::sqrt(kMu * kMu - t * t);
-  EXPECT_NEAR(creep, creep_closed, 1e-6 * creep_closed);
-  EXPECT_NEAR(creep_half, creep_closed, 1e-3 * creep_closed);
-  // Above (35 degrees, tan = 0.700): it slides with a = g (sin a - u cos a), less the
-  // regularization's (v_s / v)^2 / 2 < 1e-5 relative at the speeds reached (> 0.3 m/s).
-  const double above = 35.0 * std::numbers::pi / 180.0;
-  const auto [v_half, v_one] = BoxDownhillSpeeds(above, kMu);
-  const double acceleration = (v_one - v_half) / 0.5;
-  const double closed = kG * (std::sin(above) - kMu * std::cos(above));
-  EXPECT_NEAR(acceleration, closed, 1e-5 * closed);
-  std::cout << "SMC incline: creep at 20 deg " << creep << " m/s (closed form " << creep_closed
-            << ", relative error " << creep / creep_closed - 1 << "), acceleration at 35 deg "
-            << acceleration << " m/s^2 (closed form " << closed << ", relative error "
-            << acceleration / closed - 1 << ")\n";
+  // The same on a ground box (Bullet's box-box detector: the face's four corners).
+  for (const bool on_box : {false, true}) {
+    SCOPED_TRACE(on_box ? "on a ground box" : "on a half-space");
+    const double below = 20.0 * std::numbers::pi / 180.0;
+    const auto [creep_half, creep] = BoxDownhillSpeeds(below, kMu, on_box);
+    const double t = std::tan(below);
+    const double creep_closed = kVs * t / std::sqrt(kMu * kMu - t * t);
+    EXPECT_NEAR(creep, creep_closed, 1e-6 * creep_closed);
+    EXPECT_NEAR(creep_half, creep_closed, 1e-3 * creep_closed);
+    // Above (35 degrees, tan = 0.700): it slides with a = g (sin a - u cos a), less the
+    // regularization's (v_s / v)^2 / 2 < 1e-5 relative at the speeds reached (> 0.3 m/s).
+    const double above = 35.0 * std::numbers::pi / 180.0;
+    const auto [v_half, v_one] = BoxDownhillSpeeds(above, kMu, on_box);
+    const double acceleration = (v_one - v_half) / 0.5;
+    const double closed = kG * (std::sin(above) - kMu * std::cos(above));
+    EXPECT_NEAR(acceleration, closed, 1e-5 * closed);
+    std::cout << "SMC incline: creep at 20 deg " << creep << " m/s (closed form " << creep_closed
+              << ", relative error " << creep / creep_closed - 1 << "), acceleration at 35 deg "
+              << acceleration << " m/s^2 (closed form " << closed << ", relative error "
+              << acceleration / closed - 1 << ")" << (on_box ? " on a ground box" : "") << "\n";
+  }
 }
 
 }  // namespace

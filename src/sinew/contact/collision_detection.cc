@@ -1,3 +1,4 @@
+#include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
@@ -55,6 +56,7 @@ struct Shape {
   int material = 0;
   // Bullet's shape, inflated by half the envelope (its margin) for GJK; null for a half-space.
   std::unique_ptr<btConvexShape> bt;
+  std::unique_ptr<btBoxShape> exact_box;     // kBox: the box itself, no margin (box-box contact)
   std::vector<Vec3> hull;                    // kHull, kTriangleMesh: its distinct points, in S
   std::unique_ptr<BulletTriangleMesh> mesh;  // kTriangleMesh (bt is its convex hull)
   MeshPairSide mesh_side;                    // kTriangleMesh: for MeshPairHull
@@ -163,6 +165,8 @@ Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
       s.radius = kFlatShapeRadius;
       s.reach = g.half_extents.norm();
       s.bt = Inflated<btBoxShape>(g.half_extents, inflation);
+      s.exact_box = std::make_unique<btBoxShape>(ToBt(g.half_extents));
+      s.exact_box->setMargin(0.0);
       break;
     case CollisionShapeKind::kHalfSpace:
       s.kind = Kind::kHalfSpace;
@@ -313,6 +317,20 @@ bool SeparatedAlong(const Vec3& d, const btConvexShape& A, const btTransform& X_
   return n.dot(a) < n.dot(b);
 }
 
+// What Bullet's box-box detector reports: up to four points on B, each with B's normal (towards
+// A) and Bullet's distance (negative: an overlap).
+struct BoxBoxPoints final : btDiscreteCollisionDetectorInterface::Result {
+  std::array<BulletOverlap, 4> found;
+  int count = 0;
+  void setShapeIdentifiersA(int, int) override {}
+  void setShapeIdentifiersB(int, int) override {}
+  void addContactPoint(const btVector3& normal_on_B, const btVector3& point_on_B,
+                       btScalar distance) override {
+    if (count < static_cast<int>(found.size()))
+      found[count++] = {normal_on_B, point_on_B, distance};
+  }
+};
+
 // Added to the bounding tests by reach (m), so that rounding in them never drops a contact.
 constexpr double kReachSlack = 1e-9;
 
@@ -343,6 +361,10 @@ struct CollisionDetector::Impl {
   // Bullet's deepest contact of the convex shapes p.i and p.j, if they overlap.
   template <class Visit>
   void CollideConvex(const Pair& p, const std::vector<Transform>& X_GS, Visit&& visit) const;
+  // The contacts of two boxes (after CollideConvex's bounding tests): a face's points.
+  template <class Visit>
+  void CollideBoxes(const Pair& p, const btTransform& X_GA, const btTransform& X_GB,
+                    Visit&& visit) const;
   // The contacts of the convex shape p.j with the triangles of the mesh p.i.
   template <class Visit>
   void CollideWithMesh(const Pair& p, const std::vector<Transform>& X_GS, Visit&& visit) const;
@@ -522,6 +544,7 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   b.bt->getAabb(X_GBs, min_b, max_b);
   if (!TestAabbAgainstAabb2(min_a, max_a, min_b, max_b)) return;
   if (axis.squaredNorm() > 0.0 && SeparatedAlong(axis, *a.bt, X_GA, *b.bt, X_GBs)) return;
+  if (a.kind == Kind::kBox && b.kind == Kind::kBox) return CollideBoxes(p, X_GA, X_GBs, visit);
   // Narrow phase: GJK, and EPA for the penetration.
   CollisionContact c;
   if (!Penetrate(a.bt.get(), X_GA, b.bt.get(), X_GBs, envelope, c)) return;
@@ -530,6 +553,46 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   c.radius = p.radius;
   c.material = p.material;
   visit(c);
+}
+
+// Bullet's box-box detector (ODE's, btBoxBoxDetector) on the boxes themselves: the points of
+// the incident face within the reference face (up to four; one for an edge against an edge),
+// each with its depth along the detector's normal. Within the envelope but apart, B is first
+// carried towards A by the envelope along the normal GJK finds; a translation t changes every
+// point's depth along a unit m by t . m, so subtracting that gives each point's true depth
+// (exact), and the points go back with B.
+template <class Visit>
+void CollisionDetector::Impl::CollideBoxes(const Pair& p, const btTransform& X_GA,
+                                           const btTransform& X_GB, Visit&& visit) const {
+  const Shape& a = shapes[p.i];
+  const Shape& b = shapes[p.j];
+  CollisionContact c;
+  c.body1 = b.body;
+  c.body2 = a.body;
+  c.radius = p.radius;
+  c.material = p.material;
+  Vec3 shift = Vec3::Zero();
+  btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+  input.m_transformA = X_GA;
+  input.m_transformB = X_GB;
+  if (envelope > 0.0) {
+    if (!Penetrate(a.bt.get(), X_GA, b.bt.get(), X_GB, envelope, c)) return;
+    shift = envelope * c.n_G;
+    input.m_transformB.getOrigin() += ToBt(shift);
+  }
+  BoxBoxPoints points;
+  btBoxBoxDetector detector(a.exact_box.get(), b.exact_box.get());
+  detector.getClosestPoints(input, points, nullptr);
+  // Carried together, the boxes touch unless GJK's gap was the whole envelope (to rounding):
+  // then GJK's own contact.
+  if (points.count == 0 && envelope > 0.0) return visit(c);
+  for (int k = 0; k < points.count; ++k) {
+    c.n_G = FromBt(points.found[k].normal_on_B);
+    c.depth = -points.found[k].distance - shift.dot(c.n_G);
+    if (!(c.depth > -envelope)) continue;
+    c.p_G = FromBt(points.found[k].point_on_B) - shift - 0.5 * c.depth * c.n_G;
+    visit(c);
+  }
 }
 
 template <class Visit>

@@ -4,10 +4,11 @@
 // through Bullet's collision library. Broad phase, cheapest first, each test conservative (it
 // drops only pairs that cannot touch): a ball about each shape, the gap between two cylinders'
 // axes, Bullet's bounding boxes, and one candidate separating axis (the shapes' support points
-// along it). Narrow phase: GJK/EPA between convex shapes and between a convex shape and each
-// triangle of a mesh near it (found through the mesh's btBvhTriangleMeshShape, in the mesh's
-// current pose), and the shapes' support vertices against half-spaces (what Bullet's
-// convex-plane algorithm does; several points per pair for boxes, cylinders, hulls and meshes).
+// along it). Narrow phase: GJK/EPA between convex shapes (Bullet's box-box detector between two
+// boxes: a face's points) and between a convex shape and each triangle of a mesh near it (found
+// through the mesh's btBvhTriangleMeshShape, in the mesh's current pose), and the shapes'
+// support vertices against half-spaces (what Bullet's convex-plane algorithm does; several
+// points per pair for boxes, cylinders, hulls and meshes).
 // Of two meshes, one collides as its convex hull against the other's triangles (MeshPairHull:
 // exact when it is closed and convex).
 // Stateless per query (no contact caching), so one detector can be shared by threads and by the
@@ -67,7 +68,8 @@ class CollisionDetector {
   CollisionDetector& operator=(const CollisionDetector&) = delete;
 
   /// Calls `visit` for every contact at the body poses `X_GB` (one per body, ground first):
-  /// one point per pair of convex shapes (Bullet's deepest point); against a half-space, a
+  /// one point per pair of convex shapes (Bullet's deepest point), except two boxes: the points
+  /// of a face in contact, up to four (Bullet's box-box detector); against a half-space, a
   /// sphere's or an ellipsoid's deepest point, each of a cylinder's two cap rims' deepest
   /// points and each box corner, hull or mesh vertex that lies inside it; against a triangle
   /// mesh (kTriangleMesh, fixed or moving), one point per local extreme of the overlap over its
