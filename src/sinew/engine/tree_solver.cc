@@ -18,17 +18,21 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
   const int num_joints = static_cast<int>(system.joints().size());
   std::vector<int> node_of_joint(num_joints, -1), node_of_body(system.num_bodies(), -1);
   std::vector<std::vector<ColumnRun>> node_runs(system.tree_order().size());
+  // Each node's global indices as they are found (flattened into global_of_row_ below).
+  std::vector<std::vector<int>> node_global;
   for (int j : system.tree_order()) {
     const Joint& joint = system.joints()[j];
     Node node;
     node.body = system.IsReversed(j) ? joint.parent : joint.child;
     const int inboard = system.IsReversed(j) ? joint.child : joint.parent;
     node.parent = inboard == 0 ? -1 : node_of_body[inboard];
-    for (int i = 0; i < 6; ++i) node.global.push_back(body_columns[node.body] + i);
+    std::vector<int>& global = node_global.emplace_back();
+    for (int i = 0; i < 6; ++i) global.push_back(body_columns[node.body] + i);
     for (int c : joint.coordinates) {
-      if (system.IsIntegrated(c)) node.global.push_back(speed_columns[c]);
+      if (system.IsIntegrated(c)) global.push_back(speed_columns[c]);
     }
-    node.num_speeds = static_cast<int>(node.global.size()) - 6;
+    node.num_speeds = static_cast<int>(global.size()) - 6;
+    node.size = static_cast<int>(global.size());
     node_of_joint[j] = static_cast<int>(nodes_.size());
     node_of_body[node.body] = node_of_joint[j];
     nodes_.push_back(std::move(node));
@@ -48,11 +52,13 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
     }
     if (node_of_joint[joint] < 0) throw Error("engine: TreeKktSolver cannot take loop joints");
     Node& node = nodes_[node_of_joint[joint]];
+    std::vector<int>& global = node_global[node_of_joint[joint]];
     node.constraints.push_back(k);
-    const int first_row = static_cast<int>(node.global.size());
+    const int first_row = static_cast<int>(global.size());
     for (int r = 0; r < constraints[k]->NumEquations(); ++r) {
-      node.global.push_back(nv + equation_rows[k] + r);
+      global.push_back(nv + equation_rows[k] + r);
     }
+    node.size = static_cast<int>(global.size());
     const int inboard = node.parent < 0 ? 0 : nodes_[node.parent].body;
     std::vector<Entry> entries;
     for (int r = 0; r < constraints[k]->NumEquations(); ++r) {
@@ -62,7 +68,7 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
         Entry e{first_row + r, 0, r, static_cast<int>(jc)};
         int local = -1;
         for (int i = 0; i < first_row; ++i) {
-          if (node.global[i] == g) local = i;
+          if (global[i] == g) local = i;
         }
         if (local >= 0) {
           e.col = local;
@@ -104,9 +110,8 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
   lu_.resize(nodes_.size());
   int rows = 0, block = 0;
   for (Node& node : nodes_) {
-    const int n = static_cast<int>(node.global.size());
+    const int n = node.size;
     if (n > kMaxNode) throw Error("engine: a joint block is too large for the tree solver");
-    node.size = n;
     node.row = rows;
     node.block = block;
     rows += n;
@@ -121,7 +126,7 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
   }
   for (size_t k = 0; k < nodes_.size(); ++k) {
     Node& node = nodes_[k];
-    global_of_row_.insert(global_of_row_.end(), node.global.begin(), node.global.end());
+    global_of_row_.insert(global_of_row_.end(), node_global[k].begin(), node_global[k].end());
     node.first_run = static_cast<int>(runs_.size());
     runs_.insert(runs_.end(), node_runs[k].begin(), node_runs[k].end());
     node.end_run = static_cast<int>(runs_.size());
@@ -210,7 +215,7 @@ bool TreeKktSolver::FitsArticulatedPivot(const Node& node, int joint) const {
       node.constraints[0] != joint || constraints[joint]->NumEquations() != 6) {
     return false;
   }
-  const int num_rows = static_cast<int>(node.global.size()) - 12 - node.num_speeds;
+  const int num_rows = node.size - 12 - node.num_speeds;
   if (num_rows < 0 || (node.num_speeds == 0 && num_rows > 0)) return false;
   for (size_t i = 1; i < node.constraints.size(); ++i) {
     for (const Entry& e : node.entries[i]) {
@@ -397,7 +402,7 @@ void TreeKktSolver::SetExtraRowColumns(int ne, const std::vector<int>& columns) 
   ne_ = ne;
   std::vector<int> node_of_global;
   for (size_t k = 0; k < nodes_.size(); ++k) {
-    for (int g : nodes_[k].global) {
+    for (int g : Global(static_cast<int>(k))) {
       if (g >= static_cast<int>(node_of_global.size())) node_of_global.resize(g + 1, -1);
       node_of_global[g] = static_cast<int>(k);
     }
@@ -434,7 +439,8 @@ void TreeKktSolver::FactorizeExtraRows(const MatX& G, MatX& S) {
     const Node& node = nodes_[k];
     BlockView F = ExtraF(k);
     F.setZero();
-    for (int i = 0; i < 6 + node.num_speeds; ++i) F.row(i) = G.col(node.global[i]).transpose();
+    const std::span<const int> global = Global(k);
+    for (int i = 0; i < 6 + node.num_speeds; ++i) F.row(i) = G.col(global[i]).transpose();
   }
   // Leaves first, as Solve's forward sweep: Z_k = K_k^-1 F_k, the parent's twist rows of F lose
   // C^T Z_k (C is zero above the constraint rows).
@@ -478,7 +484,8 @@ const MatX& TreeKktSolver::ExtraRowResponses() const {
     Y = ExtraZ(static_cast<int>(k));  // zero off the extra rows' nodes
     if (node.parent >= 0)
       Y.noalias() -= W(static_cast<int>(k)).lazyProduct(extra_Y_blocks_[node.parent].topRows<6>());
-    for (size_t i = 0; i < node.global.size(); ++i) extra_Y_.row(node.global[i]) = Y.row(i);
+    const std::span<const int> global = Global(static_cast<int>(k));
+    for (size_t i = 0; i < global.size(); ++i) extra_Y_.row(global[i]) = Y.row(i);
   }
   extra_Y_current_ = true;
   return extra_Y_;

@@ -11,6 +11,7 @@
 #include <sinew/math/types.h>
 
 #include <Eigen/LU>
+#include <span>
 #include <vector>
 
 namespace sinew::engine {
@@ -105,11 +106,10 @@ class TreeKktSolver {
     int num_speeds = 0;       // joint speeds among the unknowns (after the 6 twist entries)
     Pivot fits = Pivot::kLu;  // the closed form the block's layout allows (at construction)
     Pivot used = Pivot::kLu;  // what the last Factorize used
-    std::vector<int> global;  // global index of each local variable
     std::vector<int> constraints;
     std::vector<std::vector<Entry>> entries;  // per constraint: where its J entries go
     int first_run = 0, end_run = 0;           // the same, by runs of columns, in runs_
-    int size = 0;                             // n: its unknowns (global.size())
+    int size = 0;                             // n: its unknowns
     int row = 0;     // its first row in the node-ordered arrays (the earlier nodes' sizes)
     int block = 0;   // where its K starts in blocks_ (the earlier nodes' n^2)
     int pivot = -1;  // its closed-form pivot in articulated_ or direct_ (by `fits`), or -1
@@ -187,6 +187,10 @@ class TreeKktSolver {
   std::vector<int> node_of_body_;   // per System body, its node (-1: ground)
   mutable VecX z_;                  // the solves' vector, node by node (Node::row)
   std::vector<int> global_of_row_;  // the global index of each of z_'s rows
+  // Node k's part of global_of_row_: the global index of each of its local unknowns.
+  std::span<const int> Global(int k) const {
+    return {global_of_row_.data() + nodes_[k].row, static_cast<size_t>(nodes_[k].size)};
+  }
   // SolveUnitLoadResponses: per node six right-hand sides, and marks of the nodes a call has
   // visited forward (on the source's path) and backward (solved), by call number.
   using NodeBlock = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kMaxNode, 6>;
