@@ -87,6 +87,16 @@ Mat3 Rotation(double angle, const Vec3& axis) {
   return Eigen::AngleAxisd(angle, axis).toRotationMatrix();
 }
 
+// The scene with its floor (the ground half-space y < 0) replaced by a ground box whose top face
+// is y = 0 (4 m by 4 m, 1 m thick).
+void PutOnAGroundBox(Scene& scene) {
+  CollisionGeometry& floor = scene.model.geometry[0];
+  ASSERT_EQ(floor.kind, CollisionShapeKind::kHalfSpace);
+  floor.kind = CollisionShapeKind::kBox;
+  floor.X_BS = Transform::Translation(Vec3(0, -0.5, 0));
+  floor.half_extents = Vec3(2.0, 0.5, 2.0);
+}
+
 TEST(CollisionShapesTest, DepthsOnAPlaneAreTheClosedForms) {
   // The lowest point of each shape 5 mm below the floor: depth 5 mm, exactly (support points).
   constexpr double kDepth = 5e-3, kR = 0.1;
@@ -130,6 +140,51 @@ TEST(CollisionShapesTest, DepthsOnAPlaneAreTheClosedForms) {
   for (const CollisionContact& k : c) EXPECT_NEAR(k.depth, kDepth, 1e-15);
 }
 
+TEST(CollisionShapesTest, ShapesOnABoxFaceTouchAsOnAPlane) {
+  // The same shapes 5 mm into the top face of a ground box: the points that would touch a plane
+  // there and lie over the face, each at its depth through the face (GJK and EPA alone give one
+  // point, to EPA's 1e-6 m, and a cylinder lying on one point rocks); over the face's edge only
+  // the part over the face. With an envelope of 2 mm, 1 mm above: the gaps.
+  constexpr double kDepth = 5e-3, kR = 0.1;
+  Scene cylinder = Parse(OneShapeModel(1, Vec3::Ones(), Vec3::Zero(), Cylinder(kR)));
+  PutOnAGroundBox(cylinder);
+  const auto expect_rims = [&](const std::vector<CollisionContact>& c, double depth, double x) {
+    ASSERT_EQ(c.size(), 2u);
+    for (const CollisionContact& k : c) {
+      EXPECT_NEAR(k.depth, depth, 1e-15);
+      const Vec3 up = k.body1 == 0 ? k.n_G : Vec3(-k.n_G);
+      EXPECT_EQ(up, Vec3::UnitY());
+      EXPECT_NEAR(k.p_G.y(), -depth / 2, 1e-15);
+      EXPECT_NEAR(k.p_G.x(), x, 1e-15);
+      EXPECT_NEAR(std::abs(k.p_G.z()), 2 * kR, 1e-15);  // one at each end
+    }
+  };
+  expect_rims(ContactsAt(cylinder.model, Transform::Translation(Vec3(0.3, kR - kDepth, 0))), kDepth,
+              0.3);
+  const CollisionDetector enveloped(cylinder.model, std::nullopt, {}, 2e-3);
+  std::vector<CollisionContact> c;
+  enveloped.FindContacts({Transform(), Transform::Translation(Vec3(0.3, kR + 1e-3, 0))},
+                         [&](const CollisionContact& k) { c.push_back(k); });
+  expect_rims(c, -1e-3, 0.3);
+  // Turned about y so that one end lies past the face's edge x = 2 (the other over the face):
+  // that end's rim only.
+  const Mat3 along_x = Rotation(std::numbers::pi / 2, Vec3::UnitY());  // its axis z onto x
+  c = ContactsAt(cylinder.model, Transform(along_x, Vec3(2.0, kR - kDepth, 0)));
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_NEAR(c[0].depth, kDepth, 1e-15);
+  EXPECT_NEAR(c[0].p_G.x(), 2.0 - 2 * kR, 1e-15);
+  // Ellipsoid (0.1, 0.2, 0.3) turned 30 degrees about z: one point, its exact depth.
+  const Vec3 radii(0.1, 0.2, 0.3);
+  Scene ellipsoid = Parse(OneShapeModel(1, Vec3::Ones(), Vec3::Zero(), Ellipsoid(radii)));
+  PutOnAGroundBox(ellipsoid);
+  const double angle = std::numbers::pi / 6;
+  const double half_height = std::hypot(radii.x() * std::sin(angle), radii.y() * std::cos(angle));
+  c = ContactsAt(ellipsoid.model,
+                 Transform(Rotation(angle, Vec3::UnitZ()), Vec3(0, half_height - kDepth, 0)));
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_NEAR(c[0].depth, kDepth, 1e-15);
+}
+
 TEST(CollisionShapesTest, ShapesMeetEachOtherThroughGjk) {
   // Two shapes against each other (GJK/EPA): an ellipsoid (0.1, 0.2, 0.3) fixed to ground
   // 5 mm into the top face of the cube mesh (y = 0.1) from above, its b axis vertical: one
@@ -162,29 +217,36 @@ TEST(CollisionShapesTest, CylinderRestsOnItsRadiusAndRollsDownAnInclineAtTwoThir
   // downhill is +x) with mu = 0.5 > tan(a) / 3 it rolls without slipping at
   // a = g sin(a) / (1 + I / (m r^2)) = 2/3 g sin(a), from rest: exactly per step (each step's
   // impulses are the continuous law's over the step), to the solver's tolerance.
+  // The same on a ground box's top face (its two rims, as on the plane).
   constexpr double kM = 1.0, kR = 0.1, kL = 4 * kR;
   const Vec3 inertia(kM * (3 * kR * kR + kL * kL) / 12, kM * (3 * kR * kR + kL * kL) / 12,
                      kM * kR * kR / 2);
-  Scene level = Parse(OneShapeModel(kM, inertia, Vec3(0, -kG, 0), Cylinder(kR)));
-  engine::SetCoordinateValue(*level.system, level.state, "ty", kR + 0.01);
-  RunNsc(level, 0.5, 0.5);
-  EXPECT_NEAR(level.state.bodies[1].p_GB.y(), kR, 1e-9);
-  EXPECT_NEAR(level.state.bodies[1].v_GB.norm(), 0.0, 1e-9);
-  const double a = 20.0 * std::numbers::pi / 180.0;
-  Scene incline =
-      Parse(OneShapeModel(kM, inertia, kG * Vec3(std::sin(a), -std::cos(a), 0), Cylinder(kR)));
-  engine::SetCoordinateValue(*incline.system, incline.state, "ty", kR);
-  constexpr double kT = 0.5;
-  RunNsc(incline, 0.5, kT);
-  const engine::BodyState& body = incline.state.bodies[1];
-  const double closed = 2.0 / 3.0 * kG * std::sin(a) * kT;
-  EXPECT_NEAR(body.v_GB.x(), closed, 1e-9 * closed);
-  EXPECT_NEAR(body.v_GB.x() + body.w_GB.z() * kR, 0.0, 1e-9);  // rolls: no slip
-  EXPECT_NEAR(body.p_GB.y(), kR, 1e-9);
-  std::cout << "cylinder: rests at " << level.state.bodies[1].p_GB.y() << " m (r = " << kR
-            << "); rolls at " << body.v_GB.x() << " m/s after " << kT << " s (closed form "
-            << closed << ", relative " << body.v_GB.x() / closed - 1 << "), slip "
-            << body.v_GB.x() + body.w_GB.z() * kR << " m/s\n";
+  for (const bool on_box : {false, true}) {
+    SCOPED_TRACE(on_box ? "on a ground box" : "on the floor");
+    Scene level = Parse(OneShapeModel(kM, inertia, Vec3(0, -kG, 0), Cylinder(kR)));
+    if (on_box) PutOnAGroundBox(level);
+    engine::SetCoordinateValue(*level.system, level.state, "ty", kR + 0.01);
+    RunNsc(level, 0.5, 0.5);
+    EXPECT_NEAR(level.state.bodies[1].p_GB.y(), kR, 1e-9);
+    EXPECT_NEAR(level.state.bodies[1].v_GB.norm(), 0.0, 1e-9);
+    const double a = 20.0 * std::numbers::pi / 180.0;
+    Scene incline =
+        Parse(OneShapeModel(kM, inertia, kG * Vec3(std::sin(a), -std::cos(a), 0), Cylinder(kR)));
+    if (on_box) PutOnAGroundBox(incline);
+    engine::SetCoordinateValue(*incline.system, incline.state, "ty", kR);
+    constexpr double kT = 0.5;
+    RunNsc(incline, 0.5, kT);
+    const engine::BodyState& body = incline.state.bodies[1];
+    const double closed = 2.0 / 3.0 * kG * std::sin(a) * kT;
+    EXPECT_NEAR(body.v_GB.x(), closed, 1e-9 * closed);
+    EXPECT_NEAR(body.v_GB.x() + body.w_GB.z() * kR, 0.0, 1e-9);  // rolls: no slip
+    EXPECT_NEAR(body.p_GB.y(), kR, 1e-9);
+    std::cout << "cylinder: rests at " << level.state.bodies[1].p_GB.y() << " m (r = " << kR
+              << "); rolls at " << body.v_GB.x() << " m/s after " << kT << " s (closed form "
+              << closed << ", relative " << body.v_GB.x() / closed - 1 << "), slip "
+              << body.v_GB.x() + body.w_GB.z() * kR << " m/s"
+              << (on_box ? " (on a ground box)" : "") << "\n";
+  }
 }
 
 TEST(CollisionShapesTest, EllipsoidRestsOnEachSemiAxisAndCubeMeshOnHalfItsEdge) {

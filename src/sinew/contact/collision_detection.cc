@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace sinew::contact {
@@ -331,6 +332,10 @@ struct BoxBoxPoints final : btDiscreteCollisionDetectorInterface::Result {
   }
 };
 
+// How far EPA's depth may lie from the exact one on curved shapes (m): Bullet's EPA stops at its
+// vertex limit there (CollisionDetectionTest measures about 1e-6).
+constexpr double kEpaAccuracy = 1e-5;
+
 // Added to the bounding tests by reach (m), so that rounding in them never drops a contact.
 constexpr double kReachSlack = 1e-9;
 
@@ -361,6 +366,11 @@ struct CollisionDetector::Impl {
   // Bullet's deepest contact of the convex shapes p.i and p.j, if they overlap.
   template <class Visit>
   void CollideConvex(const Pair& p, const std::vector<Transform>& X_GS, Visit&& visit) const;
+  // The contacts of a convex shape on a box's face, given Bullet's one (CollideConvex).
+  template <class Visit>
+  bool CollideOnBoxFace(const Shape& box, const Transform& X_GX, const Shape& s,
+                        const Transform& X_GS, const CollisionContact& bullet, double sign,
+                        Visit&& visit) const;
   // The contacts of two boxes (after CollideConvex's bounding tests): a face's points.
   template <class Visit>
   void CollideBoxes(const Pair& p, const btTransform& X_GA, const btTransform& X_GB,
@@ -552,7 +562,57 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   c.body2 = a.body;
   c.radius = p.radius;
   c.material = p.material;
+  if (a.kind == Kind::kBox && b.kind != Kind::kBox) {
+    if (CollideOnBoxFace(a, X_GSa, b, X_GSb, c, -1.0, visit)) return;
+  } else if (b.kind == Kind::kBox && a.kind != Kind::kBox) {
+    if (CollideOnBoxFace(b, X_GSb, a, X_GSa, c, 1.0, visit)) return;
+  }
   visit(c);
+}
+
+// A convex shape s (pose X_GS) on a face of `box` (pose X_GX), given Bullet's contact of the
+// pair (one point): the face is the one Bullet's normal leaves the box through; s's points
+// that can lie deepest through that face's plane (ForEachCandidate, as against a half-space)
+// that are over the face and nearer it than any other face of the box are its contacts, each at
+// its depth through the plane along the face's normal (exact), when the deepest of them is as
+// deep as Bullet's contact to EPA's accuracy (the contact is on the face, not at an edge or a
+// corner of the box). `sign`: +1 when Bullet's normal points out of the box, -1 into it. False
+// (nothing visited) otherwise.
+template <class Visit>
+bool CollisionDetector::Impl::CollideOnBoxFace(const Shape& box, const Transform& X_GX,
+                                               const Shape& s, const Transform& X_GS,
+                                               const CollisionContact& bullet, double sign,
+                                               Visit&& visit) const {
+  const Vec3 h = FromBt(static_cast<const btBoxShape&>(*box.bt).getHalfExtentsWithoutMargin());
+  const Vec3 n_X = X_GX.R.transpose() * (sign * bullet.n_G);  // out of the box, in its frame
+  int axis = 0;
+  n_X.cwiseAbs().maxCoeff(&axis);
+  const double side = n_X[axis] > 0.0 ? 1.0 : -1.0;
+  const Vec3 face_G = side * X_GX.R.col(axis);  // the face's outward normal
+  std::array<CollisionContact, 8> found;
+  int count = 0;
+  double deepest = -std::numeric_limits<double>::infinity();
+  ForEachCandidate(s, X_GS.R.transpose() * -face_G, [&](const Vec3& p_S) {
+    const Vec3 p_G = X_GS * p_S;
+    const Vec3 p_X = X_GX.R.transpose() * (p_G - X_GX.p);
+    const double depth = h[axis] - side * p_X[axis];
+    if (!(depth > -envelope)) return;
+    for (int j = 0; j < 3; ++j) {
+      if (j == axis) continue;
+      const double to_side = h[j] - std::abs(p_X[j]);  // from the box's side face j, inside
+      if (to_side < 0.0 || (depth > 0.0 && to_side < depth)) return;
+    }
+    deepest = std::max(deepest, depth);
+    if (count == static_cast<int>(found.size())) return;
+    CollisionContact& c = found[count++];
+    c = bullet;
+    c.n_G = sign * face_G;  // Bullet's orientation (body1 towards body2)
+    c.depth = depth;
+    c.p_G = p_G + 0.5 * depth * face_G;
+  });
+  if (count == 0 || !(std::abs(deepest - bullet.depth) <= kEpaAccuracy)) return false;
+  for (int k = 0; k < count; ++k) visit(found[k]);
+  return true;
 }
 
 // Bullet's box-box detector (ODE's, btBoxBoxDetector) on the boxes themselves: the points of

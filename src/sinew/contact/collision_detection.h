@@ -69,7 +69,9 @@ class CollisionDetector {
 
   /// Calls `visit` for every contact at the body poses `X_GB` (one per body, ground first):
   /// one point per pair of convex shapes (Bullet's deepest point), except two boxes: the points
-  /// of a face in contact, up to four (Bullet's box-box detector); against a half-space, a
+  /// of a face in contact, up to four (Bullet's box-box detector), and a shape on a box's face
+  /// (Bullet's point on the face): its points there, as against a half-space on that face but
+  /// over the face only; against a half-space, a
   /// sphere's or an ellipsoid's deepest point, each of a cylinder's two cap rims' deepest
   /// points and each box corner, hull or mesh vertex that lies inside it; against a triangle
   /// mesh (kTriangleMesh, fixed or moving), one point per local extreme of the overlap over its
