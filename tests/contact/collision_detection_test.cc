@@ -136,16 +136,17 @@ TEST(CollisionDetectionTest, SphereRestsOnAnEnvironmentBoxAndItsFloorByTheirClos
   ASSERT_EQ(model.geometry.size(), 3u);  // floor, sphere, step
   const CollisionDetector detector(model, std::nullopt);
   // The ball's centre 0.08 m above the step's top: 0.02 m into it, normal +y (from ground's
-  // box to the ball), the point midway through the overlap. GJK treats the sphere as its
-  // centre with a margin, so the depth is exact to rounding.
+  // box to the ball), the point midway through the overlap. On the box's face the ball
+  // touches as on a plane there: its lowest point, at its depth through the face, exact to
+  // rounding, with its own radius (the face is flat).
   std::vector<Transform> X_GB = {Transform(), Transform::Translation(Vec3(0.1, 0.58, 0))};
   std::vector<CollisionContact> c = Contacts(detector, X_GB);
   ASSERT_EQ(c.size(), 1u);
   EXPECT_EQ(c[0].body1, 0);
-  EXPECT_NEAR(c[0].depth, 0.02, 1e-9);
-  EXPECT_NEAR((c[0].n_G - Vec3::UnitY()).norm(), 0.0, 1e-9);
-  EXPECT_NEAR(c[0].p_G.y(), 0.49, 1e-9);
-  EXPECT_NEAR(c[0].radius, 0.1 * kFlatShapeRadius / (0.1 + kFlatShapeRadius), 1e-15);
+  EXPECT_NEAR(c[0].depth, 0.02, 1e-15);
+  EXPECT_EQ(c[0].n_G, Vec3::UnitY());
+  EXPECT_NEAR(c[0].p_G.y(), 0.49, 1e-15);
+  EXPECT_EQ(c[0].radius, 0.1);
   // Beside the step, 0.005 m into the floor: the floor's contact only, exact.
   X_GB[1] = Transform::Translation(Vec3(2, 0.095, 0));
   c = Contacts(detector, X_GB);
@@ -270,7 +271,7 @@ TEST(CollisionDetectionTest, BoxOnABoxTouchesAtTheCornersOfItsFaceByTheirClosedF
         // From body1 towards body2: from ground up, or from the box down.
         const Vec3 up = contact.body1 == 0 ? contact.n_G : Vec3(-contact.n_G);
         EXPECT_NEAR((up - Vec3::UnitY()).norm(), 0.0, 1e-12);
-        EXPECT_NEAR(contact.radius, kFlatShapeRadius / 2, 1e-15);
+        EXPECT_EQ(contact.radius, kFlatShapeRadius);  // as a box's corners on a plane
       }
       ExpectContactsAtCorners(c, k.X_GB, k.corners, 1e-12);
     }

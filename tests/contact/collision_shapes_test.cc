@@ -157,6 +157,7 @@ TEST(CollisionShapesTest, ShapesOnABoxFaceTouchAsOnAPlane) {
       EXPECT_NEAR(k.p_G.y(), -depth / 2, 1e-15);
       EXPECT_NEAR(k.p_G.x(), x, 1e-15);
       EXPECT_NEAR(std::abs(k.p_G.z()), 2 * kR, 1e-15);  // one at each end
+      EXPECT_EQ(k.radius, kR);                          // the face is flat
     }
   };
   expect_rims(ContactsAt(cylinder.model, Transform::Translation(Vec3(0.3, kR - kDepth, 0))), kDepth,

@@ -1,7 +1,7 @@
 // The skeleton-on-ground scene of the contact tests and benchmarks: the seed's Rajagopal2015
 // skeleton (bodies, joints, coordinates, gravity: its muscles left out, as in the seed's Chrono
-// scene) with the seed's collision cylinders, SMC contact and a ground plane `drop` metres
-// below its lowest cylinder point in the default pose.
+// scene) with the seed's collision cylinders, SMC contact and a ground plane (or box) `drop`
+// metres below its lowest cylinder point in the default pose.
 #pragma once
 
 #include <sinew/contact/collision_model.h>
@@ -28,7 +28,10 @@ struct SkeletonDrop {
   double total_mass = 0.0;
 };
 
-inline SkeletonDrop MakeSkeletonDrop(double drop, const contact::CollisionMaterial& material = {}) {
+/// `ground_box`: the ground is a box (10 m by 10 m, 1 m thick, its top face at the plane's
+/// height, `AddEnvironmentBox`), as in the seed's Chrono scene, instead of the plane.
+inline SkeletonDrop MakeSkeletonDrop(double drop, const contact::CollisionMaterial& material = {},
+                                     bool ground_box = false) {
   model::ModelSpec spec = io::ReadOsim(std::string(SINEW_TEST_DATA_DIR) +
                                        "/projectchrono/chrono/data/opensim/Rajagopal2015.osim");
   spec.forces.clear();
@@ -49,7 +52,13 @@ inline SkeletonDrop MakeSkeletonDrop(double drop, const contact::CollisionMateri
   opensim::OpenSimParser parser;
   parser.EnableCollision();
   parser.SetContactMethod(opensim::ContactMethod::kSmc);
-  parser.SetGroundPlane(scene.ground_height);
+  if (ground_box) {
+    parser.AddEnvironmentBox("ground",
+                             Transform::Translation(Vec3(0, scene.ground_height - 0.5, 0)),
+                             Vec3(5.0, 0.5, 5.0));
+  } else {
+    parser.SetGroundPlane(scene.ground_height);
+  }
   parser.SetContactMaterial(material);
   scene.system = std::make_unique<engine::System>(spec.gravity);
   parser.ParseSpec(*scene.system, spec);

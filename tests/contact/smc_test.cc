@@ -144,9 +144,9 @@ std::pair<double, double> BoxDownhillSpeeds(double angle, double mu, bool on_box
       "smc", detector, std::vector<double>{0.0, m}, 1e-3,
       std::vector<ContactForce::RecordGroup>{{"box", 1}}, std::vector<ContactForce::PairGroup>{}));
   system.Finalize();
-  // Two boxes' radii combine to half a box's (kFlatShapeRadius each).
-  const double d = HertzDepth(m * kG * std::cos(angle) / 4.0, SameMaterialModulus(material),
-                              on_box ? kFlatShapeRadius / 2 : kFlatShapeRadius);
+  // On a box's face as on a plane: a box corner's radius.
+  const double d =
+      HertzDepth(m * kG * std::cos(angle) / 4.0, SameMaterialModulus(material), kFlatShapeRadius);
   engine::State state = engine::MakeDefaultState(system);
   const Vec3 p = (h.y() - d) * normal;
   engine::SetCoordinateValue(system, state, "rz", -angle);

@@ -574,7 +574,8 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
 // pair (one point): the face is the one Bullet's normal leaves the box through; s's points
 // that can lie deepest through that face's plane (ForEachCandidate, as against a half-space)
 // that are over the face and nearer it than any other face of the box are its contacts, each at
-// its depth through the plane along the face's normal (exact), when the deepest of them is as
+// its depth through the plane along the face's normal (exact) and with the shape's radius (the
+// face is flat: as on a half-space), when the deepest of them is as
 // deep as Bullet's contact to EPA's accuracy (the contact is on the face, not at an edge or a
 // corner of the box). `sign`: +1 when Bullet's normal points out of the box, -1 into it. False
 // (nothing visited) otherwise.
@@ -609,6 +610,7 @@ bool CollisionDetector::Impl::CollideOnBoxFace(const Shape& box, const Transform
     c.n_G = sign * face_G;  // Bullet's orientation (body1 towards body2)
     c.depth = depth;
     c.p_G = p_G + 0.5 * depth * face_G;
+    c.radius = s.radius > 0.0 ? s.radius : kFlatShapeRadius;  // as on a half-space
   });
   if (count == 0 || !(std::abs(deepest - bullet.depth) <= kEpaAccuracy)) return false;
   for (int k = 0; k < count; ++k) visit(found[k]);
@@ -629,7 +631,7 @@ void CollisionDetector::Impl::CollideBoxes(const Pair& p, const btTransform& X_G
   CollisionContact c;
   c.body1 = b.body;
   c.body2 = a.body;
-  c.radius = p.radius;
+  c.radius = kFlatShapeRadius;  // corners and edges on a flat face, as a box's on a half-space
   c.material = p.material;
   Vec3 shift = Vec3::Zero();
   btDiscreteCollisionDetectorInterface::ClosestPointInput input;

@@ -33,8 +33,9 @@ inline constexpr double kFlatShapeRadius = 0.1;
 /// One contact between two shapes: they overlap by `depth` (m; negative: a gap within the
 /// detector's envelope) along `n_G` (unit, in G, from shape 1's body towards shape 2's body),
 /// centred at `p_G` (midway through the overlap or gap); `radius` is the effective radius
-/// of curvature of the pair (radii combined as r1 r2 / (r1 + r2); a half-space's is infinite,
-/// a box's kFlatShapeRadius); `material` the pair's combined material.
+/// of curvature of the pair (radii combined as r1 r2 / (r1 + r2); a half-space's and a box
+/// face's are infinite, a box's edges and corners kFlatShapeRadius); `material` the pair's
+/// combined material.
 struct CollisionContact {
   int body1 = 0;
   int body2 = 0;
@@ -77,7 +78,7 @@ class CollisionDetector {
   /// mesh (kTriangleMesh, fixed or moving), one point per local extreme of the overlap over its
   /// surface (a sphere in a V groove touches each side once; a contact found by several
   /// triangles at a shared edge or vertex counts once). Two flat shapes (mesh or hull vertices
-  /// on a half-space, a hull on a mesh) get the radius kFlatShapeRadius.
+  /// on a half-space, a hull on a mesh, two boxes) get the radius kFlatShapeRadius.
   void FindContacts(const std::vector<Transform>& X_GB,
                     const std::function<void(const CollisionContact&)>& visit) const;
   /// The number of shape pairs tested.
