@@ -282,6 +282,89 @@ TEST(CollisionDetectionTest, BoxOnABoxTouchesAtTheCornersOfItsFaceByTheirClosedF
   }
 }
 
+// A ground mesh of two triangles: `vertices` (4, in G), triangles (0, 1, 2) and (0, 2, 3).
+CollisionGeometry GroundMesh(const std::vector<Vec3>& vertices) {
+  auto mesh = std::make_shared<ShapeMesh>();
+  mesh->vertices = vertices;
+  mesh->triangles = {{0, 1, 2}, {0, 2, 3}};
+  CollisionGeometry g;
+  g.name = "ground_mesh";
+  g.kind = CollisionShapeKind::kTriangleMesh;
+  g.body = 0;
+  g.mesh = mesh;
+  return g;
+}
+
+TEST(CollisionDetectionTest, BoxOnAFlatMeshTouchesAtItsCornersAndOnARidgeAtTheRidge) {
+  // The box of BoxOnAGroundBox on a flat square mesh y = 0 (two triangles sharing the diagonal
+  // x = z, which passes under the box): its corners over the triangles and through their plane
+  // are the contacts, as on a half-space (GJK and EPA give one point per triangle region, and
+  // a box on one or two points tips); exact depths and points. On a ridge (two slopes meeting
+  // at x = 0) the ridge dents the box's bottom face and no corner is near a slope: Bullet's
+  // point at the ridge stays.
+  const std::vector<Vec3> bottom = {Vec3(0.1, -0.05, 0.1), Vec3(0.1, -0.05, -0.1),
+                                    Vec3(-0.1, -0.05, 0.1), Vec3(-0.1, -0.05, -0.1)};
+  const double theta = 0.1;
+  const Mat3 R_tilt = Eigen::AngleAxisd(theta, Vec3::UnitZ()).toRotationMatrix();
+  const double lowest = 0.1 * std::sin(theta) + 0.05 * std::cos(theta);
+  const Mat3 R_turn = Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY()).toRotationMatrix();
+  CollisionModel flat = BoxOnAGroundBox();
+  flat.geometry[0] = GroundMesh({Vec3(-1, 0, -1), Vec3(1, 0, -1), Vec3(1, 0, 1), Vec3(-1, 0, 1)});
+  for (const double envelope : {0.0, 2e-3}) {
+    SCOPED_TRACE("envelope " + std::to_string(envelope));
+    const CollisionDetector detector(flat, std::nullopt, {}, envelope);
+    struct Case {
+      Transform X_GB;
+      std::vector<Vec3> corners;
+      double depth;
+    };
+    std::vector<Case> cases = {
+        {Transform::Translation(Vec3(0.03, 0.05 - 3e-3, 0.02)), bottom, 3e-3},
+        {Transform(R_turn, Vec3(0.01, 0.05 - 1e-3, 0)), bottom, 1e-3},
+        {Transform(R_tilt, Vec3(0, lowest - 2e-3, 0)), {bottom[2], bottom[3]}, 2e-3}};
+    if (envelope > 0.0)
+      cases.push_back({Transform::Translation(Vec3(0.03, 0.05 + 1.5e-3, 0.02)), bottom, -1.5e-3});
+    for (const Case& k : cases) {
+      const std::vector<CollisionContact> c = Contacts(detector, {Transform(), k.X_GB});
+      ASSERT_EQ(c.size(), k.corners.size());
+      for (const CollisionContact& contact : c) {
+        EXPECT_NEAR(contact.depth, k.depth, 1e-15);
+        const Vec3 up = contact.body1 == 0 ? contact.n_G : Vec3(-contact.n_G);
+        EXPECT_NEAR((up - Vec3::UnitY()).norm(), 0.0, 1e-15);
+      }
+      ExpectContactsAtCorners(c, k.X_GB, k.corners, 1e-15);
+    }
+  }
+  // A hull of the box's eight corners (kConvexMesh) the same way.
+  CollisionModel hull = flat;
+  hull.geometry[1].kind = CollisionShapeKind::kConvexMesh;
+  auto corners = std::make_shared<std::vector<Vec3>>();
+  for (int i = 0; i < 8; ++i)
+    corners->push_back(Vec3(i & 1 ? 0.1 : -0.1, i & 2 ? 0.05 : -0.05, i & 4 ? 0.1 : -0.1));
+  hull.geometry[1].vertices = corners;
+  const Transform X_GH = Transform::Translation(Vec3(0.03, 0.05 - 3e-3, 0.02));
+  const std::vector<CollisionContact> on_hull =
+      Contacts(CollisionDetector(hull, std::nullopt), {Transform(), X_GH});
+  ASSERT_EQ(on_hull.size(), 4u);
+  for (const CollisionContact& contact : on_hull) EXPECT_NEAR(contact.depth, 3e-3, 1e-15);
+  ExpectContactsAtCorners(on_hull, X_GH, bottom, 1e-15);
+  CollisionModel ridge = BoxOnAGroundBox();
+  ridge.geometry[0] =
+      GroundMesh({Vec3(-1, -0.5, -1), Vec3(0, 0, -1), Vec3(0, 0, 1), Vec3(-1, -0.5, 1)});
+  auto slopes = std::make_shared<ShapeMesh>(*ridge.geometry[0].mesh);
+  slopes->vertices.insert(slopes->vertices.end(), {Vec3(1, -0.5, -1), Vec3(1, -0.5, 1)});
+  slopes->triangles.insert(slopes->triangles.end(), {{1, 4, 5}, {1, 5, 2}});
+  ridge.geometry[0].mesh = slopes;
+  const CollisionDetector on_ridge(ridge, std::nullopt);
+  const std::vector<CollisionContact> c =
+      Contacts(on_ridge, {Transform(), Transform::Translation(Vec3(0, 0.05 - 2e-3, 0))});
+  ASSERT_FALSE(c.empty());
+  for (const CollisionContact& contact : c) {
+    EXPECT_NEAR(contact.depth, 2e-3, 1e-6);  // EPA's accuracy
+    EXPECT_NEAR(std::abs(contact.p_G.x()), 0.0, 1e-6);
+  }
+}
+
 TEST(CollisionDetectionTest, SkeletonAtRestTouchesNothingAndNeverItsParents) {
   // The seed's Rajagopal2015 with EnableCollision: no allowed pair of its cylinders overlaps
   // in the default pose (nothing needs leaving out), and none is a parent and its child.

@@ -40,10 +40,10 @@ TEST(NscContactTableTest, SlidingBlockReportsItsWeightAndCoulombFriction) {
   // slides without turning: the corners' normal impulses balance the friction's moment). The
   // solver's tolerance (1e-12 m/s) bounds the impulse errors by m 1e-12 m/s, 1e-9 N at h = 1 ms.
   // The same on a ground box whose top face is y = 0 (Bullet's box-box detector: a face's
-  // corners).
+  // corners) and on a flat ground mesh of two triangles (the corners over them).
   constexpr double kMass = 1.0, kMu = 0.5, kH = 1e-3, kV0 = 2.0;
-  for (const bool on_box : {false, true}) {
-    SCOPED_TRACE(on_box ? "on a ground box" : "on the ground plane");
+  for (const std::string ground : {"plane", "box", "mesh"}) {
+    SCOPED_TRACE("on the ground " + ground);
     auto system =
         testing::ParseContactModel(testing::FreeBodyContactModel(kMass, Vec3(0.004, 0.008, 0.004),
                                                                  Vec3(0, -kG, 0), 0.1, {}, ""),
@@ -55,7 +55,16 @@ TEST(NscContactTableTest, SlidingBlockReportsItsWeightAndCoulombFriction) {
     box.body = 1;
     box.half_extents = Vec3(0.1, 0.05, 0.1);
     model.geometry.push_back(box);
-    if (on_box) {
+    if (ground == "mesh") {  // a flat square of two triangles
+      auto mesh = std::make_shared<ShapeMesh>();
+      mesh->vertices = {Vec3(-3, 0, -1), Vec3(3, 0, -1), Vec3(3, 0, 1), Vec3(-3, 0, 1)};
+      mesh->triangles = {{0, 1, 2}, {0, 2, 3}};
+      CollisionGeometry floor;
+      floor.name = "floor";
+      floor.kind = CollisionShapeKind::kTriangleMesh;
+      floor.mesh = mesh;
+      model.geometry.push_back(floor);
+    } else if (ground == "box") {
       CollisionGeometry floor = box;
       floor.name = "floor";
       floor.body = 0;
@@ -118,7 +127,7 @@ TEST(NscContactTableTest, SlidingBlockReportsItsWeightAndCoulombFriction) {
     std::cout << "nsc table: sliding block force " << force.transpose() << " N (closed form "
               << -kMu * kMass * kG << " " << kMass * kG << " 0), torque " << torque.transpose()
               << " N m, " << active << " active contacts ("
-              << (on_box ? "on a ground box" : "on the ground plane") << ")\n";
+              << "on the ground " << ground << ")\n";
   }
 }
 

@@ -274,6 +274,14 @@ struct TriangleContact {
   CollisionContact contact;
   Vec3 p_mesh_G;
   std::array<Vec3, 3> triangle_G;
+  bool on_vertices = false;  // as deep as the shape's vertices over the triangle (then those)
+};
+
+// A flat shape's vertex through a mesh triangle's plane (CollideWithMesh): which vertex
+// (ForEachCandidate's order) and its contact.
+struct VertexContact {
+  int vertex = 0;
+  CollisionContact contact;
 };
 
 // The vector from the segment [p1, q1] to the segment [p2, q2] between their closest points
@@ -657,6 +665,45 @@ void CollisionDetector::Impl::CollideBoxes(const Pair& p, const btTransform& X_G
   }
 }
 
+// The vertices of the flat shape s (pose X_GS) over the triangle of `t` (Bullet's contact with
+// it) and through its plane, or within the envelope of it, into `out`: each at its depth through
+// the plane along the plane's normal (oriented as Bullet's, from the triangle to the shape),
+// exact, as against a half-space but over the triangle only. True when the deepest of them is
+// as deep as Bullet's contact (to EPA's accuracy): the triangle's overlap is then theirs, and
+// Bullet's point is not a contact of its own; false when a feature of the mesh (an edge, a
+// ridge) dents a face of the shape more, and Bullet's point stays.
+namespace {
+bool AddVerticesOverTriangle(const Shape& s, const Transform& X_GS, const TriangleContact& t,
+                             double envelope, std::vector<VertexContact>& out) {
+  const std::array<Vec3, 3>& v = t.triangle_G;
+  Vec3 n = (v[1] - v[0]).cross(v[2] - v[0]);
+  if (!(n.norm() > 0.0)) return false;  // a degenerate triangle: Bullet's point alone
+  n.normalize();
+  // Towards the side of the shape's centre (a two-sided sheet: the shape is pushed back out on
+  // its own side). Not Bullet's normal: a box lying on a triangle touches it at distance zero,
+  // where GJK's direction is any (seen at 30-60 degrees off the plane's normal).
+  const double centre = (X_GS.p - v[0]).dot(n);
+  if (centre < 0.0 || (centre == 0.0 && n.dot(t.contact.n_G) < 0.0)) n = -n;
+  double deepest = -std::numeric_limits<double>::infinity();
+  int vertex = 0;
+  ForEachCandidate(s, X_GS.R.transpose() * -n, [&](const Vec3& p_S) {
+    const int index = vertex++;
+    const Vec3 p_G = X_GS * p_S;
+    const double depth = (v[0] - p_G).dot(n);
+    if (!(depth > -envelope)) return;
+    const Vec3 on_plane = p_G + depth * n;
+    if ((ClosestPointOnTriangle(on_plane, v[0], v[1], v[2]) - on_plane).norm() > 1e-12) return;
+    deepest = std::max(deepest, depth);
+    VertexContact c{index, t.contact};
+    c.contact.n_G = n;
+    c.contact.depth = depth;
+    c.contact.p_G = p_G + 0.5 * depth * n;
+    out.push_back(c);
+  });
+  return deepest >= t.contact.depth - kEpaAccuracy;
+}
+}  // namespace
+
 template <class Visit>
 void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<Transform>& X_GS_all,
                                               Visit&& visit) const {
@@ -674,6 +721,11 @@ void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<T
   max_M += btVector3(inflation, inflation, inflation);
   thread_local std::vector<TriangleContact> found;
   found.clear();
+  // A box or a hull (flat faces, vertices) on a triangle: its vertices over the triangle and
+  // through its plane, each a contact (a box standing on a flat mesh has its four corners).
+  thread_local std::vector<VertexContact> vertex_contacts;
+  vertex_contacts.clear();
+  const bool flat = s.kind == Kind::kBox || s.kind == Kind::kHull;
   const btTransform bt_X_GM = ToBt(X_GM);
   const btTransform bt_X_GS = ToBt(X_GS);
   // Narrow phase per triangle: GJK and EPA between the convex shape (A) and the triangle (B),
@@ -691,6 +743,7 @@ void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<T
     c.material = p.material;
     t.p_mesh_G = p_inflated_G - inflation * c.n_G;
     for (int k = 0; k < 3; ++k) t.triangle_G[k] = X_GM * FromBt(v[k]);
+    if (flat) t.on_vertices = AddVerticesOverTriangle(s, X_GS, t, envelope, vertex_contacts);
     found.push_back(t);
   };
   TriangleVisitor<decltype(on_triangle)> callback(on_triangle);
@@ -719,7 +772,18 @@ void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<T
       if (i < k && same && std::abs(o.contact.depth - t.contact.depth) <= kMeshPointTolerance)
         keep = false;
     }
-    if (keep) visit(t.contact);
+    if (keep && !t.on_vertices) visit(t.contact);
+  }
+  // Each vertex once where coplanar triangles share it (over their common edge).
+  for (size_t k = 0; k < vertex_contacts.size(); ++k) {
+    const VertexContact& v = vertex_contacts[k];
+    bool repeated = false;
+    for (size_t i = 0; i < k && !repeated; ++i) {
+      const VertexContact& o = vertex_contacts[i];
+      repeated = o.vertex == v.vertex && o.contact.n_G.dot(v.contact.n_G) > 1.0 - 1e-12 &&
+                 std::abs(o.contact.depth - v.contact.depth) <= kMeshPointTolerance;
+    }
+    if (!repeated) visit(v.contact);
   }
 }
 
