@@ -234,6 +234,28 @@ void ExpectContactsAtCorners(const std::vector<CollisionContact>& contacts, cons
   }
 }
 
+// A pose of the box, the corners of its face y = -0.05 expected to touch, and their depth.
+struct CornerCase {
+  Transform X_GB;
+  std::vector<Vec3> corners;
+  double depth;
+};
+
+// The contacts at the case's pose: one per corner, each at the depth, its normal up (from
+// body1 towards body2: from ground up, or from the box down) and at its corner, to `tolerance`.
+std::vector<CollisionContact> ExpectCornerContacts(const CollisionDetector& detector,
+                                                   const CornerCase& k, double tolerance) {
+  const std::vector<CollisionContact> c = Contacts(detector, {Transform(), k.X_GB});
+  EXPECT_EQ(c.size(), k.corners.size());
+  for (const CollisionContact& contact : c) {
+    EXPECT_NEAR(contact.depth, k.depth, tolerance);
+    const Vec3 up = contact.body1 == 0 ? contact.n_G : Vec3(-contact.n_G);
+    EXPECT_NEAR((up - Vec3::UnitY()).norm(), 0.0, tolerance);
+  }
+  ExpectContactsAtCorners(c, k.X_GB, k.corners, tolerance);
+  return c;
+}
+
 TEST(CollisionDetectionTest, BoxOnABoxTouchesAtTheCornersOfItsFaceByTheirClosedForms) {
   // Bullet's box-box detector gives a face's points (GJK and EPA alone give one, and a box on
   // one point tips): four corners flat, two on a tilted box's lowest edge, each with its own
@@ -248,13 +270,7 @@ TEST(CollisionDetectionTest, BoxOnABoxTouchesAtTheCornersOfItsFaceByTheirClosedF
     SCOPED_TRACE("envelope " + std::to_string(envelope));
     const CollisionDetector detector(BoxOnAGroundBox(), std::nullopt, {}, envelope);
     ASSERT_EQ(detector.num_pairs(), 1);
-    // Each case: the pose, the corners expected to touch, their depth.
-    struct Case {
-      Transform X_GB;
-      std::vector<Vec3> corners;
-      double depth;
-    };
-    std::vector<Case> cases = {
+    std::vector<CornerCase> cases = {
         {Transform::Translation(Vec3(0.3, 0.05 - 3e-3, -0.2)), bottom, 3e-3},  // flat
         {Transform(R_turn, Vec3(0, 0.05 - 1e-3, 0)), bottom, 1e-3},            // turned 45 deg
         {Transform(R_tilt, Vec3(0, lowest - 2e-3, 0)), {bottom[2], bottom[3]}, 2e-3}};  // edge
@@ -263,17 +279,9 @@ TEST(CollisionDetectionTest, BoxOnABoxTouchesAtTheCornersOfItsFaceByTheirClosedF
       cases.push_back(
           {Transform(R_tilt, Vec3(0, lowest + 5e-4, 0)), {bottom[2], bottom[3]}, -5e-4});
     }
-    for (const Case& k : cases) {
-      const std::vector<CollisionContact> c = Contacts(detector, {Transform(), k.X_GB});
-      ASSERT_EQ(c.size(), k.corners.size());
-      for (const CollisionContact& contact : c) {
-        EXPECT_NEAR(contact.depth, k.depth, 1e-12);
-        // From body1 towards body2: from ground up, or from the box down.
-        const Vec3 up = contact.body1 == 0 ? contact.n_G : Vec3(-contact.n_G);
-        EXPECT_NEAR((up - Vec3::UnitY()).norm(), 0.0, 1e-12);
+    for (const CornerCase& k : cases) {
+      for (const CollisionContact& contact : ExpectCornerContacts(detector, k, 1e-12))
         EXPECT_EQ(contact.radius, kFlatShapeRadius);  // as a box's corners on a plane
-      }
-      ExpectContactsAtCorners(c, k.X_GB, k.corners, 1e-12);
     }
     // Beyond the envelope (or just apart without one): nothing.
     EXPECT_TRUE(Contacts(detector,
@@ -313,27 +321,13 @@ TEST(CollisionDetectionTest, BoxOnAFlatMeshTouchesAtItsCornersAndOnARidgeAtTheRi
   for (const double envelope : {0.0, 2e-3}) {
     SCOPED_TRACE("envelope " + std::to_string(envelope));
     const CollisionDetector detector(flat, std::nullopt, {}, envelope);
-    struct Case {
-      Transform X_GB;
-      std::vector<Vec3> corners;
-      double depth;
-    };
-    std::vector<Case> cases = {
+    std::vector<CornerCase> cases = {
         {Transform::Translation(Vec3(0.03, 0.05 - 3e-3, 0.02)), bottom, 3e-3},
         {Transform(R_turn, Vec3(0.01, 0.05 - 1e-3, 0)), bottom, 1e-3},
         {Transform(R_tilt, Vec3(0, lowest - 2e-3, 0)), {bottom[2], bottom[3]}, 2e-3}};
     if (envelope > 0.0)
       cases.push_back({Transform::Translation(Vec3(0.03, 0.05 + 1.5e-3, 0.02)), bottom, -1.5e-3});
-    for (const Case& k : cases) {
-      const std::vector<CollisionContact> c = Contacts(detector, {Transform(), k.X_GB});
-      ASSERT_EQ(c.size(), k.corners.size());
-      for (const CollisionContact& contact : c) {
-        EXPECT_NEAR(contact.depth, k.depth, 1e-15);
-        const Vec3 up = contact.body1 == 0 ? contact.n_G : Vec3(-contact.n_G);
-        EXPECT_NEAR((up - Vec3::UnitY()).norm(), 0.0, 1e-15);
-      }
-      ExpectContactsAtCorners(c, k.X_GB, k.corners, 1e-15);
-    }
+    for (const CornerCase& k : cases) ExpectCornerContacts(detector, k, 1e-15);
   }
   // A hull of the box's eight corners (kConvexMesh) the same way.
   CollisionModel hull = flat;
@@ -342,12 +336,9 @@ TEST(CollisionDetectionTest, BoxOnAFlatMeshTouchesAtItsCornersAndOnARidgeAtTheRi
   for (int i = 0; i < 8; ++i)
     corners->push_back(Vec3(i & 1 ? 0.1 : -0.1, i & 2 ? 0.05 : -0.05, i & 4 ? 0.1 : -0.1));
   hull.geometry[1].vertices = corners;
-  const Transform X_GH = Transform::Translation(Vec3(0.03, 0.05 - 3e-3, 0.02));
-  const std::vector<CollisionContact> on_hull =
-      Contacts(CollisionDetector(hull, std::nullopt), {Transform(), X_GH});
-  ASSERT_EQ(on_hull.size(), 4u);
-  for (const CollisionContact& contact : on_hull) EXPECT_NEAR(contact.depth, 3e-3, 1e-15);
-  ExpectContactsAtCorners(on_hull, X_GH, bottom, 1e-15);
+  ExpectCornerContacts(CollisionDetector(hull, std::nullopt),
+                       {Transform::Translation(Vec3(0.03, 0.05 - 3e-3, 0.02)), bottom, 3e-3},
+                       1e-15);
   CollisionModel ridge = BoxOnAGroundBox();
   ridge.geometry[0] =
       GroundMesh({Vec3(-1, -0.5, -1), Vec3(0, 0, -1), Vec3(0, 0, 1), Vec3(-1, -0.5, 1)});
