@@ -88,13 +88,23 @@ Mat3 Rotation(double angle, const Vec3& axis) {
 }
 
 // The scene with its floor (the ground half-space y < 0) replaced by a ground box whose top face
-// is y = 0 (4 m by 4 m, 1 m thick).
-void PutOnAGroundBox(Scene& scene) {
+// is y = 0 (4 m by 4 m, 1 m thick), or with `mesh` by a flat ground mesh there (the same square
+// as two triangles sharing the diagonal x = z).
+void PutOnGround(Scene& scene, bool mesh = false) {
   CollisionGeometry& floor = scene.model.geometry[0];
   ASSERT_EQ(floor.kind, CollisionShapeKind::kHalfSpace);
-  floor.kind = CollisionShapeKind::kBox;
-  floor.X_BS = Transform::Translation(Vec3(0, -0.5, 0));
-  floor.half_extents = Vec3(2.0, 0.5, 2.0);
+  floor.X_BS = Transform();
+  if (mesh) {
+    auto square = std::make_shared<ShapeMesh>();
+    square->vertices = {Vec3(-2, 0, -2), Vec3(2, 0, -2), Vec3(2, 0, 2), Vec3(-2, 0, 2)};
+    square->triangles = {{0, 1, 2}, {0, 2, 3}};
+    floor.kind = CollisionShapeKind::kTriangleMesh;
+    floor.mesh = square;
+  } else {
+    floor.kind = CollisionShapeKind::kBox;
+    floor.X_BS = Transform::Translation(Vec3(0, -0.5, 0));
+    floor.half_extents = Vec3(2.0, 0.5, 2.0);
+  }
 }
 
 TEST(CollisionShapesTest, DepthsOnAPlaneAreTheClosedForms) {
@@ -147,7 +157,7 @@ TEST(CollisionShapesTest, ShapesOnABoxFaceTouchAsOnAPlane) {
   // the part over the face. With an envelope of 2 mm, 1 mm above: the gaps.
   constexpr double kDepth = 5e-3, kR = 0.1;
   Scene cylinder = Parse(OneShapeModel(1, Vec3::Ones(), Vec3::Zero(), Cylinder(kR)));
-  PutOnAGroundBox(cylinder);
+  PutOnGround(cylinder);
   const auto expect_rims = [&](const std::vector<CollisionContact>& c, double depth, double x) {
     ASSERT_EQ(c.size(), 2u);
     for (const CollisionContact& k : c) {
@@ -174,10 +184,15 @@ TEST(CollisionShapesTest, ShapesOnABoxFaceTouchAsOnAPlane) {
   ASSERT_EQ(c.size(), 1u);
   EXPECT_NEAR(c[0].depth, kDepth, 1e-15);
   EXPECT_NEAR(c[0].p_G.x(), 2.0 - 2 * kR, 1e-15);
+  // On a flat ground mesh across the triangles' common diagonal: both rims, as on the plane.
+  Scene on_mesh = Parse(OneShapeModel(1, Vec3::Ones(), Vec3::Zero(), Cylinder(kR)));
+  PutOnGround(on_mesh, true);
+  expect_rims(ContactsAt(on_mesh.model, Transform::Translation(Vec3(0.1, kR - kDepth, 0))), kDepth,
+              0.1);
   // Ellipsoid (0.1, 0.2, 0.3) turned 30 degrees about z: one point, its exact depth.
   const Vec3 radii(0.1, 0.2, 0.3);
   Scene ellipsoid = Parse(OneShapeModel(1, Vec3::Ones(), Vec3::Zero(), Ellipsoid(radii)));
-  PutOnAGroundBox(ellipsoid);
+  PutOnGround(ellipsoid);
   const double angle = std::numbers::pi / 6;
   const double half_height = std::hypot(radii.x() * std::sin(angle), radii.y() * std::cos(angle));
   c = ContactsAt(ellipsoid.model,
@@ -218,14 +233,14 @@ TEST(CollisionShapesTest, CylinderRestsOnItsRadiusAndRollsDownAnInclineAtTwoThir
   // downhill is +x) with mu = 0.5 > tan(a) / 3 it rolls without slipping at
   // a = g sin(a) / (1 + I / (m r^2)) = 2/3 g sin(a), from rest: exactly per step (each step's
   // impulses are the continuous law's over the step), to the solver's tolerance.
-  // The same on a ground box's top face (its two rims, as on the plane).
+  // The same on a ground box's top face and on a flat ground mesh (its two rims, as on the plane).
   constexpr double kM = 1.0, kR = 0.1, kL = 4 * kR;
   const Vec3 inertia(kM * (3 * kR * kR + kL * kL) / 12, kM * (3 * kR * kR + kL * kL) / 12,
                      kM * kR * kR / 2);
-  for (const bool on_box : {false, true}) {
-    SCOPED_TRACE(on_box ? "on a ground box" : "on the floor");
+  for (const std::string ground : {"floor", "box", "mesh"}) {
+    SCOPED_TRACE("on the ground " + ground);
     Scene level = Parse(OneShapeModel(kM, inertia, Vec3(0, -kG, 0), Cylinder(kR)));
-    if (on_box) PutOnAGroundBox(level);
+    if (ground != "floor") PutOnGround(level, ground == "mesh");
     engine::SetCoordinateValue(*level.system, level.state, "ty", kR + 0.01);
     RunNsc(level, 0.5, 0.5);
     EXPECT_NEAR(level.state.bodies[1].p_GB.y(), kR, 1e-9);
@@ -233,7 +248,7 @@ TEST(CollisionShapesTest, CylinderRestsOnItsRadiusAndRollsDownAnInclineAtTwoThir
     const double a = 20.0 * std::numbers::pi / 180.0;
     Scene incline =
         Parse(OneShapeModel(kM, inertia, kG * Vec3(std::sin(a), -std::cos(a), 0), Cylinder(kR)));
-    if (on_box) PutOnAGroundBox(incline);
+    if (ground != "floor") PutOnGround(incline, ground == "mesh");
     engine::SetCoordinateValue(*incline.system, incline.state, "ty", kR);
     constexpr double kT = 0.5;
     RunNsc(incline, 0.5, kT);
@@ -246,7 +261,8 @@ TEST(CollisionShapesTest, CylinderRestsOnItsRadiusAndRollsDownAnInclineAtTwoThir
               << "); rolls at " << body.v_GB.x() << " m/s after " << kT << " s (closed form "
               << closed << ", relative " << body.v_GB.x() / closed - 1 << "), slip "
               << body.v_GB.x() + body.w_GB.z() * kR << " m/s"
-              << (on_box ? " (on a ground box)" : "") << "\n";
+              << " (on the ground " << ground << ")"
+              << "\n";
   }
 }
 

@@ -274,13 +274,14 @@ struct TriangleContact {
   CollisionContact contact;
   Vec3 p_mesh_G;
   std::array<Vec3, 3> triangle_G;
-  bool on_vertices = false;  // as deep as the shape's vertices over the triangle (then those)
+  bool on_plane_points = false;  // as deep as the shape's plane points over it (then those)
 };
 
-// A flat shape's vertex through a mesh triangle's plane (CollideWithMesh): which vertex
-// (ForEachCandidate's order) and its contact.
-struct VertexContact {
-  int vertex = 0;
+// A shape's point through a mesh triangle's plane (CollideWithMesh): which of the points a
+// half-space there would take (ForEachCandidate's order: a box's corner, a cylinder's rim) and
+// its contact.
+struct PlanePointContact {
+  int point = 0;
   CollisionContact contact;
 };
 
@@ -665,16 +666,17 @@ void CollisionDetector::Impl::CollideBoxes(const Pair& p, const btTransform& X_G
   }
 }
 
-// The vertices of the flat shape s (pose X_GS) over the triangle of `t` (Bullet's contact with
-// it) and through its plane, or within the envelope of it, into `out`: each at its depth through
-// the plane along the plane's normal (oriented as Bullet's, from the triangle to the shape),
-// exact, as against a half-space but over the triangle only. True when the deepest of them is
-// as deep as Bullet's contact (to EPA's accuracy): the triangle's overlap is then theirs, and
-// Bullet's point is not a contact of its own; false when a feature of the mesh (an edge, a
-// ridge) dents a face of the shape more, and Bullet's point stays.
+// The points of shape s (pose X_GS) that a half-space on the plane of the triangle of `t`
+// (Bullet's contact with it) would take (ForEachCandidate: a box's or a hull's vertices, a
+// cylinder's two rims) that lie over the triangle and through its plane, or within the envelope
+// of it, into `out`: each at its depth through the plane along the plane's normal, exact, as
+// against a half-space but over the triangle only. True when the deepest of them is as deep as
+// Bullet's contact (to EPA's accuracy): the triangle's overlap is then theirs, and Bullet's
+// point is not a contact of its own; false when a feature of the mesh (an edge, a ridge) dents
+// a face of the shape more, and Bullet's point stays.
 namespace {
-bool AddVerticesOverTriangle(const Shape& s, const Transform& X_GS, const TriangleContact& t,
-                             double envelope, std::vector<VertexContact>& out) {
+bool AddPlanePointsOverTriangle(const Shape& s, const Transform& X_GS, const TriangleContact& t,
+                                double envelope, std::vector<PlanePointContact>& out) {
   const std::array<Vec3, 3>& v = t.triangle_G;
   Vec3 n = (v[1] - v[0]).cross(v[2] - v[0]);
   if (!(n.norm() > 0.0)) return false;  // a degenerate triangle: Bullet's point alone
@@ -685,16 +687,16 @@ bool AddVerticesOverTriangle(const Shape& s, const Transform& X_GS, const Triang
   const double centre = (X_GS.p - v[0]).dot(n);
   if (centre < 0.0 || (centre == 0.0 && n.dot(t.contact.n_G) < 0.0)) n = -n;
   double deepest = -std::numeric_limits<double>::infinity();
-  int vertex = 0;
+  int point = 0;
   ForEachCandidate(s, X_GS.R.transpose() * -n, [&](const Vec3& p_S) {
-    const int index = vertex++;
+    const int index = point++;
     const Vec3 p_G = X_GS * p_S;
     const double depth = (v[0] - p_G).dot(n);
     if (!(depth > -envelope)) return;
     const Vec3 on_plane = p_G + depth * n;
     if ((ClosestPointOnTriangle(on_plane, v[0], v[1], v[2]) - on_plane).norm() > 1e-12) return;
     deepest = std::max(deepest, depth);
-    VertexContact c{index, t.contact};
+    PlanePointContact c{index, t.contact};
     c.contact.n_G = n;
     c.contact.depth = depth;
     c.contact.p_G = p_G + 0.5 * depth * n;
@@ -721,11 +723,13 @@ void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<T
   max_M += btVector3(inflation, inflation, inflation);
   thread_local std::vector<TriangleContact> found;
   found.clear();
-  // A box or a hull (flat faces, vertices) on a triangle: its vertices over the triangle and
-  // through its plane, each a contact (a box standing on a flat mesh has its four corners).
-  thread_local std::vector<VertexContact> vertex_contacts;
-  vertex_contacts.clear();
-  const bool flat = s.kind == Kind::kBox || s.kind == Kind::kHull;
+  // A box, a hull or a cylinder on a triangle: its points that a half-space on the triangle's
+  // plane would take, over the triangle and through the plane, each a contact (a box standing
+  // on a flat mesh has its four corners, a lying cylinder its two rims).
+  thread_local std::vector<PlanePointContact> plane_points;
+  plane_points.clear();
+  const bool by_plane_points =
+      s.kind == Kind::kBox || s.kind == Kind::kHull || s.kind == Kind::kCylinder;
   const btTransform bt_X_GM = ToBt(X_GM);
   const btTransform bt_X_GS = ToBt(X_GS);
   // Narrow phase per triangle: GJK and EPA between the convex shape (A) and the triangle (B),
@@ -743,7 +747,8 @@ void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<T
     c.material = p.material;
     t.p_mesh_G = p_inflated_G - inflation * c.n_G;
     for (int k = 0; k < 3; ++k) t.triangle_G[k] = X_GM * FromBt(v[k]);
-    if (flat) t.on_vertices = AddVerticesOverTriangle(s, X_GS, t, envelope, vertex_contacts);
+    if (by_plane_points)
+      t.on_plane_points = AddPlanePointsOverTriangle(s, X_GS, t, envelope, plane_points);
     found.push_back(t);
   };
   TriangleVisitor<decltype(on_triangle)> callback(on_triangle);
@@ -772,15 +777,15 @@ void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<T
       if (i < k && same && std::abs(o.contact.depth - t.contact.depth) <= kMeshPointTolerance)
         keep = false;
     }
-    if (keep && !t.on_vertices) visit(t.contact);
+    if (keep && !t.on_plane_points) visit(t.contact);
   }
-  // Each vertex once where coplanar triangles share it (over their common edge).
-  for (size_t k = 0; k < vertex_contacts.size(); ++k) {
-    const VertexContact& v = vertex_contacts[k];
+  // Each point once where coplanar triangles share it (over their common edge).
+  for (size_t k = 0; k < plane_points.size(); ++k) {
+    const PlanePointContact& v = plane_points[k];
     bool repeated = false;
     for (size_t i = 0; i < k && !repeated; ++i) {
-      const VertexContact& o = vertex_contacts[i];
-      repeated = o.vertex == v.vertex && o.contact.n_G.dot(v.contact.n_G) > 1.0 - 1e-12 &&
+      const PlanePointContact& o = plane_points[i];
+      repeated = o.point == v.point && o.contact.n_G.dot(v.contact.n_G) > 1.0 - 1e-12 &&
                  std::abs(o.contact.depth - v.contact.depth) <= kMeshPointTolerance;
     }
     if (!repeated) visit(v.contact);

@@ -77,9 +77,10 @@ class CollisionDetector {
   /// points and each box corner, hull or mesh vertex that lies inside it; against a triangle
   /// mesh (kTriangleMesh, fixed or moving), one point per local extreme of the overlap over its
   /// surface (a sphere in a V groove touches each side once; a contact found by several
-  /// triangles at a shared edge or vertex counts once), and a box's or a hull's vertices over
-  /// each triangle it touches, through the triangle's plane. Two flat shapes (mesh or hull vertices
-  /// on a half-space, a hull on a mesh, two boxes) get the radius kFlatShapeRadius.
+  /// triangles at a shared edge or vertex counts once), and a box's or a hull's vertices or a
+  /// cylinder's rims over each triangle it touches, through the triangle's plane. Two flat shapes
+  /// (mesh or hull vertices on a half-space, a hull on a mesh, two boxes) get the radius
+  /// kFlatShapeRadius.
   void FindContacts(const std::vector<Transform>& X_GB,
                     const std::function<void(const CollisionContact&)>& visit) const;
   /// The number of shape pairs tested.
