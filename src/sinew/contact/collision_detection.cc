@@ -375,6 +375,10 @@ struct CollisionDetector::Impl {
   // Bullet's deepest contact of the convex shapes p.i and p.j, if they overlap.
   template <class Visit>
   void CollideConvex(const Pair& p, const std::vector<Transform>& X_GS, Visit&& visit) const;
+  // The contacts of a convex shape over a box's face and clear of its sides (no GJK needed).
+  template <class Visit>
+  bool CollideOverBoxFace(const Pair& p, const Shape& box, const Transform& X_GX, const Shape& s,
+                          const Transform& X_GS, double sign, Visit&& visit) const;
   // The contacts of a convex shape on a box's face, given Bullet's one (CollideConvex).
   template <class Visit>
   bool CollideOnBoxFace(const Shape& box, const Transform& X_GX, const Shape& s,
@@ -564,6 +568,8 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   if (!TestAabbAgainstAabb2(min_a, max_a, min_b, max_b)) return;
   if (axis.squaredNorm() > 0.0 && SeparatedAlong(axis, *a.bt, X_GA, *b.bt, X_GBs)) return;
   if (a.kind == Kind::kBox && b.kind == Kind::kBox) return CollideBoxes(p, X_GA, X_GBs, visit);
+  if (a.kind == Kind::kBox && CollideOverBoxFace(p, a, X_GSa, b, X_GSb, -1.0, visit)) return;
+  if (b.kind == Kind::kBox && CollideOverBoxFace(p, b, X_GSb, a, X_GSa, 1.0, visit)) return;
   // Narrow phase: GJK, and EPA for the penetration.
   CollisionContact c;
   if (!Penetrate(a.bt.get(), X_GA, b.bt.get(), X_GBs, envelope, c)) return;
@@ -579,29 +585,23 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   visit(c);
 }
 
-// A convex shape s (pose X_GS) on a face of `box` (pose X_GX), given Bullet's contact of the
-// pair (one point): the face is the one Bullet's normal leaves the box through; s's points
-// that can lie deepest through that face's plane (ForEachCandidate, as against a half-space)
-// that are over the face and nearer it than any other face of the box are its contacts, each at
-// its depth through the plane along the face's normal (exact) and with the shape's radius (the
-// face is flat: as on a half-space), when the deepest of them is as
-// deep as Bullet's contact to EPA's accuracy (the contact is on the face, not at an edge or a
-// corner of the box). `sign`: +1 when Bullet's normal points out of the box, -1 into it. False
-// (nothing visited) otherwise.
-template <class Visit>
-bool CollisionDetector::Impl::CollideOnBoxFace(const Shape& box, const Transform& X_GX,
-                                               const Shape& s, const Transform& X_GS,
-                                               const CollisionContact& bullet, double sign,
-                                               Visit&& visit) const {
-  const Vec3 h = FromBt(static_cast<const btBoxShape&>(*box.bt).getHalfExtentsWithoutMargin());
-  const Vec3 n_X = X_GX.R.transpose() * (sign * bullet.n_G);  // out of the box, in its frame
-  int axis = 0;
-  n_X.cwiseAbs().maxCoeff(&axis);
-  const double side = n_X[axis] > 0.0 ? 1.0 : -1.0;
-  const Vec3 face_G = side * X_GX.R.col(axis);  // the face's outward normal
+namespace {
+// The points of shape s (pose X_GS) that a half-space on a face of `box` (pose X_GX, half extents
+// h) would take (ForEachCandidate), through the face's plane (or within the envelope of it) and
+// over the face: each at its depth through the plane along the face's normal (exact), with the
+// shape's radius (the face is flat: as on a half-space). The face: `axis` of the box's frame,
+// `side` +1 or -1. `base` gives the bodies and material; `sign` +1 when body1 is the box.
+struct BoxFacePoints {
   std::array<CollisionContact, 8> found;
   int count = 0;
   double deepest = -std::numeric_limits<double>::infinity();
+  bool nearer_a_side = false;  // a point through the plane lies nearer a side face (left out)
+};
+BoxFacePoints PointsThroughBoxFace(const Vec3& h, const Transform& X_GX, int axis, double side,
+                                   const Shape& s, const Transform& X_GS,
+                                   const CollisionContact& base, double sign, double envelope) {
+  BoxFacePoints out;
+  const Vec3 face_G = side * X_GX.R.col(axis);  // the face's outward normal
   ForEachCandidate(s, X_GS.R.transpose() * -face_G, [&](const Vec3& p_S) {
     const Vec3 p_G = X_GS * p_S;
     const Vec3 p_X = X_GX.R.transpose() * (p_G - X_GX.p);
@@ -610,19 +610,79 @@ bool CollisionDetector::Impl::CollideOnBoxFace(const Shape& box, const Transform
     for (int j = 0; j < 3; ++j) {
       if (j == axis) continue;
       const double to_side = h[j] - std::abs(p_X[j]);  // from the box's side face j, inside
-      if (to_side < 0.0 || (depth > 0.0 && to_side < depth)) return;
+      if (to_side < 0.0) return;
+      if (depth > 0.0 && to_side < depth) {
+        out.nearer_a_side = true;
+        return;
+      }
     }
-    deepest = std::max(deepest, depth);
-    if (count == static_cast<int>(found.size())) return;
-    CollisionContact& c = found[count++];
-    c = bullet;
-    c.n_G = sign * face_G;  // Bullet's orientation (body1 towards body2)
+    out.deepest = std::max(out.deepest, depth);
+    if (out.count == static_cast<int>(out.found.size())) return;
+    CollisionContact& c = out.found[out.count++];
+    c = base;
+    c.n_G = sign * face_G;
     c.depth = depth;
     c.p_G = p_G + 0.5 * depth * face_G;
-    c.radius = s.radius > 0.0 ? s.radius : kFlatShapeRadius;  // as on a half-space
+    c.radius = s.radius > 0.0 ? s.radius : kFlatShapeRadius;
   });
-  if (count == 0 || !(std::abs(deepest - bullet.depth) <= kEpaAccuracy)) return false;
-  for (int k = 0; k < count; ++k) visit(found[k]);
+  return out;
+}
+
+Vec3 BoxHalfExtents(const Shape& box) {
+  return FromBt(static_cast<const btBoxShape&>(*box.bt).getHalfExtentsWithoutMargin());
+}
+}  // namespace
+
+// A convex shape s (pose X_GS) over a face of `box` (pose X_GX) and clear of the box's sides and
+// far face (the ball of its reach about its centre): it can overlap the box only through that
+// face, and then by exactly its deepest point's depth through it (any other way out is longer
+// while no point through the face is nearer a side than the face), so its points through the
+// face are the contacts, without GJK; none within the envelope: no contact. False (nothing
+// visited) when the shape is not so placed.
+template <class Visit>
+bool CollisionDetector::Impl::CollideOverBoxFace(const Pair& p, const Shape& box,
+                                                 const Transform& X_GX, const Shape& s,
+                                                 const Transform& X_GS, double sign,
+                                                 Visit&& visit) const {
+  const Vec3 h = BoxHalfExtents(box);
+  const Vec3 c_X = X_GX.R.transpose() * (X_GS.p - X_GX.p);  // the shape's centre
+  int axis = 0;
+  (c_X.cwiseAbs() - h).maxCoeff(&axis);
+  const double side = c_X[axis] > 0.0 ? 1.0 : -1.0;
+  if (side * c_X[axis] < h[axis] || side * c_X[axis] - s.reach <= -h[axis]) return false;
+  for (int j = 0; j < 3; ++j) {
+    if (j != axis && std::abs(c_X[j]) + s.reach > h[j]) return false;
+  }
+  CollisionContact base;
+  base.body1 = shapes[p.j].body;
+  base.body2 = shapes[p.i].body;
+  base.material = p.material;
+  const BoxFacePoints points =
+      PointsThroughBoxFace(h, X_GX, axis, side, s, X_GS, base, sign, envelope);
+  if (points.nearer_a_side) return false;
+  for (int k = 0; k < points.count; ++k) visit(points.found[k]);
+  return true;
+}
+
+// A convex shape s (pose X_GS) on a face of `box` (pose X_GX), given Bullet's contact of the
+// pair (one point): the face is the one Bullet's normal leaves the box through, and the shape's
+// points through it (PointsThroughBoxFace; those nearer a side face left out) are the contacts
+// when the deepest of them is as deep as Bullet's contact to EPA's accuracy (the contact is on
+// the face, not at an edge or a corner of the box). `sign`: +1 when Bullet's normal points out
+// of the box, -1 into it. False (nothing visited) otherwise.
+template <class Visit>
+bool CollisionDetector::Impl::CollideOnBoxFace(const Shape& box, const Transform& X_GX,
+                                               const Shape& s, const Transform& X_GS,
+                                               const CollisionContact& bullet, double sign,
+                                               Visit&& visit) const {
+  const Vec3 n_X = X_GX.R.transpose() * (sign * bullet.n_G);  // out of the box, in its frame
+  int axis = 0;
+  n_X.cwiseAbs().maxCoeff(&axis);
+  const double side = n_X[axis] > 0.0 ? 1.0 : -1.0;
+  const BoxFacePoints points =
+      PointsThroughBoxFace(BoxHalfExtents(box), X_GX, axis, side, s, X_GS, bullet, sign, envelope);
+  if (points.count == 0 || !(std::abs(points.deepest - bullet.depth) <= kEpaAccuracy)) return false;
+  for (int k = 0; k < points.count; ++k) visit(points.found[k]);
   return true;
 }
 
