@@ -57,7 +57,6 @@ struct Shape {
   int material = 0;
   // Bullet's shape, inflated by half the envelope (its margin) for GJK; null for a half-space.
   std::unique_ptr<btConvexShape> bt;
-  std::unique_ptr<btBoxShape> exact_box;     // kBox: the box itself, no margin (box-box contact)
   std::vector<Vec3> hull;                    // kHull, kTriangleMesh: its distinct points, in S
   std::unique_ptr<BulletTriangleMesh> mesh;  // kTriangleMesh (bt is its convex hull)
   MeshPairSide mesh_side;                    // kTriangleMesh: for MeshPairHull
@@ -166,8 +165,6 @@ Shape MakeGeometry(const CollisionGeometry& g, double inflation) {
       s.radius = kFlatShapeRadius;
       s.reach = g.half_extents.norm();
       s.bt = Inflated<btBoxShape>(g.half_extents, inflation);
-      s.exact_box = std::make_unique<btBoxShape>(ToBt(g.half_extents));
-      s.exact_box->setMargin(0.0);
       break;
     case CollisionShapeKind::kHalfSpace:
       s.kind = Kind::kHalfSpace;
@@ -577,11 +574,9 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   c.body2 = a.body;
   c.radius = p.radius;
   c.material = p.material;
-  if (a.kind == Kind::kBox && b.kind != Kind::kBox) {
-    if (CollideOnBoxFace(a, X_GSa, b, X_GSb, c, -1.0, visit)) return;
-  } else if (b.kind == Kind::kBox && a.kind != Kind::kBox) {
-    if (CollideOnBoxFace(b, X_GSb, a, X_GSa, c, 1.0, visit)) return;
-  }
+  // (two boxes went to CollideBoxes above)
+  if (a.kind == Kind::kBox && CollideOnBoxFace(a, X_GSa, b, X_GSb, c, -1.0, visit)) return;
+  if (b.kind == Kind::kBox && CollideOnBoxFace(b, X_GSb, a, X_GSa, c, 1.0, visit)) return;
   visit(c);
 }
 
@@ -711,8 +706,12 @@ void CollisionDetector::Impl::CollideBoxes(const Pair& p, const btTransform& X_G
     shift = envelope * c.n_G;
     input.m_transformB.getOrigin() += ToBt(shift);
   }
+  // The boxes themselves, without the margin (the detector measures sharp boxes).
+  btBoxShape box_a(ToBt(BoxHalfExtents(a))), box_b(ToBt(BoxHalfExtents(b)));
+  box_a.setMargin(0.0);
+  box_b.setMargin(0.0);
   BoxBoxPoints points;
-  btBoxBoxDetector detector(a.exact_box.get(), b.exact_box.get());
+  btBoxBoxDetector detector(&box_a, &box_b);
   detector.getClosestPoints(input, points, nullptr);
   // Carried together, the boxes touch unless GJK's gap was the whole envelope (to rounding):
   // then GJK's own contact.
