@@ -63,6 +63,19 @@ BENCHMARK(BM_ChainAccelerations)
     ->Unit(benchmark::kMicrosecond)
     ->Complexity(benchmark::oN);
 
+// The chain with parameterized pins (RevoluteModel, articulated pivots) and no extra
+// constraints: the baseline of the coupled chain below, whose couplers' own cost is the
+// difference of the two.
+void BM_ParameterizedChainAccelerations(benchmark::State& bench) {
+  TimeAccelerations(bench, MakeChain(static_cast<int>(bench.range(0)), JointForm::kParameterized));
+}
+BENCHMARK(BM_ParameterizedChainAccelerations)
+    ->Arg(10)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Unit(benchmark::kMicrosecond)
+    ->Complexity(benchmark::oN);
+
 // The same with parameterized pins and 4 couplers (q[i] = 0.5 q[i + N/2]) solved by the
 // Schur complement beside the tree elimination: still linear in N.
 void BM_CoupledChainAccelerations(benchmark::State& bench) {

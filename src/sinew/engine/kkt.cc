@@ -143,10 +143,12 @@ void KktSolver::FactorizeMatrices(const State& state) {
     residual_check_ = true;
     return;
   }
-  tree_->Factorize(mass_, jacobian_);
   residual_check_ = false;
-  if (ne_ == 0) return;
-  // The extra rows G over the velocity unknowns, then S = G K_T^-1 G^T.
+  if (ne_ == 0) {
+    tree_->Factorize(mass_, jacobian_);
+    return;
+  }
+  // The extra rows G over the velocity unknowns, then the tree and S = G K_T^-1 G^T together.
   G_.setZero();
   for (int k : extra_constraints_) {
     const MatX& J = jacobian_[k];
@@ -154,7 +156,7 @@ void KktSolver::FactorizeMatrices(const State& state) {
       if (columns_[k][j] >= 0) G_.block(extra_row_[k], columns_[k][j], J.rows(), 1) += J.col(j);
     }
   }
-  tree_->FactorizeExtraRows(G_, S_);
+  tree_->Factorize(mass_, jacobian_, G_, S_);
   schur_.setThreshold(kSchurThreshold);
   schur_.compute(S_);
   // Redundant extra constraints: the multipliers are least-squares ones, exact only when the

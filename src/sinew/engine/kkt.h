@@ -13,7 +13,7 @@
 //   S mu = G K_T^-1 r - g,  x = K_T^-1 (r - G^T mu).
 // The tree elimination is an L D L^T factorization of the symmetric K_T, so S and G K_T^-1 r
 // come from forward sweeps alone, on the nodes between G's columns and ground, and a solve is
-// one tree solve with mu's correction between its sweeps (TreeKktSolver::FactorizeExtraRows).
+// one tree solve with mu's correction between its sweeps (TreeKktSolver::Factorize with G).
 // S is symmetric positive semidefinite; it is factorized by a complete orthogonal
 // decomposition that treats pivots below 1e-10 of the largest as zero, so redundant but
 // consistent constraints (a planar loop of pins) get the minimum-norm multipliers instead of

@@ -132,6 +132,7 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
     node.end_run = static_cast<int>(runs_.size());
   }
   blocks_.assign(block, 0.0);
+  mass_placed_.assign(nodes_.size(), 0);
   couplings_.assign(6 * static_cast<size_t>(rows), 0.0);
   responses_.assign(6 * static_cast<size_t>(rows), 0.0);
   z_.setZero(rows);
@@ -139,41 +140,34 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
 
 void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& mass,
                               const std::vector<MatX>& jacobian) {
-  // Every entry outside the mass block and the constraint entries stays zero from construction.
-  for (size_t k = 0; k < nodes_.size(); ++k) {
-    const Node& node = nodes_[k];
-    BlockView K = this->K(static_cast<int>(k));
-    CouplingView C = this->C(static_cast<int>(k));
-    K.topLeftCorner<6, 6>() = mass[node.body];
-    for (int r = node.first_run; r < node.end_run; ++r) {
-      const ColumnRun& run = runs_[r];
-      const MatX& J = jacobian[run.constraint];
-      if (run.rows == 6 && run.width == 6) {
-        // A joint's six rows on a whole twist (the common run), with fixed sizes.
-        const auto block = J.middleCols<6>(run.jac_col);
-        if (run.col >= 0) {
-          K.block<6, 6>(run.first_row, run.col) = block;
-        } else {
-          C.block<6, 6>(run.first_row, -1 - run.col) = block;
-        }
-        continue;
-      }
-      const auto block = J.middleCols(run.jac_col, run.width);
-      if (run.col >= 0) {
-        // The lower triangle only: the pivots read no more, and the LU fills the upper
-        // triangle from it when it is used (FactorizeNode).
-        K.block(run.first_row, run.col, run.rows, run.width) = block;
-      } else {
-        // Inboard columns run downwards from -1 - col.
-        C.block(run.first_row, -1 - run.col, run.rows, run.width) = block;
-      }
-    }
-  }
-  // Leaves first: eliminate each node into its parent's body block.
+  FactorizeTree(mass, jacobian, nullptr, nullptr);
+}
+
+void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& mass,
+                              const std::vector<MatX>& jacobian, const MatX& G, MatX& S) {
+  FactorizeTree(mass, jacobian, &G, &S);
+}
+
+void TreeKktSolver::FactorizeTree(const std::vector<Eigen::Matrix<double, 6, 6>>& mass,
+                                  const std::vector<MatX>& jacobian, const MatX* G, MatX* S) {
+  if (G) StartExtraRows(*G, *S);
+  // Leaves first: each node's block is filled and eliminated into its parent's body block, and
+  // the extra rows' F and Z formed, in one pass, so that a node's matrices are still in the
+  // cache from one use to the next (on a 1000-link chain the nodes outgrow it). A node's mass
+  // block is written when it or its first child comes up, whichever is first.
+  std::fill(mass_placed_.begin(), mass_placed_.end(), 0);
+  size_t next_extra = 0;
   for (int k = static_cast<int>(nodes_.size()); k-- > 0;) {
     const Node& node = nodes_[k];
+    PlaceMass(k, mass);
+    FillNode(k, jacobian);
     FactorizeNode(k);
+    if (G && next_extra < extra_nodes_.size() && extra_nodes_[next_extra] == k) {
+      EliminateExtraRows(k, *S);
+      ++next_extra;
+    }
     if (node.parent < 0) continue;
+    PlaceMass(node.parent, mass);
     auto parent_block = K(node.parent).topLeftCorner<6, 6>();
     const ConstCouplingView C = std::as_const(*this).C(k);
     CouplingView W = this->W(k);
@@ -193,6 +187,42 @@ void TreeKktSolver::Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& ma
       // rows instead of Eigen's blocked GEMM, which these small sizes do not repay.
       const int rows = NumConstraintRows(node);
       parent_block.noalias() -= C.bottomRows(rows).transpose().lazyProduct(W.bottomRows(rows));
+    }
+  }
+}
+
+void TreeKktSolver::PlaceMass(int k, const std::vector<Eigen::Matrix<double, 6, 6>>& mass) {
+  if (mass_placed_[k]) return;
+  K(k).topLeftCorner<6, 6>() = mass[nodes_[k].body];
+  mass_placed_[k] = 1;
+}
+
+void TreeKktSolver::FillNode(int k, const std::vector<MatX>& jacobian) {
+  // Every entry outside the mass block and the constraint entries stays zero from construction.
+  const Node& node = nodes_[k];
+  BlockView K = this->K(k);
+  CouplingView C = this->C(k);
+  for (int r = node.first_run; r < node.end_run; ++r) {
+    const ColumnRun& run = runs_[r];
+    const MatX& J = jacobian[run.constraint];
+    if (run.rows == 6 && run.width == 6) {
+      // A joint's six rows on a whole twist (the common run), with fixed sizes.
+      const auto block = J.middleCols<6>(run.jac_col);
+      if (run.col >= 0) {
+        K.block<6, 6>(run.first_row, run.col) = block;
+      } else {
+        C.block<6, 6>(run.first_row, -1 - run.col) = block;
+      }
+      continue;
+    }
+    const auto block = J.middleCols(run.jac_col, run.width);
+    if (run.col >= 0) {
+      // The lower triangle only: the pivots read no more, and the LU fills the upper
+      // triangle from it when it is used (FactorizeNode).
+      K.block(run.first_row, run.col, run.rows, run.width) = block;
+    } else {
+      // Inboard columns run downwards from -1 - col.
+      C.block(run.first_row, -1 - run.col, run.rows, run.width) = block;
     }
   }
 }
@@ -433,7 +463,7 @@ void TreeKktSolver::SolveNodeColumns(int k, Eigen::Ref<MatX> x) const {
   }
 }
 
-void TreeKktSolver::FactorizeExtraRows(const MatX& G, MatX& S) {
+void TreeKktSolver::StartExtraRows(const MatX& G, MatX& S) {
   // F starts as G^T on each node's velocity unknowns (zero on its constraint rows).
   for (int k : extra_nodes_) {
     const Node& node = nodes_[k];
@@ -442,22 +472,23 @@ void TreeKktSolver::FactorizeExtraRows(const MatX& G, MatX& S) {
     const std::span<const int> global = Global(k);
     for (int i = 0; i < 6 + node.num_speeds; ++i) F.row(i) = G.col(global[i]).transpose();
   }
+  S.setZero(ne_, ne_);
+  extra_Y_current_ = false;
+}
+
+void TreeKktSolver::EliminateExtraRows(int k, MatX& S) {
   // Leaves first, as Solve's forward sweep: Z_k = K_k^-1 F_k, the parent's twist rows of F lose
   // C^T Z_k (C is zero above the constraint rows).
-  S.setZero(ne_, ne_);
-  for (int k : extra_nodes_) {
-    const Node& node = nodes_[k];
-    BlockView Zk = ExtraZ(k);
-    Zk = ExtraF(k);
-    SolveNodeColumns(k, Zk);
-    if (node.parent >= 0) {
-      const int rows = NumConstraintRows(node);
-      ExtraF(node.parent).topRows<6>().noalias() -=
-          C(k).bottomRows(rows).transpose().lazyProduct(Zk.bottomRows(rows));
-    }
-    S.noalias() += ExtraF(k).transpose().lazyProduct(Zk);
+  const Node& node = nodes_[k];
+  BlockView Zk = ExtraZ(k);
+  Zk = ExtraF(k);
+  SolveNodeColumns(k, Zk);
+  if (node.parent >= 0) {
+    const int rows = NumConstraintRows(node);
+    ExtraF(node.parent).topRows<6>().noalias() -=
+        C(k).bottomRows(rows).transpose().lazyProduct(Zk.bottomRows(rows));
   }
-  extra_Y_current_ = false;
+  S.noalias() += ExtraF(k).transpose().lazyProduct(Zk);
 }
 
 void TreeKktSolver::SolveWithExtraRows(const VecX& rhs, const VecX& e, const MatX& S_inverse,

@@ -44,22 +44,24 @@ class TreeKktSolver {
   void Solve(const VecX& rhs, VecX& x) const;
   /// Extra constraint rows G (ne of them, over the velocity unknowns only) that the caller
   /// eliminates by a Schur complement on top of the tree; `columns` are the velocity columns
-  /// where G may be nonzero. Call once, before FactorizeExtraRows.
+  /// where G may be nonzero. Call once, before the first Factorize with G.
   void SetExtraRowColumns(int ne, const std::vector<int>& columns);
-  /// With the last Factorize: S = G K^-1 G^T (ne x ne) into `S`. The tree's block elimination
-  /// is an L D L^T factorization of the symmetric K (D the node blocks K_k), so
+  /// Factorize, and with it S = G K^-1 G^T (ne x ne) into `S` for the extra rows G. The
+  /// tree's block elimination is an L D L^T factorization of the symmetric K (D the node blocks
+  /// K_k), so
   ///   S = (L^-1 G^T)^T D^-1 (L^-1 G^T) = sum over nodes of F_k^T K_k^-1 F_k,
   /// F = L^-1 G^T the forward sweep of G^T's columns, zero outside the nodes between G's
-  /// columns and ground: only those nodes are visited, and F_k and Z_k = K_k^-1 F_k are kept
-  /// for the solves. No heap use once warm.
-  void FactorizeExtraRows(const MatX& G, MatX& S);
-  /// Solves [K G^T; G 0] [x; mu] = [rhs; e] with the last FactorizeExtraRows and S^-1 (or a
+  /// columns and ground: only those nodes are visited, each as the elimination passes it, and
+  /// F_k and Z_k = K_k^-1 F_k are kept for the solves. No heap use once warm.
+  void Factorize(const std::vector<Eigen::Matrix<double, 6, 6>>& mass,
+                 const std::vector<MatX>& jacobian, const MatX& G, MatX& S);
+  /// Solves [K G^T; G 0] [x; mu] = [rhs; e] with the last Factorize with G and S^-1 (or a
   /// pseudo-inverse) in `S_inverse`, as one tree solve: after the forward sweep gives z =
   /// D^-1 L^-1 rhs, mu = S^-1 (sum F_k^T z_k - e) and z_k -= Z_k mu on the extra rows' nodes,
   /// then the backward sweep. x as in Solve; mu resized to ne.
   void SolveWithExtraRows(const VecX& rhs, const VecX& e, const MatX& S_inverse, VecX& x,
                           VecX& mu) const;
-  /// Y = K^-1 G^T ((nv + tree rows) x ne) of the last FactorizeExtraRows, made by one backward
+  /// Y = K^-1 G^T ((nv + tree rows) x ne) of the last Factorize with G, made by one backward
   /// sweep on the first call after it.
   const MatX& ExtraRowResponses() const;
   /// Node blocks the last Factorize eliminated as articulated pivots.
@@ -146,6 +148,17 @@ class TreeKktSolver {
   bool FitsDirectPivot(const Node& node, int joint) const;
   // The node's constraint rows, its last rows: the coupling C is zero above them.
   static int NumConstraintRows(const Node& node) { return node.size - 6 - node.num_speeds; }
+  // Both Factorize forms (G and S null without extra rows).
+  void FactorizeTree(const std::vector<Eigen::Matrix<double, 6, 6>>& mass,
+                     const std::vector<MatX>& jacobian, const MatX* G, MatX* S);
+  // The extra rows' F from G, S zeroed; then, node by node as the elimination passes them
+  // (leaves first), Z_k, the parent's F and S's term.
+  void StartExtraRows(const MatX& G, MatX& S);
+  void EliminateExtraRows(int k, MatX& S);
+  // Node k's mass block from its body's mass matrix, once per factorization (mass_placed_).
+  void PlaceMass(int k, const std::vector<Eigen::Matrix<double, 6, 6>>& mass);
+  // Node k's constraint entries from the Jacobians (its column runs).
+  void FillNode(int k, const std::vector<MatX>& jacobian);
   // Factorizes node k's block (the articulated pivot where it applies, else the LU).
   void FactorizeNode(int k);
   // x = K^-1 x with node k's factorization.
@@ -178,6 +191,7 @@ class TreeKktSolver {
   // nodes holding every kind (each sized for the largest block) spread what a solve reads over
   // 16 kB per node, which the hardware's prefetching does not follow.
   std::vector<double> blocks_;                       // each node's K, n x n (Node::block)
+  std::vector<char> mass_placed_;                    // FactorizeTree: K's mass block written
   std::vector<double> couplings_;                    // each node's C, n x 6 (Node::row)
   std::vector<double> responses_;                    // each node's W, n x 6
   std::vector<Eigen::PartialPivLU<NodeMatrix>> lu_;  // per node, the generic LU (the fallback)
