@@ -36,17 +36,29 @@ std::string BodyAttribute(const std::string& dom, const std::string& name) {
   return dom.substr(begin, dom.find('"', begin) - begin);
 }
 
-TEST(HtmlViewerHintsTest, FollowsTheRollingBallAndDrawsItsContactForce) {
-  const std::string chromium = testing::FindChromium();
-  if (chromium.empty()) {
-    GTEST_SKIP() << "chromium is not installed (scripts/setup.sh installs it); viewer not tested";
+// Each test: headless Chromium (skipped without it), a scratch folder, the bouncing-ball model.
+class HtmlViewerHintsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    chromium = testing::FindChromium();
+    if (chromium.empty()) {
+      GTEST_SKIP() << "chromium is not installed (scripts/setup.sh installs it); viewer not tested";
+    }
+    dir = fs::temp_directory_path() /
+          ("sinew_viewer_" +
+           std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+           std::to_string(getpid()));
+    fs::create_directories(dir);
+    ball = io::ReadOsim(
+        testing::kDataDir +
+        "/opensim-org/opensim-core/OpenSim/Simulation/Test/BouncingBall_HuntCrossley.osim");
   }
-  const fs::path dir =
-      fs::temp_directory_path() / ("sinew_viewer_hints_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  const model::ModelSpec ball = io::ReadOsim(
-      testing::kDataDir +
-      "/opensim-org/opensim-core/OpenSim/Simulation/Test/BouncingBall_HuntCrossley.osim");
+  std::string chromium;
+  fs::path dir;
+  model::ModelSpec ball;
+};
+
+TEST_F(HtmlViewerHintsTest, FollowsTheRollingBallAndDrawsItsContactForce) {
   // The ball (radius 0.5 m) rolls 10 m along x on its floor in 2 s, the floor pushing up
   // with its weight.
   io::Storage coordinates, contacts;
@@ -104,17 +116,7 @@ Vec3 Target(const std::string& dom) {
 // within 3e-4 m of the integral): 0.6873 m, against 0.6910 m continuous, hence 5e-3 m. With
 // #smooth=0 the target is the ball itself, at the bottom of a bounce (t = 1.5 s) and near the
 // top (1.62 s, a row of the table: the top itself, 1.625 s, lies between rows).
-TEST(HtmlViewerHintsTest, FollowsABouncingBallByItsMeanPosition) {
-  const std::string chromium = testing::FindChromium();
-  if (chromium.empty()) {
-    GTEST_SKIP() << "chromium is not installed (scripts/setup.sh installs it); viewer not tested";
-  }
-  const fs::path dir =
-      fs::temp_directory_path() / ("sinew_viewer_smooth_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  const model::ModelSpec ball = io::ReadOsim(
-      testing::kDataDir +
-      "/opensim-org/opensim-core/OpenSim/Simulation/Test/BouncingBall_HuntCrossley.osim");
+TEST_F(HtmlViewerHintsTest, FollowsABouncingBallByItsMeanPosition) {
   io::Storage coordinates;
   coordinates.labels = {"ball_tx", "ball_ty"};
   for (int k = 0; k <= 200; ++k) {
@@ -125,8 +127,8 @@ TEST(HtmlViewerHintsTest, FollowsABouncingBallByItsMeanPosition) {
   }
   ExportOptions options;
   options.visual.mode = VisType::kPrimitives;
-  ExportAnimation(ball, MotionFromTable(ball, coordinates, nullptr),
-                  (dir / "bounce.html").string(), options);
+  ExportAnimation(ball, MotionFromTable(ball, coordinates, nullptr), (dir / "bounce.html").string(),
+                  options);
   const std::string url = "file://" + (dir / "bounce.html").string();
 
   const std::string smoothed =
@@ -137,12 +139,12 @@ TEST(HtmlViewerHintsTest, FollowsABouncingBallByItsMeanPosition) {
   EXPECT_NEAR(mean.y(), 0.5 + 0.3 * 2.0 / M_PI, 5e-3);
   EXPECT_NEAR(mean.z(), 0.0, 1e-6);
 
-  const Vec3 bottom = Target(
-      testing::DumpDom(chromium, url + "#t=1.5&pause&smooth=0", dir / "bottom.html", 2500));
+  const Vec3 bottom =
+      Target(testing::DumpDom(chromium, url + "#t=1.5&pause&smooth=0", dir / "bottom.html", 2500));
   EXPECT_NEAR(bottom.x(), 7.5, 1e-6);
   EXPECT_NEAR(bottom.y(), 0.5, 1e-6);
-  const Vec3 top = Target(
-      testing::DumpDom(chromium, url + "#t=1.62&pause&smooth=0", dir / "top.html", 2500));
+  const Vec3 top =
+      Target(testing::DumpDom(chromium, url + "#t=1.62&pause&smooth=0", dir / "top.html", 2500));
   EXPECT_NEAR(top.x(), 8.1, 1e-6);
   EXPECT_NEAR(top.y(), 0.5 + 0.3 * std::abs(std::sin(4.0 * M_PI * 1.62)), 1e-6);
   if (!HasFailure()) fs::remove_all(dir);
