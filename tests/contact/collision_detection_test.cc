@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "contact/contact_models.h"
+
 namespace sinew::contact {
 namespace {
 
@@ -338,6 +340,17 @@ TEST(CollisionDetectionTest, BoxOnAFlatMeshTouchesAtItsCornersAndOnARidgeAtTheRi
   hull.geometry[1].vertices = corners;
   ExpectCornerContacts(CollisionDetector(hull, std::nullopt),
                        {Transform::Translation(Vec3(0.03, 0.05 - 3e-3, 0.02)), bottom, 3e-3},
+                       1e-15);
+  // The box as a closed triangle mesh (a ContactMesh cube): against the floor mesh it collides
+  // as its hull (MeshPairHull, closed and convex: exact), its corners the same way.
+  CollisionModel cube = flat;
+  cube.geometry[1].kind = CollisionShapeKind::kTriangleMesh;
+  cube.geometry[1].mesh = testing::MakeBoxMesh(Vec3(0.1, 0.05, 0.1));
+  ExpectCornerContacts(CollisionDetector(cube, std::nullopt),
+                       {Transform::Translation(Vec3(0.03, 0.05 - 3e-3, 0.02)), bottom, 3e-3},
+                       1e-15);
+  ExpectCornerContacts(CollisionDetector(cube, std::nullopt),
+                       {Transform(R_tilt, Vec3(0, lowest - 2e-3, 0)), {bottom[2], bottom[3]}, 2e-3},
                        1e-15);
   CollisionModel ridge = BoxOnAGroundBox();
   ridge.geometry[0] =

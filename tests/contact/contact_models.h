@@ -9,6 +9,7 @@
 #include <sinew/io/osim_reader.h>
 #include <sinew/opensim/parser.h>
 
+#include <array>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -115,6 +116,31 @@ inline size_t RunCollisionNsc(const engine::System& system, engine::State& state
   engine::NscIntegrator integrator(system, provider, settings, nsc);
   integrator.StepTo(state, t_end);
   return integrator.last_contacts().size();
+}
+
+/// A closed triangle mesh of the box with half extents `h` about its origin (a ContactMesh
+/// cube): its 8 corners (index i: x, y, z positive for bits 0, 1, 2), 12 triangles
+/// counter-clockwise from outside.
+inline std::shared_ptr<contact::ShapeMesh> MakeBoxMesh(const Vec3& h) {
+  auto mesh = std::make_shared<contact::ShapeMesh>();
+  for (int i = 0; i < 8; ++i)
+    mesh->vertices.push_back(
+        Vec3(i & 1 ? h.x() : -h.x(), i & 2 ? h.y() : -h.y(), i & 4 ? h.z() : -h.z()));
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      // The face's corners in order round it (the other two bits as a Gray code).
+      const int a = 1 << ((axis + 1) % 3), b = 1 << ((axis + 2) % 3), s = side << axis;
+      const std::array<int, 4> ring = {s, s | a, s | a | b, s | b};
+      const Vec3 out = (side ? 1.0 : -1.0) * Vec3::Unit(axis);
+      for (const std::array<int, 3>& t : {std::array<int, 3>{ring[0], ring[1], ring[2]},
+                                          std::array<int, 3>{ring[0], ring[2], ring[3]}}) {
+        const Vec3& p0 = mesh->vertices[t[0]];
+        const Vec3 n = (mesh->vertices[t[1]] - p0).cross(mesh->vertices[t[2]] - p0);
+        mesh->triangles.push_back(n.dot(out) > 0.0 ? t : std::array<int, 3>{t[0], t[2], t[1]});
+      }
+    }
+  }
+  return mesh;
 }
 
 }  // namespace sinew::testing

@@ -40,9 +40,10 @@ TEST(NscContactTableTest, SlidingBlockReportsItsWeightAndCoulombFriction) {
   // slides without turning: the corners' normal impulses balance the friction's moment). The
   // solver's tolerance (1e-12 m/s) bounds the impulse errors by m 1e-12 m/s, 1e-9 N at h = 1 ms.
   // The same on a ground box whose top face is y = 0 (Bullet's box-box detector: a face's
-  // corners) and on a flat ground mesh of two triangles (the corners over them).
+  // corners), on a flat ground mesh of two triangles (the corners over them), and as a closed
+  // cube mesh (a ContactMesh, colliding as its hull) on that ground mesh.
   constexpr double kMass = 1.0, kMu = 0.5, kH = 1e-3, kV0 = 2.0;
-  for (const std::string ground : {"plane", "box", "mesh"}) {
+  for (const std::string ground : {"plane", "box", "mesh", "mesh, the block a mesh"}) {
     SCOPED_TRACE("on the ground " + ground);
     auto system =
         testing::ParseContactModel(testing::FreeBodyContactModel(kMass, Vec3(0.004, 0.008, 0.004),
@@ -54,8 +55,12 @@ TEST(NscContactTableTest, SlidingBlockReportsItsWeightAndCoulombFriction) {
     box.kind = CollisionShapeKind::kBox;
     box.body = 1;
     box.half_extents = Vec3(0.1, 0.05, 0.1);
+    if (ground == "mesh, the block a mesh") {
+      box.kind = CollisionShapeKind::kTriangleMesh;
+      box.mesh = testing::MakeBoxMesh(box.half_extents);
+    }
     model.geometry.push_back(box);
-    if (ground == "mesh") {  // a flat square of two triangles
+    if (ground.starts_with("mesh")) {  // a flat square of two triangles
       auto mesh = std::make_shared<ShapeMesh>();
       mesh->vertices = {Vec3(-3, 0, -1), Vec3(3, 0, -1), Vec3(3, 0, 1), Vec3(-3, 0, 1)};
       mesh->triangles = {{0, 1, 2}, {0, 2, 3}};

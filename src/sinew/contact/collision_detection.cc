@@ -782,13 +782,14 @@ void CollisionDetector::Impl::CollideWithMesh(const Pair& p, const std::vector<T
   max_M += btVector3(inflation, inflation, inflation);
   thread_local std::vector<TriangleContact> found;
   found.clear();
-  // A box, a hull or a cylinder on a triangle: its points that a half-space on the triangle's
-  // plane would take, over the triangle and through the plane, each a contact (a box standing
-  // on a flat mesh has its four corners, a lying cylinder its two rims).
+  // A box, a hull (a mesh colliding as its hull included) or a cylinder on a triangle: its
+  // points that a half-space on the triangle's plane would take, over the triangle and through
+  // the plane, each a contact (a box standing on a flat mesh has its four corners, a lying
+  // cylinder its two rims).
   thread_local std::vector<PlanePointContact> plane_points;
   plane_points.clear();
-  const bool by_plane_points =
-      s.kind == Kind::kBox || s.kind == Kind::kHull || s.kind == Kind::kCylinder;
+  const bool by_plane_points = s.kind == Kind::kBox || s.kind == Kind::kHull ||
+                               s.kind == Kind::kTriangleMesh || s.kind == Kind::kCylinder;
   const btTransform bt_X_GM = ToBt(X_GM);
   const btTransform bt_X_GS = ToBt(X_GS);
   // Narrow phase per triangle: GJK and EPA between the convex shape (A) and the triangle (B),
