@@ -290,6 +290,16 @@ TEST(CollisionDetectionTest, BoxOnABoxTouchesAtTheCornersOfItsFaceByTheirClosedF
                          {Transform(), Transform::Translation(Vec3(0, 0.05 + envelope + 5e-4, 0))})
                     .empty());
   }
+  // The box as a closed triangle mesh (a ContactMesh cube on a moving body): it collides as its
+  // hull (exact), so at the same corners, flat and tilted.
+  CollisionModel cube = BoxOnAGroundBox();
+  cube.geometry[1].kind = CollisionShapeKind::kTriangleMesh;
+  cube.geometry[1].mesh = testing::MakeBoxMesh(Vec3(0.1, 0.05, 0.1));
+  const CollisionDetector on_box(cube, std::nullopt);
+  ExpectCornerContacts(on_box, {Transform::Translation(Vec3(0.3, 0.05 - 3e-3, -0.2)), bottom, 3e-3},
+                       1e-12);
+  ExpectCornerContacts(
+      on_box, {Transform(R_tilt, Vec3(0, lowest - 2e-3, 0)), {bottom[2], bottom[3]}, 2e-3}, 1e-12);
 }
 
 // A ground mesh of two triangles: `vertices` (4, in G), triangles (0, 1, 2) and (0, 2, 3).

@@ -419,13 +419,23 @@ CollisionDetector::CollisionDetector(const CollisionModel& model,
     shapes.push_back(MakeGeometry(environment.geometry.front(), inflation));
   }
   // Whether a mesh is closed and convex (time linear in triangles times vertices) matters only
-  // against another mesh (MeshPairHull).
+  // against another mesh (MeshPairHull) and, for a moving mesh, against a box (below).
   const auto is_mesh = [](const Shape& s) { return s.kind == Kind::kTriangleMesh; };
-  if (std::count_if(shapes.begin(), shapes.end(), is_mesh) >= 2) {
-    for (Shape& s : shapes) {
-      if (is_mesh(s)) s.mesh_side.closed_convex = IsClosedConvex(*s.source);
-    }
+  const bool two_meshes = std::count_if(shapes.begin(), shapes.end(), is_mesh) >= 2;
+  const bool a_box = std::any_of(shapes.begin(), shapes.end(),
+                                 [](const Shape& s) { return s.kind == Kind::kBox; });
+  for (Shape& s : shapes) {
+    if (is_mesh(s) && (two_meshes || (a_box && s.mesh_side.moves)))
+      s.mesh_side.closed_convex = IsClosedConvex(*s.source);
   }
+  // A moving closed convex mesh is its own hull: against a box it collides as that convex
+  // shape (CollideConvex), so that on the box's face it touches at its vertices over the face
+  // as a box or a hull does; its triangles against the box would give one point per dented
+  // triangle region, on which it rocks.
+  const auto hull_on_box = [](const Shape& m, const Shape& other) {
+    return m.kind == Kind::kTriangleMesh && m.mesh_side.moves && m.mesh_side.closed_convex &&
+           other.kind == Kind::kBox;
+  };
   std::vector<Transform> X_GS_rest;
   if (!X_GB_rest.empty()) impl_->CalcShapePoses(X_GB_rest, X_GS_rest);
   const int n = static_cast<int>(shapes.size());
@@ -447,6 +457,8 @@ CollisionDetector::CollisionDetector(const CollisionModel& model,
         if (hull < 0) continue;  // neither moves
         swap = hull == 0;
       }
+      if (hull_on_box(a, b)) swap = true;  // the box first: CollideConvex
+      if (hull_on_box(b, a)) swap = false;
       Pair p;
       p.i = swap ? j : i;
       p.j = swap ? i : j;
