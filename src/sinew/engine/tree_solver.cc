@@ -131,8 +131,13 @@ TreeKktSolver::TreeKktSolver(const System& system, int nv, const std::vector<int
     runs_.insert(runs_.end(), node_runs[k].begin(), node_runs[k].end());
     node.end_run = static_cast<int>(runs_.size());
   }
+  for (size_t k = nodes_.size(); k-- > 0;) {
+    Node& node = nodes_[k];
+    if (node.parent < 0) continue;
+    node.writes_parent_mass = nodes_[node.parent].leaf;  // no child of it came up before
+    nodes_[node.parent].leaf = false;
+  }
   blocks_.assign(block, 0.0);
-  mass_placed_.assign(nodes_.size(), 0);
   couplings_.assign(6 * static_cast<size_t>(rows), 0.0);
   responses_.assign(6 * static_cast<size_t>(rows), 0.0);
   z_.setZero(rows);
@@ -154,12 +159,11 @@ void TreeKktSolver::FactorizeTree(const std::vector<Eigen::Matrix<double, 6, 6>>
   // Leaves first: each node's block is filled and eliminated into its parent's body block, and
   // the extra rows' F and Z formed, in one pass, so that a node's matrices are still in the
   // cache from one use to the next (on a 1000-link chain the nodes outgrow it). A node's mass
-  // block is written when it or its first child comes up, whichever is first.
-  std::fill(mass_placed_.begin(), mass_placed_.end(), 0);
+  // block is written when it comes up if it is a leaf, else when its first child does.
   size_t next_extra = 0;
   for (int k = static_cast<int>(nodes_.size()); k-- > 0;) {
     const Node& node = nodes_[k];
-    PlaceMass(k, mass);
+    if (node.leaf) PlaceMass(k, mass);
     FillNode(k, jacobian);
     FactorizeNode(k);
     if (G && next_extra < extra_nodes_.size() && extra_nodes_[next_extra] == k) {
@@ -167,7 +171,7 @@ void TreeKktSolver::FactorizeTree(const std::vector<Eigen::Matrix<double, 6, 6>>
       ++next_extra;
     }
     if (node.parent < 0) continue;
-    PlaceMass(node.parent, mass);
+    if (node.writes_parent_mass) PlaceMass(node.parent, mass);
     auto parent_block = K(node.parent).topLeftCorner<6, 6>();
     const ConstCouplingView C = std::as_const(*this).C(k);
     CouplingView W = this->W(k);
@@ -192,9 +196,7 @@ void TreeKktSolver::FactorizeTree(const std::vector<Eigen::Matrix<double, 6, 6>>
 }
 
 void TreeKktSolver::PlaceMass(int k, const std::vector<Eigen::Matrix<double, 6, 6>>& mass) {
-  if (mass_placed_[k]) return;
   K(k).topLeftCorner<6, 6>() = mass[nodes_[k].body];
-  mass_placed_[k] = 1;
 }
 
 void TreeKktSolver::FillNode(int k, const std::vector<MatX>& jacobian) {

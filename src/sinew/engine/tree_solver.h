@@ -115,6 +115,10 @@ class TreeKktSolver {
     int row = 0;     // its first row in the node-ordered arrays (the earlier nodes' sizes)
     int block = 0;   // where its K starts in blocks_ (the earlier nodes' n^2)
     int pivot = -1;  // its closed-form pivot in articulated_ or direct_ (by `fits`), or -1
+    // Who writes its mass block in the leaves-first pass: itself when it has no children, else
+    // the child eliminated first (its highest-numbered one), before adding to it.
+    bool leaf = true;
+    bool writes_parent_mass = false;
   };
   // A node's pivot block K (n x n), coupling C to the inboard body's twist (n x 6), W = K^-1 C,
   // and its part of the solves' vector z, as views of the dense arrays below.
@@ -155,7 +159,7 @@ class TreeKktSolver {
   // (leaves first), Z_k, the parent's F and S's term.
   void StartExtraRows(const MatX& G, MatX& S);
   void EliminateExtraRows(int k, MatX& S);
-  // Node k's mass block from its body's mass matrix, once per factorization (mass_placed_).
+  // Node k's mass block from its body's mass matrix.
   void PlaceMass(int k, const std::vector<Eigen::Matrix<double, 6, 6>>& mass);
   // Node k's constraint entries from the Jacobians (its column runs).
   void FillNode(int k, const std::vector<MatX>& jacobian);
@@ -191,7 +195,6 @@ class TreeKktSolver {
   // nodes holding every kind (each sized for the largest block) spread what a solve reads over
   // 16 kB per node, which the hardware's prefetching does not follow.
   std::vector<double> blocks_;                       // each node's K, n x n (Node::block)
-  std::vector<char> mass_placed_;                    // FactorizeTree: K's mass block written
   std::vector<double> couplings_;                    // each node's C, n x 6 (Node::row)
   std::vector<double> responses_;                    // each node's W, n x 6
   std::vector<Eigen::PartialPivLU<NodeMatrix>> lu_;  // per node, the generic LU (the fallback)
