@@ -50,6 +50,46 @@ TEST(CollisionFamiliesTest, SiblingsAndGrandparentsCollideParentsNever) {
   }
 }
 
+// One cylinder per distinct joint point of a body: Rajagopal2015's femur holds its knee and
+// its patella's joint at one point, which the seed's parser gives two identical cylinders
+// (each femur contact then came twice: twice the Hertz force in SMC, a repeated row of W in NSC).
+TEST(CollisionFamiliesTest, TwoJointsAtOnePointOfABodyGiveOneCylinder) {
+  opensim::OpenSimParser parser;
+  parser.EnableCollision(1, 2);
+  parser.Parse(std::string(SINEW_TEST_DATA_DIR) +
+               "/projectchrono/chrono/data/opensim/Rajagopal2015.osim");
+  const CollisionModel& collision = parser.GetCollisionModel();
+  const model::ModelSpec& spec = parser.GetSpec();
+  // Every joint end on a moving body, 1 mm or more from its origin, is the end of exactly one
+  // of that body's cylinders, and every cylinder is such an end.
+  std::set<std::pair<int, std::vector<double>>> ends;
+  for (const model::JointSpec& j : spec.joints) {
+    for (const auto& [b, p] :
+         {std::pair{j.parent_body, j.X_PF.p}, std::pair{j.child_body, j.X_BM.p}}) {
+      if (b != model::kGroundIndex && p.norm() >= 1e-3) ends.insert({b, {p.x(), p.y(), p.z()}});
+    }
+  }
+  std::set<std::pair<int, std::vector<double>>> cylinders;
+  for (const CollisionCylinder& c : collision.shapes) {
+    EXPECT_TRUE(c.p_B_start.isZero());
+    cylinders.insert({c.body, {c.p_B_end.x(), c.p_B_end.y(), c.p_B_end.z()}});
+  }
+  EXPECT_EQ(cylinders.size(), collision.shapes.size());  // no two alike
+  EXPECT_EQ(cylinders, ends);
+  // The femurs: the knee and the patella at one point, one cylinder each.
+  for (const char* femur : {"femur_r", "femur_l"}) {
+    const int b = spec.FindBody(femur);
+    EXPECT_EQ(std::count_if(collision.shapes.begin(), collision.shapes.end(),
+                            [&](const CollisionCylinder& c) { return c.body == b; }),
+              1)
+        << femur;
+    EXPECT_EQ(std::count_if(spec.joints.begin(), spec.joints.end(),
+                            [&](const model::JointSpec& j) { return j.parent_body == b; }),
+              2)
+        << femur;
+  }
+}
+
 // All shapes in one place, so that every pair the filter allows touches: a body touches its
 // sibling, its grandparent and its uncle, never its parent or child.
 TEST(CollisionFamiliesTest, BodyTouchesGrandparentAndSiblingsNeverItsParent) {

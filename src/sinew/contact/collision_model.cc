@@ -8,6 +8,9 @@ namespace sinew::contact {
 namespace {
 
 constexpr double kShortestSegment = 1e-3;  // m
+// Two joints of a body at one point (Rajagopal2015's knee and patella on the femur) give one
+// segment: identical cylinders are one shape, and as two they would touch twice.
+constexpr double kSameEnd = 1e-9;  // m
 
 }  // namespace
 
@@ -80,14 +83,20 @@ CollisionModel BuildCollisionModel(const model::ModelSpec& spec, const std::vect
   }
   for (const model::JointSpec& j : spec.joints)
     model.jointed.emplace_back(j.parent_body, j.child_body);
-  // One segment per joint end that lies on a body other than ground.
+  // One segment per distinct joint point on a body other than ground; the radius from every
+  // joint's segment, as the seed's joints give them.
   std::vector<double> lengths;
+  const auto made = [&](int body, const Vec3& p_BJ) {
+    return std::any_of(model.shapes.begin(), model.shapes.end(), [&](const CollisionCylinder& c) {
+      return c.body == body && (c.p_B_end - p_BJ).norm() < kSameEnd;
+    });
+  };
   for (const model::JointSpec& j : spec.joints) {
     for (const auto& [body, p_BJ] :
          {std::pair{j.parent_body, j.X_PF.p}, std::pair{j.child_body, j.X_BM.p}}) {
       if (body == model::kGroundIndex || p_BJ.norm() < kShortestSegment) continue;
-      model.shapes.push_back({body, Vec3::Zero(), p_BJ, 0.0});
       lengths.push_back(p_BJ.norm());
+      if (!made(body, p_BJ)) model.shapes.push_back({body, Vec3::Zero(), p_BJ, 0.0});
     }
   }
   if (lengths.empty()) return model;

@@ -118,7 +118,8 @@ void AddGroundPlane(CollisionModel& model, double height, int material = 0);
 /// Builds the collision model of `spec`: bodies at odd tree depth (`depth` per body, ground 0)
 /// get `family_1`, at even depth `family_2` (as the seed); every joint's parent and child
 /// are an excluded pair. The cylinder radius is 10% of the median segment
-/// length of the model (at least 1 mm). Segments shorter than 1 mm get no shape.
+/// length of the model's joints (at least 1 mm). Segments shorter than 1 mm get no shape, and
+/// two joints at one point of a body one shape.
 CollisionModel BuildCollisionModel(const model::ModelSpec& spec, const std::vector<int>& depth,
                                    int family_1, int family_2);
 
