@@ -3,12 +3,15 @@
 // --contacts` draws one frame of it; a ball at rest has an arrow of its weight from its contact
 // point on the floor, the floor being the model's ContactHalfSpace (or --ground-plane).
 #include <gtest/gtest.h>
+#include <sinew/io/storage.h>
 #include <sinew/viz/image.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -263,6 +266,62 @@ TEST_F(ExportContactsTest, RenderDrawsTheArrowOfTheShownTimeFromTheContactPoint)
   // Up to the centre: the head's tip narrower than the 0.5-pixel sample spacing (its first 1.4
   // pixels) may cover no sample, and each row found is within a pixel.
   EXPECT_NEAR(y0, bottom - 0.99 * radius, projection + 3.0);
+}
+
+// The camera frames the arrows with the model: the ball dropped 3 cm onto its floor with SMC
+// contact lands with a peak force of about 20 weights, and its arrow (the weight drawn one
+// radius long) reaches far above the ball. It stays in the picture, whole: no green pixel on
+// the picture's edge, and its drawn length in pixels, against the ball's radius in the same
+// picture, is the force over the weight (seen from 8.5 degrees above: cos 8.5 deg; the arrow
+// spans the view, so perspective scales its ends and the ball differently: within 10%).
+TEST_F(ExportContactsTest, RenderKeepsALongArrowInThePicture) {
+  const std::string model = BallWithFloorAt(0.17);
+  const CliRun run = Run("simulate " + model +
+                         " --collision --contact smc --duration 0.2 --report-interval 1e-4 "
+                         "--quiet --out " +
+                         Path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // The row of the largest upward force on the ball.
+  const io::Storage contacts = io::ReadStorage(Path("out/contacts.sto"));
+  int column = -1;
+  for (size_t c = 0; c < contacts.labels.size(); ++c) {
+    const std::string& label = contacts.labels[c];
+    if (label.ends_with(".ball.force.Y")) column = static_cast<int>(c);
+  }
+  ASSERT_GE(column, 0);
+  size_t landing = 0;
+  const size_t width = contacts.labels.size();
+  for (size_t r = 0; r < contacts.time.size(); ++r) {
+    if (contacts.values[r * width + column] > contacts.values[landing * width + column])
+      landing = r;
+  }
+  const double ratio = contacts.values[landing * width + column] / kWeight;
+  ASSERT_GT(ratio, 10.0);  // an arrow ten radii long or more would have left the old picture
+  std::ostringstream time;
+  time.precision(17);
+  time << contacts.time[landing];
+  const std::string png = Path("landing.png");
+  const CliRun r = Run("render " + model + " --states " + Path("out/states.sto") +
+                       " --vis primitives --view front --width 800 --height 800 --time " +
+                       time.str() + " --contacts " + Path("out/contacts.sto") + " --out " + png);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const viz::Image image = viz::DecodePng(viz::ReadFileBytes(png), png);
+  const auto green = PixelsWhere(image, IsGreen);
+  const auto ball = PixelsWhere(image, IsOrange);
+  ASSERT_GT(green.size(), 20u);
+  ASSERT_GT(ball.size(), 20u);
+  int top = image.height, bottom = -1, ball_top = image.height, ball_bottom = -1;
+  for (const auto& [x, y] : green) {
+    EXPECT_TRUE(x > 0 && y > 0 && x < image.width - 1 && y < image.height - 1) << x << ", " << y;
+    top = std::min(top, y), bottom = std::max(bottom, y);
+  }
+  for (const auto& [x, y] : ball)
+    ball_top = std::min(ball_top, y), ball_bottom = std::max(ball_bottom, y);
+  const double radius = 0.5 * (ball_bottom - ball_top + 1);
+  const double drawn = bottom - top + 1;
+  std::cout << "landing at " << time.str() << " s: force " << ratio << " weights; arrow " << drawn
+            << " px, ball radius " << radius << " px\n";
+  EXPECT_NEAR(drawn / (radius * std::cos(8.5 * M_PI / 180)), ratio, 0.1 * ratio);
 }
 
 // --ground-plane gives the floor when collision adds one.

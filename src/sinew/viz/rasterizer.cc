@@ -340,8 +340,16 @@ Image RenderFramed(const VisualScene& scene, const std::vector<Transform>& X_GB,
   const bool has_lines = std::any_of(lines.begin(), lines.end(),
                                      [](const std::vector<Vec3>& l) { return !l.empty(); });
   const Vec3 inf = Vec3::Constant(std::numeric_limits<double>::infinity());
-  const std::pair<Vec3, Vec3> bounds = GrowBounds(
+  std::pair<Vec3, Vec3> bounds = GrowBounds(
       has_parts || !has_lines ? SceneBounds(scene, X_GB) : std::pair<Vec3, Vec3>{inf, -inf}, lines);
+  // The overlay (contact arrows) in the picture too: a long arrow would leave it.
+  for (const VisualPart& part : options.overlay) {
+    if (!part.mesh) continue;
+    for (const Vec3& p : Pose(part, Transform::Identity()).positions) {
+      bounds.first = bounds.first.cwiseMin(p);
+      bounds.second = bounds.second.cwiseMax(p);
+    }
+  }
   const Camera camera = FrameCamera(bounds, options.view_direction,
                                     static_cast<double>(options.width) / options.height);
   return RenderScene(scene, X_GB, camera, options, lines, line_colors);

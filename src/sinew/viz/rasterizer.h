@@ -37,7 +37,7 @@ struct RenderOptions {
   double line_width = 2.0;                ///< Line width (pixels).
   /// Parts in ground (X_BG is each one's pose in ground) drawn last, over the model and the
   /// lines (depth-tested only among themselves), casting no shadow, as the viewer draws the
-  /// contact force arrows (ContactArrowParts). The camera's framing leaves them out.
+  /// contact force arrows (ContactArrowParts). RenderFramed frames them with the model.
   std::vector<VisualPart> overlay;
 };
 
@@ -82,9 +82,10 @@ std::pair<Vec3, Vec3> GrowBounds(std::pair<Vec3, Vec3> bounds,
                                  const std::vector<std::vector<Vec3>>& lines);
 
 /// Renders the scene posed at X_GB, with the polylines `lines` as RenderScene draws them, and the
-/// camera framed automatically: FrameCamera on the bounds of the posed bodies and the lines (the
-/// lines' alone when no body has geometry) from options.view_direction, at the aspect ratio of
-/// the image (what `sinew render` and Python's Model.render draw). Throws as RenderScene.
+/// camera framed automatically: FrameCamera on the bounds of the posed bodies, the lines (the
+/// lines' alone when no body has geometry) and options.overlay's parts, from
+/// options.view_direction, at the aspect ratio of the image (what `sinew render` and Python's
+/// Model.render draw). Throws as RenderScene.
 Image RenderFramed(const VisualScene& scene, const std::vector<Transform>& X_GB,
                    const RenderOptions& options, const std::vector<std::vector<Vec3>>& lines = {},
                    const std::vector<Vec3>& line_colors = {});
