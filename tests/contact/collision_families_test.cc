@@ -16,11 +16,18 @@
 namespace sinew::contact {
 namespace {
 
-TEST(CollisionFamiliesTest, SiblingsAndGrandparentsCollideParentsNever) {
+// The seed's Rajagopal2015 parsed with the seed's EnableCollision(1, 2).
+class CollisionFamiliesTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    parser.EnableCollision(1, 2);
+    parser.Parse(std::string(SINEW_TEST_DATA_DIR) +
+                 "/projectchrono/chrono/data/opensim/Rajagopal2015.osim");
+  }
   opensim::OpenSimParser parser;
-  parser.EnableCollision(1, 2);
-  parser.Parse(std::string(SINEW_TEST_DATA_DIR) +
-               "/projectchrono/chrono/data/opensim/Rajagopal2015.osim");
+};
+
+TEST_F(CollisionFamiliesTest, SiblingsAndGrandparentsCollideParentsNever) {
   const CollisionModel& collision = parser.GetCollisionModel();
   const model::ModelSpec& spec = parser.GetSpec();
   auto body = [&](const char* name) {
@@ -53,11 +60,7 @@ TEST(CollisionFamiliesTest, SiblingsAndGrandparentsCollideParentsNever) {
 // One cylinder per distinct joint point of a body: Rajagopal2015's femur holds its knee and
 // its patella's joint at one point, which the seed's parser gives two identical cylinders
 // (each femur contact then came twice: twice the Hertz force in SMC, a repeated row of W in NSC).
-TEST(CollisionFamiliesTest, TwoJointsAtOnePointOfABodyGiveOneCylinder) {
-  opensim::OpenSimParser parser;
-  parser.EnableCollision(1, 2);
-  parser.Parse(std::string(SINEW_TEST_DATA_DIR) +
-               "/projectchrono/chrono/data/opensim/Rajagopal2015.osim");
+TEST_F(CollisionFamiliesTest, TwoJointsAtOnePointOfABodyGiveOneCylinder) {
   const CollisionModel& collision = parser.GetCollisionModel();
   const model::ModelSpec& spec = parser.GetSpec();
   // Every joint end on a moving body, 1 mm or more from its origin, is the end of exactly one
@@ -92,7 +95,7 @@ TEST(CollisionFamiliesTest, TwoJointsAtOnePointOfABodyGiveOneCylinder) {
 
 // All shapes in one place, so that every pair the filter allows touches: a body touches its
 // sibling, its grandparent and its uncle, never its parent or child.
-TEST(CollisionFamiliesTest, BodyTouchesGrandparentAndSiblingsNeverItsParent) {
+TEST_F(CollisionFamiliesTest, BodyTouchesGrandparentAndSiblingsNeverItsParent) {
   // ground -> 1 -> 2 -> 3, and 4 a second child of 1 (2's sibling, 3's uncle).
   CollisionModel model;
   model.family = {0, 1, 2, 1, 2};
