@@ -307,21 +307,32 @@ VecX KktSolver::MultiplyJacobian(const VecX& x) const {
 }
 
 MatX KktSolver::AssembleDense() const {
+  std::vector<Eigen::Triplet<double>> entries;
+  AppendTriplets(entries);
   MatX K = MatX::Zero(nv_ + nc_, nv_ + nc_);
+  for (const Eigen::Triplet<double>& e : entries) K(e.row(), e.col()) += e.value();
+  return K;
+}
+
+void KktSolver::AppendTriplets(std::vector<Eigen::Triplet<double>>& out) const {
   for (int b = 1; b < system_.num_bodies(); ++b) {
-    K.block<6, 6>(BodyColumn(b), BodyColumn(b)) = mass_[b];
+    const int col = BodyColumn(b);
+    for (int j = 0; j < 6; ++j) {
+      for (int i = 0; i < 6; ++i) {
+        if (mass_[b](i, j) != 0.0) out.emplace_back(col + i, col + j, mass_[b](i, j));
+      }
+    }
   }
   for (size_t k = 0; k < jacobian_.size(); ++k) {
     const MatX& J = jacobian_[k];
     for (int i = 0; i < J.rows(); ++i) {
       for (int j = 0; j < J.cols(); ++j) {
         if (columns_[k][j] < 0) continue;
-        K(nv_ + row_[k] + i, columns_[k][j]) += J(i, j);
-        K(columns_[k][j], nv_ + row_[k] + i) += J(i, j);
+        out.emplace_back(nv_ + row_[k] + i, columns_[k][j], J(i, j));
+        out.emplace_back(columns_[k][j], nv_ + row_[k] + i, J(i, j));
       }
     }
   }
-  return K;
 }
 
 VecX KktSolver::MultiplyJacobianTranspose(const VecX& y) const {

@@ -26,6 +26,7 @@
 
 #include <Eigen/LU>
 #include <Eigen/QR>
+#include <Eigen/SparseCore>
 #include <memory>
 #include <vector>
 
@@ -90,10 +91,10 @@ class KktSolver {
   /// S^-1 that Factorize keeps:
   ///   out_t -= Y_t S^-1 Y_s^T
   /// (Y_t, Y_s: Y's rows at the target's and the source's twist; G K_T^-1 e_j = Y_s^T e_j as
-  /// K_T is symmetric), one backward sweep per factorization. A rank-deficient S goes by its pseudo-inverse,
-  /// exact here as unit loads are always consistent with the constraints (unlike Solve, no
-  /// residual is checked). No heap use once warm. Returns false, doing nothing, for the kDense
-  /// method: then use Solve. Bodies must not be ground.
+  /// K_T is symmetric), one backward sweep per factorization. A rank-deficient S goes by its
+  /// pseudo-inverse, exact here as unit loads are always consistent with the constraints (unlike
+  /// Solve, no residual is checked). No heap use once warm. Returns false, doing nothing, for the
+  /// kDense method: then use Solve. Bodies must not be ground.
   bool SolveUnitLoadResponses(int source, const std::vector<int>& targets,
                               Eigen::Ref<MatX> out) const;
 
@@ -103,8 +104,13 @@ class KktSolver {
   void MultiplyMass(const VecX& x, VecX& y) const;
   /// J * x with the J of the last Factorize.
   VecX MultiplyJacobian(const VecX& x) const;
-  /// The dense matrix [M J^T; J 0] of the last Factorize (small systems; implicit schemes).
+  /// The dense matrix [M J^T; J 0] of the last Factorize (small systems, cross-checks).
   MatX AssembleDense() const;
+  /// The entries of [M J^T; J 0] of the last Factorize as (row, column, value) triplets,
+  /// appended to `out` (entries that coincide are to be summed, as Eigen's setFromTriplets
+  /// does; exact zeros of the mass blocks are left out): what the sparse implicit scheme
+  /// factorizes.
+  void AppendTriplets(std::vector<Eigen::Triplet<double>>& out) const;
   /// J^T * y (y has nc entries) with the J of the last Factorize.
   VecX MultiplyJacobianTranspose(const VecX& y) const;
 
