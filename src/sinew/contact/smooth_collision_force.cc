@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 namespace sinew::contact {
@@ -50,40 +51,92 @@ double SmoothCollisionForce::VisitContacts(const engine::State& state, ContactSi
     double energy;
   } visit{this, &state, &sink, 0.0};
   detector_->FindContacts(X_GB, [&visit](const CollisionContact& c) {
-    visit.energy += visit.force->ApplyContact(*visit.state, c, *visit.sink);
+    const Response r = visit.force->Respond(c, RelativeVelocity(*visit.state, c), /*slopes=*/false);
+    visit.energy += r.energy;
+    if (r.f.squaredNorm() > 0.0) visit.sink->Add({c.body1, c.body2, c.p_G, r.f});
   });
   return visit.energy;
 }
 
-double SmoothCollisionForce::ApplyContact(const engine::State& state, const CollisionContact& c,
-                                          ContactSink& sink) const {
+Vec3 SmoothCollisionForce::RelativeVelocity(const engine::State& state, const CollisionContact& c) {
+  return engine::PointVelocity(state.bodies[c.body2], c.p_G) -
+         engine::PointVelocity(state.bodies[c.body1], c.p_G);
+}
+
+SmoothCollisionForce::Response SmoothCollisionForce::Respond(const CollisionContact& c,
+                                                             const Vec3& v_G, bool slopes) const {
   const PairMaterial& m = c.material;
   const double d = c.depth;
   const double sqrt_Rd = std::sqrt(c.radius * d);
   const double mass =
       EffectiveMass(c.body1 == 0 ? 0.0 : masses_[c.body1], c.body2 == 0 ? 0.0 : masses_[c.body2]);
-  double f_elastic = 0.0, damping = 0.0;
+  // The elastic force goes as d^(3/2) in both laws, the damping coefficient as d^(1/2) (kn)
+  // or d^(1/4) (Hertz).
+  double f_elastic = 0.0, damping = 0.0, damping_power = 0.0;
   if (m.kn > 0.0) {
     f_elastic = m.kn * sqrt_Rd * d;
     damping = m.gn * mass * sqrt_Rd;
+    damping_power = 0.5;
   } else {
     f_elastic = 4.0 / 3.0 * m.effective_modulus * sqrt_Rd * d;
     damping = 2.0 * std::sqrt(5.0 / 6.0) * DampingFactor(m.restitution) *
               std::sqrt(2.0 * m.effective_modulus * sqrt_Rd * mass);
+    damping_power = 0.25;
   }
-  // Velocity of body 2's point relative to body 1's at the contact point.
-  const Vec3 v_G = engine::PointVelocity(state.bodies[c.body2], c.p_G) -
-                   engine::PointVelocity(state.bodies[c.body1], c.p_G);
-  const double v_normal = v_G.dot(c.n_G);
-  const double f_normal = std::max(0.0, f_elastic - damping * v_normal);
-  if (f_normal > 0.0) {
-    const Vec3 v_tangent = v_G - v_normal * c.n_G;
-    const double friction = m.friction * f_normal;
-    const double v_s = m.gt > 0.0 ? friction / m.gt : slip_speed_;
-    const Vec3 f_friction = -friction * v_tangent / std::sqrt(v_tangent.squaredNorm() + v_s * v_s);
-    sink.Add({c.body1, c.body2, c.p_G, f_normal * c.n_G + f_friction});
-  }
-  return 0.4 * f_elastic * d;
+  Response r;
+  r.energy = 0.4 * f_elastic * d;
+  const Vec3& n = c.n_G;
+  const double v_normal = v_G.dot(n);
+  const double f_normal = f_elastic - damping * v_normal;
+  if (!(f_normal > 0.0)) return r;  // never a pull: no force, and no slope on this side
+  const Vec3 v_tangent = v_G - v_normal * n;
+  const double friction = m.friction * f_normal;
+  const double v_s = m.gt > 0.0 ? friction / m.gt : slip_speed_;
+  const double s = std::sqrt(v_tangent.squaredNorm() + v_s * v_s);
+  r.f = f_normal * n - friction * v_tangent / s;
+  if (!slopes) return r;
+  // f = f_n n - u q v_t with q = f_n / s, s = sqrt(|v_t|^2 + v_s^2), v_s = u f_n / gt or fixed.
+  const double dvs_dfn = m.gt > 0.0 ? m.friction / m.gt : 0.0;
+  const double dq_dfn = 1.0 / s - f_normal * v_s * dvs_dfn / (s * s * s);
+  const Vec3 df_dfn = n - m.friction * dq_dfn * v_tangent;  // f's change per unit of f_n
+  const Mat3 P = Mat3::Identity() - n * n.transpose();      // onto the tangent plane
+  // D: f_n falls with the separation speed (slope -c along n); the friction turns with v_t.
+  r.D_rel = -damping * df_dfn * n.transpose() -
+            m.friction *
+                ((f_normal / s) * P - (f_normal / (s * s * s)) * v_tangent * v_tangent.transpose());
+  // K: body 2's point moved along +n by dx leaves the depth d - dx.
+  const double dfn_dd = 1.5 * f_elastic / d - damping_power * damping / d * v_normal;
+  r.K_rel = -dfn_dd * df_dfn * n.transpose();
+  return r;
+}
+
+bool SmoothCollisionForce::CalcLoadJacobians(const engine::ForceContext& context,
+                                             Eigen::Ref<MatX> K, Eigen::Ref<MatX> D) const {
+  const engine::State& state = context.state;
+  const std::optional<engine::ForceSupport> support = Support();
+  std::vector<int> column(state.bodies.size(), -1);  // each body's first column in K and D
+  for (size_t i = 0; i < support->bodies.size(); ++i)
+    column[support->bodies[i]] = 6 * static_cast<int>(i);
+  std::vector<Transform> X_GB(state.bodies.size());
+  for (size_t b = 0; b < state.bodies.size(); ++b) X_GB[b] = engine::PoseOf(state.bodies[b]);
+  detector_->FindContacts(X_GB, [&](const CollisionContact& c) {
+    const Response r = Respond(c, RelativeVelocity(state, c), /*slopes=*/true);
+    // Body b's point moves as G_b = [-[p - Bo]x  I] times its twist; body 2's load is G_2^T f,
+    // body 1's -G_1^T f.
+    const int body[2] = {c.body1, c.body2};
+    Eigen::Matrix<double, 3, 6> G[2];
+    for (int k = 0; k < 2; ++k) G[k] << -Skew(c.p_G - state.bodies[body[k]].p_GB), Mat3::Identity();
+    for (int a = 0; a < 2; ++a) {
+      if (column[body[a]] < 0) continue;
+      for (int b = 0; b < 2; ++b) {
+        if (column[body[b]] < 0) continue;
+        const double sign = a == b ? 1.0 : -1.0;
+        D.block<6, 6>(column[body[a]], column[body[b]]) += sign * G[a].transpose() * r.D_rel * G[b];
+        K.block<6, 6>(column[body[a]], column[body[b]]) += sign * G[a].transpose() * r.K_rel * G[b];
+      }
+    }
+  });
+  return true;
 }
 
 }  // namespace sinew::contact

@@ -33,10 +33,27 @@ class SmoothCollisionForce final : public ContactForce {
   double VisitContacts(const engine::State& state, ContactSink& sink) const override;
   double slip_speed() const { return slip_speed_; }
 
+  /// The contacts' load Jacobians for implicit integration, over Support()'s bodies. D = df/dv
+  /// is exact: each force depends on the velocities only through the relative velocity at its
+  /// point. K = df/dx keeps the dominant part, the depth's: the normal force's slope with the
+  /// depth (and the friction's through it) along the normal; how the contact's point, normal
+  /// and levers move with the bodies is left out (terms of order f / R against f' = 3 f / 2d).
+  bool CalcLoadJacobians(const engine::ForceContext& context, Eigen::Ref<MatX> K,
+                         Eigen::Ref<MatX> D) const override;
+
  private:
-  // One contact's force into `sink`; returns its elastic energy.
-  double ApplyContact(const engine::State& state, const CollisionContact& c,
-                      ContactSink& sink) const;
+  // One contact's law at the relative velocity v_G (body 2's point less body 1's): the force on
+  // body 2 at c.p_G (body 1 takes its opposite), its elastic energy, and when `slopes`, its
+  // derivatives with respect to v_G (D_rel) and to the displacement of body 2's point relative
+  // to body 1's through the depth (K_rel).
+  struct Response {
+    Vec3 f = Vec3::Zero();
+    double energy = 0.0;
+    Mat3 D_rel = Mat3::Zero(), K_rel = Mat3::Zero();
+  };
+  Response Respond(const CollisionContact& c, const Vec3& v_G, bool slopes) const;
+  // Body 2's point velocity less body 1's at the contact.
+  static Vec3 RelativeVelocity(const engine::State& state, const CollisionContact& c);
 
   std::shared_ptr<const CollisionDetector> detector_;
   std::vector<double> masses_;
