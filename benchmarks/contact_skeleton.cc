@@ -11,17 +11,16 @@
 
 namespace {
 
-// Argument 1: the ground is a box (the seed's scene literally, `AddEnvironmentBox`), whose top
-// face the cylinders touch as a plane there.
-void BM_SkeletonOnGroundSmcStep(benchmark::State& bench) {
-  const sinew::testing::SkeletonDrop scene =
-      sinew::testing::MakeSkeletonDrop(0.05, {}, bench.range(0) == 1);
+// One simulated second of `system` from its default state with the fixed-step `scheme` at
+// h = 1e-3 s per iteration; reports microseconds per step and the steps.
+void TimeOneSecond(benchmark::State& bench, const sinew::engine::System& system,
+                   const char* scheme) {
   double steps = 0.0;
   for (auto _ : bench) {
-    sinew::engine::State state = sinew::engine::MakeDefaultState(*scene.system);
+    sinew::engine::State state = sinew::engine::MakeDefaultState(system);
     sinew::engine::IntegratorSettings settings;
     settings.step = 1e-3;
-    auto integrator = sinew::engine::MakeIntegrator("euler", *scene.system, settings);
+    auto integrator = sinew::engine::MakeIntegrator(scheme, system, settings);
     integrator->StepTo(state, 1.0);
     steps += static_cast<double>(integrator->stats().steps);
   }
@@ -29,7 +28,24 @@ void BM_SkeletonOnGroundSmcStep(benchmark::State& bench) {
       benchmark::Counter(steps * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   bench.counters["steps"] = benchmark::Counter(steps, benchmark::Counter::kAvgIterations);
 }
+
+// Argument 1: the ground is a box (the seed's scene literally, `AddEnvironmentBox`), whose top
+// face the cylinders touch as a plane there.
+void BM_SkeletonOnGroundSmcStep(benchmark::State& bench) {
+  const sinew::testing::SkeletonDrop scene =
+      sinew::testing::MakeSkeletonDrop(0.05, {}, bench.range(0) == 1);
+  TimeOneSecond(bench, *scene.system, "euler");
+}
 BENCHMARK(BM_SkeletonOnGroundSmcStep)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// The same scene with linearized implicit Euler, which comes to rest there at 1 ms where
+// semi-implicit Euler does not (docs/contact.md): the SMC force's own load Jacobians and a
+// sparse LU of the step's KKT matrix.
+void BM_SkeletonOnGroundSmcImplicitEulerStep(benchmark::State& bench) {
+  const sinew::testing::SkeletonDrop scene = sinew::testing::MakeSkeletonDrop(0.05);
+  TimeOneSecond(bench, *scene.system, "implicit-euler");
+}
+BENCHMARK(BM_SkeletonOnGroundSmcImplicitEulerStep)->Unit(benchmark::kMillisecond);
 
 // The same skeleton in free fall without collision (its evaluation, KKT solve and projections
 // alone): what the contact adds is the difference.
@@ -41,17 +57,7 @@ void BM_SkeletonFallingWithoutCollisionStep(benchmark::State& bench) {
   sinew::opensim::OpenSimParser parser;
   parser.ParseSpec(system, spec);
   system.Finalize();
-  double steps = 0.0;
-  for (auto _ : bench) {
-    sinew::engine::State state = sinew::engine::MakeDefaultState(system);
-    sinew::engine::IntegratorSettings settings;
-    settings.step = 1e-3;
-    auto integrator = sinew::engine::MakeIntegrator("euler", system, settings);
-    integrator->StepTo(state, 1.0);
-    steps += static_cast<double>(integrator->stats().steps);
-  }
-  bench.counters["us_per_step"] =
-      benchmark::Counter(steps * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  TimeOneSecond(bench, system, "euler");
 }
 BENCHMARK(BM_SkeletonFallingWithoutCollisionStep)->Unit(benchmark::kMillisecond);
 
