@@ -1,3 +1,4 @@
+#include <sinew/contact/collision_contact_provider.h>
 #include <sinew/contact/smooth_collision_force.h>
 #include <sinew/engine/pose.h>
 #include <sinew/engine/state.h>
@@ -40,8 +41,7 @@ SmoothCollisionForce::SmoothCollisionForce(std::string name,
 double SmoothCollisionForce::VisitContacts(const engine::State& state, ContactSink& sink) const {
   // Per-thread scratch: no allocation per evaluation once grown.
   thread_local std::vector<Transform> X_GB;
-  X_GB.resize(state.bodies.size());
-  for (size_t b = 0; b < state.bodies.size(); ++b) X_GB[b] = engine::PoseOf(state.bodies[b]);
+  GatherBodyPoses(state, X_GB);
   // The visitor captures one reference, so std::function holds it without the heap
   // (EvaluationAllocationTest.SkeletonOnTheGroundStepsWithoutHeapUse).
   struct Visit {
@@ -117,8 +117,8 @@ bool SmoothCollisionForce::CalcLoadJacobians(const engine::ForceContext& context
   std::vector<int> column(state.bodies.size(), -1);  // each body's first column in K and D
   for (size_t i = 0; i < support->bodies.size(); ++i)
     column[support->bodies[i]] = 6 * static_cast<int>(i);
-  std::vector<Transform> X_GB(state.bodies.size());
-  for (size_t b = 0; b < state.bodies.size(); ++b) X_GB[b] = engine::PoseOf(state.bodies[b]);
+  std::vector<Transform> X_GB;
+  GatherBodyPoses(state, X_GB);
   detector_->FindContacts(X_GB, [&](const CollisionContact& c) {
     const Response r = Respond(c, RelativeVelocity(state, c), /*slopes=*/true);
     // Body b's point moves as G_b = [-[p - Bo]x  I] times its twist; body 2's load is G_2^T f,
