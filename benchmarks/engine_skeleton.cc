@@ -20,6 +20,8 @@
 #include <string>
 #include <utility>
 
+#include "hung_skeleton.h"
+
 namespace {
 
 const std::string kData = SINEW_TEST_DATA_DIR;
@@ -86,68 +88,14 @@ void BM_Rajagopal2016WithCouplersOneSecond(benchmark::State& bench) {
 }
 BENCHMARK(BM_Rajagopal2016WithCouplersOneSecond)->Unit(benchmark::kMillisecond);
 
-// Issue #15's accuracy benchmark: a skeleton hung from its locked pelvis, limbs swinging from a
-// bent pose (that of BuildSystemTest.Gait2354HungFromPelvisConservesEnergy, except that the left
-// knee is given its speed towards flexion: towards extension it soon left the range of the
-// knee's splines, whose linear extrapolation makes the accelerations jump), one simulated
-// second of RK45 at accuracy 10^-k (k = the benchmark's argument). The error is measured, not
-// assumed: `err_rad` is the largest |q - q_ref| over the coordinates at 1 s, q_ref from a run at
-// accuracy 1e-12 made once before timing. The issue compares the time at the accuracy whose
-// error is 3e-6 rad with Simbody's (about 0.1 s for gait2354 on this machine).
-struct HungSkeleton {
-  std::unique_ptr<sinew::engine::System> system;
-  sinew::engine::State start;
-};
-
-HungSkeleton MakeHungSkeleton(const std::string& file, bool with_constraints, double flexion) {
-  sinew::model::ModelSpec spec = sinew::io::ReadOsim(file);
-  for (sinew::model::CoordinateSpec& c : spec.coordinates) {
-    if (c.name.rfind("pelvis_", 0) == 0) c.locked = true;
-  }
-  HungSkeleton hung;
-  if (with_constraints) {
-    // Through the parser: the model's constraints (Rajagopal2016's patella couplers) and its
-    // other forces; its muscles are left out, as in BM_Rajagopal2016WithCouplersOneSecond.
-    sinew::OpenSimParser parser;
-    for (const sinew::model::ForceSpec& force : spec.forces) {
-      if (force.type == "Millard2012EquilibriumMuscle") parser.DisableForce(force.name);
-    }
-    hung.system = std::make_unique<sinew::engine::System>(spec.gravity);
-    parser.ParseSpec(*hung.system, spec);
-    hung.system->Finalize();
-  } else {
-    hung.system = sinew::opensim::BuildSystem(spec);
-  }
-  hung.start = sinew::engine::MakeDefaultState(*hung.system);
-  const struct {
-    const char* name;
-    double q, u;
-  } pose[] = {{"hip_flexion_r", 0.6, 1.0},   {"knee_angle_r", 0.9 * flexion, 0.0},
-              {"hip_flexion_l", -0.3, -0.5}, {"knee_angle_l", 0.2 * flexion, 2.0 * flexion},
-              {"ankle_angle_r", 0.2, 0.0},   {"lumbar_extension", -0.2, 0.5},
-              {"hip_adduction_l", 0.1, 0.3}, {"lumbar_bending", 0.1, -0.4}};
-  for (const auto& p : pose) {
-    hung.start.q[hung.system->FindCoordinate(p.name)] = p.q;
-    hung.start.u[hung.system->FindCoordinate(p.name)] = p.u;
-  }
-  sinew::engine::PlaceBodies(*hung.system, hung.start);
-  if (hung.system->HasExtraConstraints()) sinew::engine::ProjectState(*hung.system, hung.start);
-  return hung;
-}
-
-sinew::engine::State RunHung(const HungSkeleton& hung, const char* scheme, double accuracy,
-                             sinew::engine::IntegratorStats* stats) {
-  sinew::engine::State state = hung.start;
-  sinew::engine::IntegratorSettings settings;
-  settings.accuracy = accuracy;
-  // Constraints to 1e-3 of the accuracy (the default), but not below what double rounding
-  // allows on these models' 1e-1 m lever arms.
-  settings.constraint_tolerance = std::max(1e-3 * accuracy, 1e-13);
-  auto integrator = sinew::engine::MakeIntegrator(scheme, *hung.system, settings);
-  integrator->StepTo(state, 1.0);
-  if (stats != nullptr) *stats = integrator->stats();
-  return state;
-}
+// Issue #15's accuracy benchmark (hung_skeleton.h): one simulated second of a hung skeleton with
+// RK45 at accuracy 10^-k (k = the benchmark's argument). The error is measured, not assumed:
+// `err_rad` is the largest |q - q_ref| over the coordinates at 1 s, q_ref from a run at accuracy
+// 1e-12 made once before timing. The issue compares the time at the accuracy whose error is
+// 3e-6 rad with Simbody's; simbody_hung.cc times Simbody on the same motion.
+using sinew_bench::HungSkeleton;
+using sinew_bench::MakeHungSkeleton;
+using sinew_bench::RunHung;
 
 void TimeHung(benchmark::State& bench, const HungSkeleton& hung, const char* scheme) {
   const double accuracy = std::pow(10.0, -static_cast<double>(bench.range(0)));
@@ -164,11 +112,7 @@ void TimeHung(benchmark::State& bench, const HungSkeleton& hung, const char* sch
 }
 
 void BM_Gait2354HungOneSecond(benchmark::State& bench, const char* scheme) {
-  static const HungSkeleton hung =
-      MakeHungSkeleton(kData +
-                           "/opensim-org/opensim-models/Pipelines/Gait2354_Simbody/OutputReference/"
-                           "subject01_simbody_adjusted.osim",
-                       false, -1.0);
+  static const HungSkeleton hung = MakeHungSkeleton(sinew_bench::kGait2354HungFile, false, -1.0);
   TimeHung(bench, hung, scheme);
 }
 BENCHMARK_CAPTURE(BM_Gait2354HungOneSecond, rk45, "rk45")
@@ -177,8 +121,7 @@ BENCHMARK_CAPTURE(BM_Gait2354HungOneSecond, rk45, "rk45")
 
 // Rajagopal2016 hung the same way, with its patella couplers (its 80 muscles left out).
 void BM_Rajagopal2016HungOneSecond(benchmark::State& bench, const char* scheme) {
-  static const HungSkeleton hung = MakeHungSkeleton(
-      kData + "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim", true, 1.0);
+  static const HungSkeleton hung = MakeHungSkeleton(sinew_bench::kRajagopal2016HungFile, true, 1.0);
   TimeHung(bench, hung, scheme);
 }
 BENCHMARK_CAPTURE(BM_Rajagopal2016HungOneSecond, rk45, "rk45")

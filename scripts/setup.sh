@@ -4,7 +4,7 @@ set -euo pipefail
 packages=(cmake ninja-build ccache g++ clang libclang-rt-14-dev
   libeigen3-dev libpugixml-dev libcli11-dev nlohmann-json3-dev zlib1g-dev libmuparser-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libbullet-dev libsundials-dev
+  libbullet-dev libsundials-dev libsimbody-dev
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-distributed
   chromium)
 missing=()

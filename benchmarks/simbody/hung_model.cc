@@ -1,0 +1,171 @@
+#include "hung_model.h"
+
+#include <Simbody.h>
+
+#include <array>
+#include <stdexcept>
+#include <utility>
+
+namespace simbody_bench {
+namespace {
+
+SimTK::Vec3 ToVec3(const std::array<double, 3>& v) { return {v[0], v[1], v[2]}; }
+
+SimTK::Mat33 ToMat33(const std::array<double, 9>& m) {
+  SimTK::Mat33 R;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) R(i, j) = m[3 * i + j];
+  }
+  return R;
+}
+
+SimTK::Transform ToTransform(const Pose& X) {
+  return {SimTK::Rotation(ToMat33(X.R), true), ToVec3(X.p)};
+}
+
+// A ScalarFunction of n arguments as a SimTK::Function (owned by the mobilizer or constraint
+// it is given to, as Simbody does).
+class Callback final : public SimTK::Function {
+ public:
+  Callback(ScalarFunction f, int n) : f_(std::move(f)), n_(n) {
+    if (n > kMaxArguments) throw std::runtime_error("simbody_bench: too many arguments");
+  }
+  double calcValue(const SimTK::Vector& x) const override {
+    std::array<double, kMaxArguments> a;
+    for (int i = 0; i < n_; ++i) a[i] = x[i];
+    return f_(a.data(), n_, nullptr, 0);
+  }
+  double calcDerivative(const SimTK::Array_<int>& wrt, const SimTK::Vector& x) const override {
+    std::array<double, kMaxArguments> a;
+    for (int i = 0; i < n_; ++i) a[i] = x[i];
+    return f_(a.data(), n_, wrt.data(), static_cast<int>(wrt.size()));
+  }
+  int getArgumentSize() const override { return n_; }
+  int getMaxDerivativeOrder() const override { return 2; }
+
+ private:
+  ScalarFunction f_;
+  int n_;
+};
+
+// Where a model coordinate lives: its mobilized body and q index there.
+struct Slot {
+  SimTK::MobilizedBodyIndex body;
+  int q = -1;
+};
+
+}  // namespace
+
+struct Simulation::Impl {
+  SimTK::MultibodySystem system;
+  SimTK::SimbodyMatterSubsystem matter{system};
+  SimTK::GeneralForceSubsystem forces{system};
+  std::vector<Slot> slots;
+  std::vector<double> q0;
+  SimTK::State start;
+};
+
+Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>()) {
+  Impl& s = *impl_;
+  SimTK::Force::UniformGravity(s.forces, s.matter, ToVec3(model.gravity));
+  s.slots.resize(model.q.size());
+  s.q0 = model.q;
+  std::vector<SimTK::MobilizedBody> mobods(model.bodies.size());
+  mobods[0] = s.matter.Ground();
+  for (const Joint& joint : model.joints) {
+    if (!mobods.at(joint.parent).getMobilizedBodyIndex().isValid()) {
+      throw std::runtime_error("simbody_bench: a joint comes before its parent's");
+    }
+    const Body& b = model.bodies.at(joint.child);
+    const SimTK::Vec3 com = ToVec3(b.mass_center);
+    const SimTK::Inertia central{SimTK::SymMat33(ToMat33(b.inertia))};
+    const SimTK::Body::Rigid body(
+        SimTK::MassProperties(b.mass, com, central.shiftFromMassCenter(com, b.mass)));
+    const SimTK::Transform X_PF = ToTransform(joint.X_PF), X_BM = ToTransform(joint.X_BM);
+    SimTK::MobilizedBody& parent = mobods[joint.parent];
+    switch (joint.kind) {
+      case Joint::Kind::kPin:
+        mobods[joint.child] = SimTK::MobilizedBody::Pin(parent, X_PF, body, X_BM);
+        break;
+      case Joint::Kind::kUniversal:
+        mobods[joint.child] = SimTK::MobilizedBody::Universal(parent, X_PF, body, X_BM);
+        break;
+      case Joint::Kind::kWeld:
+        mobods[joint.child] = SimTK::MobilizedBody::Weld(parent, X_PF, body, X_BM);
+        break;
+      case Joint::Kind::kFunctionBased: {
+        SimTK::Array_<const SimTK::Function*> functions;
+        SimTK::Array_<SimTK::Array_<int>> arguments;
+        SimTK::Array_<SimTK::Vec3> axes;
+        for (const Axis& axis : joint.axes) {
+          functions.push_back(new Callback(axis.f, static_cast<int>(axis.arguments.size())));
+          arguments.push_back(SimTK::Array_<int>(axis.arguments.begin(), axis.arguments.end()));
+          axes.push_back(SimTK::UnitVec3(ToVec3(axis.axis)));
+        }
+        mobods[joint.child] = SimTK::MobilizedBody::FunctionBased(
+            parent, X_PF, body, X_BM, static_cast<int>(joint.coordinates.size()), functions,
+            arguments, axes);
+        break;
+      }
+    }
+    for (size_t i = 0; i < joint.coordinates.size(); ++i) {
+      s.slots.at(joint.coordinates[i]) = {mobods[joint.child].getMobilizedBodyIndex(),
+                                          static_cast<int>(i)};
+    }
+  }
+  for (const Coupler& c : model.couplers) {
+    SimTK::Array_<SimTK::MobilizedBodyIndex> bodies;
+    SimTK::Array_<SimTK::MobilizerQIndex> qs;
+    for (int k : c.coordinates) {
+      bodies.push_back(s.slots.at(k).body);
+      qs.push_back(SimTK::MobilizerQIndex(s.slots.at(k).q));
+    }
+    SimTK::Constraint::CoordinateCoupler(
+        s.matter, new Callback(c.f, static_cast<int>(c.coordinates.size())), bodies, qs);
+  }
+  s.system.realizeTopology();
+  s.start = s.system.getDefaultState();
+  for (size_t c = 0; c < s.slots.size(); ++c) {
+    if (!s.slots[c].body.isValid()) continue;
+    const SimTK::MobilizedBody& m = s.matter.getMobilizedBody(s.slots[c].body);
+    m.setOneQ(s.start, s.slots[c].q, model.q[c]);
+    m.setOneU(s.start, s.slots[c].q, model.u[c]);
+  }
+}
+
+Simulation::~Simulation() = default;
+
+std::vector<double> Simulation::Run(Scheme scheme, double accuracy, double t_final, long* steps,
+                                    double* energy_change) const {
+  const Impl& s = *impl_;
+  std::unique_ptr<SimTK::Integrator> made;
+  if (scheme == Scheme::kRungeKuttaMerson) {
+    made = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(s.system);
+  } else {
+    made = std::make_unique<SimTK::RungeKuttaFeldbergIntegrator>(s.system);
+  }
+  SimTK::Integrator& integrator = *made;
+  integrator.setAccuracy(accuracy);
+  integrator.initialize(s.start);
+  // stepTo also returns at events (the start of the continuous interval first).
+  while (integrator.getTime() < t_final) {
+    if (integrator.stepTo(t_final) == SimTK::Integrator::EndOfSimulation) {
+      throw std::runtime_error("simbody_bench: Simbody's integrator ended the simulation early");
+    }
+  }
+  if (steps != nullptr) *steps = integrator.getNumStepsTaken();
+  if (energy_change != nullptr) {
+    SimTK::State start = s.start;
+    s.system.realize(start, SimTK::Stage::Dynamics);
+    s.system.realize(integrator.getState(), SimTK::Stage::Dynamics);
+    *energy_change = s.system.calcEnergy(integrator.getState()) - s.system.calcEnergy(start);
+  }
+  std::vector<double> q = s.q0;
+  for (size_t c = 0; c < s.slots.size(); ++c) {
+    if (!s.slots[c].body.isValid()) continue;
+    q[c] = s.matter.getMobilizedBody(s.slots[c].body).getOneQ(integrator.getState(), s.slots[c].q);
+  }
+  return q;
+}
+
+}  // namespace simbody_bench

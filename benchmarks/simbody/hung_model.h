@@ -1,0 +1,82 @@
+// A skeleton built in Simbody from plain data, for the Simbody comparison benchmarks
+// (simbody_hung.cc). Compiled as C++17 on its own: Simbody 3.7's headers do not compile as
+// C++20 (their index types' comparison operators become ambiguous), and Sinew's headers need
+// C++20, so this interface mentions neither.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace simbody_bench {
+
+/// A pose: rotation R (row-major) and translation p of a frame in its parent.
+struct Pose {
+  std::array<double, 9> R{1, 0, 0, 0, 1, 0, 0, 0, 1};
+  std::array<double, 3> p{0, 0, 0};
+};
+
+/// f(x) (n arguments) for num_wrt = 0, else the partial derivative of f by the arguments
+/// listed in wrt. Called on every evaluation: it must not allocate.
+using ScalarFunction = std::function<double(const double* x, int n, const int* wrt, int num_wrt)>;
+/// The most arguments a ScalarFunction may take.
+inline constexpr int kMaxArguments = 8;
+
+struct Body {
+  double mass = 0;
+  std::array<double, 3> mass_center{0, 0, 0};  ///< in the body frame
+  std::array<double, 9> inertia{};             ///< about the mass centre, body axes (row-major)
+};
+
+/// One axis of a function-based mobilizer: a rotation about, or translation along, `axis`
+/// by f(the joint's coordinates listed in `arguments`, as indices into Joint::coordinates).
+struct Axis {
+  ScalarFunction f;
+  std::vector<int> arguments;
+  std::array<double, 3> axis{1, 0, 0};
+};
+
+struct Joint {
+  enum class Kind { kPin, kUniversal, kWeld, kFunctionBased };
+  Kind kind = Kind::kWeld;
+  int parent = 0, child = 0;  ///< body indices (0: ground); parents come before children
+  Pose X_PF, X_BM;
+  std::vector<int> coordinates;  ///< model coordinate indices, in the mobilizer's q order
+  std::vector<Axis> axes;        ///< kFunctionBased: three rotations, then three translations
+};
+
+/// f(q_independent..., q_dependent) = 0.
+struct Coupler {
+  ScalarFunction f;
+  std::vector<int> coordinates;  ///< model coordinate indices, the function's arguments
+};
+
+struct Model {
+  std::array<double, 3> gravity{0, -9.80665, 0};
+  std::vector<Body> bodies;  ///< [0] is ground (ignored)
+  std::vector<Joint> joints;
+  std::vector<Coupler> couplers;
+  std::vector<double> q, u;  ///< start coordinates and speeds, per model coordinate
+};
+
+/// The model in Simbody, ready to integrate from its start state.
+class Simulation {
+ public:
+  explicit Simulation(const Model& model);
+  ~Simulation();
+  /// Simbody's error-controlled explicit integrators.
+  enum class Scheme { kRungeKuttaMerson, kRungeKuttaFeldberg };
+  /// The coordinates at t_final after Simbody's `scheme` at `accuracy`
+  /// (coordinates no mobilizer holds keep their start values); its step count into *steps and,
+  /// when not null, the change of mechanical energy (kinetic + gravity's potential, J) into
+  /// *energy_change.
+  std::vector<double> Run(Scheme scheme, double accuracy, double t_final, long* steps,
+                          double* energy_change = nullptr) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace simbody_bench
