@@ -20,7 +20,7 @@
 #include <string>
 #include <utility>
 
-#include "hung_skeleton.h"
+#include "engine/hung_skeleton.h"
 
 namespace {
 
@@ -88,14 +88,14 @@ void BM_Rajagopal2016WithCouplersOneSecond(benchmark::State& bench) {
 }
 BENCHMARK(BM_Rajagopal2016WithCouplersOneSecond)->Unit(benchmark::kMillisecond);
 
-// Issue #15's accuracy benchmark (hung_skeleton.h): one simulated second of a hung skeleton with
-// RK45 at accuracy 10^-k (k = the benchmark's argument). The error is measured, not assumed:
-// `err_rad` is the largest |q - q_ref| over the coordinates at 1 s, q_ref from a run at accuracy
-// 1e-12 made once before timing. The issue compares the time at the accuracy whose error is
-// 3e-6 rad with Simbody's; simbody_hung.cc times Simbody on the same motion.
-using sinew_bench::HungSkeleton;
-using sinew_bench::MakeHungSkeleton;
-using sinew_bench::RunHung;
+// Issue #15's accuracy benchmark (tests/engine/hung_skeleton.h): one simulated second of a hung
+// skeleton with RK45 at accuracy 10^-k (k = the benchmark's argument). The error is measured, not
+// assumed: `err_rad` is the largest |q - q_ref| over the coordinates at 1 s, q_ref from a run at
+// accuracy 1e-12 made once before timing. The issue compares the time at the accuracy whose error
+// is 3e-6 rad with Simbody's; simbody_hung.cc times Simbody on the same motion.
+using sinew::engine::testing::HungSkeleton;
+using sinew::engine::testing::MakeHungSkeleton;
+using sinew::engine::testing::RunHung;
 
 void TimeHung(benchmark::State& bench, const HungSkeleton& hung, const char* scheme) {
   const double accuracy = std::pow(10.0, -static_cast<double>(bench.range(0)));
@@ -112,7 +112,8 @@ void TimeHung(benchmark::State& bench, const HungSkeleton& hung, const char* sch
 }
 
 void BM_Gait2354HungOneSecond(benchmark::State& bench, const char* scheme) {
-  static const HungSkeleton hung = MakeHungSkeleton(sinew_bench::kGait2354HungFile, false, -1.0);
+  static const HungSkeleton hung =
+      MakeHungSkeleton(sinew::engine::testing::kGait2354HungFile, false, -1.0);
   TimeHung(bench, hung, scheme);
 }
 BENCHMARK_CAPTURE(BM_Gait2354HungOneSecond, rk45, "rk45")
@@ -121,7 +122,8 @@ BENCHMARK_CAPTURE(BM_Gait2354HungOneSecond, rk45, "rk45")
 
 // Rajagopal2016 hung the same way, with its patella couplers (its 80 muscles left out).
 void BM_Rajagopal2016HungOneSecond(benchmark::State& bench, const char* scheme) {
-  static const HungSkeleton hung = MakeHungSkeleton(sinew_bench::kRajagopal2016HungFile, true, 1.0);
+  static const HungSkeleton hung =
+      MakeHungSkeleton(sinew::engine::testing::kRajagopal2016HungFile, true, 1.0);
   TimeHung(bench, hung, scheme);
 }
 BENCHMARK_CAPTURE(BM_Rajagopal2016HungOneSecond, rk45, "rk45")

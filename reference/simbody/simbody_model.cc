@@ -1,4 +1,4 @@
-#include "hung_model.h"
+#include "simbody/simbody_model.h"
 
 #include <Simbody.h>
 
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace simbody_bench {
+namespace simbody_reference {
 namespace {
 
 SimTK::Vec3 ToVec3(const std::array<double, 3>& v) { return {v[0], v[1], v[2]}; }
@@ -28,7 +28,7 @@ SimTK::Transform ToTransform(const Pose& X) {
 class Callback final : public SimTK::Function {
  public:
   Callback(ScalarFunction f, int n) : f_(std::move(f)), n_(n) {
-    if (n > kMaxArguments) throw std::runtime_error("simbody_bench: too many arguments");
+    if (n > kMaxArguments) throw std::runtime_error("simbody_reference: too many arguments");
   }
   double calcValue(const SimTK::Vector& x) const override {
     std::array<double, kMaxArguments> a;
@@ -74,7 +74,7 @@ Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>()) {
   mobods[0] = s.matter.Ground();
   for (const Joint& joint : model.joints) {
     if (!mobods.at(joint.parent).getMobilizedBodyIndex().isValid()) {
-      throw std::runtime_error("simbody_bench: a joint comes before its parent's");
+      throw std::runtime_error("simbody_reference: a joint comes before its parent's");
     }
     const Body& b = model.bodies.at(joint.child);
     const SimTK::Vec3 com = ToVec3(b.mass_center);
@@ -150,7 +150,8 @@ std::vector<double> Simulation::Run(Scheme scheme, double accuracy, double t_fin
   // stepTo also returns at events (the start of the continuous interval first).
   while (integrator.getTime() < t_final) {
     if (integrator.stepTo(t_final) == SimTK::Integrator::EndOfSimulation) {
-      throw std::runtime_error("simbody_bench: Simbody's integrator ended the simulation early");
+      throw std::runtime_error(
+          "simbody_reference: Simbody's integrator ended the simulation early");
     }
   }
   if (steps != nullptr) *steps = integrator.getNumStepsTaken();
@@ -168,4 +169,4 @@ std::vector<double> Simulation::Run(Scheme scheme, double accuracy, double t_fin
   return q;
 }
 
-}  // namespace simbody_bench
+}  // namespace simbody_reference

@@ -1,7 +1,9 @@
-// A skeleton built in Simbody from plain data, for the Simbody comparison benchmarks
-// (simbody_hung.cc). Compiled as C++17 on its own: Simbody 3.7's headers do not compile as
-// C++20 (their index types' comparison operators become ambiguous), and Sinew's headers need
-// C++20, so this interface mentions neither.
+// Simbody as an independent reference engine: a skeleton built in Simbody from plain data, for
+// the tests that compare Sinew's dynamics with Simbody's (tests/simbody) and the benchmarks that
+// time Simbody on the same motions (benchmarks/simbody_hung.cc). Compiled as C++17 on its own:
+// Simbody 3.7's headers do not compile as C++20 (their index types' comparison operators become
+// ambiguous), and Sinew's headers need C++20, so this interface mentions neither.
+// simbody/from_spec.h makes its input from a Sinew ModelSpec.
 #pragma once
 
 #include <array>
@@ -9,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-namespace simbody_bench {
+namespace simbody_reference {
 
 /// A pose: rotation R (row-major) and translation p of a frame in its parent.
 struct Pose {
@@ -79,4 +81,4 @@ class Simulation {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace simbody_bench
+}  // namespace simbody_reference

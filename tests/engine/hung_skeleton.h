@@ -1,5 +1,6 @@
 // The hung skeletons of issue #15's accuracy benchmark, shared by Sinew's benchmark
-// (engine_skeleton.cc) and the same motion in Simbody (simbody_hung.cc): a skeleton hung from
+// (benchmarks/engine_skeleton.cc), the same motion in Simbody (benchmarks/simbody_hung.cc) and
+// the comparison tests (tests/simbody): a skeleton hung from
 // its locked pelvis, limbs swinging from a bent pose (that of
 // BuildSystemTest.Gait2354HungFromPelvisConservesEnergy, except that the left knee is given its
 // speed towards flexion: towards extension it soon left the range of the knee's splines, whose
@@ -17,7 +18,7 @@
 #include <memory>
 #include <string>
 
-namespace sinew_bench {
+namespace sinew::engine::testing {
 
 struct HungSkeleton {
   sinew::model::ModelSpec spec;  ///< as read, pelvis coordinates locked
@@ -87,4 +88,4 @@ inline sinew::engine::State RunHung(const HungSkeleton& hung, const char* scheme
   return state;
 }
 
-}  // namespace sinew_bench
+}  // namespace sinew::engine::testing
