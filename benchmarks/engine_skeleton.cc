@@ -109,6 +109,7 @@ void TimeHung(benchmark::State& bench, const HungSkeleton& hung, const char* sch
   bench.counters["err_rad"] = (state.q - reference.q).lpNorm<Eigen::Infinity>();
   bench.counters["steps"] = static_cast<double>(stats.steps);
   bench.counters["rejected"] = static_cast<double>(stats.rejected);
+  bench.counters["evaluations"] = static_cast<double>(stats.evaluations);
 }
 
 void BM_Gait2354HungOneSecond(benchmark::State& bench, const char* scheme) {

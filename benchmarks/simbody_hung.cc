@@ -10,9 +10,9 @@
 // (k = the argument); `err_rad`, the largest coordinate error at 1 s against a Simbody run at
 // accuracy 1e-12; `vs_sinew_rad`, how far that Simbody reference lies from Sinew's own at
 // 1e-12; `energy_change_J`, how much mechanical energy that reference gained (nothing but
-// gravity acts: it should be zero to the integration's error); `steps`, the integrator's steps
-// taken. CPU time at the accuracy whose error is 3e-6 rad is what the goal compares
-// with `BM_Gait2354HungOneSecond`.
+// gravity acts: it should be zero to the integration's error); `steps`, `rejected` and
+// `evaluations` (realizations), what the integrator did. CPU time at the accuracy whose error is
+// 3e-6 rad is what the goal compares with `BM_Gait2354HungOneSecond`.
 #include <benchmark/benchmark.h>
 #include <sinew/common/error.h>
 
@@ -35,8 +35,10 @@ using simbody_reference::ToSimbody;
 struct SimbodyCase {
   explicit SimbodyCase(sinew::engine::testing::HungSkeleton skeleton)
       : hung(std::move(skeleton)), simulation(ToSimbody(hung.spec, hung.start)) {
+    simbody_reference::Simulation::RunStats stats;
     reference = simulation.Run(simbody_reference::Simulation::Scheme::kRungeKuttaMerson, 1e-12, 1.0,
-                               nullptr, &energy_change);
+                               &stats);
+    energy_change = stats.energy_change;
     vs_sinew =
         MaxDifference(reference, sinew::engine::testing::RunHung(hung, "rk45", 1e-12, nullptr).q);
   }
@@ -50,10 +52,10 @@ struct SimbodyCase {
 void TimeSimbody(benchmark::State& bench, const SimbodyCase& model,
                  simbody_reference::Simulation::Scheme scheme) {
   const double accuracy = std::pow(10.0, -static_cast<double>(bench.range(0)));
-  long steps = 0;
+  simbody_reference::Simulation::RunStats stats;
   std::vector<double> q;
   for (auto _ : bench) {
-    q = model.simulation.Run(scheme, accuracy, 1.0, &steps);
+    q = model.simulation.Run(scheme, accuracy, 1.0, &stats);
     benchmark::DoNotOptimize(q.data());
   }
   const Eigen::VectorXd reference = Eigen::Map<const Eigen::VectorXd>(
@@ -61,7 +63,9 @@ void TimeSimbody(benchmark::State& bench, const SimbodyCase& model,
   bench.counters["err_rad"] = MaxDifference(q, reference);
   bench.counters["vs_sinew_rad"] = model.vs_sinew;
   bench.counters["energy_change_J"] = model.energy_change;
-  bench.counters["steps"] = static_cast<double>(steps);
+  bench.counters["steps"] = static_cast<double>(stats.steps);
+  bench.counters["rejected"] = static_cast<double>(stats.attempted - stats.steps);
+  bench.counters["evaluations"] = static_cast<double>(stats.realizations);
 }
 
 using Scheme = simbody_reference::Simulation::Scheme;

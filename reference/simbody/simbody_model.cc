@@ -135,8 +135,8 @@ Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>()) {
 
 Simulation::~Simulation() = default;
 
-std::vector<double> Simulation::Run(Scheme scheme, double accuracy, double t_final, long* steps,
-                                    double* energy_change) const {
+std::vector<double> Simulation::Run(Scheme scheme, double accuracy, double t_final,
+                                    RunStats* stats) const {
   const Impl& s = *impl_;
   std::unique_ptr<SimTK::Integrator> made;
   if (scheme == Scheme::kRungeKuttaMerson) {
@@ -154,12 +154,14 @@ std::vector<double> Simulation::Run(Scheme scheme, double accuracy, double t_fin
           "simbody_reference: Simbody's integrator ended the simulation early");
     }
   }
-  if (steps != nullptr) *steps = integrator.getNumStepsTaken();
-  if (energy_change != nullptr) {
+  if (stats != nullptr) {
+    stats->steps = integrator.getNumStepsTaken();
+    stats->attempted = integrator.getNumStepsAttempted();
+    stats->realizations = integrator.getNumRealizations();
     SimTK::State start = s.start;
     s.system.realize(start, SimTK::Stage::Dynamics);
     s.system.realize(integrator.getState(), SimTK::Stage::Dynamics);
-    *energy_change = s.system.calcEnergy(integrator.getState()) - s.system.calcEnergy(start);
+    stats->energy_change = s.system.calcEnergy(integrator.getState()) - s.system.calcEnergy(start);
   }
   std::vector<double> q = s.q0;
   for (size_t c = 0; c < s.slots.size(); ++c) {

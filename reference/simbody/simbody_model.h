@@ -69,12 +69,17 @@ class Simulation {
   ~Simulation();
   /// Simbody's error-controlled explicit integrators.
   enum class Scheme { kRungeKuttaMerson, kRungeKuttaFeldberg };
-  /// The coordinates at t_final after Simbody's `scheme` at `accuracy`
-  /// (coordinates no mobilizer holds keep their start values); its step count into *steps and,
-  /// when not null, the change of mechanical energy (kinetic + gravity's potential, J) into
-  /// *energy_change.
-  std::vector<double> Run(Scheme scheme, double accuracy, double t_final, long* steps,
-                          double* energy_change = nullptr) const;
+  /// What a run did.
+  struct RunStats {
+    long steps = 0;            ///< steps taken
+    long attempted = 0;        ///< steps attempted (taken and rejected)
+    long realizations = 0;     ///< evaluations: realizations to the acceleration stage
+    double energy_change = 0;  ///< mechanical energy (kinetic + gravity's potential) gained, J
+  };
+  /// The coordinates at t_final after Simbody's `scheme` at `accuracy` (coordinates no
+  /// mobilizer holds keep their start values); what the run did into *stats when not null.
+  std::vector<double> Run(Scheme scheme, double accuracy, double t_final,
+                          RunStats* stats = nullptr) const;
 
  private:
   struct Impl;

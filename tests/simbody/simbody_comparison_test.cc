@@ -23,10 +23,11 @@ using Scheme = simbody_reference::Simulation::Scheme;
 TEST(SimbodyComparisonTest, Gait2354HungFollowsSimbody) {
   const HungSkeleton hung = MakeHungSkeleton(kGait2354HungFile, false, -1.0);
   const simbody_reference::Simulation simbody(simbody_reference::ToSimbody(hung.spec, hung.start));
-  double simbody_energy_change = 0.0;
-  long simbody_steps = 0;
+  simbody_reference::Simulation::RunStats simbody_stats;
   const std::vector<double> q_simbody =
-      simbody.Run(Scheme::kRungeKuttaMerson, 1e-12, 1.0, &simbody_steps, &simbody_energy_change);
+      simbody.Run(Scheme::kRungeKuttaMerson, 1e-12, 1.0, &simbody_stats);
+  const double simbody_energy_change = simbody_stats.energy_change;
+  const long simbody_steps = simbody_stats.steps;
   IntegratorStats stats;
   const State end = RunHung(hung, "rk45", 1e-12, &stats);
   const double difference = simbody_reference::MaxDifference(q_simbody, end.q);
@@ -58,9 +59,10 @@ TEST(SimbodyComparisonTest, WalkerKneesKeepTheEnergyInSinewNotInSimbody) {
   const HungSkeleton hung = MakeHungSkeleton(kRajagopal2016HungFile, true, 1.0);
   const simbody_reference::Simulation simbody(simbody_reference::ToSimbody(hung.spec, hung.start));
   const double accuracy = 1e-10;
-  double simbody_energy_change = 0.0;
-  long simbody_steps = 0;
-  simbody.Run(Scheme::kRungeKuttaMerson, accuracy, 1.0, &simbody_steps, &simbody_energy_change);
+  simbody_reference::Simulation::RunStats simbody_stats;
+  simbody.Run(Scheme::kRungeKuttaMerson, accuracy, 1.0, &simbody_stats);
+  const double simbody_energy_change = simbody_stats.energy_change;
+  const long simbody_steps = simbody_stats.steps;
   IntegratorStats stats;
   const State end = RunHung(hung, "rk45", accuracy, &stats);
   const double e0 = CalcMechanicalEnergy(*hung.system, hung.start);
