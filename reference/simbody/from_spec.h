@@ -1,9 +1,11 @@
 // A Sinew ModelSpec (skeleton, couplers) and start state as input for the Simbody reference
 // (simbody_model.h): each joint gets the mobilizer OpenSim gives it in Simbody, a CustomJoint a
 // MobilizedBody::FunctionBased (its axes, its functions of the joint's coordinates), a PinJoint
-// a Pin, a UniversalJoint a Universal, a WeldJoint or a joint whose coordinates are all locked a
-// Weld (at the start pose); a CoordinateCouplerConstraint a Constraint::CoordinateCoupler. The
-// axis functions are Sinew's, called through SimTK::Function without allocating.
+// a Pin, SliderJoint a Slider, UniversalJoint a Universal, GimbalJoint a Gimbal, BallJoint a
+// Ball, FreeJoint a Free, PlanarJoint a Planar, EllipsoidJoint an Ellipsoid, a WeldJoint or a
+// joint whose coordinates are all locked a Weld (at the start pose); a
+// CoordinateCouplerConstraint a Constraint::CoordinateCoupler. The axis functions are Sinew's,
+// called through SimTK::Function without allocating.
 #pragma once
 
 #include <sinew/common/error.h>
@@ -79,13 +81,44 @@ inline Joint ToJoint(const ModelSpec& spec, const JointSpec& joint,
     return out;
   }
   out.coordinates = joint.coordinates;
+  for (int c : joint.coordinates) {
+    if (spec.coordinates[c].prescribed) {
+      throw sinew::Error("simbody reference: prescribed coordinate '" + spec.coordinates[c].name +
+                         "'");
+    }
+  }
   switch (joint.kind) {
     case JointType::kPin:
       out.kind = Kind::kPin;
       break;
+    case JointType::kSlider:
+      out.kind = Kind::kSlider;
+      break;
     case JointType::kUniversal:
       out.kind = Kind::kUniversal;
       break;
+    case JointType::kGimbal:
+      out.kind = Kind::kGimbal;
+      break;
+    case JointType::kBall:
+      out.kind = Kind::kBall;
+      break;
+    case JointType::kFree:
+      out.kind = Kind::kFree;
+      break;
+    case JointType::kPlanar:
+      out.kind = Kind::kPlanar;
+      break;
+    case JointType::kEllipsoid: {
+      out.kind = Kind::kEllipsoid;
+      const auto radii = joint.parameters.find("radii_x_y_z");
+      if (radii == joint.parameters.end() || radii->second.size() != 3) {
+        throw sinew::Error("simbody reference: ellipsoid joint '" + joint.name +
+                           "' without radii_x_y_z");
+      }
+      out.radii = {radii->second[0], radii->second[1], radii->second[2]};
+      break;
+    }
     case JointType::kWeld:
       out.kind = Kind::kWeld;
       break;
@@ -114,10 +147,13 @@ inline Joint ToJoint(const ModelSpec& spec, const JointSpec& joint,
 /// `spec`'s skeleton as Simbody input: its bodies, its joints parents first (a joint whose
 /// coordinates are all locked welded at `start`'s pose), its CoordinateCouplerConstraints, at
 /// `start`'s coordinates and speeds (`start` is a Sinew State of the System built from `spec`,
-/// whose coordinates are the spec's). Throws sinew::Error for what has no counterpart here:
-/// joint types other than CustomJoint, PinJoint, UniversalJoint and WeldJoint, reversed
-/// joints, other constraint types. Forces are not carried over (gravity is).
-inline Model ToSimbody(const ModelSpec& spec, const sinew::engine::State& start) {
+/// whose coordinates are the spec's); other locked coordinates held by Simbody's
+/// ConstantCoordinate. Throws sinew::Error for what has no counterpart here: ScapulothoracicJoint,
+/// ConstantCurvatureJoint and unknown joints, reversed joints, prescribed coordinates,
+/// constraints other than CoordinateCouplerConstraint. Forces are not carried over (gravity
+/// is), nor constraints when `with_constraints` is false (for a System made by BuildSystem).
+inline Model ToSimbody(const ModelSpec& spec, const sinew::engine::State& start,
+                       bool with_constraints = true) {
   Model model;
   model.gravity = detail::ToArray(spec.gravity);
   for (const sinew::model::BodySpec& b : spec.bodies) {
@@ -130,16 +166,24 @@ inline Model ToSimbody(const ModelSpec& spec, const sinew::engine::State& start)
     for (const JointSpec& joint : spec.joints) {
       if (placed[joint.child_body] || !placed[joint.parent_body]) continue;
       model.joints.push_back(detail::ToJoint(spec, joint, start));
+      if (!detail::AllLocked(spec, joint)) {
+        for (int c : joint.coordinates) {
+          if (spec.coordinates[c].locked) model.locked.push_back(c);
+        }
+      }
       placed[joint.child_body] = true;
       ++done;
     }
     if (done == before) throw sinew::Error("simbody reference: a joint's parent is never placed");
   }
   for (const sinew::model::ConstraintSpec& c : spec.constraints) {
-    if (!c.enabled) continue;
+    if (!c.enabled || !with_constraints) continue;
     if (c.type != "CoordinateCouplerConstraint") {
       throw sinew::Error("simbody reference: constraint '" + c.name + "' of type " + c.type +
                          " has no Simbody counterpart here");
+    }
+    if (!c.function) {
+      throw sinew::Error("simbody reference: coupler '" + c.name + "' without a function");
     }
     // OpenSim's form: scale * f(q_independent) - q_dependent = 0.
     const int n = static_cast<int>(c.independent_coordinates.size());

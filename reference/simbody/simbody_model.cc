@@ -87,8 +87,27 @@ Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>()) {
       case Joint::Kind::kPin:
         mobods[joint.child] = SimTK::MobilizedBody::Pin(parent, X_PF, body, X_BM);
         break;
+      case Joint::Kind::kSlider:
+        mobods[joint.child] = SimTK::MobilizedBody::Slider(parent, X_PF, body, X_BM);
+        break;
       case Joint::Kind::kUniversal:
         mobods[joint.child] = SimTK::MobilizedBody::Universal(parent, X_PF, body, X_BM);
+        break;
+      case Joint::Kind::kGimbal:
+        mobods[joint.child] = SimTK::MobilizedBody::Gimbal(parent, X_PF, body, X_BM);
+        break;
+      case Joint::Kind::kBall:
+        mobods[joint.child] = SimTK::MobilizedBody::Ball(parent, X_PF, body, X_BM);
+        break;
+      case Joint::Kind::kEllipsoid:
+        mobods[joint.child] =
+            SimTK::MobilizedBody::Ellipsoid(parent, X_PF, body, X_BM, ToVec3(joint.radii));
+        break;
+      case Joint::Kind::kFree:
+        mobods[joint.child] = SimTK::MobilizedBody::Free(parent, X_PF, body, X_BM);
+        break;
+      case Joint::Kind::kPlanar:
+        mobods[joint.child] = SimTK::MobilizedBody::Planar(parent, X_PF, body, X_BM);
         break;
       case Joint::Kind::kWeld:
         mobods[joint.child] = SimTK::MobilizedBody::Weld(parent, X_PF, body, X_BM);
@@ -123,8 +142,16 @@ Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>()) {
     SimTK::Constraint::CoordinateCoupler(
         s.matter, new Callback(c.f, static_cast<int>(c.coordinates.size())), bodies, qs);
   }
+  for (int k : model.locked) {
+    SimTK::MobilizedBody& m = s.matter.updMobilizedBody(s.slots.at(k).body);
+    SimTK::Constraint::ConstantCoordinate(m, SimTK::MobilizerQIndex(s.slots.at(k).q),
+                                          model.q.at(k));
+  }
   s.system.realizeTopology();
   s.start = s.system.getDefaultState();
+  // Ball, Free and Ellipsoid coordinates as angles, as OpenSim sets them.
+  s.matter.setUseEulerAngles(s.start, true);
+  s.system.realizeModel(s.start);
   for (size_t c = 0; c < s.slots.size(); ++c) {
     if (!s.slots[c].body.isValid()) continue;
     const SimTK::MobilizedBody& m = s.matter.getMobilizedBody(s.slots[c].body);

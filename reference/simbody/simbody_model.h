@@ -39,13 +39,28 @@ struct Axis {
   std::array<double, 3> axis{1, 0, 0};
 };
 
+/// A joint as a Simbody mobilizer. Ball, Free, Gimbal and Ellipsoid take body-fixed X-Y-Z
+/// angles (the State uses Euler angles, as OpenSim's does); their speeds are Simbody's (the
+/// angular velocity in F for Ball, Free and Ellipsoid; the angles' rates for Gimbal).
 struct Joint {
-  enum class Kind { kPin, kUniversal, kWeld, kFunctionBased };
+  enum class Kind {
+    kPin,
+    kSlider,
+    kUniversal,
+    kGimbal,
+    kBall,
+    kEllipsoid,
+    kFree,
+    kPlanar,
+    kWeld,
+    kFunctionBased
+  };
   Kind kind = Kind::kWeld;
   int parent = 0, child = 0;  ///< body indices (0: ground); parents come before children
   Pose X_PF, X_BM;
   std::vector<int> coordinates;  ///< model coordinate indices, in the mobilizer's q order
   std::vector<Axis> axes;        ///< kFunctionBased: three rotations, then three translations
+  std::array<double, 3> radii{1, 1, 1};  ///< kEllipsoid
 };
 
 /// f(q_independent..., q_dependent) = 0.
@@ -59,6 +74,7 @@ struct Model {
   std::vector<Body> bodies;  ///< [0] is ground (ignored)
   std::vector<Joint> joints;
   std::vector<Coupler> couplers;
+  std::vector<int> locked;   ///< model coordinates held at their start value
   std::vector<double> q, u;  ///< start coordinates and speeds, per model coordinate
 };
 
