@@ -60,15 +60,15 @@ inline bool AllLocked(const ModelSpec& spec, const JointSpec& joint) {
                      [&](int c) { return spec.coordinates[c].locked; });
 }
 
+// `reversed`: the joint's child is the body nearer to ground.
 inline Joint ToJoint(const ModelSpec& spec, const JointSpec& joint,
-                     const sinew::engine::State& start) {
+                     const sinew::engine::State& start, bool reversed) {
   using Kind = Joint::Kind;
   Joint out;
   out.parent = joint.parent_body;
   out.child = joint.child_body;
   out.X_PF = ToPose(joint.X_PF);
   out.X_BM = ToPose(joint.X_BM);
-  if (joint.reverse) throw sinew::Error("simbody reference: reversed joint '" + joint.name + "'");
   if (AllLocked(spec, joint)) {
     // Welded at the start's relative pose: the cheapest lock in Simbody.
     const auto pose = [&](int body) {
@@ -78,8 +78,10 @@ inline Joint ToJoint(const ModelSpec& spec, const JointSpec& joint,
     out.kind = Kind::kWeld;
     out.X_PF = ToPose(pose(joint.parent_body).Inverse() * pose(joint.child_body));
     out.X_BM = Pose();
+    out.reversed = reversed;
     return out;
   }
+  out.reversed = reversed;
   out.coordinates = joint.coordinates;
   for (int c : joint.coordinates) {
     if (spec.coordinates[c].prescribed) {
@@ -149,7 +151,7 @@ inline Joint ToJoint(const ModelSpec& spec, const JointSpec& joint,
 /// `start`'s coordinates and speeds (`start` is a Sinew State of the System built from `spec`,
 /// whose coordinates are the spec's); other locked coordinates held by Simbody's
 /// ConstantCoordinate. Throws sinew::Error for what has no counterpart here: ScapulothoracicJoint,
-/// ConstantCurvatureJoint and unknown joints, reversed joints, prescribed coordinates,
+/// ConstantCurvatureJoint and unknown joints, prescribed coordinates,
 /// constraints other than CoordinateCouplerConstraint. Forces are not carried over (gravity
 /// is), nor constraints when `with_constraints` is false (for a System made by BuildSystem).
 inline Model ToSimbody(const ModelSpec& spec, const sinew::engine::State& start,
@@ -161,20 +163,33 @@ inline Model ToSimbody(const ModelSpec& spec, const sinew::engine::State& start,
   }
   std::vector<bool> placed(spec.bodies.size(), false);
   placed[sinew::model::kGroundIndex] = true;
+  std::vector<bool> used(spec.joints.size(), false);
   for (size_t done = 0; done < spec.joints.size();) {
     const size_t before = done;
-    for (const JointSpec& joint : spec.joints) {
-      if (placed[joint.child_body] || !placed[joint.parent_body]) continue;
-      model.joints.push_back(detail::ToJoint(spec, joint, start));
+    for (size_t j = 0; j < spec.joints.size(); ++j) {
+      const JointSpec& joint = spec.joints[j];
+      if (used[j] || placed[joint.child_body] == placed[joint.parent_body]) continue;
+      used[j] = true;
+      // A joint whose parent hangs from its child is built in reverse, as OpenSim does.
+      const bool reversed = placed[joint.child_body];
+      model.joints.push_back(detail::ToJoint(spec, joint, start, reversed));
       if (!detail::AllLocked(spec, joint)) {
         for (int c : joint.coordinates) {
           if (spec.coordinates[c].locked) model.locked.push_back(c);
         }
       }
-      placed[joint.child_body] = true;
+      placed[reversed ? joint.parent_body : joint.child_body] = true;
       ++done;
     }
-    if (done == before) throw sinew::Error("simbody reference: a joint's parent is never placed");
+    if (done == before) {
+      for (size_t j = 0; j < spec.joints.size(); ++j) {
+        if (!used[j] && placed[spec.joints[j].child_body] && placed[spec.joints[j].parent_body]) {
+          throw sinew::Error("simbody reference: joint '" + spec.joints[j].name +
+                             "' closes a loop (no loop constraints here)");
+        }
+      }
+      throw sinew::Error("simbody reference: a joint connects two bodies not connected to ground");
+    }
   }
   for (const sinew::model::ConstraintSpec& c : spec.constraints) {
     if (!c.enabled || !with_constraints) continue;

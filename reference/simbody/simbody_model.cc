@@ -73,44 +73,51 @@ Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>()) {
   std::vector<SimTK::MobilizedBody> mobods(model.bodies.size());
   mobods[0] = s.matter.Ground();
   for (const Joint& joint : model.joints) {
-    if (!mobods.at(joint.parent).getMobilizedBodyIndex().isValid()) {
-      throw std::runtime_error("simbody_reference: a joint comes before its parent's");
+    // The mobilizer's inboard body and frame, its outboard body and frame.
+    const int inboard = joint.reversed ? joint.child : joint.parent;
+    const int outboard = joint.reversed ? joint.parent : joint.child;
+    if (!mobods.at(inboard).getMobilizedBodyIndex().isValid()) {
+      throw std::runtime_error("simbody_reference: a joint comes before its inboard body's");
     }
-    const Body& b = model.bodies.at(joint.child);
+    const Body& b = model.bodies.at(outboard);
     const SimTK::Vec3 com = ToVec3(b.mass_center);
     const SimTK::Inertia central{SimTK::SymMat33(ToMat33(b.inertia))};
     const SimTK::Body::Rigid body(
         SimTK::MassProperties(b.mass, com, central.shiftFromMassCenter(com, b.mass)));
-    const SimTK::Transform X_PF = ToTransform(joint.X_PF), X_BM = ToTransform(joint.X_BM);
-    SimTK::MobilizedBody& parent = mobods[joint.parent];
+    const SimTK::Transform X_PF = ToTransform(joint.reversed ? joint.X_BM : joint.X_PF);
+    const SimTK::Transform X_BM = ToTransform(joint.reversed ? joint.X_PF : joint.X_BM);
+    const auto direction =
+        joint.reversed ? SimTK::MobilizedBody::Reverse : SimTK::MobilizedBody::Forward;
+    SimTK::MobilizedBody& parent = mobods[inboard];
+    SimTK::MobilizedBody& made = mobods[outboard];
     switch (joint.kind) {
       case Joint::Kind::kPin:
-        mobods[joint.child] = SimTK::MobilizedBody::Pin(parent, X_PF, body, X_BM);
+        made = SimTK::MobilizedBody::Pin(parent, X_PF, body, X_BM, direction);
         break;
       case Joint::Kind::kSlider:
-        mobods[joint.child] = SimTK::MobilizedBody::Slider(parent, X_PF, body, X_BM);
+        made = SimTK::MobilizedBody::Slider(parent, X_PF, body, X_BM, direction);
         break;
       case Joint::Kind::kUniversal:
-        mobods[joint.child] = SimTK::MobilizedBody::Universal(parent, X_PF, body, X_BM);
+        made = SimTK::MobilizedBody::Universal(parent, X_PF, body, X_BM, direction);
         break;
       case Joint::Kind::kGimbal:
-        mobods[joint.child] = SimTK::MobilizedBody::Gimbal(parent, X_PF, body, X_BM);
+        made = SimTK::MobilizedBody::Gimbal(parent, X_PF, body, X_BM, direction);
         break;
       case Joint::Kind::kBall:
-        mobods[joint.child] = SimTK::MobilizedBody::Ball(parent, X_PF, body, X_BM);
+        made = SimTK::MobilizedBody::Ball(parent, X_PF, body, X_BM, direction);
         break;
       case Joint::Kind::kEllipsoid:
-        mobods[joint.child] =
-            SimTK::MobilizedBody::Ellipsoid(parent, X_PF, body, X_BM, ToVec3(joint.radii));
+        made = SimTK::MobilizedBody::Ellipsoid(parent, X_PF, body, X_BM, ToVec3(joint.radii),
+                                               direction);
         break;
       case Joint::Kind::kFree:
-        mobods[joint.child] = SimTK::MobilizedBody::Free(parent, X_PF, body, X_BM);
+        made = SimTK::MobilizedBody::Free(parent, X_PF, body, X_BM, direction);
         break;
       case Joint::Kind::kPlanar:
-        mobods[joint.child] = SimTK::MobilizedBody::Planar(parent, X_PF, body, X_BM);
+        made = SimTK::MobilizedBody::Planar(parent, X_PF, body, X_BM, direction);
         break;
       case Joint::Kind::kWeld:
-        mobods[joint.child] = SimTK::MobilizedBody::Weld(parent, X_PF, body, X_BM);
+        made = SimTK::MobilizedBody::Weld(parent, X_PF, body, X_BM);
         break;
       case Joint::Kind::kFunctionBased: {
         SimTK::Array_<const SimTK::Function*> functions;
@@ -121,15 +128,14 @@ Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>()) {
           arguments.push_back(SimTK::Array_<int>(axis.arguments.begin(), axis.arguments.end()));
           axes.push_back(SimTK::UnitVec3(ToVec3(axis.axis)));
         }
-        mobods[joint.child] = SimTK::MobilizedBody::FunctionBased(
-            parent, X_PF, body, X_BM, static_cast<int>(joint.coordinates.size()), functions,
-            arguments, axes);
+        made = SimTK::MobilizedBody::FunctionBased(parent, X_PF, body, X_BM,
+                                                   static_cast<int>(joint.coordinates.size()),
+                                                   functions, arguments, axes, direction);
         break;
       }
     }
     for (size_t i = 0; i < joint.coordinates.size(); ++i) {
-      s.slots.at(joint.coordinates[i]) = {mobods[joint.child].getMobilizedBodyIndex(),
-                                          static_cast<int>(i)};
+      s.slots.at(joint.coordinates[i]) = {made.getMobilizedBodyIndex(), static_cast<int>(i)};
     }
   }
   for (const Coupler& c : model.couplers) {

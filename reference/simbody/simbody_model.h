@@ -56,7 +56,11 @@ struct Joint {
     kFunctionBased
   };
   Kind kind = Kind::kWeld;
-  int parent = 0, child = 0;  ///< body indices (0: ground); parents come before children
+  /// Body indices (0: ground): frame F is fixed to `parent`, M to `child`. The body nearer to
+  /// ground must come first: `parent`, or `child` when `reversed` (a joint whose parent hangs
+  /// from its child: Simbody's reverse mobilizer, whose q and u keep their meaning from F to M).
+  int parent = 0, child = 0;
+  bool reversed = false;
   Pose X_PF, X_BM;
   std::vector<int> coordinates;  ///< model coordinate indices, in the mobilizer's q order
   std::vector<Axis> axes;        ///< kFunctionBased: three rotations, then three translations
