@@ -20,12 +20,7 @@ namespace fs = std::filesystem;
 
 TEST(CorpusPoseTest, EveryModelPosesAtItsDefaults) {
   SINEW_SKIP_WITHOUT_CORPUS();
-  const std::filesystem::path root = testing::CorpusDir();
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(root)) {
-    if (entry.is_regular_file() && entry.path().extension() == ".osim") files.push_back(entry);
-  }
-  std::sort(files.begin(), files.end());
+  const std::vector<fs::path> files = testing::CorpusModelFiles();
   ASSERT_FALSE(files.empty());
   int posed = 0;
   std::vector<std::string> rejected_by_reader, unsupported_joint;

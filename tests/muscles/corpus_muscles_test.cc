@@ -26,19 +26,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The corpus's .osim files, sorted.
-std::vector<fs::path> CorpusModelFiles() {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(sinew::testing::CorpusDir())) {
-    if (entry.is_regular_file() && entry.path().extension() == ".osim") files.push_back(entry);
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 TEST(CorpusMusclesTest, EveryMillard2012MuscleEquilibratesAtTheDefaultPose) {
   SINEW_SKIP_WITHOUT_CORPUS();
-  const std::vector<fs::path> files = CorpusModelFiles();
+  const std::vector<fs::path> files = sinew::testing::CorpusModelFiles();
   int models = 0, muscles = 0, without_path = 0, converged = 0, at_lower_bound = 0;
   for (const fs::path& file : files) {
     std::unique_ptr<paths::testing::PathModel> m;
@@ -98,7 +88,7 @@ TEST(CorpusMusclesTest, EverySchutte1993MuscleEquilibratesAtTheDefaultPose) {
   SINEW_SKIP_WITHOUT_CORPUS();
   std::map<std::string, int> muscles_per_model;
   int balanced = 0, slack = 0, failed = 0;
-  for (const fs::path& file : CorpusModelFiles()) {
+  for (const fs::path& file : sinew::testing::CorpusModelFiles()) {
     std::unique_ptr<paths::testing::PathModel> m;
     try {
       m = std::make_unique<paths::testing::PathModel>(file.string());

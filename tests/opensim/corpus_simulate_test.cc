@@ -43,20 +43,9 @@ bool TooStiffToStepUnderSanitizer(const std::filesystem::path& file) {
   return kUnderAddressSanitizer && file.filename() == "PushUpToesOnGroundWithMuscles.osim";
 }
 
-std::vector<std::filesystem::path> CorpusModels() {
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(testing::CorpusDir())) {
-    if (entry.path().extension() == ".osim" && entry.file_size() < 3'000'000) {
-      files.push_back(entry.path());
-    }
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 TEST(CorpusSimulateTest, EveryModelSimulatesOrIsRefusedClearly) {
   SINEW_SKIP_WITHOUT_CORPUS();
-  const std::vector<std::filesystem::path> files = CorpusModels();
+  const std::vector<std::filesystem::path> files = testing::CorpusModelFiles(3'000'000);
   int simulated = 0;
   std::map<std::string, std::string> refused;  // file name -> error message
   for (const auto& file : files) {
@@ -107,7 +96,7 @@ TEST(CorpusSimulateTest, EveryModelSimulatesOrIsRefusedClearly) {
 // models that the parser refuses, with the reason.
 TEST(CorpusSimulateTest, EveryModelSimulatesWithItsForcesAndConstraints) {
   SINEW_SKIP_WITHOUT_CORPUS();
-  const std::vector<std::filesystem::path> files = CorpusModels();
+  const std::vector<std::filesystem::path> files = testing::CorpusModelFiles(3'000'000);
   int simulated = 0, with_couplers = 0;
   std::map<std::string, std::string> refused;
   for (const auto& file : files) {

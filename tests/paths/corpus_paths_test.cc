@@ -19,19 +19,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Every corpus model's .osim files, sorted.
-std::vector<fs::path> CorpusModels() {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(sinew::testing::CorpusDir())) {
-    if (entry.is_regular_file() && entry.path().extension() == ".osim") files.push_back(entry);
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 TEST(CorpusPathsTest, EveryModelsPathsComputeAtTheDefaultPose) {
   SINEW_SKIP_WITHOUT_CORPUS();
-  const std::vector<fs::path> files = CorpusModels();
+  const std::vector<fs::path> files = sinew::testing::CorpusModelFiles();
   int with_paths = 0, paths_total = 0, wraps_total = 0, unconnected_total = 0;
   for (const fs::path& file : files) {
     std::unique_ptr<testing::PathModel> m;
@@ -90,7 +80,7 @@ TEST(CorpusPathsTest, EveryModelsPathsComputeAtTheDefaultPose) {
 TEST(CorpusPathsTest, EveryModelsMomentArmsAreDerivativesOfLength) {
   SINEW_SKIP_WITHOUT_CORPUS();
   int checked = 0;
-  for (const fs::path& file : CorpusModels()) {
+  for (const fs::path& file : sinew::testing::CorpusModelFiles()) {
     std::unique_ptr<testing::PathModel> m;
     try {
       m = std::make_unique<testing::PathModel>(file.string());

@@ -46,18 +46,6 @@ bool SimbodyVelocityTermsAreExact(const model::ModelSpec& spec) {
   return true;
 }
 
-std::vector<std::filesystem::path> CorpusModels() {
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry :
-       std::filesystem::recursive_directory_iterator(sinew::testing::CorpusDir())) {
-    if (entry.path().extension() == ".osim" && entry.file_size() < 3'000'000) {
-      files.push_back(entry.path());
-    }
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 TEST(SimbodyCorpusTest, SkeletonsMoveAsInSimbody) {
   SINEW_SKIP_WITHOUT_CORPUS();
   int compared = 0;
@@ -68,7 +56,7 @@ TEST(SimbodyCorpusTest, SkeletonsMoveAsInSimbody) {
   };
   std::map<std::string, Inexact> inexact;           // file -> what differs
   std::map<std::string, std::string> not_compared;  // file -> why
-  for (const std::filesystem::path& file : CorpusModels()) {
+  for (const std::filesystem::path& file : sinew::testing::CorpusModelFiles(3'000'000)) {
     const std::string name = std::filesystem::relative(file, sinew::testing::CorpusDir());
     model::ModelSpec spec;
     std::unique_ptr<System> system;
