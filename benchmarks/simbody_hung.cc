@@ -94,4 +94,20 @@ BENCHMARK_CAPTURE(BM_SimbodyRajagopal2016HungOneSecond, feldberg, Scheme::kRunge
     ->DenseRange(5, 10)
     ->Unit(benchmark::kMillisecond);
 
+// One acceleration evaluation of the tumbling gait2354 skeleton in Simbody: the counterpart of
+// `BM_Gait2354Accelerations` (the same file, pose and speeds sin(c + 1); issue #15 quotes about
+// 70 us for Simbody on a model of this size). Everything from the positions on is recomputed.
+void BM_SimbodyGait2354Accelerations(benchmark::State& bench) {
+  const sinew::model::ModelSpec spec = sinew::io::ReadOsim(
+      std::string(SINEW_TEST_DATA_DIR) +
+      "/opensim-org/opensim-core/OpenSim/Simulation/Test/gait2354_simbody.osim");
+  const auto system = sinew::opensim::BuildSystem(spec);
+  sinew::engine::State state = sinew::engine::MakeDefaultState(*system);
+  for (int c = 0; c < system->num_coordinates(); ++c) state.u[c] = std::sin(c + 1.0);
+  sinew::engine::PlaceBodies(*system, state);
+  const simbody_reference::Simulation simulation(ToSimbody(spec, state, false));
+  for (auto _ : bench) benchmark::DoNotOptimize(simulation.EvaluateAccelerations());
+}
+BENCHMARK(BM_SimbodyGait2354Accelerations);
+
 }  // namespace

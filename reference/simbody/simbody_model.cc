@@ -63,6 +63,8 @@ struct Simulation::Impl {
   std::vector<Slot> slots;
   std::vector<double> q0;
   SimTK::State start;
+  mutable SimTK::State work;  // EvaluateAccelerations' state
+  mutable bool work_made = false;
 };
 
 Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>()) {
@@ -167,6 +169,15 @@ Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>()) {
 }
 
 Simulation::~Simulation() = default;
+
+double Simulation::EvaluateAccelerations() const {
+  const Impl& s = *impl_;
+  if (!s.work_made) s.work = s.start, s.work_made = true;
+  // A new position each time (alternating by 1e-12): nothing cached can be reused.
+  s.work.updQ()[0] = s.start.getQ()[0] + ((s.work.getQ()[0] == s.start.getQ()[0]) ? 1e-12 : 0.0);
+  s.system.realize(s.work, SimTK::Stage::Acceleration);
+  return s.work.getUDot().size() > 0 ? s.work.getUDot()[0] : 0.0;
+}
 
 std::vector<double> Simulation::Run(Scheme scheme, double accuracy, double t_final,
                                     RunStats* stats) const {

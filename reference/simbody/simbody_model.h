@@ -100,6 +100,10 @@ class Simulation {
   /// mobilizer holds keep their start values); what the run did into *stats when not null.
   std::vector<double> Run(Scheme scheme, double accuracy, double t_final,
                           RunStats* stats = nullptr) const;
+  /// One evaluation at the start state: everything from the positions on is recomputed
+  /// (kinematics, mass properties, forces, the accelerations). Returns the first generalized
+  /// acceleration. For timing; not thread-safe (it reuses one working state).
+  double EvaluateAccelerations() const;
 
  private:
   struct Impl;
