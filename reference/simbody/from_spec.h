@@ -146,8 +146,9 @@ inline Joint ToJoint(const ModelSpec& spec, const JointSpec& joint,
 
 }  // namespace detail
 
-/// `spec`'s skeleton as Simbody input: its bodies, its joints parents first (a joint whose
-/// coordinates are all locked welded at `start`'s pose), its CoordinateCouplerConstraints, at
+/// `spec`'s skeleton as Simbody input: its bodies, its joints from ground outwards (a joint
+/// whose parent hangs from its child as Simbody's reverse mobilizer; one whose coordinates are
+/// all locked welded at `start`'s pose), its CoordinateCouplerConstraints, at
 /// `start`'s coordinates and speeds (`start` is a Sinew State of the System built from `spec`,
 /// whose coordinates are the spec's); other locked coordinates held by Simbody's
 /// ConstantCoordinate. Throws sinew::Error for what has no counterpart here: ScapulothoracicJoint,
