@@ -90,22 +90,28 @@ BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options)
 
 namespace {
 
-// One warning per muscle whose fiber had to be put at its minimum length because even the
-// shortest fiber pulls harder than the tendon (OpenSim warns too).
-void WarnFibersAtMinimumLength(const engine::System& system, const engine::State& state) {
+// One warning per muscle whose equilibrium is not a balance of its forces: a fiber put at its
+// minimum length because even the shortest fiber pulls harder than the tendon, or a deprecated
+// muscle's tendon held at its slack length by OpenSim's iteration (OpenSim warns of the first
+// and keeps both).
+void WarnUnbalancedFibers(const engine::System& system, const engine::State& state) {
   for (size_t k = 0; k < system.force_elements().size(); ++k) {
     const auto* muscle =
         dynamic_cast<const muscles::PathActuator*>(system.force_elements()[k].get());
     if (!muscle || muscle->StateVariableNames().empty()) continue;
     const engine::ForceContext context = system.MakeForceContext(static_cast<int>(k), state);
     VecX z = state.z.segment(context.z_begin, system.NumStateVariables(static_cast<int>(k)));
-    if (muscle->model().Equilibrate(muscle->CalcPathKinematics(context), muscle->name(), z) ==
-        muscles::EquilibriumStatus::kFiberAtMinimumLength) {
-      std::cerr << "sinew: warning: " << muscle->path().path().component()
-                << ": no fiber length balances the tendon (even the shortest fiber pulls harder): "
-                   "the fiber starts at its minimum length, "
-                << z[1] << " m\n";
-    }
+    const muscles::EquilibriumStatus status =
+        muscle->model().Equilibrate(muscle->CalcPathKinematics(context), muscle->name(), z);
+    if (status == muscles::EquilibriumStatus::kBalanced) continue;
+    std::cerr << "sinew: warning: " << muscle->path().path().component() << ": "
+              << (status == muscles::EquilibriumStatus::kFiberAtMinimumLength
+                      ? "no fiber length balances the tendon (even the shortest fiber pulls "
+                        "harder): the fiber starts at its minimum length, "
+                      : "OpenSim's equilibrium iteration ended with the tendon at its slack "
+                        "length and the forces still more than 0.01 N apart: the fiber starts "
+                        "with the rest of the path, as in OpenSim, ")
+              << z[1] << " m\n";
   }
 }
 
@@ -119,7 +125,7 @@ engine::State MakeStartState(const engine::System& system, const InitialStates* 
       ApplyInitialStateVariables(*initial, system, state);
       if (equilibrate_muscles) engine::InitializeStateVariables(system, state);
     }
-    if (equilibrate_muscles) WarnFibersAtMinimumLength(system, state);
+    if (equilibrate_muscles) WarnUnbalancedFibers(system, state);
     return state;
   } catch (const Error& error) {  // e.g. constraints that cannot be assembled: name the model
     if (!error.where().file.empty()) throw;

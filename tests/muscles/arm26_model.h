@@ -35,11 +35,14 @@ struct Arm26 {
 // The model, its controls and the initial states file's first row (coordinates and the
 // muscles' activation and fiber_length), as the Forward tool sets them, its cylinders following
 // `refinement` (by default OpenSim 2.x's rule, with which std_arm26_states.sto was written).
-// `controls` and `initial_states` default to the Forward test's files.
+// `controls` and `initial_states` default to the Forward test's files. `equilibrate`: the
+// fiber lengths are then the muscles' equilibrium at that pose and activation instead
+// (the Forward tool's solve_for_equilibrium_for_auxiliary_states).
 inline std::unique_ptr<Arm26> LoadArm26(
     paths::CylinderRefinement refinement = paths::CylinderRefinement::kAlways,
     const std::string& controls = kArm26Dir + "arm26_StaticOptimization_controls.xml",
-    const std::string& initial_states = kArm26Dir + "arm26_InitialStates.sto") {
+    const std::string& initial_states = kArm26Dir + "arm26_InitialStates.sto",
+    bool equilibrate = false) {
   auto arm = std::make_unique<Arm26>();
   arm->spec = io::ReadOsim(kArm26Dir + "arm26.osim");
   const io::Storage initial = io::ReadStorage(initial_states);
@@ -50,6 +53,7 @@ inline std::unique_ptr<Arm26> LoadArm26(
   arm->parser.RenameForceClass("Thelen2003Muscle", "Thelen2003Muscle_Deprecated");
   arm->parser.SetControlsFile(controls);
   arm->parser.SetCylinderRefinement(refinement);
+  arm->parser.EquilibrateMuscles(equilibrate);
   arm->system = std::make_unique<engine::System>(arm->spec.gravity);
   arm->parser.ParseSpec(*arm->system, arm->spec);
   arm->system->Finalize();
@@ -62,6 +66,7 @@ inline std::unique_ptr<Arm26> LoadArm26(
     ++set;
   }
   EXPECT_EQ(set, 12);
+  if (equilibrate) engine::InitializeStateVariables(*arm->system, arm->state);
   return arm;
 }
 

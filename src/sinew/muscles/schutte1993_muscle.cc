@@ -14,11 +14,6 @@ namespace {
 
 // OpenSim 2.x's test for "equal" (SimmMacros' ROUNDOFF_ERROR).
 constexpr double kRoundoff = 2e-13;
-// computeIsometricForce's iteration: at most 100 steps, done when the forces agree to 0.01 N.
-constexpr int kMaxIterations = 100;
-constexpr double kForceErrorLimit = 0.01;  // N
-// Its estimate of a tendon's minimum stiffness: elastic modulus 1200 over maximum stress 32.
-constexpr double kTendonModulusOverMaxStress = 1200.0 / 32.0;
 
 // OpenSim's calcPennation: asin(optimal sin(phi_opt) / length), 0 for a vanishing length,
 // pi / 2 once the fiber is no longer than the muscle's width.
@@ -143,102 +138,30 @@ void Schutte1993Muscle::CalcStateVariableDerivatives(Eigen::Ref<const VecX> z, d
   zdot[1] = quantities.fiber_velocity;
 }
 
-namespace {
-
-// OpenSim's guess of the fiber and tendon at one fiber length: the tendon never shorter than
-// its slack length (the fiber then takes the rest of the path at the pennation of that length).
-struct IsometricGuess {
-  double fiber;   // m
-  double cosine;  // of the pennation angle
-  double tendon;  // m
-};
-
-IsometricGuess GuessAt(const Schutte1993Muscle& muscle, double fiber, double path_length) {
-  const MuscleParameters& m = muscle.parameters().muscle;
-  IsometricGuess g{fiber, std::cos(muscle.Pennation(fiber)), 0.0};
-  g.tendon = path_length - g.fiber * g.cosine;
-  if (g.tendon < m.tendon_slack_length) {
-    const double width = m.optimal_fiber_length * std::sin(m.pennation_angle_at_optimal);
-    g.tendon = m.tendon_slack_length;
-    g.cosine = std::cos(std::atan(width / (path_length - g.tendon)));
-    g.fiber = (path_length - g.tendon) / g.cosine;
-  }
-  return g;
+DeprecatedMuscleCurves Schutte1993Muscle::Curves() const {
+  return {
+      .tendon_force = [this](double strain) { return TendonForce(strain); },
+      .tendon_force_in_stiffness =
+          [this](double strain) { return p_.tendon_force_length_curve->Calc(strain); },
+      .active_force_length =
+          [this](double lceN) { return p_.active_force_length_curve->Calc(lceN); },
+      .passive_force_length = [this](double lceN) { return PassiveForce(lceN); },
+      .pennation = [this](double fiber_length) { return Pennation(fiber_length); },
+  };
 }
-
-}  // namespace
 
 double Schutte1993Muscle::IsometricImbalance(double activation, double fiber_length,
                                              double path_length) const {
-  const MuscleParameters& m = p_.muscle;
-  const double lceN = fiber_length / m.optimal_fiber_length;
-  const double ca = std::cos(Pennation(fiber_length));
-  const double strain = (path_length - fiber_length * ca) / m.tendon_slack_length - 1.0;
-  const double active = std::max(p_.active_force_length_curve->Calc(lceN) * activation, 0.0);
-  return m.max_isometric_force *
-         (TendonForce(strain) - (active + std::max(PassiveForce(lceN), 0.0)) * ca);
+  return DeprecatedIsometricImbalance(p_.muscle, Curves(), activation, fiber_length, path_length);
 }
 
 EquilibriumStatus Schutte1993Muscle::Equilibrate(const PathKinematics& path,
                                                  const std::string& component,
                                                  Eigen::Ref<VecX> z) const {
-  const MuscleParameters& m = p_.muscle;
-  const double a = z[0], length = path.length, ofl = m.optimal_fiber_length;
-  const double fmax = m.max_isometric_force, slack = m.tendon_slack_length;
-  const double width = ofl * std::sin(m.pennation_angle_at_optimal);
-  if (!std::isfinite(a) || !std::isfinite(length)) {
-    throw Error(SourceLocation{}, component,
-                "cannot equilibrate: activation or path length is not finite");
-  }
-  // A path shorter than the tendon's slack length: no force; the fibers as long as the muscle
-  // is wide (OpenSim's answer).
-  if (length < slack) {
-    z[1] = width;
-    return EquilibriumStatus::kBalanced;
-  }
-  auto active = [&](double fiber) { return p_.active_force_length_curve->Calc(fiber / ofl); };
-
-  // OpenSim's computeIsometricForce: from the optimal fiber length, steps of
-  // error / (fiber stiffness / cos + tendon stiffness) (at most half an optimal length), and a
-  // secant step whenever the error changes sign, until the forces agree to 0.01 N.
-  IsometricGuess g = GuessAt(*this, ofl, length);
-  g.fiber = std::max(g.fiber, width);
-  double error = 0.0, old_fiber = g.fiber;
-  for (int i = 0; i < kMaxIterations; ++i) {
-    const double act = std::max(active(g.fiber) * a, 0.0);
-    const double pas = std::max(PassiveForce(g.fiber / ofl), 0.0);
-    const double strain = g.tendon / slack - 1.0;
-    const double old_error = i == 0 ? fmax * (TendonForce(strain) - (act + pas) * g.cosine) : error;
-    error = fmax * (TendonForce(strain) - (act + pas) * g.cosine);
-    if (std::abs(error) <= kForceErrorLimit) break;
-    if ((error >= 0.0) != (old_error >= 0.0)) {
-      const double percent = std::abs(error) / (std::abs(error) + std::abs(old_error));
-      const double before = old_fiber;
-      old_fiber = g.fiber;
-      g.fiber += percent * (before - g.fiber);
-    } else {
-      const double tendon_stiffness =
-          std::max(p_.tendon_force_length_curve->Calc(strain) * fmax / slack,
-                   (act + pas) * kTendonModulusOverMaxStress * fmax / slack);
-      const double fiber_stiffness = fmax / ofl * (active(g.fiber) + PassiveForce(g.fiber / ofl));
-      const double change =
-          std::min(std::abs(error / (fiber_stiffness / g.cosine + tendon_stiffness)), 0.5 * ofl);
-      old_fiber = g.fiber;
-      g.fiber += error > 0.0 ? change : -change;
-    }
-    g = GuessAt(*this, g.fiber, length);
-  }
-
-  if (!(std::abs(error) <= kForceErrorLimit)) {
-    throw Error(SourceLocation{}, component,
-                "no muscle-tendon equilibrium at path length " + std::to_string(length) +
-                    " m and activation " + std::to_string(a) + ": after " +
-                    std::to_string(kMaxIterations) +
-                    " iterations tendon and fiber forces differ by " +
-                    std::to_string(std::abs(error)) + " N (OpenSim stops at 0.01 N)");
-  }
-  z[1] = g.fiber;
-  return EquilibriumStatus::kBalanced;
+  const DeprecatedEquilibrium e =
+      SolveDeprecatedIsometricFiberLength(p_.muscle, Curves(), z[0], path.length, component);
+  z[1] = e.fiber_length;
+  return e.status;
 }
 
 }  // namespace sinew::muscles

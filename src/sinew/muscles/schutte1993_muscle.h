@@ -6,6 +6,7 @@
 #pragma once
 
 #include <sinew/functions/function.h>
+#include <sinew/muscles/deprecated_muscle_equilibrium.h>
 #include <sinew/muscles/tension_model.h>
 #include <sinew/muscles/thelen2003_muscle.h>
 
@@ -40,9 +41,10 @@ class Schutte1993Muscle final : public TensionModel {
   void CalcStateVariableDerivatives(Eigen::Ref<const VecX> z, double excitation,
                                     const PathKinematics& path, const MuscleQuantities& quantities,
                                     Eigen::Ref<VecX> zdot) const override;
-  /// OpenSim's computeIsometricForce: the fiber length at which the tendon force and the fiber
-  /// force along the tendon (IsometricImbalance) agree to 0.01 N at the activation `z` holds.
-  /// Throws sinew::Error naming `component` when its 100 iterations end further apart.
+  /// OpenSim's computeIsometricForce (SolveDeprecatedIsometricFiberLength): the fiber length at
+  /// which the tendon force and the fiber force along the tendon (IsometricImbalance) agree to
+  /// 0.01 N at the activation `z` holds. Throws sinew::Error naming `component` when its 100
+  /// iterations end further apart.
   EquilibriumStatus Equilibrate(const PathKinematics& path, const std::string& component,
                                 Eigen::Ref<VecX> z) const override;
 
@@ -67,6 +69,8 @@ class Schutte1993Muscle final : public TensionModel {
   double Pennation(double fiber_length) const;
 
  private:
+  DeprecatedMuscleCurves Curves() const;
+
   Schutte1993Parameters p_;
 };
 

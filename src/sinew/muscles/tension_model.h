@@ -45,6 +45,10 @@ MuscleQuantities QuantitiesOf(const Dynamics& d) {
 enum class EquilibriumStatus {
   kBalanced,              ///< fiber force along the tendon = tendon force
   kFiberAtMinimumLength,  ///< even the shortest fiber pulls harder: fiber at its minimum
+  /// OpenSim's iteration for its deprecated muscles ended with the tendon held at its slack
+  /// length (it never shortens it further) and the forces still apart: the fiber takes the
+  /// rest of the path, as in OpenSim
+  kTendonAtSlackLength,
 };
 
 /// A model of the tension along a path. Immutable; its changing values live in the engine

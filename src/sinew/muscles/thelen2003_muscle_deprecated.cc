@@ -105,7 +105,7 @@ MuscleQuantities Thelen2003MuscleDeprecated::Calc(Eigen::Ref<const VecX> z, doub
   const double rest = m.tendon_slack_length / ofl;
   const double tendon = TendonForce((tendon_norm - rest) / rest);
   const double passive = PassiveForce(lceN);
-  const double fal = std::exp(-(lceN - 1.0) * (lceN - 1.0) / p_.KshapeActive);
+  const double fal = ActiveForceLength(lceN);
   const double vmax = (a < 1.0 ? p_.Vmax0 + a * (p_.Vmax - p_.Vmax0) : p_.Vmax) * ofl;  // m/s
   double dlceN = 0.0;
   if (std::abs(ca) <= kRoundoff) {
@@ -138,12 +138,36 @@ void Thelen2003MuscleDeprecated::CalcStateVariableDerivatives(Eigen::Ref<const V
   zdot[1] = quantities.fiber_velocity;
 }
 
-EquilibriumStatus Thelen2003MuscleDeprecated::Equilibrate(const PathKinematics& /*path*/,
+double Thelen2003MuscleDeprecated::ActiveForceLength(double lceN) const {
+  return std::exp(-(lceN - 1.0) * (lceN - 1.0) / p_.KshapeActive);
+}
+
+DeprecatedMuscleCurves Thelen2003MuscleDeprecated::Curves() const {
+  return {
+      .tendon_force = [this](double strain) { return TendonForce(strain); },
+      .tendon_force_in_stiffness = [this](double strain) { return TendonForce(strain); },
+      .active_force_length = [this](double lceN) { return ActiveForceLength(lceN); },
+      .passive_force_length = [this](double lceN) { return PassiveForce(lceN); },
+      .pennation =
+          [this](double fiber_length) {
+            return Pennation(fiber_length / p_.muscle.optimal_fiber_length,
+                             std::sin(p_.muscle.pennation_angle_at_optimal));
+          },
+  };
+}
+
+double Thelen2003MuscleDeprecated::IsometricImbalance(double activation, double fiber_length,
+                                                      double path_length) const {
+  return DeprecatedIsometricImbalance(p_.muscle, Curves(), activation, fiber_length, path_length);
+}
+
+EquilibriumStatus Thelen2003MuscleDeprecated::Equilibrate(const PathKinematics& path,
                                                           const std::string& component,
-                                                          Eigen::Ref<VecX> /*z*/) const {
-  throw Error(SourceLocation{}, component,
-              "muscle-tendon equilibrium is not implemented for Thelen2003Muscle_Deprecated: "
-              "give its fiber_length in an initial-states file");
+                                                          Eigen::Ref<VecX> z) const {
+  const DeprecatedEquilibrium e =
+      SolveDeprecatedIsometricFiberLength(p_.muscle, Curves(), z[0], path.length, component);
+  z[1] = e.fiber_length;
+  return e.status;
 }
 
 }  // namespace sinew::muscles

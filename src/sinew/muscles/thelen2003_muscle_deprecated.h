@@ -10,6 +10,7 @@
 // damping term; pennation is asin(w / lce) with no minimum fiber length. docs/muscles.md.
 #pragma once
 
+#include <sinew/muscles/deprecated_muscle_equilibrium.h>
 #include <sinew/muscles/tension_model.h>
 #include <sinew/muscles/thelen2003_muscle.h>
 
@@ -40,19 +41,30 @@ class Thelen2003MuscleDeprecated final : public TensionModel {
   void CalcStateVariableDerivatives(Eigen::Ref<const VecX> z, double excitation,
                                     const PathKinematics& path, const MuscleQuantities& quantities,
                                     Eigen::Ref<VecX> zdot) const override;
-  /// Not implemented: throws sinew::Error naming `component` (OpenSim's computeIsometricForce
-  /// for this class is not reproduced; start from a states file instead).
+  /// OpenSim's computeIsometricForce for this class (SolveDeprecatedIsometricFiberLength, the
+  /// iteration of Schutte1993Muscle's with this model's curves): the fiber length at which the
+  /// tendon force and the fiber force along the tendon (IsometricImbalance) agree to 0.01 N at
+  /// the activation `z` holds. Throws sinew::Error naming `component` when its 100 iterations
+  /// end further apart.
   EquilibriumStatus Equilibrate(const PathKinematics& path, const std::string& component,
                                 Eigen::Ref<VecX> z) const override;
 
   /// The model's normalized curves (exposed for tests).
   double TendonForce(double strain) const;
   double PassiveForce(double lceN) const;
+  /// Active force-length multiplier exp(-(lceN - 1)^2 / KshapeActive).
+  double ActiveForceLength(double lceN) const;
+  /// Tendon force less fiber force along the tendon (N) at zero fiber velocity, as OpenSim's
+  /// computeIsometricForce measures it, for a fiber of length `fiber_length` in a path of
+  /// length `path_length` (m).
+  double IsometricImbalance(double activation, double fiber_length, double path_length) const;
   /// Normalized fiber velocity (per Vmax) at activation a, active force-length multiplier fal
   /// and the velocity-dependent normalized force.
   double FiberVelocity(double a, double fal, double force) const;
 
  private:
+  DeprecatedMuscleCurves Curves() const;
+
   Thelen2003DeprecatedParameters p_;
 };
 
