@@ -115,6 +115,27 @@ void WarnUnbalancedFibers(const engine::System& system, const engine::State& sta
   }
 }
 
+// One warning when muscles start with fiber length 0 (OpenSim 2.x's start for its deprecated
+// muscles, which Sinew keeps): each tendon then takes the whole path and pulls many times its
+// maximum isometric force, and the first milliseconds fling the model.
+void WarnZeroLengthFibers(const engine::System& system, const engine::State& state) {
+  const std::vector<std::string>& names = system.state_variable_names();
+  const std::string suffix = "/fiber_length";
+  std::vector<std::string> muscles;
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (names[i].ends_with(suffix) && state.z[static_cast<Eigen::Index>(i)] == 0.0) {
+      muscles.push_back(names[i].substr(0, names[i].size() - suffix.size()));
+    }
+  }
+  if (muscles.empty()) return;
+  std::cerr << "sinew: warning: " << muscles.size() << " muscle(s) start with fiber length 0 ("
+            << muscles.front() << (muscles.size() > 1 ? ", ..." : "")
+            << "; OpenSim 2.x's start for its deprecated muscles): each tendon takes the whole "
+               "path and pulls many times its maximum force; --equilibrate-muscles (a Forward "
+               "setup's solve_for_equilibrium_for_auxiliary_states) or an initial-states file "
+               "sets the fibers\n";
+}
+
 }  // namespace
 
 engine::State MakeStartState(const engine::System& system, const InitialStates* initial,
@@ -125,7 +146,11 @@ engine::State MakeStartState(const engine::System& system, const InitialStates* 
       ApplyInitialStateVariables(*initial, system, state);
       if (equilibrate_muscles) engine::InitializeStateVariables(system, state);
     }
-    if (equilibrate_muscles) WarnUnbalancedFibers(system, state);
+    if (equilibrate_muscles) {
+      WarnUnbalancedFibers(system, state);
+    } else {
+      WarnZeroLengthFibers(system, state);
+    }
     return state;
   } catch (const Error& error) {  // e.g. constraints that cannot be assembled: name the model
     if (!error.where().file.empty()) throw;
