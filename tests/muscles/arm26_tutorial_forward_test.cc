@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "muscles/arm26_model.h"
+#include "muscles/deprecated_equilibrium_check.h"
 
 namespace sinew::muscles {
 namespace {
@@ -76,11 +77,7 @@ TEST(Arm26TutorialEquilibriumTest, FiberLengthsAreTheOnesOpenSimEquilibratedTheR
     ASSERT_EQ(model.Equilibrate(path, name, z), EquilibriumStatus::kBalanced);
     const double sinew = z[1];
     EXPECT_LE(std::abs(model.IsometricImbalance(activation, sinew, path.length)), 0.01) << name;
-    const double h = 1e-7;
-    const double stiffness =
-        std::abs(model.IsometricImbalance(activation, sinew + h, path.length) -
-                 model.IsometricImbalance(activation, sinew - h, path.length)) /
-        (2 * h);
+    const double stiffness = BalanceStiffness(model, activation, sinew, path.length);
     std::printf("%-8s OpenSim %.8f m, Sinew %.10f m: %+.2e m (band %.2e m), imbalance %.2e N\n",
                 name.c_str(), opensim, sinew, sinew - opensim, 0.02 / stiffness,
                 model.IsometricImbalance(activation, sinew, path.length));

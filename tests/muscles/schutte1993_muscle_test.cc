@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "muscles/deprecated_equilibrium_check.h"
 #include "paths/path_test_util.h"
 #include "slider_model.h"
 
@@ -58,45 +59,9 @@ TEST(Schutte1993MuscleTest, ActivationFollowsTheClosedFormOfItsLinearEquation) {
   }
 }
 
-// Equilibrated at activation 0.2 on the locked slider, then 1 s under the excitation 0.2 at
-// accuracy 1e-12. OpenSim's iteration balances the forces to 0.01 N; the fiber then settles
-// onto the exact balance, at most 0.01 N over the stiffness of the balance away (measured
-// here), and the tendon force by at most 0.01 N.
+// deprecated_equilibrium_check.h says what is checked and why.
 TEST(Schutte1993MuscleTest, MuscleAtEquilibriumStaysThereUnderConstantExcitation) {
-  auto parsed = Parse(SliderModel(Schutte(), true), /*equilibrate=*/true);
-  parsed->parser.SetExcitationFunction("musc", std::make_shared<functions::Constant>(0.2));
-  auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-12});
-  integrator->SetController(parsed->parser.GetController());
-  engine::State state = engine::MakeDefaultState(*parsed->system);
-  ASSERT_EQ(parsed->system->state_variable_names(),
-            (std::vector<std::string>{"musc/activation", "musc/fiber_length"}));
-  state.z[0] = 0.2;
-  engine::InitializeStateVariables(*parsed->system, state);
-  const PathActuator& muscle = MuscleOf(*parsed->system);
-  const double fiber0 = state.z[1];
-  const MuscleQuantities q0 = muscle.CalcQuantities(parsed->system->MakeForceContext(0, state));
-  EXPECT_GT(q0.tendon_force, 10.0);
-  const auto& model = dynamic_cast<const Schutte1993Muscle&>(muscle.model());
-  const double length =
-      muscle.CalcPathKinematics(parsed->system->MakeForceContext(0, state)).length;
-  EXPECT_LE(std::abs(model.IsometricImbalance(0.2, fiber0, length)), 0.01);
-  const double h = 1e-7;
-  const double stiffness = std::abs(model.IsometricImbalance(0.2, fiber0 + h, length) -
-                                    model.IsometricImbalance(0.2, fiber0 - h, length)) /
-                           (2 * h);
-  integrator->StepTo(state, 1.0);
-  EXPECT_NEAR(state.z[0], 0.2, 1e-12);
-  EXPECT_NEAR(state.z[1], fiber0, 0.01 / stiffness);
-  const MuscleQuantities q1 = muscle.CalcQuantities(parsed->system->MakeForceContext(0, state));
-  EXPECT_NEAR(q1.tendon_force, q0.tendon_force, 0.01);
-  // Settled: the fiber at rest, the forces balanced far better than OpenSim's 0.01 N.
-  EXPECT_NEAR(q1.fiber_velocity, 0.0, 1e-9);
-  EXPECT_NEAR(model.IsometricImbalance(0.2, state.z[1], length), 0.0, 1e-6);
-  std::printf(
-      "equilibrium: imbalance %.3g N at the start, fiber moved %.3g m (bound %.3g m), "
-      "tendon force by %.3g N\n",
-      model.IsometricImbalance(0.2, fiber0, length), state.z[1] - fiber0, 0.01 / stiffness,
-      q1.tendon_force - q0.tendon_force);
+  ExpectEquilibriumHoldsUnderConstantExcitation<Schutte1993Muscle>(Schutte());
 }
 
 // OpenSim's AnalyzeTool test (testAnalyzeTool.cpp, "testTutorialOne"): BothLegs.osim's states

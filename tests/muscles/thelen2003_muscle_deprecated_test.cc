@@ -4,8 +4,6 @@
 // OpenSim's own equilibrium fiber lengths (arm26 in the CMC tutorial's runs) are compared in
 // arm26_tutorial_forward_test.cc.
 #include <gtest/gtest.h>
-#include <sinew/functions/constant.h>
-#include <sinew/muscles/path_actuator.h>
 #include <sinew/muscles/thelen2003_muscle_deprecated.h>
 
 #include <cmath>
@@ -14,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "slider_model.h"
+#include "muscles/deprecated_equilibrium_check.h"
 
 namespace sinew::muscles {
 namespace {
@@ -82,50 +80,15 @@ TEST(Thelen2003MuscleDeprecatedTest, NonFiniteInputsAreErrorsNamingTheMuscle) {
   }
 }
 
-// Equilibrated at activation 0.2 on the locked slider, then 1 s under the excitation 0.2 at
-// accuracy 1e-12. The activation's equation (u - a) / tau holds it; the fiber settles from
-// OpenSim's 0.01 N balance onto the exact one (the force-velocity relation gives zero velocity
-// there), so it moves by at most 0.01 N over the stiffness of the balance and the tendon force
-// by at most 0.01 N.
+// deprecated_equilibrium_check.h says what is checked and why. The activation's equation
+// (u - a) / tau holds it, and the force-velocity relation gives zero fiber velocity at the
+// exact balance.
 TEST(Thelen2003MuscleDeprecatedTest, MuscleAtEquilibriumStaysThereUnderConstantExcitation) {
-  const std::string xml = std::string(R"(<Thelen2003Muscle_Deprecated name="musc">)") + kPath +
-                          R"(<max_isometric_force>500</max_isometric_force>
+  ExpectEquilibriumHoldsUnderConstantExcitation<Thelen2003MuscleDeprecated>(
+      std::string(R"(<Thelen2003Muscle_Deprecated name="musc">)") + kPath +
+      R"(<max_isometric_force>500</max_isometric_force>
 <optimal_fiber_length>0.12</optimal_fiber_length><tendon_slack_length>0.27</tendon_slack_length>
-<pennation_angle_at_optimal>0.2</pennation_angle_at_optimal></Thelen2003Muscle_Deprecated>)";
-  auto parsed = Parse(SliderModel(xml, true), /*equilibrate=*/true);
-  parsed->parser.SetExcitationFunction("musc", std::make_shared<functions::Constant>(0.2));
-  auto integrator = engine::MakeIntegrator("rk45", *parsed->system, {.accuracy = 1e-12});
-  integrator->SetController(parsed->parser.GetController());
-  engine::State state = engine::MakeDefaultState(*parsed->system);
-  ASSERT_EQ(parsed->system->state_variable_names(),
-            (std::vector<std::string>{"musc/activation", "musc/fiber_length"}));
-  state.z[0] = 0.2;
-  engine::InitializeStateVariables(*parsed->system, state);
-  const auto& muscle = dynamic_cast<const PathActuator&>(*parsed->system->force_elements()[0]);
-  const auto& model = dynamic_cast<const Thelen2003MuscleDeprecated&>(muscle.model());
-  const double fiber0 = state.z[1];
-  const double length =
-      muscle.CalcPathKinematics(parsed->system->MakeForceContext(0, state)).length;
-  EXPECT_NEAR(length, 0.4, 1e-15);
-  EXPECT_LE(std::abs(model.IsometricImbalance(0.2, fiber0, length)), 0.01);
-  const MuscleQuantities q0 = muscle.CalcQuantities(parsed->system->MakeForceContext(0, state));
-  EXPECT_GT(q0.tendon_force, 10.0);
-  const double h = 1e-7;
-  const double stiffness = std::abs(model.IsometricImbalance(0.2, fiber0 + h, length) -
-                                    model.IsometricImbalance(0.2, fiber0 - h, length)) /
-                           (2 * h);
-  integrator->StepTo(state, 1.0);
-  EXPECT_NEAR(state.z[0], 0.2, 1e-12);
-  EXPECT_NEAR(state.z[1], fiber0, 0.01 / stiffness);
-  const MuscleQuantities q1 = muscle.CalcQuantities(parsed->system->MakeForceContext(0, state));
-  EXPECT_NEAR(q1.tendon_force, q0.tendon_force, 0.01);
-  EXPECT_NEAR(q1.fiber_velocity, 0.0, 1e-9);
-  EXPECT_NEAR(model.IsometricImbalance(0.2, state.z[1], length), 0.0, 1e-6);
-  std::printf(
-      "equilibrium: imbalance %.3g N at the start, fiber moved %.3g m (bound %.3g m), "
-      "tendon force by %.3g N\n",
-      model.IsometricImbalance(0.2, fiber0, length), state.z[1] - fiber0, 0.01 / stiffness,
-      q1.tendon_force - q0.tendon_force);
+<pennation_angle_at_optimal>0.2</pennation_angle_at_optimal></Thelen2003Muscle_Deprecated>)");
 }
 
 }  // namespace
