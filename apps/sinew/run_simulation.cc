@@ -5,7 +5,7 @@
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/pose.h>
 #include <sinew/kinematics/body_kinematics.h>
-#include <sinew/muscles/path_actuator.h>
+#include <sinew/muscles/equilibrate_muscles.h>
 #include <sinew/opensim/collision_settings.h>
 #include <sinew/opensim/constraint_forces_table.h>
 #include <sinew/opensim/states_table.h>
@@ -90,28 +90,13 @@ BuiltModel BuildModel(const model::ModelSpec& spec, const ModelOptions& options)
 
 namespace {
 
-// One warning per muscle whose equilibrium is not a balance of its forces: a fiber put at its
-// minimum length because even the shortest fiber pulls harder than the tendon, or a deprecated
-// muscle's tendon held at its slack length by OpenSim's iteration (OpenSim warns of the first
-// and keeps both).
+// Equilibrates every muscle again (the same answer as at the start) to tell the user of each
+// muscle whose equilibrium is not a balance of its forces (OpenSim warns of a fiber at its
+// minimum length and keeps both kinds).
 void WarnUnbalancedFibers(const engine::System& system, const engine::State& state) {
-  for (size_t k = 0; k < system.force_elements().size(); ++k) {
-    const auto* muscle =
-        dynamic_cast<const muscles::PathActuator*>(system.force_elements()[k].get());
-    if (!muscle || muscle->StateVariableNames().empty()) continue;
-    const engine::ForceContext context = system.MakeForceContext(static_cast<int>(k), state);
-    VecX z = state.z.segment(context.z_begin, system.NumStateVariables(static_cast<int>(k)));
-    const muscles::EquilibriumStatus status =
-        muscle->model().Equilibrate(muscle->CalcPathKinematics(context), muscle->name(), z);
-    if (status == muscles::EquilibriumStatus::kBalanced) continue;
-    std::cerr << "sinew: warning: " << muscle->path().path().component() << ": "
-              << (status == muscles::EquilibriumStatus::kFiberAtMinimumLength
-                      ? "no fiber length balances the tendon (even the shortest fiber pulls "
-                        "harder): the fiber starts at its minimum length, "
-                      : "OpenSim's equilibrium iteration ended with the tendon at its slack "
-                        "length and the forces still more than 0.01 N apart: the fiber starts "
-                        "with the rest of the path, as in OpenSim, ")
-              << z[1] << " m\n";
+  engine::State copy = state;
+  for (const muscles::UnbalancedMuscle& muscle : muscles::EquilibrateMuscles(system, copy)) {
+    std::cerr << "sinew: warning: " << muscles::DescribeUnbalancedMuscle(muscle) << "\n";
   }
 }
 

@@ -132,11 +132,18 @@ class Model:
         not_simulated."""
     def default_state(self) -> "State":
         """Every coordinate at its default value and speed, assembled onto the constraints."""
+    def equilibrate_muscles(self, state: "State") -> "State":
+        """A copy of `state` with every muscle's fiber at muscle-tendon equilibrium at its pose,
+        speeds and activations (OpenSim's equilibrateMuscles; the deprecated muscles by OpenSim's
+        own iteration, balanced to 0.01 N). A muscle left unbalanced (a fiber at its minimum
+        length, a deprecated muscle's tendon held at slack) is a UserWarning naming it; one
+        without an equilibrium is a sinew.Error naming it."""
     def simulate(self, duration: float, *, accuracy: float = 1e-6, integrator: str = "rk45",
                  step: Optional[float] = None, report_interval: float = 0.01,
                  initial_states: Union[None, "State", PathLike] = None,
                  excitations: Optional[Mapping[str, Excitation]] = None,
-                 controls: Optional[PathLike] = None) -> Result:
+                 controls: Optional[PathLike] = None,
+                 equilibrate_muscles: bool = False) -> Result:
         """Forward simulation over `duration` s, what `sinew simulate` runs (same arrays bit for
         bit, Result.to_sto writes its states.sto byte for byte).
 
@@ -147,6 +154,9 @@ class Model:
         gives the coordinates as OpenSim's Forward tool takes it. excitations: actuator name ->
         number, Function, or Python function of time (called at every evaluation, slower),
         over the model's controllers. controls: an OpenSim ControlSet file.
+        equilibrate_muscles: the fibers start at equilibrium at the initial state
+        (equilibrate_muscles(), as `sinew simulate --equilibrate-muscles`); otherwise at the
+        file's defaults or the initial state's values.
         Ctrl-C raises KeyboardInterrupt between steps.
         """
     def kinematics(self, motion: Union[None, PathLike, Result] = None) -> Dict[str, object]:
@@ -177,8 +187,10 @@ class Model:
         its contacts table) draws the contact forces at `time` as green arrows, as `sinew
         render --contacts` (needs a motion)."""
     def simulator(self, step: float, *, integrator: str = "euler", accuracy: float = 1e-6,
-                  initial_states: Union[None, "State", PathLike] = None) -> "Simulator":
-        """A Simulator that advances this model by `step` s per call."""
+                  initial_states: Union[None, "State", PathLike] = None,
+                  equilibrate_muscles: bool = False) -> "Simulator":
+        """A Simulator that advances this model by `step` s per call (equilibrate_muscles as
+        for simulate: its initial state's fibers at equilibrium)."""
 
 
 class State:

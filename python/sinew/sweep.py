@@ -15,8 +15,8 @@ def run_case(model_path: str, case: Mapping[str, Any]) -> Any:
     on the default state), `parameters` ({"<component>/<property>": value}, model properties
     overridden before the model is built, as sinew.load's `parameters`), `load` (other keyword
     arguments of sinew.load), and any other keyword argument of Model.simulate (accuracy,
-    integrator, step, report_interval, initial_states, excitations, controls). Returns the
-    sinew.Result.
+    integrator, step, report_interval, initial_states, excitations, controls,
+    equilibrate_muscles). Returns the sinew.Result.
     """
     from . import load
     options = dict(case)

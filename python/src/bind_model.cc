@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "bindings.h"
+#include "simulation_inputs.h"
 #include "state_handle.h"
 
 namespace sinew::python {
@@ -169,6 +170,17 @@ void BindModel(py::module_& m) {
             return StateHandle{h, h->DefaultState()};
           },
           "The state with every coordinate at its default value and speed, assembled.")
+      .def(
+          "equilibrate_muscles",
+          [](const ModelPtr& h, const StateHandle& state) {
+            engine::CheckState(h->system(), state.state);
+            StateHandle out{h, state.state};
+            EquilibrateMusclesWarning(*h, out.state);
+            return out;
+          },
+          py::arg("state"),
+          "A copy of `state` with every muscle's fiber at muscle-tendon equilibrium at its "
+          "pose, speeds and activations (OpenSim's equilibrateMuscles).")
       .def("__repr__", [](const ModelHandle& h) {
         return "<sinew.Model '" + h.spec().name + "' from " + h.path() + ": " +
                std::to_string(h.system().num_coordinates()) + " coordinates, " +

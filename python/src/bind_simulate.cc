@@ -64,8 +64,10 @@ py::object Simulate(const ModelPtr& model, double duration, double accuracy,
                     const std::string& integrator_name, std::optional<double> step,
                     double report_interval, const py::object& initial_states,
                     const std::optional<std::map<std::string, py::object>>& excitations,
-                    const std::optional<std::filesystem::path>& controls) {
-  const RunSetup setup = PrepareRun(model, initial_states, excitations, controls);
+                    const std::optional<std::filesystem::path>& controls,
+                    bool equilibrate_muscles) {
+  const RunSetup setup =
+      PrepareRun(model, initial_states, excitations, controls, equilibrate_muscles);
   const engine::System& system = setup.model->system();
   engine::State state = setup.state;
   engine::IntegratorSettings settings;
@@ -170,6 +172,7 @@ void BindSimulate(py::module_& m) {
             py::arg("integrator") = "rk45", py::arg("step") = py::none(),
             py::arg("report_interval") = 0.01, py::arg("initial_states") = py::none(),
             py::arg("excitations") = py::none(), py::arg("controls") = py::none(),
+            py::arg("equilibrate_muscles") = false,
             "Forward simulation over `duration` seconds (what `sinew simulate` runs); returns "
             "a sinew.Result.");
   m.def("write_table", &WriteTable, py::arg("path"), py::arg("name"), py::arg("labels"),

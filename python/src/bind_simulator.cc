@@ -113,12 +113,13 @@ void BindSimulator(py::module_& m) {
   model.def(
       "simulator",
       [](const ModelPtr& h, double step, const std::string& integrator, double accuracy,
-         const py::object& initial_states) {
-        return Simulator(PrepareRun(h, initial_states, std::nullopt, std::nullopt), step,
-                         integrator, accuracy);
+         const py::object& initial_states, bool equilibrate_muscles) {
+        return Simulator(
+            PrepareRun(h, initial_states, std::nullopt, std::nullopt, equilibrate_muscles), step,
+            integrator, accuracy);
       },
       py::arg("step"), py::kw_only(), py::arg("integrator") = "euler", py::arg("accuracy") = 1e-6,
-      py::arg("initial_states") = py::none(),
+      py::arg("initial_states") = py::none(), py::arg("equilibrate_muscles") = false,
       "A Simulator stepping this model by `step` seconds per call.");
 }
 

@@ -4,6 +4,7 @@
 #include <sinew/engine/assemble.h>
 #include <sinew/functions/constant.h>
 #include <sinew/functions/excitations.h>
+#include <sinew/muscles/equilibrate_muscles.h>
 
 #include <vector>
 
@@ -58,9 +59,17 @@ void WarnAboutTable(const Diagnostics& notes, const std::vector<std::string>& la
 
 }  // namespace
 
+void EquilibrateMusclesWarning(const ModelHandle& model, engine::State& state) {
+  for (const muscles::UnbalancedMuscle& muscle :
+       muscles::EquilibrateMuscles(model.system(), state)) {
+    Warn(muscles::DescribeUnbalancedMuscle(muscle));
+  }
+}
+
 RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
                     const std::optional<std::map<std::string, py::object>>& excitations,
-                    const std::optional<std::filesystem::path>& controls) {
+                    const std::optional<std::filesystem::path>& controls,
+                    bool equilibrate_muscles) {
   RunSetup setup{model, {}, nullptr};
   const bool is_state = py::isinstance<StateHandle>(initial_states);
   std::string states_file;
@@ -79,6 +88,7 @@ RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
   } else {
     setup.state = setup.model->DefaultState();
   }
+  if (equilibrate_muscles) EquilibrateMusclesWarning(*setup.model, setup.state);
   setup.controller = setup.model->parser().GetController();
   if (excitations && !excitations->empty()) {
     opensim::OpenSimParser parser = setup.model->parser();  // the model's stays as it is

@@ -29,9 +29,16 @@ struct RunSetup {
 /// whose first row gives the coordinates (a warning lists the columns it could not use).
 /// `excitations`: actuator name -> a number (constant), a sinew.Function, or a Python
 /// callable f(t) -> float (called with the GIL at every evaluation: slower). `controls`: an
-/// OpenSim ControlSet file. Throws sinew::Error for bad input.
+/// OpenSim ControlSet file. `equilibrate_muscles`: the muscles' fibers are then set to
+/// equilibrium at the initial state (EquilibrateMusclesWarning). Throws sinew::Error for bad
+/// input.
 RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
                     const std::optional<std::map<std::string, py::object>>& excitations,
-                    const std::optional<std::filesystem::path>& controls);
+                    const std::optional<std::filesystem::path>& controls,
+                    bool equilibrate_muscles = false);
+
+/// Sets every muscle of `model` in `state` to muscle-tendon equilibrium (OpenSim's
+/// equilibrateMuscles); a muscle left unbalanced is a UserWarning naming it.
+void EquilibrateMusclesWarning(const ModelHandle& model, engine::State& state);
 
 }  // namespace sinew::python
