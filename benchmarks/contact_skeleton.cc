@@ -38,6 +38,18 @@ void BM_SkeletonOnGroundSmcStep(benchmark::State& bench) {
 }
 BENCHMARK(BM_SkeletonOnGroundSmcStep)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+// The same scene on the plane with tangential springs (kt = 1e7 Pa, gt = 20 N s/m): the
+// contacts' displacements are kept from step to step, which finds the contacts once more per
+// step (SmoothCollisionForce::UpdateDiscreteData).
+void BM_SkeletonOnGroundSmcTangentialSpringStep(benchmark::State& bench) {
+  sinew::contact::CollisionMaterial material;
+  material.kt = 1e7;
+  material.gt = 20.0;
+  const sinew::testing::SkeletonDrop scene = sinew::testing::MakeSkeletonDrop(0.05, material);
+  TimeOneSecond(bench, *scene.system, "euler");
+}
+BENCHMARK(BM_SkeletonOnGroundSmcTangentialSpringStep)->Unit(benchmark::kMillisecond);
+
 // The same scene with linearized implicit Euler, which comes to rest there at 1 ms where
 // semi-implicit Euler does not (docs/contact.md): the SMC force's own load Jacobians and a
 // sparse LU of the step's KKT matrix.

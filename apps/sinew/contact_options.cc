@@ -33,8 +33,11 @@ void AddContactOptions(CLI::App* cmd, ContactOptions& o) {
         {"--poisson-ratio", &m.poisson_ratio, "Contact Poisson ratio (0.3)"},
         {"--kn", &m.kn, "SMC normal stiffness (Pa; 0: from the modulus)"},
         {"--gn", &m.gn, "SMC normal damping (1/(m s), with --kn)"},
-        {"--kt", &m.kt, "SMC tangential stiffness (not used: a warning)"},
-        {"--gt", &m.gt, "SMC friction slope at zero slip (N s/m)"}}) {
+        {"--kt", &m.kt,
+         "SMC tangential stiffness (Pa; > 0: friction is a spring on each contact's "
+         "displacement, capped at u f_n)"},
+        {"--gt", &m.gt,
+         "SMC friction slope at zero slip (N s/m; with --kt the spring's damping)"}}) {
     cmd->add_option(option.name, *option.value, option.help)->check(FiniteNumber());
   }
   cmd->add_option("--slip-speed", o.slip_speed,

@@ -77,6 +77,18 @@ TEST_F(SimulateCollisionTest, BallSettlesOnTheFloorOnItsWeightWithImplicitEuler)
   ExpectBallSettles("--integrator implicit-euler --step 1e-4");
 }
 
+// With tangential springs (--kt, damped by --gt) the friction of the resting ball is a spring on
+// its contact's displacement, kept from step to step, with fixed steps and with rk45's. The
+// spring (k_t = kt sqrt(r d), about 4e4 N/m at the default modulus's depth) on the slip's
+// effective mass (0.29 kg) is damped at about a third of critical by gt = 100 N s/m, so its
+// swing after the last bounce dies out long before the end. Its period (17 ms) is near rk45's
+// steps at rest, where rk45 lets rounding's sideways force grow to what its accuracy allows
+// (measured: 1e-5 N at 1e-6, 4.6e-7 N at 1e-8, 8.8e-10 N at 1e-10), hence 1e-10 here.
+TEST_F(SimulateCollisionTest, BallSettlesOnTheFloorOnItsWeightWithTangentialSprings) {
+  ExpectBallSettles("--kt 1e7 --gt 100 --integrator euler --step 1e-4");
+  ExpectBallSettles("--kt 1e7 --gt 100 --accuracy 1e-10");
+}
+
 // The same ball with NSC (the default material: friction 0.6, restitution 0.4) at the
 // default step of 1e-3 s: it falls 0.2 m, bounces to e^2 of its fall and comes to rest (its
 // bounces end by t = 0.2 + 2 e v / (g (1 - e)) = 0.47 s). The provider reports the sphere

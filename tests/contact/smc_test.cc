@@ -2,15 +2,20 @@
 // detector's contacts), against closed forms: a sphere launched sliding on a plane reaches
 // rolling at 5/7 of its speed when Coulomb's law says, and a box on an incline creeps below the
 // friction angle at the speed the friction regularization gives and slides with
-// g (sin a - u cos a) above it.
+// g (sin a - u cos a) above it. With tangential springs (kt) the box sticks instead, a ball on
+// a spring rocks about its rolling speed as the closed form says (keeping its energy), and a
+// sliding ball slips at exactly Coulomb's limit before it rolls.
 #include <gtest/gtest.h>
 #include <sinew/contact/smooth_collision_force.h>
 #include <sinew/engine/assemble.h>
+#include <sinew/engine/energy.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/state.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <numbers>
 
 #include "contact/contact_models.h"
@@ -30,47 +35,66 @@ double HertzDepth(double load, double modulus, double radius) {
   return std::pow(load / (4.0 / 3.0 * modulus * std::sqrt(radius)), 2.0 / 3.0);
 }
 
+// The model's ContactSphere (m = 1 kg, r = 0.1 m, I = 2/5 m r^2) and ContactHalfSpace floor
+// as collision shapes, no contact force in the file, SMC with `material` and slip speed `vs`:
+// resting at its Hertz depth d, sliding at `v0` along x without spin.
+constexpr double kM = 1.0, kR = 0.1, kInertia = 0.4 * kM * kR * kR;
+struct SlidingBall {
+  engine::System system{Vec3(0, -kG, 0)};
+  engine::State state;
+  double d = 0.0;    // the Hertz depth under the weight
+  double rho = 0.0;  // the contact point's distance from the centre, r - d / 2
+  // The contact point's slip speed along x (the ball's point at the contact, d/2 below the
+  // floor, less the floor's).
+  double Slip(const engine::State& s) const {
+    const engine::BodyState& b = s.bodies[1];
+    return (b.v_GB + b.w_GB.cross(Vec3(0, -(b.p_GB.y() + d / 2.0), 0))).x();
+  }
+};
+
+// The ball's model: the sphere on a free body over the ContactHalfSpace floor.
+model::ModelSpec BallSpec() {
+  return io::ReadOsimString(testing::FreeBodyContactModel(kM, Vec3::Constant(kInertia),
+                                                          Vec3(0, -kG, 0), kR, {Vec3::Zero()}, ""),
+                            "ball.osim");
+}
+
+std::unique_ptr<SlidingBall> MakeSlidingBall(const CollisionMaterial& material, double vs,
+                                             double v0) {
+  auto ball = std::make_unique<SlidingBall>();
+  opensim::OpenSimParser parser;
+  parser.EnableCollision();
+  parser.SetContactMethod(ContactMethod::kSmc);
+  parser.SetContactMaterial(material);
+  parser.SetFrictionSlipSpeed(vs);
+  parser.ParseSpec(ball->system, BallSpec());
+  ball->system.Finalize();
+  ball->d = HertzDepth(kM * kG, SameMaterialModulus(material), kR);
+  ball->rho = kR - ball->d / 2.0;
+  ball->state = engine::MakeDefaultState(ball->system);
+  engine::SetCoordinateValue(ball->system, ball->state, "ty", kR - ball->d);
+  engine::SetCoordinateSpeed(ball->system, ball->state, "tx", v0);
+  return ball;
+}
+
 TEST(SmoothContactTest, SlidingSphereRollsAtFiveSeventhsOfItsSpeed) {
-  // The model's ContactSphere (m = 1 kg, r = 0.1 m, I = 2/5 m r^2) and ContactHalfSpace floor
-  // as collision shapes, no contact force in the file; SMC with E = 1e9 Pa, nu = 0.3, u = 0.5,
-  // e = 0.5, slip speed v_s = 1e-4 m/s. It starts resting at its Hertz depth d, sliding at
-  // v0 = 1 m/s without spin. The contact point is d/2 below the floor, at rho = r - d/2 from
+  // The sliding ball with E = 1e9 Pa, nu = 0.3, u = 0.5, e = 0.5, slip speed v_s = 1e-4 m/s,
+  // v0 = 1 m/s. The contact point is d/2 below the floor, at rho = r - d/2 from
   // the centre. With f = u m g s / sqrt(s^2 + v_s^2) the slip s = v - w rho obeys
   // s' = -k s / sqrt(s^2 + v_s^2), k = u g (1 + m rho^2 / I), so it falls from v0 to s1 at
   // t1 = (F(v0) - F(s1)) / k, F(s) = sqrt(s^2 + v_s^2) - v_s ln((v_s + sqrt(s^2 + v_s^2)) / s);
   // the angular momentum about the contact line is kept, so it rolls at v0 / (1 + I / (m rho^2)).
   // Coulomb's law (v_s -> 0, d -> 0): t* = 2 v0 / (7 u g), 5/7 v0.
-  constexpr double kM = 1.0, kR = 0.1, kMu = 0.5, kVs = 1e-4, kV0 = 1.0, kS1 = 1e-3;
-  const double inertia = 0.4 * kM * kR * kR;
+  constexpr double kMu = 0.5, kVs = 1e-4, kV0 = 1.0, kS1 = 1e-3;
   CollisionMaterial material;
   material.young_modulus = 1e9;
   material.friction = kMu;
   material.restitution = 0.5;
-  opensim::OpenSimParser parser;
-  parser.EnableCollision();
-  parser.SetContactMethod(ContactMethod::kSmc);
-  parser.SetContactMaterial(material);
-  parser.SetFrictionSlipSpeed(kVs);
-  const model::ModelSpec spec =
-      io::ReadOsimString(testing::FreeBodyContactModel(kM, Vec3::Constant(inertia), Vec3(0, -kG, 0),
-                                                       kR, {Vec3::Zero()}, ""),
-                         "rolling_ball.osim");
-  engine::System system(spec.gravity);
-  parser.ParseSpec(system, spec);
-  system.Finalize();
-  const double d = HertzDepth(kM * kG, SameMaterialModulus(material), kR);
-  const double rho = kR - d / 2.0;
-  engine::State state = engine::MakeDefaultState(system);
-  engine::SetCoordinateValue(system, state, "ty", kR - d);
-  engine::SetCoordinateSpeed(system, state, "tx", kV0);
-  engine::IntegratorSettings settings;
-  settings.accuracy = 1e-10;
-  auto integrator = engine::MakeIntegrator("rk45", system, settings);
-
-  auto slip = [&](const engine::State& s) {
-    const engine::BodyState& b = s.bodies[1];
-    return (b.v_GB + b.w_GB.cross(Vec3(0, -(b.p_GB.y() + d / 2.0), 0))).x();
-  };
+  auto ball = MakeSlidingBall(material, kVs, kV0);
+  const double rho = ball->rho, inertia = kInertia;
+  engine::State& state = ball->state;
+  auto integrator = engine::MakeIntegrator("rk45", ball->system, {.accuracy = 1e-10});
+  auto slip = [&](const engine::State& s) { return ball->Slip(s); };
   double t1 = -1.0, previous = slip(state);
   constexpr double kDt = 1e-5;
   for (int n = 1; n <= 10000; ++n) {
@@ -103,8 +127,10 @@ TEST(SmoothContactTest, SlidingSphereRollsAtFiveSeventhsOfItsSpeed) {
 // +x cos a - y sin a), material E = 1e8 Pa, nu = 0.3, u = 0.5, e = 0.5, slip speed 1e-3 m/s,
 // through the force element itself (the box on the free body, the incline a ground
 // half-space, or with `on_box` a ground box whose top face is that plane). Starts at rest on
-// its four corners at their Hertz depth. Returns the downhill speed at 0.5 s and 1 s.
-std::pair<double, double> BoxDownhillSpeeds(double angle, double mu, bool on_box = false) {
+// its four corners at their Hertz depth. With `kt` > 0 friction is the tangential spring
+// (gt = 20 N s/m). Returns the downhill speed at 0.5 s and 1 s.
+std::pair<double, double> BoxDownhillSpeeds(double angle, double mu, bool on_box = false,
+                                            double kt = 0.0) {
   const Vec3 h(0.1, 0.05, 0.1);
   const double m = 1.0;
   const model::ModelSpec spec =
@@ -122,6 +148,8 @@ std::pair<double, double> BoxDownhillSpeeds(double angle, double mu, bool on_box
   material.young_modulus = 1e8;
   material.friction = mu;
   material.restitution = 0.5;
+  material.kt = kt;
+  material.gt = kt > 0.0 ? 20.0 : 0.0;
   CollisionModel model;
   model.materials = {material};
   model.jointed = {{0, 1}};
@@ -142,7 +170,8 @@ std::pair<double, double> BoxDownhillSpeeds(double angle, double mu, bool on_box
   auto detector = std::make_shared<CollisionDetector>(model, std::nullopt);
   system.AddForceElement(std::make_shared<SmoothCollisionForce>(
       "smc", detector, std::vector<double>{0.0, m}, 1e-3,
-      std::vector<ContactForce::RecordGroup>{{"box", 1}}, std::vector<ContactForce::PairGroup>{}));
+      std::vector<ContactForce::RecordGroup>{{"box", 1}}, std::vector<ContactForce::PairGroup>{},
+      /*tangential_springs=*/kt > 0.0));
   system.Finalize();
   // On a box's face as on a plane: a box corner's radius.
   const double d =
@@ -188,6 +217,145 @@ TEST(SmoothContactTest, BoxCreepsBelowTheFrictionAngleAndSlidesAboveIt) {
               << acceleration << " m/s^2 (closed form " << closed << ", relative error "
               << acceleration / closed - 1 << ")" << (on_box ? " on a ground box" : "") << "\n";
   }
+}
+
+// Below the friction angle the same box with a tangential stiffness (kt = 1e8 Pa, damped by
+// gt = 20 N s/m) does not creep: each corner's spring holds its share of m g sin a (the spring
+// forces sum to m g sin a = 3.35 N, below u m g cos a = 4.61 N), and the box comes to rest,
+// where the regularized friction lets it creep at 1.06 mm/s. Above the angle it slides as
+// Coulomb's box does, the springs stretched to the cap.
+TEST(SmoothContactTest, TangentialSpringHoldsTheBoxBelowTheFrictionAngle) {
+  constexpr double kMu = 0.5;
+  for (const bool on_box : {false, true}) {
+    SCOPED_TRACE(on_box ? "on a ground box" : "on a half-space");
+    const auto [v_half, v_one] =
+        BoxDownhillSpeeds(20.0 * std::numbers::pi / 180.0, kMu, on_box, /*kt=*/1e8);
+    EXPECT_LT(std::abs(v_half), 1e-8);
+    EXPECT_LT(std::abs(v_one), 1e-9);
+    const double above = 35.0 * std::numbers::pi / 180.0;
+    const auto [s_half, s_one] = BoxDownhillSpeeds(above, kMu, on_box, /*kt=*/1e8);
+    const double acceleration = (s_one - s_half) / 0.5;
+    const double closed = kG * (std::sin(above) - kMu * std::cos(above));
+    EXPECT_NEAR(acceleration, closed, 1e-6 * closed);
+    std::cout << "SMC tangential spring on the incline: speed " << v_half << " m/s at 0.5 s, "
+              << v_one << " m/s at 1 s at 20 deg; acceleration at 35 deg " << acceleration
+              << " m/s^2 (closed form " << closed << ", relative error "
+              << acceleration / closed - 1 << ")" << (on_box ? " on a ground box" : "") << "\n";
+  }
+}
+
+// NSC solves its own friction: a material's kt is SMC's, and NSC says it ignores it; SMC says
+// nothing of it.
+TEST(SmoothContactTest, TangentialStiffnessIsAWarningOnlyUnderNsc) {
+  CollisionMaterial material;
+  material.kt = 1e6;
+  for (const ContactMethod method : {ContactMethod::kNsc, ContactMethod::kSmc}) {
+    opensim::OpenSimParser parser;
+    parser.EnableCollision();
+    parser.SetContactMethod(method);
+    parser.SetContactMaterial(material);
+    engine::System system(Vec3(0, -kG, 0));
+    parser.ParseSpec(system, BallSpec());
+    int warnings = 0;
+    for (const Diagnostic& w : parser.GetReport().warnings()) {
+      if (w.message.find("kt (tangential stiffness) is SMC's: NSC ignores it") !=
+          std::string::npos) {
+        ++warnings;
+      }
+    }
+    EXPECT_EQ(warnings, method == ContactMethod::kNsc ? 1 : 0);
+  }
+}
+
+// With a tangential stiffness kt the friction is a spring on the contact points' displacement
+// xi (kept from step to step), capped at u f_n. The sliding ball at v0 = 1 cm/s without spin,
+// E = 1e9 Pa, kt = 1e6 Pa, u = 10 (the spring stays far below the cap), gt = 0. xi' is the
+// slip s, and the spring's -k xi (k = kt sqrt(r d)) at the contact point, rho below the centre,
+// slows the centre by k xi / m and spins the ball: s' = -k xi (1 / m + rho^2 / I) = -k xi / m_e.
+// So xi = (v0 / W) sin(W t) with W = sqrt(k / m_e), and the centre's speed
+// v = v0 - (k / m) int xi dt = v0 (1 - (m_e / m) (1 - cos W t)) swings between v0 and
+// v0 (1 - 2 m_e / m), about v0 (1 - m_e / m) (5/7 v0 and 3/7 v0 as rho -> r). Undamped, the
+// energy with the spring's 1/2 k xi^2 is kept.
+TEST(SmoothContactTest, TangentialSpringRocksARollingSphereAboutFiveSevenths) {
+  constexpr double kV0 = 0.01;
+  CollisionMaterial material;
+  material.young_modulus = 1e9;
+  material.friction = 10.0;
+  material.restitution = 0.5;
+  material.kt = 1e6;
+  auto ball = MakeSlidingBall(material, 1e-4, kV0);
+  ASSERT_TRUE(ball->system.HasDiscreteData());
+  const double k = material.kt * std::sqrt(kR * ball->d);
+  const double m_e = 1.0 / (1.0 / kM + ball->rho * ball->rho / kInertia);
+  const double w = std::sqrt(k / m_e);
+  auto integrator = engine::MakeIntegrator("rk45", ball->system, {.accuracy = 1e-10});
+  engine::State& state = ball->state;
+  const double energy0 = engine::CalcMechanicalEnergy(ball->system, state);
+  double worst = 0.0, worst_energy = 0.0;
+  const double period = 2.0 * std::numbers::pi / w;
+  for (int n = 1; n <= 40; ++n) {  // two periods
+    const double t = n * period / 20.0;
+    integrator->StepTo(state, t);
+    const double v = state.bodies[1].v_GB.x();
+    const double closed = kV0 * (1.0 - m_e / kM * (1.0 - std::cos(w * t)));
+    worst = std::max(worst, std::abs(v - closed));
+    worst_energy = std::max(worst_energy,
+                            std::abs(engine::CalcMechanicalEnergy(ball->system, state) - energy0));
+  }
+  const double kinetic0 = 0.5 * kM * kV0 * kV0;
+  std::cout << "SMC tangential spring: period " << period << " s, rolling speed "
+            << kV0 * (1.0 - m_e / kM) << " m/s; worst speed error " << worst
+            << " m/s, energy change " << worst_energy << " J of " << kinetic0 << " J kinetic\n";
+  EXPECT_LT(worst, 1e-6 * kV0);
+  EXPECT_LT(worst_energy, 1e-6 * kinetic0);
+  EXPECT_EQ(state.discrete.size(), 1u);
+}
+
+// The same ball at v0 = 1 m/s with u = 0.5, kt = 1e6 Pa and gt = 2 sqrt(k m_e) (the spring's
+// oscillation critically damped). While it slips the friction is exactly u f_n (the spring
+// stays stretched to the cap; no regularization), so the slip falls linearly,
+// s = v0 - u g (1 + m rho^2 / I) t, to 0 at Coulomb's time for the dented ball; then the
+// spring holds the contact point and the ball rolls at v0 / (1 + I / (m rho^2)) + (2/7) s
+// (its angular momentum about the contact line is kept). The spring's displacement is kept
+// from the bodies' points at the contact, which a rolling ball carries off the contact within
+// a step (by rho (w h - sin w h), a cycloid): a rolling contact creeps at about
+// rho w^3 h^2 / 6, 2.4e-7 m/s at steps of h = 0.2 ms (1.6e-5 m/s at rk45's own 1.6 ms).
+TEST(SmoothContactTest, TangentialSpringSlipsAtTheCoulombLimitThenRolls) {
+  constexpr double kV0 = 1.0, kMu = 0.5;
+  CollisionMaterial material;
+  material.young_modulus = 1e9;
+  material.friction = kMu;
+  material.restitution = 0.5;
+  material.kt = 1e6;
+  auto ball = MakeSlidingBall(material, 1e-4, kV0);
+  const double k = material.kt * std::sqrt(kR * ball->d);
+  const double rho = ball->rho;
+  const double m_e = 1.0 / (1.0 / kM + rho * rho / kInertia);
+  material.gt = 2.0 * std::sqrt(k * m_e);
+  ball = MakeSlidingBall(material, 1e-4, kV0);
+  constexpr double kStep = 2e-4;
+  auto integrator =
+      engine::MakeIntegrator("rk45", ball->system, {.accuracy = 1e-10, .step = kStep});
+  const double deceleration = kMu * kG * (1.0 + kM * rho * rho / kInertia);
+  double worst = 0.0;
+  const double t_roll = kV0 / deceleration;
+  for (int n = 1; n <= 20; ++n) {  // the slipping phase, to 95% of it
+    const double t = 0.95 * t_roll * n / 20.0;
+    integrator->StepTo(ball->state, t);
+    worst = std::max(worst, std::abs(ball->Slip(ball->state) - (kV0 - deceleration * t)));
+  }
+  integrator->StepTo(ball->state, 1.0);
+  const double v = ball->state.bodies[1].v_GB.x();
+  const double v_closed = kV0 / (1.0 + kInertia / (kM * rho * rho));
+  const double w = v_closed / rho;
+  const double creep = rho * w * w * w * kStep * kStep / 6.0;
+  std::cout << "SMC tangential spring, slipping: slip off the linear law by at most " << worst
+            << " m/s until " << 0.95 * t_roll << " s; rolls at " << v << " m/s (closed form "
+            << v_closed << ", relative error " << v / v_closed - 1 << "), creeping at "
+            << ball->Slip(ball->state) << " m/s (bound " << creep << ")\n";
+  EXPECT_LT(worst, 1e-6 * kV0);
+  EXPECT_LT(std::abs(ball->Slip(ball->state)), 2.0 * creep);
+  EXPECT_NEAR(v, v_closed, 2.0 / 7.0 * 2.0 * creep);
 }
 
 }  // namespace

@@ -28,15 +28,48 @@ double DampingFactor(double restitution) {
 
 }  // namespace
 
+struct SmoothCollisionForce::History final : engine::DiscreteData {
+  struct Contact {
+    int body1 = 0, body2 = 0;
+    Vec3 p_B1 = Vec3::Zero(), p_B2 = Vec3::Zero();  // the contact point in each body's frame
+    Vec3 xi_G = Vec3::Zero();                       // the tangential displacement (m, in G)
+  };
+  std::vector<Contact> contacts;
+};
+
 SmoothCollisionForce::SmoothCollisionForce(std::string name,
                                            std::shared_ptr<const CollisionDetector> detector,
                                            std::vector<double> masses, double slip_speed,
                                            std::vector<RecordGroup> groups,
-                                           std::vector<PairGroup> pairs)
+                                           std::vector<PairGroup> pairs, bool tangential_springs)
     : ContactForce(std::move(name), std::move(groups), std::move(pairs)),
       detector_(std::move(detector)),
       masses_(std::move(masses)),
-      slip_speed_(slip_speed) {}
+      slip_speed_(slip_speed),
+      tangential_springs_(tangential_springs) {}
+
+const SmoothCollisionForce::History* SmoothCollisionForce::FindHistory(
+    const engine::State& state) const {
+  if (!tangential_springs_) return nullptr;
+  // Only this element writes its entry, and always a History (UpdateDiscreteData).
+  return static_cast<const History*>(engine::FindDiscreteData(state, this));
+}
+
+std::optional<Vec3> SmoothCollisionForce::TangentialDisplacement(const History* history,
+                                                                 const std::vector<Transform>& X_GB,
+                                                                 const CollisionContact& c) {
+  if (history == nullptr || !(c.material.kt > 0.0)) return std::nullopt;
+  const History::Contact* kept = nullptr;
+  double nearest = kHistoryMatchDistance * kHistoryMatchDistance;
+  for (const History::Contact& h : history->contacts) {
+    if (h.body1 != c.body1 || h.body2 != c.body2) continue;
+    const double distance = (X_GB[c.body2] * h.p_B2 - c.p_G).squaredNorm();
+    if (distance <= nearest) nearest = distance, kept = &h;
+  }
+  if (kept == nullptr) return std::nullopt;
+  const Vec3 xi = kept->xi_G + (X_GB[c.body2] * kept->p_B2 - X_GB[c.body1] * kept->p_B1);
+  return xi - xi.dot(c.n_G) * c.n_G;
+}
 
 double SmoothCollisionForce::VisitContacts(const engine::State& state, ContactSink& sink) const {
   // Per-thread scratch: no allocation per evaluation once grown.
@@ -48,10 +81,14 @@ double SmoothCollisionForce::VisitContacts(const engine::State& state, ContactSi
     const SmoothCollisionForce* force;
     const engine::State* state;
     ContactSink* sink;
+    const History* history;
+    const std::vector<Transform>* X_GB;
     double energy;
-  } visit{this, &state, &sink, 0.0};
+  } visit{this, &state, &sink, FindHistory(state), &X_GB, 0.0};
   detector_->FindContacts(X_GB, [&visit](const CollisionContact& c) {
-    const Response r = visit.force->Respond(c, RelativeVelocity(*visit.state, c), /*slopes=*/false);
+    const std::optional<Vec3> xi = TangentialDisplacement(visit.history, *visit.X_GB, c);
+    const Response r = visit.force->Respond(c, RelativeVelocity(*visit.state, c),
+                                            xi ? &*xi : nullptr, /*slopes=*/false);
     visit.energy += r.energy;
     if (r.f.squaredNorm() > 0.0) visit.sink->Add({c.body1, c.body2, c.p_G, r.f});
   });
@@ -64,7 +101,8 @@ Vec3 SmoothCollisionForce::RelativeVelocity(const engine::State& state, const Co
 }
 
 SmoothCollisionForce::Response SmoothCollisionForce::Respond(const CollisionContact& c,
-                                                             const Vec3& v_G, bool slopes) const {
+                                                             const Vec3& v_G, const Vec3* xi,
+                                                             bool slopes) const {
   const PairMaterial& m = c.material;
   const double d = c.depth;
   const double sqrt_Rd = std::sqrt(c.radius * d);
@@ -89,8 +127,16 @@ SmoothCollisionForce::Response SmoothCollisionForce::Respond(const CollisionCont
   const double v_normal = v_G.dot(n);
   const double f_normal = f_elastic - damping * v_normal;
   if (!(f_normal > 0.0)) return r;  // never a pull: no force, and no slope on this side
+  r.normal = f_normal;
   const Vec3 v_tangent = v_G - v_normal * n;
   const double friction = m.friction * f_normal;
+  // K: body 2's point moved along +n by dx leaves the depth d - dx.
+  const double dfn_dd = 1.5 * f_elastic / d - damping_power * damping / d * v_normal;
+  if (xi != nullptr) {
+    return RespondWithSpring(m, {n, d, sqrt_Rd, f_normal, friction, damping, dfn_dd}, v_tangent,
+                             *xi, slopes, r);
+  }
+  const Mat3 P = Mat3::Identity() - n * n.transpose();  // onto the tangent plane
   const double v_s = m.gt > 0.0 ? friction / m.gt : slip_speed_;
   const double s = std::sqrt(v_tangent.squaredNorm() + v_s * v_s);
   r.f = f_normal * n - friction * v_tangent / s;
@@ -99,15 +145,65 @@ SmoothCollisionForce::Response SmoothCollisionForce::Respond(const CollisionCont
   const double dvs_dfn = m.gt > 0.0 ? m.friction / m.gt : 0.0;
   const double dq_dfn = 1.0 / s - f_normal * v_s * dvs_dfn / (s * s * s);
   const Vec3 df_dfn = n - m.friction * dq_dfn * v_tangent;  // f's change per unit of f_n
-  const Mat3 P = Mat3::Identity() - n * n.transpose();      // onto the tangent plane
   // D: f_n falls with the separation speed (slope -c along n); the friction turns with v_t.
   r.D_rel = -damping * df_dfn * n.transpose() -
             m.friction *
                 ((f_normal / s) * P - (f_normal / (s * s * s)) * v_tangent * v_tangent.transpose());
-  // K: body 2's point moved along +n by dx leaves the depth d - dx.
-  const double dfn_dd = 1.5 * f_elastic / d - damping_power * damping / d * v_normal;
   r.K_rel = -dfn_dd * df_dfn * n.transpose();
   return r;
+}
+
+// f_t = -k_t xi - gt v_t (k_t = kt sqrt(R d)) while |f_t| <= u f_n, else u f_n along it.
+SmoothCollisionForce::Response SmoothCollisionForce::RespondWithSpring(const PairMaterial& m,
+                                                                       const Normal& normal,
+                                                                       const Vec3& v_tangent,
+                                                                       const Vec3& xi, bool slopes,
+                                                                       Response r) {
+  const Vec3& n = normal.n;
+  const double friction = normal.friction;
+  const double k_t = m.kt * normal.sqrt_Rd;
+  const Vec3 trial = -k_t * xi - m.gt * v_tangent;
+  const double size = trial.norm();
+  const bool slips = size > friction;
+  r.energy += 0.5 * k_t * xi.squaredNorm();
+  r.f = normal.force * n + (slips ? Vec3((friction / size) * trial) : trial);
+  if (!slopes) return r;
+  // In slip f_t = u f_n t, t = trial / |trial|: its change is u f_n / |trial| (I - t t^T) times
+  // the trial's, plus u t per unit of f_n.
+  const Vec3 t = slips ? Vec3(trial / size) : Vec3::Zero();
+  const Mat3 turn =
+      slips ? Mat3((friction / size) * (Mat3::Identity() - t * t.transpose())) : Mat3::Identity();
+  const Vec3 df_dfn = n + m.friction * t;
+  const Mat3 P = Mat3::Identity() - n * n.transpose();  // onto the tangent plane
+  r.D_rel = -normal.damping * df_dfn * n.transpose() - m.gt * turn * P;
+  // Body 2's point moved by dx stretches xi by P dx and, along +n, shallows the contact, which
+  // softens k_t = kt sqrt(R d) (dk_t/dd = k_t / 2d).
+  r.K_rel = -normal.dfn_dd * df_dfn * n.transpose() - k_t * turn * P +
+            turn * (0.5 * k_t / normal.d) * xi * n.transpose();
+  return r;
+}
+
+std::shared_ptr<const engine::DiscreteData> SmoothCollisionForce::UpdateDiscreteData(
+    const engine::ForceContext& context) const {
+  const engine::State& state = context.state;
+  auto history = std::make_shared<History>();
+  const History* previous = FindHistory(state);
+  std::vector<Transform> X_GB;
+  GatherBodyPoses(state, X_GB);
+  detector_->FindContacts(X_GB, [&](const CollisionContact& c) {
+    if (!(c.material.kt > 0.0)) return;
+    // A new contact's spring starts unstretched.
+    Vec3 xi = TangentialDisplacement(previous, X_GB, c).value_or(Vec3::Zero());
+    const Response r = Respond(c, RelativeVelocity(state, c), &xi, /*slopes=*/false);
+    if (!(r.normal > 0.0)) return;
+    // A slipping contact's spring stays stretched to the Coulomb limit.
+    const double spring = c.material.kt * std::sqrt(c.radius * c.depth) * xi.norm();
+    const double limit = c.material.friction * r.normal;
+    if (spring > limit) xi *= limit / spring;
+    history->contacts.push_back(
+        {c.body1, c.body2, X_GB[c.body1].Inverse() * c.p_G, X_GB[c.body2].Inverse() * c.p_G, xi});
+  });
+  return history;
 }
 
 bool SmoothCollisionForce::CalcLoadJacobians(const engine::ForceContext& context,
@@ -119,8 +215,10 @@ bool SmoothCollisionForce::CalcLoadJacobians(const engine::ForceContext& context
     column[support->bodies[i]] = 6 * static_cast<int>(i);
   std::vector<Transform> X_GB;
   GatherBodyPoses(state, X_GB);
+  const History* history = FindHistory(state);
   detector_->FindContacts(X_GB, [&](const CollisionContact& c) {
-    const Response r = Respond(c, RelativeVelocity(state, c), /*slopes=*/true);
+    const std::optional<Vec3> xi = TangentialDisplacement(history, X_GB, c);
+    const Response r = Respond(c, RelativeVelocity(state, c), xi ? &*xi : nullptr, /*slopes=*/true);
     // Body b's point moves as G_b = [-[p - Bo]x  I] times its twist; body 2's load is G_2^T f,
     // body 1's -G_1^T f.
     const int body[2] = {c.body1, c.body2};

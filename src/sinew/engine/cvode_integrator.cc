@@ -378,6 +378,7 @@ void CvodeIntegrator::TakeStep(State& state, double t_limit) {
   if (!IsWhereLastStepEnded(state)) Restart(state);
   step_start_ = state;
   scratch_.inputs = state.inputs;
+  scratch_.discrete = state.discrete;  // the force elements' data for this step
   Check(CVodeSetStopTime(memory_, t_limit), "CVodeSetStopTime");
   double t_reached = state.t;
   const int flag = CVode(memory_, t_limit, y_, &t_reached, CV_ONE_STEP);

@@ -5,6 +5,7 @@
 
 #include <sinew/math/types.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@ namespace sinew::engine {
 class System;
 class Loads;
 struct State;
+struct DiscreteData;
 
 /// What one force element reads in one evaluation: the system, the state, and the element's
 /// own slices of the auxiliary states z and of the inputs (offsets given by System::Finalize).
@@ -98,6 +100,18 @@ class ForceElement {
   /// Default: what AddLoads applies, per body the force (N, in G) and the torque about the body
   /// origin (N m, in G), per coordinate the generalized force.
   virtual void CalcRecordValues(const ForceContext& context, std::vector<double>& values) const;
+
+  /// Whether the element carries data from step to step (UpdateDiscreteData); decided when it
+  /// is made.
+  virtual bool HasDiscreteData() const { return false; }
+  /// Called at the end of every accepted step (and never inside a step): the element's data
+  /// for the steps that follow, from the state at the step's end (whose `discrete` still holds
+  /// the data the step was taken with).
+  virtual std::shared_ptr<const DiscreteData> UpdateDiscreteData(
+      const ForceContext& context) const {
+    (void)context;
+    return nullptr;
+  }
 
   /// Potential energy stored in the element (J), zero for non-conservative elements. With it,
   /// CalcMechanicalEnergy covers springs: d/dt (T + V) equals the power of the

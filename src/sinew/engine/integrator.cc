@@ -31,14 +31,20 @@ Integrator::Integrator(const System& system, const IntegratorSettings& settings)
 void Integrator::StepTo(State& state, double t_final) {
   CheckState(system_, state);
   if (!(t_final >= state.t)) throw Error("integrator: cannot step backwards in time");
-  while (state.t < t_final) TakeStep(state, t_final);
+  system_.UpdateDiscreteData(state, /*only_missing=*/true);
+  while (state.t < t_final) {
+    TakeStep(state, t_final);
+    system_.UpdateDiscreteData(state);
+  }
   ApplyController(state);
 }
 
 void Integrator::Advance(State& state, double t_limit) {
   CheckState(system_, state);
   if (!(t_limit > state.t)) throw Error("integrator: Advance needs a time after the state's");
+  system_.UpdateDiscreteData(state, /*only_missing=*/true);
   TakeStep(state, t_limit);
+  system_.UpdateDiscreteData(state);
   ApplyController(state);
 }
 

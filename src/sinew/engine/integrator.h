@@ -63,6 +63,9 @@ class Integrator {
  public:
   virtual ~Integrator() = default;
   /// Advances `state` to exactly `t_final` (>= state.t). Throws sinew::Error on failure.
+  /// After every accepted step the force elements' discrete data are updated
+  /// (System::UpdateDiscreteData), and made first for elements the state has none of;
+  /// Interpolate's states inside a step hold the data the step was taken with.
   void StepTo(State& state, double t_final);
   /// Takes one step from state.t, ending at or before `t_limit` (> state.t); steps are not
   /// shortened to land on intermediate times (see Interpolate). Throws sinew::Error on failure.

@@ -6,9 +6,24 @@
 #include <sinew/engine/body.h>
 #include <sinew/math/types.h>
 
+#include <memory>
 #include <vector>
 
 namespace sinew::engine {
+
+class ForceElement;
+
+/// What a force element carries from one accepted step to the next (a contact history):
+/// immutable once made, so copies of a State share it; an update replaces it.
+struct DiscreteData {
+  virtual ~DiscreteData() = default;
+};
+
+/// A force element's DiscreteData in a State.
+struct DiscreteDataEntry {
+  const ForceElement* owner = nullptr;
+  std::shared_ptr<const DiscreteData> data;
+};
 
 /// Everything that changes during a simulation of a System.
 struct State {
@@ -27,6 +42,18 @@ struct State {
   /// (names: System::input_names()). They hold their value during a step unless a Controller
   /// given to the integrator sets them from time and state at every evaluation.
   VecX inputs;
+  /// Data force elements carry between steps (ForceElement::UpdateDiscreteData), at most one
+  /// entry per element; empty until the first accepted step. Evaluations read it, only the
+  /// integrators' step ends (System::UpdateDiscreteData) change it.
+  std::vector<DiscreteDataEntry> discrete;
 };
+
+/// The data `owner` keeps in `state`, or null.
+inline const DiscreteData* FindDiscreteData(const State& state, const ForceElement* owner) {
+  for (const DiscreteDataEntry& entry : state.discrete) {
+    if (entry.owner == owner) return entry.data.get();
+  }
+  return nullptr;
+}
 
 }  // namespace sinew::engine

@@ -1,9 +1,11 @@
 #include <sinew/common/error.h>
 #include <sinew/engine/direct_joint.h>
 #include <sinew/engine/joint_constraints.h>
+#include <sinew/engine/state.h>
 #include <sinew/engine/system.h>
 #include <sinew/kinematics/joint_tree_order.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
@@ -104,6 +106,7 @@ int System::AddForceElement(std::shared_ptr<const ForceElement> force) {
       force->name().empty() ? "force" + std::to_string(forces_.size()) : force->name();
   for (const std::string& v : z_names) z_names_.push_back(prefix + "/" + v);
   for (const std::string& v : input_names) input_names_.push_back(prefix + "/" + v);
+  if (force->HasDiscreteData()) discrete_forces_.push_back(static_cast<int>(forces_.size()));
   forces_.push_back(std::move(force));
   return static_cast<int>(forces_.size()) - 1;
 }
@@ -207,5 +210,21 @@ int System::FindInput(std::string_view name) const { return FindName(input_names
 
 double ForceContext::z(int i) const { return state.z[z_begin + i]; }
 double ForceContext::input(int i) const { return state.inputs[input_begin + i]; }
+
+void System::UpdateDiscreteData(State& state, bool only_missing) const {
+  for (const int k : discrete_forces_) {
+    const ForceElement* owner = forces_[k].get();
+    if (only_missing && FindDiscreteData(state, owner) != nullptr) continue;
+    std::shared_ptr<const DiscreteData> data =
+        owner->UpdateDiscreteData(MakeForceContext(k, state));
+    auto entry = std::find_if(state.discrete.begin(), state.discrete.end(),
+                              [owner](const DiscreteDataEntry& e) { return e.owner == owner; });
+    if (entry == state.discrete.end()) {
+      state.discrete.push_back({owner, std::move(data)});
+    } else {
+      entry->data = std::move(data);
+    }
+  }
+}
 
 }  // namespace sinew::engine

@@ -154,6 +154,14 @@ class System {
   /// The joint that places body `b` from ground outward, or -1 (ground).
   int JointOfBody(int b) const { return joint_of_body_[b]; }
 
+  /// Whether any force element carries data between steps (ForceElement::HasDiscreteData).
+  bool HasDiscreteData() const { return !discrete_forces_.empty(); }
+  /// What the integrators call at the end of every accepted step: each such element's data
+  /// from `state` (ForceElement::UpdateDiscreteData) replaces its entry in state.discrete.
+  /// `only_missing`: only elements without an entry get one (before the first step, so that
+  /// contacts present at the start keep their history from there).
+  void UpdateDiscreteData(State& state, bool only_missing = false) const;
+
   int FindBody(std::string_view name) const;
   int FindJoint(std::string_view name) const;
   int FindCoordinate(std::string_view name) const;
@@ -178,6 +186,7 @@ class System {
     int num_inputs = 0;
   };
   std::vector<ForceLayout> force_layout_;
+  std::vector<int> discrete_forces_;  // the force elements with discrete data
   std::vector<std::string> z_names_;
   std::vector<std::string> input_names_;
   std::vector<int> u_column_;

@@ -216,15 +216,12 @@ contact::CollisionModel BuildCollision(const model::ModelSpec& spec,
   for (const contact::CollisionGeometry& g : settings.environment) model.geometry.push_back(g);
   AssignMaterials(spec, settings, model);
   WarnAboutMeshPairs(spec, model, report);
-  for (const contact::CollisionMaterial& m : model.materials) {
-    if (m.kt > 0.0) {
-      report.AddWarning({SourceLocation{spec.file, 0}, "contact material",
-                         "kt (tangential stiffness) needs a contact history, which SMC does not "
-                         "keep: ignored (friction uses gt or the slip speed)"});
-      break;
-    }
-  }
   return model;
+}
+
+bool HasTangentialStiffness(const contact::CollisionModel& model) {
+  return std::any_of(model.materials.begin(), model.materials.end(),
+                     [](const contact::CollisionMaterial& m) { return m.kt > 0.0; });
 }
 
 void AddSmoothContact(engine::System& system, const model::ModelSpec& spec,
@@ -262,7 +259,7 @@ void AddSmoothContact(engine::System& system, const model::ModelSpec& spec,
     pairs.push_back({system.bodies()[a].name + "-" + system.bodies()[b].name, a, b});
   system.AddForceElement(std::make_shared<contact::SmoothCollisionForce>(
       "smc_contact", std::move(detector), std::move(masses), slip_speed, std::move(groups),
-      std::move(pairs)));
+      std::move(pairs), HasTangentialStiffness(model)));
 }
 
 }  // namespace sinew::opensim::internal

@@ -113,6 +113,9 @@ void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
     if (contact_method_ == ContactMethod::kSmc) {
       internal::AddSmoothContact(system, spec_, collision_, map.bodies,
                                  collision_settings_.slip_speed, report_);
+    } else if (internal::HasTangentialStiffness(collision_)) {
+      report_.AddWarning({SourceLocation{spec_.file, 0}, "contact material",
+                          "kt (tangential stiffness) is SMC's: NSC ignores it"});
     }
   }
   for (std::string& line : ListNotSimulated(spec_, disabled_forces_)) {

@@ -27,6 +27,10 @@ contact::CollisionModel BuildCollision(const model::ModelSpec& spec,
                                        const std::vector<std::string>& geometry_dirs,
                                        Report& report);
 
+/// Whether any of `model`'s materials has a tangential stiffness kt > 0 (SMC then keeps each
+/// contact's tangential displacement).
+bool HasTangentialStiffness(const contact::CollisionModel& model);
+
 /// Adds the SMC force element "smc_contact" over `model` (spec indices, mapped through
 /// `body_map`) to `system`; pairs that overlap in the default pose are left out.
 void AddSmoothContact(engine::System& system, const model::ModelSpec& spec,
