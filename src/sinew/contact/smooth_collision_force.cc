@@ -51,8 +51,9 @@ SmoothCollisionForce::SmoothCollisionForce(std::string name,
 const SmoothCollisionForce::History* SmoothCollisionForce::FindHistory(
     const engine::State& state) const {
   if (!tangential_springs_) return nullptr;
-  // Only this element writes its entry, and always a History (UpdateDiscreteData).
-  return static_cast<const History*>(engine::FindDiscreteData(state, this));
+  // Checked, not assumed: a State kept from another System could name an element that happens
+  // to live at this one's address.
+  return dynamic_cast<const History*>(engine::FindDiscreteData(state, this));
 }
 
 std::optional<Vec3> SmoothCollisionForce::TangentialDisplacement(const History* history,
