@@ -68,7 +68,9 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
          geometry_dirs: Sequence[PathLike] = (),
          cylinder_refinement: str = "several-wraps", nsc_solver: str = "apgd",
          nsc_iterations: int = 100, nsc_tolerance: float = 1e-6,
-         nsc_max_recovery_speed: float = 0.1, nsc_min_bounce_speed: float = 0.01) -> "Model":
+         nsc_max_recovery_speed: float = 0.1, nsc_min_bounce_speed: float = 0.01,
+         contact_material: Optional[Mapping[str, float]] = None,
+         slip_speed: Optional[float] = None) -> "Model":
     """Reads an OpenSim model (.osim, every version 1.9 to 4.6) and builds what Sinew simulates.
 
     visualization: None/"none", "primitives" or "mesh" (visual assets of the bodies).
@@ -101,6 +103,12 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
     Raises sinew.Error with file, line, component (also for an unknown or ambiguous component,
     a property it lacks, a wrong value, or a ContactMesh file not found: the message lists the
     folders searched).
+    contact_material: the collision contact's default material, as `sinew simulate
+    --friction ... --kt ...`: any of "friction", "restitution", "young_modulus",
+    "poisson_ratio", "kn", "gn", "kt" (> 0: SMC's friction is a tangential spring per contact,
+    kept from step to step) and "gt"; slip_speed: SMC's friction regularization speed (m/s,
+    `--slip-speed`). Both need collision=True (slip_speed also contact="smc"); an unknown key
+    or a bad value is a sinew.Error naming it.
     """
 
 

@@ -6,7 +6,10 @@
 #include <sinew/engine/assemble.h>
 #include <sinew/engine/nsc_integrator.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <utility>
+#include <vector>
 
 #include "bindings.h"
 #include "simulation_inputs.h"
@@ -97,6 +100,36 @@ std::vector<model::ParameterOverride> ToParameterOverrides(const std::string& pa
 }
 
 // The name of the library's default NSC impulse solver, as `nsc_solver` takes it.
+// A contact material from {"friction": ..., "kt": ..., ...}: the keys `sinew simulate`'s
+// material options have, every other one an error naming it.
+contact::CollisionMaterial ToContactMaterial(const std::string& path, const py::dict& values) {
+  contact::CollisionMaterial m;
+  const std::vector<std::pair<const char*, double*>> fields = {{"friction", &m.friction},
+                                                               {"restitution", &m.restitution},
+                                                               {"young_modulus", &m.young_modulus},
+                                                               {"poisson_ratio", &m.poisson_ratio},
+                                                               {"kn", &m.kn},
+                                                               {"gn", &m.gn},
+                                                               {"kt", &m.kt},
+                                                               {"gt", &m.gt}};
+  for (const auto& [key, value] : values) {
+    const std::string name = py::str(key);
+    const auto field =
+        std::find_if(fields.begin(), fields.end(), [&](const auto& f) { return name == f.first; });
+    if (field == fields.end()) {
+      throw Error({path, 0}, "contact_material",
+                  "unknown key '" + name +
+                      "' (friction, restitution, young_modulus, poisson_ratio, kn, gn, kt, gt)");
+    }
+    if (!py::isinstance<py::float_>(value) && !py::isinstance<py::int_>(value)) {
+      throw Error({path, 0}, "contact_material",
+                  "'" + name + "' must be a number, not " + py::repr(value).cast<std::string>());
+    }
+    *field->second = value.cast<double>();
+  }
+  return m;
+}
+
 std::string DefaultNscSolver() {
   return engine::ContactSolverMethodName(engine::NscSettings{}.solver.method);
 }
@@ -111,8 +144,13 @@ void BindModel(py::module_& m) {
          const std::optional<py::dict>& parameters,
          const std::vector<std::filesystem::path>& geometry_dirs,
          const std::string& cylinder_refinement, const std::string& nsc_solver, int nsc_iterations,
-         double nsc_tolerance, double nsc_max_recovery_speed, double nsc_min_bounce_speed) {
+         double nsc_tolerance, double nsc_max_recovery_speed, double nsc_min_bounce_speed,
+         const std::optional<py::dict>& contact_material, std::optional<double> slip_speed) {
         LoadOptions options;
+        if (contact_material) {
+          options.contact_material = ToContactMaterial(path.string(), *contact_material);
+        }
+        options.slip_speed = slip_speed;
         options.nsc_solver = nsc_solver;
         options.nsc.solver.max_iterations = nsc_iterations;
         options.nsc.solver.tolerance = nsc_tolerance;
@@ -137,10 +175,13 @@ void BindModel(py::module_& m) {
       py::arg("nsc_tolerance") = engine::NscSettings{}.solver.tolerance,
       py::arg("nsc_max_recovery_speed") = engine::NscSettings{}.max_recovery_speed,
       py::arg("nsc_min_bounce_speed") = engine::NscSettings{}.min_bounce_speed,
+      py::arg("contact_material") = py::none(), py::arg("slip_speed") = py::none(),
       "Reads an OpenSim model (.osim) and builds what Sinew simulates of it, with `parameters` "
       "({'<component>/<property>': number or sequence}) overriding the file's values; "
       "ContactMesh files are also searched in `geometry_dirs`; the nsc_* settings are NSC's "
-      "stepper's (collision=True, contact='nsc'), as `sinew simulate --nsc-*`.");
+      "stepper's (collision=True, contact='nsc'), as `sinew simulate --nsc-*`; "
+      "contact_material ({'friction': ..., 'kt': ..., ...}) and slip_speed are the collision "
+      "contact's, as --friction, --kt, ... and --slip-speed.");
 
   py::class_<ModelHandle, ModelPtr>(m, "Model", "A parsed OpenSim model (sinew.load makes one).")
       .def_property_readonly("path", &ModelHandle::path, "The .osim file it was read from.")

@@ -70,6 +70,25 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
                 "the nsc_* settings are NSC's stepper's: they need collision=True and "
                 "contact=\"nsc\"");
   }
+  // The collision contact's material and slip speed: checked as the CLI checks them, and only
+  // where they act.
+  if ((options.contact_material || options.slip_speed) && !options.collision) {
+    throw Error({path, 0}, "",
+                "contact_material and slip_speed are the collision contact's: they need "
+                "collision=True");
+  }
+  if (options.slip_speed && options.contact != "smc") {
+    throw Error({path, 0}, "",
+                "slip_speed is SMC's friction regularization: it needs contact=\"smc\"");
+  }
+  if (options.slip_speed && !(std::isfinite(*options.slip_speed) && *options.slip_speed > 0.0)) {
+    std::ostringstream text;
+    text << "slip_speed must be a finite number > 0, not " << *options.slip_speed;
+    throw Error({path, 0}, "", text.str());
+  }
+  if (options.contact_material) {
+    contact::CheckMaterial(*options.contact_material, {path, 0}, "contact_material");
+  }
   auto handle = std::shared_ptr<ModelHandle>(new ModelHandle());
   handle->path_ = path;
   handle->options_ = options;
@@ -80,6 +99,8 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
   parser.SetContactMethod(options.contact == "smc" ? opensim::ContactMethod::kSmc
                                                    : opensim::ContactMethod::kNsc);
   parser.SetNscSettings(nsc);
+  if (options.contact_material) parser.SetContactMaterial(*options.contact_material);
+  if (options.slip_speed) parser.SetFrictionSlipSpeed(*options.slip_speed);
   parser.SetStrict(options.strict);
   parser.SetCylinderRefinement(*paths::FindCylinderRefinement(options.cylinder_refinement));
   parser.SetControlsFile(options.controls_file);

@@ -3,6 +3,7 @@
 // every State, Simulator and Batch made from the model (a finalized System never changes).
 #pragma once
 
+#include <sinew/contact/collision_material.h>
 #include <sinew/engine/nsc_integrator.h>
 #include <sinew/engine/state.h>
 #include <sinew/engine/system.h>
@@ -11,6 +12,7 @@
 #include <sinew/opensim/parser.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +40,10 @@ struct LoadOptions {
   /// Property overrides applied to the spec before the System is built
   /// (model::ApplyParameterOverrides), in the order given.
   std::vector<model::ParameterOverride> parameters;
+  /// The collision contact's default material (OpenSimParser::SetContactMaterial), as
+  /// `--friction`, `--kt`, ...; and SMC's friction slip speed (`--slip-speed`).
+  std::optional<contact::CollisionMaterial> contact_material;
+  std::optional<double> slip_speed;
 };
 
 /// A parsed model. Immutable after Build; shared by the objects made from it.

@@ -401,3 +401,33 @@ def test_render_and_export_draw_contacts_as_the_cli_does(cli, tmp_path):
     with pytest.raises(sinew.Error, match="no contacts table"):
         still = sinew.load(BALL).simulate(0.1)
         model.render(tmp_path / "x.png", still, contacts=still)
+
+
+def test_contact_material_and_slip_speed_act_as_the_cli_options_do(cli, tmp_path):
+    # The ball on tangential springs (kt, gt) with a softer floor and another slip speed, as
+    # `sinew simulate --kt ... --gt ... --young-modulus ... --slip-speed ...`: bit for bit.
+    material = {"kt": 1e7, "gt": 100.0, "young_modulus": 5e6, "friction": 0.4}
+    states = cli([BALL, "--collision", "--contact", "smc", "--kt", 1e7, "--gt", 100,
+                  "--young-modulus", 5e6, "--friction", 0.4, "--slip-speed", 0.01,
+                  "--integrator", "euler", "--step", 1e-4, "--duration", 0.5],
+                 tmp_path / "cli")
+    result = sinew.load(BALL, collision=True, contact="smc", contact_material=material,
+                        slip_speed=0.01).simulate(0.5, integrator="euler", step=1e-4)
+    assert np.array_equal(read_sto(states)[2], result.states)
+    default = sinew.load(BALL, collision=True, contact="smc").simulate(
+        0.5, integrator="euler", step=1e-4)
+    assert not np.array_equal(default.states, result.states)
+
+
+def test_bad_or_misplaced_contact_materials_are_errors():
+    for options, message in (
+            (dict(contact_material={"stiffness": 1.0}), "unknown key 'stiffness'"),
+            (dict(contact_material={"friction": -0.1}), "friction"),
+            (dict(contact_material={"kt": "soft"}), "'kt' must be a number"),
+            (dict(slip_speed=0.0), "slip_speed must be a finite number > 0")):
+        with pytest.raises(sinew.Error, match=message):
+            sinew.load(BALL, collision=True, contact="smc", **options)
+    with pytest.raises(sinew.Error, match="need collision=True"):
+        sinew.load(BALL, contact_material={"kt": 1e7})
+    with pytest.raises(sinew.Error, match="needs contact=\"smc\""):
+        sinew.load(BALL, collision=True, contact="nsc", slip_speed=0.01)
