@@ -244,11 +244,12 @@ TEST(SmoothContactTest, TangentialSpringHoldsTheBoxBelowTheFrictionAngle) {
   }
 }
 
-// NSC solves its own friction: a material's kt is SMC's, and NSC says it ignores it; SMC says
-// nothing of it.
-TEST(SmoothContactTest, TangentialStiffnessIsAWarningOnlyUnderNsc) {
+// NSC uses a material's friction and restitution only: the SMC parameters a material sets
+// (here kt and gt) are a warning naming them under NSC, and none under SMC.
+TEST(SmoothContactTest, SmcMaterialParametersAreAWarningOnlyUnderNsc) {
   CollisionMaterial material;
   material.kt = 1e6;
+  material.gt = 5.0;
   for (const ContactMethod method : {ContactMethod::kNsc, ContactMethod::kSmc}) {
     opensim::OpenSimParser parser;
     parser.EnableCollision();
@@ -258,7 +259,7 @@ TEST(SmoothContactTest, TangentialStiffnessIsAWarningOnlyUnderNsc) {
     parser.ParseSpec(system, BallSpec());
     int warnings = 0;
     for (const Diagnostic& w : parser.GetReport().warnings()) {
-      if (w.message.find("kt (tangential stiffness) is SMC's: NSC ignores it") !=
+      if (w.message.find("kt, gt: SMC's contact parameters, which NSC ignores") !=
           std::string::npos) {
         ++warnings;
       }

@@ -21,8 +21,9 @@ struct CollisionMaterial {
   double poisson_ratio = 0.3;  ///< in [0, 0.5)
   double kn = 0.0;             ///< Pa (N/m^2): normal stiffness of the Hertz law when > 0
   double gn = 0.0;             ///< 1/(m s): normal damping per unit effective mass when kn > 0
-  double kt = 0.0;  ///< tangential stiffness: needs a contact history, not used (a warning)
-  double gt = 0.0;  ///< N s/m: slope of the regularized friction at zero slip when > 0
+  double kt = 0.0;  ///< Pa: > 0 makes SMC's friction a tangential spring kept per contact
+  double gt = 0.0;  ///< N s/m: slope of the regularized friction at zero slip when > 0; with
+                    ///< kt > 0 the spring's damping
 };
 
 /// The material of a contact between two shapes: friction and restitution the smaller of the

@@ -224,6 +224,24 @@ bool HasTangentialStiffness(const contact::CollisionModel& model) {
                      [](const contact::CollisionMaterial& m) { return m.kt > 0.0; });
 }
 
+std::vector<std::string> SmcOnlyParametersSet(const contact::CollisionModel& model) {
+  const contact::CollisionMaterial d;
+  std::vector<std::string> set;
+  for (const auto& [name, field] :
+       {std::pair{"young_modulus", &contact::CollisionMaterial::young_modulus},
+        {"poisson_ratio", &contact::CollisionMaterial::poisson_ratio},
+        {"kn", &contact::CollisionMaterial::kn},
+        {"gn", &contact::CollisionMaterial::gn},
+        {"kt", &contact::CollisionMaterial::kt},
+        {"gt", &contact::CollisionMaterial::gt}}) {
+    if (std::any_of(model.materials.begin(), model.materials.end(),
+                    [&](const contact::CollisionMaterial& m) { return m.*field != d.*field; })) {
+      set.push_back(name);
+    }
+  }
+  return set;
+}
+
 void AddSmoothContact(engine::System& system, const model::ModelSpec& spec,
                       const contact::CollisionModel& model, const std::vector<int>& body_map,
                       double slip_speed, Report& report) {

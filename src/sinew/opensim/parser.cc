@@ -113,9 +113,13 @@ void OpenSimParser::ParseSpec(engine::System& system, model::ModelSpec spec) {
     if (contact_method_ == ContactMethod::kSmc) {
       internal::AddSmoothContact(system, spec_, collision_, map.bodies,
                                  collision_settings_.slip_speed, report_);
-    } else if (internal::HasTangentialStiffness(collision_)) {
+    } else if (const std::vector<std::string> unused = internal::SmcOnlyParametersSet(collision_);
+               !unused.empty()) {
+      std::string names;
+      for (const std::string& name : unused) names += (names.empty() ? "" : ", ") + name;
       report_.AddWarning({SourceLocation{spec_.file, 0}, "contact material",
-                          "kt (tangential stiffness) is SMC's: NSC ignores it"});
+                          names + ": SMC's contact parameters, which NSC ignores (it uses the "
+                                  "friction and the restitution)"});
     }
   }
   for (std::string& line : ListNotSimulated(spec_, disabled_forces_)) {

@@ -31,6 +31,10 @@ contact::CollisionModel BuildCollision(const model::ModelSpec& spec,
 /// contact's tangential displacement).
 bool HasTangentialStiffness(const contact::CollisionModel& model);
 
+/// The SMC-only material parameters (young_modulus, poisson_ratio, kn, gn, kt, gt) that any of
+/// `model`'s materials sets away from its default, in that order: NSC ignores them.
+std::vector<std::string> SmcOnlyParametersSet(const contact::CollisionModel& model);
+
 /// Adds the SMC force element "smc_contact" over `model` (spec indices, mapped through
 /// `body_map`) to `system`; pairs that overlap in the default pose are left out.
 void AddSmoothContact(engine::System& system, const model::ModelSpec& spec,
