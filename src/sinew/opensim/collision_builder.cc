@@ -234,8 +234,9 @@ std::vector<std::string> SmcOnlyParametersSet(const contact::CollisionModel& mod
         {"gn", &contact::CollisionMaterial::gn},
         {"kt", &contact::CollisionMaterial::kt},
         {"gt", &contact::CollisionMaterial::gt}}) {
+    const auto member = field;  // (clang 14 cannot capture a structured binding)
     if (std::any_of(model.materials.begin(), model.materials.end(),
-                    [&](const contact::CollisionMaterial& m) { return m.*field != d.*field; })) {
+                    [&](const contact::CollisionMaterial& m) { return m.*member != d.*member; })) {
       set.push_back(name);
     }
   }
