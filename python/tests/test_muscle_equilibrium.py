@@ -11,20 +11,7 @@ from conftest import DATA, read_sto
 
 ARM26 = DATA / "opensim-org/opensim-models/Models/Arm26/arm26.osim"
 
-SLACK_MODEL = """<OpenSimDocument Version="40000"><Model name="m">
-<Ground name="ground"/><BodySet><objects><Body name="block"><mass>2</mass>
-<inertia>0.1 0.1 0.1 0 0 0</inertia></Body></objects></BodySet>
-<JointSet><objects><SliderJoint name="slide"><socket_parent_frame>/ground</socket_parent_frame>
-<socket_child_frame>/bodyset/block</socket_child_frame><coordinates><Coordinate name="x">
-<default_value>0</default_value><locked>true</locked></Coordinate></coordinates></SliderJoint>
-</objects></JointSet><ForceSet><objects><Thelen2003Muscle_Deprecated name="musc"><GeometryPath>
-<PathPointSet><objects><PathPoint name="p1"><socket_parent_frame>/ground</socket_parent_frame>
-<location>-0.3 0 0</location></PathPoint><PathPoint name="p2"><socket_parent_frame>/bodyset/block
-</socket_parent_frame><location>0 0 0</location></PathPoint></objects></PathPointSet>
-</GeometryPath><max_isometric_force>500</max_isometric_force>
-<optimal_fiber_length>0.12</optimal_fiber_length><tendon_slack_length>0.27</tendon_slack_length>
-<pennation_angle_at_optimal>0.2</pennation_angle_at_optimal>
-</Thelen2003Muscle_Deprecated></objects></ForceSet></Model></OpenSimDocument>"""
+SLACK_MODEL = DATA / "sinew" / "slack_deprecated_muscle.osim"
 
 
 def test_simulate_from_equilibrium_equals_cli_bit_for_bit(cli, tmp_path):
@@ -57,10 +44,8 @@ def test_equilibrate_muscles_moves_only_the_fibers_and_simulate_starts_there():
     assert np.array_equal(result.states[0, start], balanced.z[fibers])
 
 
-def test_unbalanced_muscle_is_a_warning_naming_it(tmp_path):
-    path = tmp_path / "slack.osim"
-    path.write_text(SLACK_MODEL)
-    model = sinew.load(path)
+def test_unbalanced_muscle_is_a_warning_naming_it():
+    model = sinew.load(SLACK_MODEL)
     with pytest.warns(UserWarning, match="/forceset/musc: OpenSim's equilibrium iteration ended "
                                          "with the tendon at its slack length"):
         state = model.equilibrate_muscles(model.default_state())

@@ -124,21 +124,8 @@ TEST_F(SimulateMusclesTest, DeprecatedMusclesTendonHeldAtSlackIsAWarning) {
   // A path 0.30 m long over a tendon slack at 0.27 m, activation 0 (OpenSim 2.x's start): the
   // slack tendon's small stiffness (0.001 Fiso) pulls harder than the passive fiber can with the
   // tendon at or beyond slack, and OpenSim's iteration never shortens it below slack.
-  const std::string model = Path("slack.osim");
-  std::ofstream(model) << R"(<OpenSimDocument Version="40000"><Model name="m">
-<Ground name="ground"/><BodySet><objects><Body name="block"><mass>2</mass>
-<inertia>0.1 0.1 0.1 0 0 0</inertia></Body></objects></BodySet>
-<JointSet><objects><SliderJoint name="slide"><socket_parent_frame>/ground</socket_parent_frame>
-<socket_child_frame>/bodyset/block</socket_child_frame><coordinates><Coordinate name="x">
-<default_value>0</default_value><locked>true</locked></Coordinate></coordinates></SliderJoint>
-</objects></JointSet><ForceSet><objects><Thelen2003Muscle_Deprecated name="musc"><GeometryPath>
-<PathPointSet><objects><PathPoint name="p1"><socket_parent_frame>/ground</socket_parent_frame>
-<location>-0.3 0 0</location></PathPoint><PathPoint name="p2"><socket_parent_frame>/bodyset/block
-</socket_parent_frame><location>0 0 0</location></PathPoint></objects></PathPointSet>
-</GeometryPath><max_isometric_force>500</max_isometric_force>
-<optimal_fiber_length>0.12</optimal_fiber_length><tendon_slack_length>0.27</tendon_slack_length>
-<pennation_angle_at_optimal>0.2</pennation_angle_at_optimal>
-</Thelen2003Muscle_Deprecated></objects></ForceSet></Model></OpenSimDocument>)";
+  const std::string model =
+      std::string(SINEW_TEST_DATA_DIR) + "/sinew/slack_deprecated_muscle.osim";
   const CliRun run =
       Run("simulate " + model + " --duration 0 --quiet --equilibrate-muscles --out " + Path("out"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
