@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <sinew/contact/smooth_collision_force.h>
 #include <sinew/engine/assemble.h>
+#include <sinew/engine/dynamics.h>
 #include <sinew/engine/energy.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/state.h>
@@ -357,6 +358,42 @@ TEST(SmoothContactTest, TangentialSpringSlipsAtTheCoulombLimitThenRolls) {
   EXPECT_LT(worst, 1e-6 * kV0);
   EXPECT_LT(std::abs(ball->Slip(ball->state)), 2.0 * creep);
   EXPECT_NEAR(v, v_closed, 2.0 / 7.0 * 2.0 * creep);
+}
+
+// The spring update searches the contacts at the step's end and keeps them; the next step starts
+// at exactly those poses and uses them instead of searching again. They must be the contacts a
+// search finds there: the loads with the kept contacts equal those of a search at poses one
+// rounding step away (the ball moved by one unit in the last place, which no kept contact
+// matches bit for bit, so that evaluation searches).
+TEST(SmoothContactTest, ContactsKeptByTheSpringUpdateAreTheOnesASearchFinds) {
+  CollisionMaterial material;
+  material.young_modulus = 1e9;
+  material.friction = 0.5;
+  material.restitution = 0.5;
+  material.kt = 1e6;
+  material.gt = 20.0;
+  auto ball = MakeSlidingBall(material, 1e-4, 0.1);
+  auto integrator = engine::MakeIntegrator("euler", ball->system, {.step = 1e-4});
+  integrator->StepTo(ball->state, 2e-3);
+  ASSERT_EQ(ball->state.discrete.size(), 1u);
+  const engine::System& system = ball->system;
+  engine::Loads kept(system.num_bodies(), system.num_coordinates());
+  engine::Loads searched = kept;
+  engine::CalcLoads(ball->system, ball->state, nullptr, kept);
+  engine::State moved = ball->state;
+  double& x = moved.bodies[1].p_GB.x();
+  x = std::nextafter(x, 1.0);
+  engine::CalcLoads(ball->system, moved, nullptr, searched);
+  const double weight = kM * kG;
+  const SpatialVec& a = kept.body[1];
+  const SpatialVec& b = searched.body[1];
+  std::cout << "SMC kept contacts: ball load " << a.transpose() << ", by a search one ulp away "
+            << b.transpose() << "\n";
+  // The contact carries the weight (the loads include gravity's -m g) and a spring friction
+  // (the ball was launched sliding).
+  EXPECT_GT(a.tail<3>().y() + weight, 0.5 * weight);
+  EXPECT_GT(std::abs(a.tail<3>().x()), 1e-3 * weight);
+  EXPECT_LT((a - b).norm(), 1e-12 * weight);
 }
 
 }  // namespace

@@ -35,7 +35,33 @@ struct SmoothCollisionForce::History final : engine::DiscreteData {
     Vec3 xi_G = Vec3::Zero();                       // the tangential displacement (m, in G)
   };
   std::vector<Contact> contacts;
+  // Every contact found at the poses the update saw, kt > 0 or not. The next step starts at
+  // exactly those poses, so its first evaluation takes them instead of searching again.
+  std::vector<Transform> X_GB;
+  std::vector<CollisionContact> found;
 };
+
+namespace {
+
+bool SamePoses(const std::vector<Transform>& a, const std::vector<Transform>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (a[i].R != b[i].R || a[i].p != b[i].p) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void SmoothCollisionForce::ForEachContact(
+    const History* history, const std::vector<Transform>& X_GB,
+    const std::function<void(const CollisionContact&)>& visit) const {
+  if (history != nullptr && SamePoses(history->X_GB, X_GB)) {
+    for (const CollisionContact& c : history->found) visit(c);
+  } else {
+    detector_->FindContacts(X_GB, visit);
+  }
+}
 
 SmoothCollisionForce::SmoothCollisionForce(std::string name,
                                            std::shared_ptr<const CollisionDetector> detector,
@@ -86,7 +112,7 @@ double SmoothCollisionForce::VisitContacts(const engine::State& state, ContactSi
     const std::vector<Transform>* X_GB;
     double energy;
   } visit{this, &state, &sink, FindHistory(state), &X_GB, 0.0};
-  detector_->FindContacts(X_GB, [&visit](const CollisionContact& c) {
+  ForEachContact(visit.history, X_GB, [&visit](const CollisionContact& c) {
     const std::optional<Vec3> xi = TangentialDisplacement(visit.history, *visit.X_GB, c);
     const Response r = visit.force->Respond(c, RelativeVelocity(*visit.state, c),
                                             xi ? &*xi : nullptr, /*slopes=*/false);
@@ -189,9 +215,10 @@ std::shared_ptr<const engine::DiscreteData> SmoothCollisionForce::UpdateDiscrete
   const engine::State& state = context.state;
   auto history = std::make_shared<History>();
   const History* previous = FindHistory(state);
-  std::vector<Transform> X_GB;
-  GatherBodyPoses(state, X_GB);
+  GatherBodyPoses(state, history->X_GB);
+  const std::vector<Transform>& X_GB = history->X_GB;
   detector_->FindContacts(X_GB, [&](const CollisionContact& c) {
+    history->found.push_back(c);
     if (!(c.material.kt > 0.0)) return;
     // A new contact's spring starts unstretched.
     Vec3 xi = TangentialDisplacement(previous, X_GB, c).value_or(Vec3::Zero());
@@ -217,7 +244,7 @@ bool SmoothCollisionForce::CalcLoadJacobians(const engine::ForceContext& context
   std::vector<Transform> X_GB;
   GatherBodyPoses(state, X_GB);
   const History* history = FindHistory(state);
-  detector_->FindContacts(X_GB, [&](const CollisionContact& c) {
+  ForEachContact(history, X_GB, [&](const CollisionContact& c) {
     const std::optional<Vec3> xi = TangentialDisplacement(history, X_GB, c);
     const Response r = Respond(c, RelativeVelocity(state, c), xi ? &*xi : nullptr, /*slopes=*/true);
     // Body b's point moves as G_b = [-[p - Bo]x  I] times its twist; body 2's load is G_2^T f,

@@ -6,6 +6,7 @@
 #include <sinew/contact/collision_detection.h>
 #include <sinew/contact/contact_force.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -48,7 +49,8 @@ class SmoothCollisionForce final : public ContactForce {
   static constexpr double kHistoryMatchDistance = 0.01;
   bool HasDiscreteData() const override { return tangential_springs_; }
   /// Every contact with kt > 0 that pushes: its points on both bodies and its displacement,
-  /// shortened so that the spring alone pulls at most u f_n.
+  /// shortened so that the spring alone pulls at most u f_n; and every contact found, which an
+  /// evaluation at exactly these poses (the next step's first) uses without searching again.
   std::shared_ptr<const engine::DiscreteData> UpdateDiscreteData(
       const engine::ForceContext& context) const override;
 
@@ -94,6 +96,11 @@ class SmoothCollisionForce final : public ContactForce {
                                                     const std::vector<Transform>& X_GB,
                                                     const CollisionContact& c);
   const History* FindHistory(const engine::State& state) const;
+  // Calls `visit` for every contact at poses X_GB: the history's own contacts when it was made
+  // at exactly these poses (a step's start is the last step's end, where UpdateDiscreteData
+  // searched), else the detector's.
+  void ForEachContact(const History* history, const std::vector<Transform>& X_GB,
+                      const std::function<void(const CollisionContact&)>& visit) const;
 
   std::shared_ptr<const CollisionDetector> detector_;
   std::vector<double> masses_;
