@@ -176,6 +176,21 @@ class Model:
         [n, bodies, 3, 3] (orientations), markers (names), marker_positions [n, markers, 3] (m).
         Constraints are not enforced (as `sinew kinematics`).
         """
+    def analyze(self, motion: Union[PathLike, Result], *,
+                coordinates: Optional[Sequence[str]] = None) -> Dict[str, object]:
+        """OpenSim MuscleAnalysis-style tables of every geometry path (muscles, path springs,
+        ligaments) along `motion` (a .mot/.sto table or a Result), the tables `sinew analyze`
+        writes, bit for bit. Coordinate speeds are the derivative of OpenSim's quintic spline
+        through each coordinate column (fewer than 6 rows: NaN speeds, a UserWarning).
+
+        Returns time [n], paths (names), length and lengthening_speed [n, paths] (m, m/s),
+        moment_arm: a dict from each coordinate of `coordinates` (default: every one not locked
+        or coupled) to [n, paths] (m, OpenSim's moment arms); muscles: the muscles whose
+        activation and fiber_length the table holds (a states table or a Result), and for them
+        fiber_length, tendon_length (m), active_fiber_force, passive_fiber_force and
+        tendon_force (N), each [n, muscles]. Paths Sinew does not compute, and wraps it does not
+        apply, are a UserWarning; an unknown coordinate raises sinew.Error.
+        """
     def export(self, path: PathLike, motion: Union[None, PathLike, Result] = None, *,
                visualization: str = "mesh", geometry_dirs: Sequence[str] = (),
                fps: float = 0.0, contacts: Union[None, PathLike, Result] = None) -> None:

@@ -1,5 +1,7 @@
-// Model.kinematics, Model.export and Model.render: body poses and marker positions along a
-// motion, its glTF/HTML export and a PNG picture, through the library's viz::MotionFromTable and
+// Model.kinematics, Model.analyze, Model.export and Model.render: body poses and marker
+// positions along a motion, its paths' lengths, speeds and moment arms and its muscles' tables
+// (opensim::MuscleAnalysis, as `sinew analyze`), its glTF/HTML export and a PNG picture, through
+// the library's viz::MotionFromTable and
 // viz::PosesAtTime (coordinates by name or OpenSim 4 state path, degrees converted,
 // coupler-driven coordinates following their drivers), kinematics::CalcMarkerLocationRow,
 // viz::ExportAnimation and viz::RenderFramed (with the contact arrows of a contacts table,
@@ -9,6 +11,9 @@
 #include <pybind11/stl/filesystem.h>
 #include <sinew/io/storage.h>
 #include <sinew/kinematics/body_kinematics.h>
+#include <sinew/kinematics/coordinate_couplers.h>
+#include <sinew/opensim/muscle_analysis.h>
+#include <sinew/paths/geometry_path.h>
 #include <sinew/viz/contact_arrows.h>
 #include <sinew/viz/export_animation.h>
 #include <sinew/viz/gltf_writer.h>
@@ -17,8 +22,11 @@
 #include <sinew/viz/rasterizer.h>
 #include <sinew/viz/view_hints.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "arrays.h"
 #include "bindings.h"
@@ -105,6 +113,54 @@ py::dict Kinematics(const ModelPtr& model, const py::object& motion) {
                   py::arg("marker_positions") = markers);
 }
 
+// A table's values as an array [rows, columns].
+py::array_t<double> TableArray(const io::Storage& table) {
+  const size_t rows = table.time.size(), columns = table.labels.size();
+  py::array_t<double> array({rows, columns});
+  std::copy(table.values.begin(), table.values.end(), array.mutable_data());
+  return array;
+}
+
+py::dict Analyze(const ModelPtr& model, const py::object& motion,
+                 const std::optional<std::vector<std::string>>& coordinates) {
+  const model::ModelSpec& spec = model->spec();
+  const io::Storage table = TableOf(motion);
+  const std::string motion_name =
+      py::hasattr(motion, "states")
+          ? std::string("motion")
+          : std::string(py::str(py::module_::import("os").attr("fspath")(motion)));
+  Diagnostics notes;
+  const opensim::MuscleAnalysis analysis(
+      spec, model->path(), *paths::FindCylinderRefinement(model->options().cylinder_refinement),
+      table, motion_name, &notes);
+  WarnNotes(analysis.paths().ListOmissions(spec), "analyze");
+  const kinematics::CoordinateCouplers couplers(spec);
+  std::vector<int> chosen;
+  try {
+    chosen = opensim::ChooseMomentArmCoordinates(spec, couplers,
+                                                 coordinates.value_or(std::vector<std::string>{}));
+  } catch (const Error& e) {
+    throw Error(std::string("coordinates: ") + e.what());
+  }
+  const opensim::MuscleAnalysisTables tables = analysis.Run(chosen, &notes);
+  WarnNotes(notes, "analyze");
+  py::dict moment_arms;
+  for (size_t k = 0; k < chosen.size(); ++k) {
+    moment_arms[py::str(spec.coordinates[chosen[k]].name)] = TableArray(tables.moment_arms[k]);
+  }
+  const std::vector<double>& time = tables.length.time;
+  py::dict out(py::arg("time") = py::array_t<double>(time.size(), time.data()),
+               py::arg("paths") = tables.length.labels,
+               py::arg("length") = TableArray(tables.length),
+               py::arg("lengthening_speed") = TableArray(tables.lengthening_speed),
+               py::arg("moment_arm") = moment_arms);
+  out["muscles"] = tables.muscles.empty() ? std::vector<std::string>{} : tables.muscles[0].labels;
+  const char* keys[] = {"fiber_length", "tendon_length", "active_fiber_force",
+                        "passive_fiber_force", "tendon_force"};
+  for (size_t k = 0; k < tables.muscles.size(); ++k) out[keys[k]] = TableArray(tables.muscles[k]);
+  return out;
+}
+
 void Export(const ModelPtr& model, const std::filesystem::path& path, const py::object& motion,
             const std::string& visualization, const std::vector<std::string>& geometry_dirs,
             double fps, const py::object& contacts) {
@@ -169,6 +225,15 @@ void BindMotion(py::module_& m) {
             "Body poses and marker positions in ground along `motion` (None: the default pose; "
             "a .mot/.sto path; a sinew.Result): a dict of time [n], bodies, p_GB [n, bodies, 3] "
             "(m), R_GB [n, bodies, 3, 3], markers, marker_positions [n, markers, 3] (m).");
+  model.def("analyze", &Analyze, py::arg("motion"), py::kw_only(),
+            py::arg("coordinates") = py::none(),
+            "OpenSim MuscleAnalysis-style tables of every geometry path along `motion` (a "
+            ".mot/.sto path or a sinew.Result), as `sinew analyze`: a dict of time [n], paths, "
+            "length and lengthening_speed [n, paths] (m, m/s), moment_arm (a dict from each "
+            "coordinate of `coordinates`, default every one not locked or coupled, to [n, paths] "
+            "in m), and muscles (those whose activation and fiber_length the table holds, as a "
+            "states table or a Result does) with fiber_length, tendon_length (m), "
+            "active_fiber_force, passive_fiber_force and tendon_force (N), each [n, muscles].");
   model.def("export", &Export, py::arg("path"), py::arg("motion") = py::none(), py::kw_only(),
             py::arg("visualization") = "mesh",
             py::arg("geometry_dirs") = std::vector<std::string>{}, py::arg("fps") = 0.0,
