@@ -67,10 +67,11 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
          parameters: Optional[Mapping[str, Union[float, Sequence[float]]]] = None,
          geometry_dirs: Sequence[PathLike] = (),
          cylinder_refinement: str = "several-wraps", nsc_solver: str = "apgd",
-         nsc_iterations: int = 100, nsc_tolerance: float = 1e-6,
+         nsc_iterations: int = 1000, nsc_tolerance: float = 1e-6,
          nsc_max_recovery_speed: float = 0.1, nsc_min_bounce_speed: float = 0.01,
          contact_material: Optional[Mapping[str, float]] = None,
-         slip_speed: Optional[float] = None) -> "Model":
+         slip_speed: Optional[float] = None, external_loads: Sequence[PathLike] = (),
+         disabled_forces: Sequence[str] = ()) -> "Model":
     """Reads an OpenSim model (.osim, every version 1.9 to 4.6) and builds what Sinew simulates.
 
     visualization: None/"none", "primitives" or "mesh" (visual assets of the bodies).
@@ -109,6 +110,10 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
     kept from step to step) and "gt"; slip_speed: SMC's friction regularization speed (m/s,
     `--slip-speed`). Both need collision=True (slip_speed also contact="smc"); an unknown key
     or a bad value is a sinew.Error naming it.
+    external_loads: OpenSim ExternalLoads files (.xml, each reading its datafile relative to
+    itself): their ExternalForces act on the bodies they name, as `sinew simulate
+    --external-loads`. disabled_forces: forces (of the model or of the external loads) left out
+    by name, as `--disable-force`; a name no force has is a sinew.Error listing close names.
     """
 
 

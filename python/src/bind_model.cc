@@ -145,8 +145,13 @@ void BindModel(py::module_& m) {
          const std::vector<std::filesystem::path>& geometry_dirs,
          const std::string& cylinder_refinement, const std::string& nsc_solver, int nsc_iterations,
          double nsc_tolerance, double nsc_max_recovery_speed, double nsc_min_bounce_speed,
-         const std::optional<py::dict>& contact_material, std::optional<double> slip_speed) {
+         const std::optional<py::dict>& contact_material, std::optional<double> slip_speed,
+         const std::vector<std::filesystem::path>& external_loads,
+         const std::vector<std::string>& disabled_forces) {
         LoadOptions options;
+        for (const std::filesystem::path& file : external_loads)
+          options.external_loads.push_back(file.string());
+        options.disabled_forces = disabled_forces;
         if (contact_material) {
           options.contact_material = ToContactMaterial(path.string(), *contact_material);
         }
@@ -176,12 +181,16 @@ void BindModel(py::module_& m) {
       py::arg("nsc_max_recovery_speed") = engine::NscSettings{}.max_recovery_speed,
       py::arg("nsc_min_bounce_speed") = engine::NscSettings{}.min_bounce_speed,
       py::arg("contact_material") = py::none(), py::arg("slip_speed") = py::none(),
+      py::arg("external_loads") = std::vector<std::filesystem::path>{},
+      py::arg("disabled_forces") = std::vector<std::string>{},
       "Reads an OpenSim model (.osim) and builds what Sinew simulates of it, with `parameters` "
       "({'<component>/<property>': number or sequence}) overriding the file's values; "
       "ContactMesh files are also searched in `geometry_dirs`; the nsc_* settings are NSC's "
       "stepper's (collision=True, contact='nsc'), as `sinew simulate --nsc-*`; "
       "contact_material ({'friction': ..., 'kt': ..., ...}) and slip_speed are the collision "
-      "contact's, as --friction, --kt, ... and --slip-speed.");
+      "contact's, as --friction, --kt, ... and --slip-speed; external_loads (OpenSim "
+      "ExternalLoads .xml files) act on the bodies they name, as --external-loads; the forces "
+      "named in disabled_forces are left out, as --disable-force.");
 
   py::class_<ModelHandle, ModelPtr>(m, "Model", "A parsed OpenSim model (sinew.load makes one).")
       .def_property_readonly("path", &ModelHandle::path, "The .osim file it was read from.")

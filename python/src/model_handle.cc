@@ -105,6 +105,8 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
   parser.SetCylinderRefinement(*paths::FindCylinderRefinement(options.cylinder_refinement));
   parser.SetControlsFile(options.controls_file);
   for (const std::string& dir : options.geometry_dirs) parser.AddGeometryDir(dir);
+  for (const std::string& file : options.external_loads) parser.AddExternalLoads(file);
+  for (const std::string& name : options.disabled_forces) parser.DisableForce(name);
   handle->system_ = std::make_unique<engine::System>();
   parser.ParseSpec(*handle->system_, std::move(spec));
   handle->system_->Finalize();

@@ -44,6 +44,10 @@ struct LoadOptions {
   /// `--friction`, `--kt`, ...; and SMC's friction slip speed (`--slip-speed`).
   std::optional<contact::CollisionMaterial> contact_material;
   std::optional<double> slip_speed;
+  /// OpenSim ExternalLoads files (OpenSimParser::AddExternalLoads), as `--external-loads`.
+  std::vector<std::string> external_loads;
+  /// Forces left out by name (OpenSimParser::DisableForce), as `--disable-force`.
+  std::vector<std::string> disabled_forces;
 };
 
 /// A parsed model. Immutable after Build; shared by the objects made from it.
