@@ -25,19 +25,6 @@ int RowAtOrBefore(const io::Storage& table, double t) {
   return row;
 }
 
-// The force a state-variable column belongs to: "/forceset/<force>/<variable>" (OpenSim 4) or
-// "<force>.<variable>" (OpenSim 3); "" for other labels.
-std::string ForceOfStateColumn(std::string_view label) {
-  constexpr std::string_view kPrefix = "/forceset/";
-  if (label.starts_with(kPrefix)) {
-    label.remove_prefix(kPrefix.size());
-    const size_t slash = label.find('/');
-    return slash == std::string_view::npos ? "" : std::string(label.substr(0, slash));
-  }
-  const size_t dot = label.rfind('.');
-  return dot == std::string_view::npos || dot == 0 ? "" : std::string(label.substr(0, dot));
-}
-
 // Tells when the run does not start at `start_time` (OpenSim moves its initial time too).
 void NoteStartRow(const InitialStates& states, double start_time) {
   if (states.time() == start_time) return;
@@ -63,21 +50,7 @@ InitialStates ApplyInitialStates(const std::string& path, bool strict, model::Mo
   }
   const opensim::InitialStates taken =
       opensim::ApplyInitialStates(states.table, path, spec, states.row);
-  // Columns of the state variables of simulated forces (muscle activations, fiber lengths) are
-  // used too, by ApplyInitialStateVariables once the System exists.
-  std::vector<std::string> simulated_forces;
-  for (const model::ForceSpec& force : spec.forces) {
-    if (opensim::IsForceSimulated(force)) simulated_forces.push_back(force.name);
-  }
-  std::vector<std::string> unused;
-  for (const std::string& label : taken.unused_labels) {
-    const std::string force = ForceOfStateColumn(label);
-    const bool of_simulated_force =
-        !force.empty() && std::find(simulated_forces.begin(), simulated_forces.end(), force) !=
-                              simulated_forces.end();
-    if (!of_simulated_force) unused.push_back(label);
-  }
-  WarnUnusedColumns(unused, path,
+  WarnUnusedColumns(taken.unused_labels, path,
                     "they name no coordinate value or speed or state variable that is simulated",
                     strict);
   if (!taken.missing.empty()) {
@@ -90,24 +63,8 @@ InitialStates ApplyInitialStates(const std::string& path, bool strict, model::Mo
 
 void ApplyInitialStateVariables(const InitialStates& states, const engine::System& system,
                                 engine::State& state) {
-  std::vector<bool> given(system.num_state_variables(), false);
-  for (int column = 0; column < states.table.NumColumns(); ++column) {
-    const int k = opensim::FindStateVariableColumn(system, states.table.labels[column]);
-    if (k < 0) continue;
-    const double value = states.table.Value(states.row, column);
-    if (!std::isfinite(value)) {
-      throw Error({states.path, 0}, system.state_variable_names()[k],
-                  "column '" + states.table.labels[column] + "' at time " +
-                      ShowNumber(states.time()) + " holds " + ShowNumber(value) +
-                      ", not a finite number");
-    }
-    state.z[k] = value;
-    given[k] = true;
-  }
-  std::vector<std::string> missing;
-  for (int k = 0; k < system.num_state_variables(); ++k) {
-    if (!given[k]) missing.push_back(system.state_variable_names()[k]);
-  }
+  const std::vector<std::string> missing =
+      opensim::ApplyInitialStateVariables(states.table, states.row, states.path, system, state);
   if (!missing.empty()) {
     std::cerr << "sinew: warning: " << states.path << ": " << missing.size()
               << " state variables are not in the file (" << FirstFew(missing)

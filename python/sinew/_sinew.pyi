@@ -164,7 +164,8 @@ class Model:
         "cvode-gmres-bd" (implicit, error-controlled, for stiff muscles), "euler" or "implicit-euler" (fixed `step`); for
         the error-controlled ones, step bounds the step. Reports at every multiple of report_interval
         and at the end. initial_states: a State, or a states table (.sto) whose first row
-        gives the coordinates as OpenSim's Forward tool takes it. excitations: actuator name ->
+        gives the coordinates and the state variables it names (muscle activations, fiber
+        lengths) as OpenSim's Forward tool takes it. excitations: actuator name ->
         number, Function, or Python function of time (called at every evaluation, slower),
         over the model's controllers. controls: an OpenSim ControlSet file.
         equilibrate_muscles: the fibers start at equilibrium at the initial state

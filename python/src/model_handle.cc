@@ -136,7 +136,8 @@ std::shared_ptr<ModelHandle> ModelHandle::Rebuild(const std::string& states_file
     if (options_.strict && !unused_labels.empty()) {
       throw Error({states_file, 0}, unused_labels.front(),
                   std::to_string(unused_labels.size()) +
-                      " column(s) name no coordinate value or speed that is simulated (strict)");
+                      " column(s) name no coordinate value or speed or state variable that is "
+                      "simulated (strict)");
     }
   }
   LoadOptions options = options_;

@@ -4,7 +4,9 @@
 #include <sinew/engine/assemble.h>
 #include <sinew/functions/constant.h>
 #include <sinew/functions/excitations.h>
+#include <sinew/io/storage.h>
 #include <sinew/muscles/equilibrate_muscles.h>
+#include <sinew/opensim/initial_states.h>
 
 #include <vector>
 
@@ -51,7 +53,8 @@ void WarnAboutTable(const Diagnostics& notes, const std::vector<std::string>& la
   for (const Diagnostic& note : notes) Warn(note.Format());
   if (labels.empty()) return;
   std::string message = file + ": " + std::to_string(labels.size()) +
-                        " column(s) name no coordinate value or speed that is simulated: ";
+                        " column(s) name no coordinate value or speed or state variable that is "
+                        "simulated: ";
   for (size_t i = 0; i < labels.size() && i < 3; ++i) message += (i ? ", " : "") + labels[i];
   if (labels.size() > 3) message += ", ...";
   Warn(message);
@@ -87,6 +90,17 @@ RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
     engine::CheckState(setup.model->system(), setup.state);
   } else {
     setup.state = setup.model->DefaultState();
+  }
+  if (!states_file.empty()) {
+    // The first row's state variables (muscle activations, fiber lengths), as `sinew simulate
+    // --initial-states` takes them; then, when asked, equilibrium at those activations.
+    const std::vector<std::string> missing = opensim::ApplyInitialStateVariables(
+        io::ReadStorage(states_file), 0, states_file, setup.model->system(), setup.state);
+    if (!missing.empty()) {
+      Warn(states_file + ": " + std::to_string(missing.size()) +
+           " state variables are not in the file (" + missing.front() +
+           (missing.size() > 1 ? ", ..." : "") + "): they keep their defaults");
+    }
   }
   if (equilibrate_muscles) EquilibrateMusclesWarning(*setup.model, setup.state);
   setup.controller = setup.model->parser().GetController();

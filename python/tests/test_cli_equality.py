@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import sinew
-from conftest import CHRONO, RESOURCES, read_sto
+from conftest import CHRONO, DATA, RESOURCES, read_sto
 
 CASES = {
     "rk45 from initial states": (
@@ -67,3 +67,30 @@ def test_python_function_excitation_equals_the_library_function():
         raise ValueError("no excitation at this time")
     with pytest.raises(ValueError, match="no excitation"):
         model.simulate(0.5, excitations={"grav": broken})
+
+
+@pytest.mark.parametrize("equilibrate", [False, True])
+def test_initial_muscle_states_are_taken_as_the_cli_takes_them(cli, tmp_path, equilibrate):
+    # A states table whose first row sets arm26's activations to 0.5 and its fibers to a run's:
+    # simulate(initial_states=...) starts from those state variables (and, when asked, from
+    # equilibrium at those activations), as `sinew simulate --initial-states` does.
+    arm26 = DATA / "opensim-org/opensim-models/Models/Arm26/arm26.osim"
+    model = sinew.load(arm26)
+    model.simulate(0.02, equilibrate_muscles=True).to_sto(tmp_path / "run.sto")
+    lines = (tmp_path / "run.sto").read_text().splitlines()
+    end = lines.index("endheader")
+    labels = lines[end + 1].split("\t")
+    row = [("0.5" if label.endswith("/activation") else value)
+           for label, value in zip(labels, lines[end + 2].split("\t"))]
+    lines = [line for line in lines[:end] if not line.startswith("nRows")]
+    start = tmp_path / "start.sto"
+    start.write_text("\n".join([*lines, "endheader", "\t".join(labels),
+                                "\t".join(row)]) + "\n")
+    extra = ["--equilibrate-muscles"] if equilibrate else []
+    states = cli([arm26, "--duration", 0.05, "--initial-states", start, *extra], tmp_path / "cli")
+    result = model.simulate(0.05, initial_states=start, equilibrate_muscles=equilibrate)
+    _, _, values = read_sto(states)
+    assert np.array_equal(values, result.states)
+    activations = [k for k, name in enumerate(result.state_variables)
+                   if name.endswith("/activation")]
+    assert np.all(result.z[0, activations] == 0.5)
