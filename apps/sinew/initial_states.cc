@@ -17,14 +17,6 @@
 namespace sinew::cli {
 namespace {
 
-// The row OpenSim's Forward tool starts from (ForwardTool::determineInitialTimeFromStatesStorage
-// with Storage::findIndex): the last row whose time is at or before `t`, or the first row.
-int RowAtOrBefore(const io::Storage& table, double t) {
-  int row = 0;
-  while (row + 1 < table.NumRows() && !(t < table.time[row + 1])) ++row;
-  return row;
-}
-
 // Tells when the run does not start at `start_time` (OpenSim moves its initial time too).
 void NoteStartRow(const InitialStates& states, double start_time) {
   if (states.time() == start_time) return;
@@ -45,7 +37,7 @@ InitialStates ApplyInitialStates(const std::string& path, bool strict, model::Mo
     throw Error({path, 0}, "", "the initial-states file has no rows");
   }
   if (start_time) {
-    states.row = RowAtOrBefore(states.table, *start_time);
+    states.row = opensim::ForwardStartRow(states.table, *start_time);
     NoteStartRow(states, *start_time);
   }
   const opensim::InitialStates taken =

@@ -9,9 +9,9 @@ in batches across threads, and sweep parameters on a Dask cluster.
 See docs/python.md for the API, installation and Dask.
 """
 from ._sinew import (Batch, Constant, Error, Function, Model, Ramp, Simulator, Sine, State,
-                     load, write_table)
+                     forward, load, write_table)
 from .result import Result
 from .sweep import sweep
 
 __all__ = ["Batch", "Constant", "Error", "Function", "Model", "Ramp", "Result", "Simulator",
-           "Sine", "State", "load", "sweep", "write_table"]
+           "Sine", "State", "forward", "load", "sweep", "write_table"]

@@ -71,7 +71,8 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
          nsc_max_recovery_speed: float = 0.1, nsc_min_bounce_speed: float = 0.01,
          contact_material: Optional[Mapping[str, float]] = None,
          slip_speed: Optional[float] = None, external_loads: Sequence[PathLike] = (),
-         disabled_forces: Sequence[str] = ()) -> "Model":
+         disabled_forces: Sequence[str] = (),
+         rename_force_classes: Optional[Mapping[str, str]] = None) -> "Model":
     """Reads an OpenSim model (.osim, every version 1.9 to 4.6) and builds what Sinew simulates.
 
     visualization: None/"none", "primitives" or "mesh" (visual assets of the bodies).
@@ -114,6 +115,26 @@ def load(path: PathLike, *, visualization: Optional[str] = None, collision: bool
     itself): their ExternalForces act on the bodies they name, as `sinew simulate
     --external-loads`. disabled_forces: forces (of the model or of the external loads) left out
     by name, as `--disable-force`; a name no force has is a sinew.Error listing close names.
+    rename_force_classes: {"OLD": "NEW"}: forces of class OLD are read as class NEW, as
+    `--rename-force-class OLD=NEW` (OpenSim's own tests read Thelen2003Muscle as
+    Thelen2003Muscle_Deprecated).
+    """
+
+
+def forward(setup: PathLike, *, model: Optional[PathLike] = None, integrator: str = "rk45",
+            report_interval: float = 0.01, equilibrate_muscles: bool = False,
+            cylinder_refinement: str = "several-wraps",
+            rename_force_classes: Optional[Mapping[str, str]] = None,
+            strict: bool = False) -> Result:
+    """Runs an OpenSim ForwardTool setup file (*_Setup_Forward.xml) as `sinew forward` does and
+    returns its states as a Result (bit for bit <name>_states.sto; nothing is written): the
+    setup's model (or `model`) with its force_set_files (appended or replacing), external loads,
+    ControlSet controls and states file (the row OpenSim takes at initial_time; the run then
+    starts at that row's time), from there to final_time at integrator_error_tolerance within
+    the step bounds, fibers at equilibrium when the setup or `equilibrate_muscles` asks.
+    integrator: "rk45", "cvode", "cvode-gmres" or "cvode-gmres-bd". The setup's notes and what
+    it sets that Sinew does not act on are UserWarnings (sinew.Error with strict=True); a setup
+    without a model and no `model` is a sinew.Error.
     """
 
 

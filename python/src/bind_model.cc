@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -147,8 +148,11 @@ void BindModel(py::module_& m) {
          double nsc_tolerance, double nsc_max_recovery_speed, double nsc_min_bounce_speed,
          const std::optional<py::dict>& contact_material, std::optional<double> slip_speed,
          const std::vector<std::filesystem::path>& external_loads,
-         const std::vector<std::string>& disabled_forces) {
+         const std::vector<std::string>& disabled_forces,
+         const std::map<std::string, std::string>& rename_force_classes) {
         LoadOptions options;
+        for (const auto& renamed : rename_force_classes)
+          options.renamed_force_classes.push_back(renamed);
         for (const std::filesystem::path& file : external_loads)
           options.external_loads.push_back(file.string());
         options.disabled_forces = disabled_forces;
@@ -183,6 +187,7 @@ void BindModel(py::module_& m) {
       py::arg("contact_material") = py::none(), py::arg("slip_speed") = py::none(),
       py::arg("external_loads") = std::vector<std::filesystem::path>{},
       py::arg("disabled_forces") = std::vector<std::string>{},
+      py::arg("rename_force_classes") = std::map<std::string, std::string>{},
       "Reads an OpenSim model (.osim) and builds what Sinew simulates of it, with `parameters` "
       "({'<component>/<property>': number or sequence}) overriding the file's values; "
       "ContactMesh files are also searched in `geometry_dirs`; the nsc_* settings are NSC's "
@@ -190,7 +195,9 @@ void BindModel(py::module_& m) {
       "contact_material ({'friction': ..., 'kt': ..., ...}) and slip_speed are the collision "
       "contact's, as --friction, --kt, ... and --slip-speed; external_loads (OpenSim "
       "ExternalLoads .xml files) act on the bodies they name, as --external-loads; the forces "
-      "named in disabled_forces are left out, as --disable-force.");
+      "named in disabled_forces are left out, as --disable-force; rename_force_classes "
+      "({'Thelen2003Muscle': 'Thelen2003Muscle_Deprecated'}) reads forces of one class as "
+      "another, as --rename-force-class.");
 
   py::class_<ModelHandle, ModelPtr>(m, "Model", "A parsed OpenSim model (sinew.load makes one).")
       .def_property_readonly("path", &ModelHandle::path, "The .osim file it was read from.")

@@ -9,13 +9,17 @@
 // steps through the driver's stop flag.
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
+#include <sinew/common/text.h>
 #include <sinew/contact/contact_table.h>
 #include <sinew/contact/nsc_contact_table.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/nsc_integrator.h>
 #include <sinew/engine/simulation.h>
 #include <sinew/functions/constant.h>
+#include <sinew/io/forward_setup.h>
+#include <sinew/io/storage.h>
 #include <sinew/io/storage_writer.h>
+#include <sinew/opensim/initial_states.h>
 #include <sinew/opensim/run_integrator.h>
 #include <sinew/opensim/states_table.h>
 
@@ -60,19 +64,11 @@ class SignalCheck {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-py::object Simulate(const ModelPtr& model, double duration, double accuracy,
-                    const std::string& integrator_name, std::optional<double> step,
-                    double report_interval, const py::object& initial_states,
-                    const std::optional<std::map<std::string, py::object>>& excitations,
-                    const std::optional<std::filesystem::path>& controls,
-                    bool equilibrate_muscles) {
-  const RunSetup setup =
-      PrepareRun(model, initial_states, excitations, controls, equilibrate_muscles);
+// One run from `setup` with `settings`: what Model.simulate and sinew.forward return.
+py::object RunSimulation(const RunSetup& setup, double duration, const std::string& integrator_name,
+                         const engine::IntegratorSettings& settings, double report_interval) {
   const engine::System& system = setup.model->system();
   engine::State state = setup.state;
-  engine::IntegratorSettings settings;
-  settings.accuracy = accuracy;
-  settings.step = step.value_or(0.0);
   const auto integrator =
       opensim::MakeRunIntegrator(integrator_name, system, setup.model->parser(), settings);
   integrator->SetController(setup.controller);
@@ -143,6 +139,77 @@ py::object Simulate(const ModelPtr& model, double duration, double accuracy,
                      py::arg("contacts") = ToMatrix(contacts, n, contact_labels.size()));
 }
 
+py::object Simulate(const ModelPtr& model, double duration, double accuracy,
+                    const std::string& integrator_name, std::optional<double> step,
+                    double report_interval, const py::object& initial_states,
+                    const std::optional<std::map<std::string, py::object>>& excitations,
+                    const std::optional<std::filesystem::path>& controls,
+                    bool equilibrate_muscles) {
+  engine::IntegratorSettings settings;
+  settings.accuracy = accuracy;
+  settings.step = step.value_or(0.0);
+  return RunSimulation(
+      PrepareRun(model, initial_states, excitations, controls, equilibrate_muscles), duration,
+      integrator_name, settings, report_interval);
+}
+
+// An OpenSim ForwardTool setup run as `sinew forward` runs it (its model with the setup's force
+// set files, external loads, controls file and initial states, from initial_time, or the
+// states table's row OpenSim takes for it, to final_time at the setup's tolerance and step
+// bounds), returned as a Result instead of written.
+py::object Forward(const std::filesystem::path& setup_file,
+                   const std::optional<std::filesystem::path>& model_file,
+                   const std::string& integrator_name, double report_interval,
+                   bool equilibrate_muscles, const std::string& cylinder_refinement,
+                   const std::map<std::string, std::string>& renamed_force_classes, bool strict) {
+  const io::ForwardSetup setup = io::ReadForwardSetup(setup_file.string());
+  for (const Diagnostic& note : setup.notes) Warn(note.Format());
+  for (const Diagnostic& warning : setup.warnings) {
+    if (strict) throw Error(warning.where, warning.component, warning.message + " (strict)");
+    Warn(warning.Format());
+  }
+  const std::string model_path = model_file ? model_file->string() : setup.model_file;
+  if (model_path.empty()) {
+    throw Error({setup.file, 0}, "/" + setup.name,
+                "the setup names no model (<model_file> is empty): give one with model=");
+  }
+  LoadOptions options;
+  options.strict = strict;
+  options.cylinder_refinement = cylinder_refinement;
+  options.force_set_files = setup.force_set_files;
+  options.replace_force_set = setup.replace_force_set;
+  if (!setup.external_loads_file.empty())
+    options.external_loads.push_back(setup.external_loads_file);
+  for (const auto& renamed : renamed_force_classes)
+    options.renamed_force_classes.push_back(renamed);
+  options.start_time = setup.initial_time;
+  const ModelPtr model = ModelHandle::Load(model_path, options);
+  double t0 = setup.initial_time;
+  if (!setup.states_file.empty()) {
+    const io::Storage table = io::ReadStorage(setup.states_file);
+    if (table.NumRows() > 0) t0 = table.time[opensim::ForwardStartRow(table, t0)];
+  }
+  if (!(setup.final_time > t0)) {
+    throw Error({setup.file, 0}, "/" + setup.name,
+                "the run would start at " + FormatNumber(t0) +
+                    " s (the states file's row), not before final_time " +
+                    FormatNumber(setup.final_time));
+  }
+  const py::object states =
+      setup.states_file.empty() ? py::object(py::none()) : py::object(py::str(setup.states_file));
+  const std::optional<std::filesystem::path> controls =
+      setup.controls_file.empty() ? std::nullopt
+                                  : std::optional<std::filesystem::path>(setup.controls_file);
+  engine::IntegratorSettings settings;
+  settings.accuracy = setup.integrator_error_tolerance;
+  settings.step = setup.maximum_integrator_step_size;
+  settings.min_step = setup.minimum_integrator_step_size;
+  return RunSimulation(
+      PrepareRun(model, states, std::nullopt, controls,
+                 setup.solve_for_equilibrium_for_auxiliary_states || equilibrate_muscles),
+      setup.final_time - t0, integrator_name, settings, report_interval);
+}
+
 // Writes a storage file with io::StorageWriter: header `name`, `labels`, then one row per time.
 void WriteTable(const std::filesystem::path& path, const std::string& name,
                 const std::vector<std::string>& labels, const DoubleArray& time,
@@ -175,6 +242,13 @@ void BindSimulate(py::module_& m) {
             py::arg("equilibrate_muscles") = false,
             "Forward simulation over `duration` seconds (what `sinew simulate` runs); returns "
             "a sinew.Result.");
+  m.def("forward", &Forward, py::arg("setup"), py::kw_only(), py::arg("model") = py::none(),
+        py::arg("integrator") = "rk45", py::arg("report_interval") = 0.01,
+        py::arg("equilibrate_muscles") = false, py::arg("cylinder_refinement") = "several-wraps",
+        py::arg("rename_force_classes") = std::map<std::string, std::string>{},
+        py::arg("strict") = false,
+        "Runs an OpenSim ForwardTool setup file (*_Setup_Forward.xml) as `sinew forward` "
+        "does and returns a sinew.Result (its states are <name>_states.sto's).");
   m.def("write_table", &WriteTable, py::arg("path"), py::arg("name"), py::arg("labels"),
         py::arg("time"), py::arg("values"),
         "Writes an OpenSim storage file (.sto) as `sinew simulate` writes its tables.");

@@ -14,11 +14,12 @@ namespace sinew::python {
 
 std::shared_ptr<ModelHandle> ModelHandle::Load(const std::string& path,
                                                const LoadOptions& options) {
-  return Build(path, ReadSpec(path, options), options, 0.0);
+  return Build(path, ReadSpec(path, options), options, options.start_time.value_or(0.0));
 }
 
 model::ModelSpec ModelHandle::ReadSpec(const std::string& path, const LoadOptions& options) {
-  model::ModelSpec spec = io::ReadOsim(path);
+  model::ModelSpec spec =
+      io::ReadOsim(path, io::ForceSetFiles{options.force_set_files, options.replace_force_set});
   model::ApplyParameterOverrides(spec, options.parameters);
   return spec;
 }
@@ -107,6 +108,7 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
   for (const std::string& dir : options.geometry_dirs) parser.AddGeometryDir(dir);
   for (const std::string& file : options.external_loads) parser.AddExternalLoads(file);
   for (const std::string& name : options.disabled_forces) parser.DisableForce(name);
+  for (const auto& [from, to] : options.renamed_force_classes) parser.RenameForceClass(from, to);
   handle->system_ = std::make_unique<engine::System>();
   parser.ParseSpec(*handle->system_, std::move(spec));
   handle->system_->Finalize();
@@ -121,16 +123,21 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
 std::shared_ptr<ModelHandle> ModelHandle::Rebuild(const std::string& states_file,
                                                   const std::string& controls_file,
                                                   std::vector<std::string>& unused_labels,
-                                                  Diagnostics& table_notes) const {
+                                                  Diagnostics& table_notes, int& row) const {
   // The overrides first: an initial-states row then sets the coordinates' defaults over them.
   model::ModelSpec spec = ReadSpec(path_, options_);
-  double t0 = 0.0;
+  double t0 = options_.start_time.value_or(0.0);
   unused_labels.clear();
   table_notes.clear();
+  row = 0;
   if (!states_file.empty()) {
     io::Storage storage = io::ReadStorage(states_file);
     table_notes = storage.notes;
-    const opensim::InitialStates initial = opensim::ApplyInitialStates(storage, states_file, spec);
+    if (options_.start_time && storage.NumRows() > 0) {
+      row = opensim::ForwardStartRow(storage, *options_.start_time);
+    }
+    const opensim::InitialStates initial =
+        opensim::ApplyInitialStates(storage, states_file, spec, row);
     unused_labels = initial.unused_labels;
     t0 = initial.t0;
     if (options_.strict && !unused_labels.empty()) {

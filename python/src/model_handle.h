@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sinew::python {
@@ -48,6 +49,17 @@ struct LoadOptions {
   std::vector<std::string> external_loads;
   /// Forces left out by name (OpenSimParser::DisableForce), as `--disable-force`.
   std::vector<std::string> disabled_forces;
+  /// Forces of class `first` are read as class `second` (OpenSimParser::RenameForceClass), as
+  /// `--rename-force-class OLD=NEW`.
+  std::vector<std::pair<std::string, std::string>> renamed_force_classes;
+  /// ForceSet files appended to (or, replace_force_set, replacing) the model's forces, as a
+  /// Forward setup's force_set_files (io::ForceSetFiles).
+  std::vector<std::string> force_set_files;
+  bool replace_force_set = false;
+  /// The time a run starts at (a Forward setup's initial_time): the default states' time, and
+  /// with an initial-states table the row OpenSim's Forward tool takes for it
+  /// (opensim::ForwardStartRow); none: 0, and the table's first row.
+  std::optional<double> start_time;
 };
 
 /// A parsed model. Immutable after Build; shared by the objects made from it.
@@ -57,15 +69,16 @@ class ModelHandle {
   /// options' parameter overrides, then OpenSimParser::ParseSpec). Throws sinew::Error.
   static std::shared_ptr<ModelHandle> Load(const std::string& path, const LoadOptions& options);
   /// The same file built again as `sinew simulate --initial-states F --controls C` builds it:
-  /// the first row of the states table `states_file` ("" for none) as the coordinates'
+  /// one row of the states table `states_file` ("" for none) as the coordinates'
   /// defaults (opensim::ApplyInitialStates; t0() is the row's time, `unused_labels` gets the
   /// columns it could not use, an error when strict, and `table_notes` what the reader read
   /// leniently), driven by the ControlSet file `controls_file` ("" for the model's own
   /// controllers).
+  /// `row` gets the row of the table used (the first, or options().start_time's).
   std::shared_ptr<ModelHandle> Rebuild(const std::string& states_file,
                                        const std::string& controls_file,
                                        std::vector<std::string>& unused_labels,
-                                       Diagnostics& table_notes) const;
+                                       Diagnostics& table_notes, int& row) const;
 
   const std::string& path() const { return path_; }
   const LoadOptions& options() const { return options_; }

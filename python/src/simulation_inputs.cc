@@ -42,10 +42,6 @@ functions::FunctionPtr ToFunction(const std::string& actuator, const py::object&
                   py::repr(value).cast<std::string>());
 }
 
-void Warn(const std::string& message) {
-  if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
-}
-
 // Warns (Python's warnings) about what the reader of `file` read leniently, and about its
 // columns that name nothing simulated.
 void WarnAboutTable(const Diagnostics& notes, const std::vector<std::string>& labels,
@@ -61,6 +57,10 @@ void WarnAboutTable(const Diagnostics& notes, const std::vector<std::string>& la
 }
 
 }  // namespace
+
+void Warn(const std::string& message) {
+  if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
+}
 
 void EquilibrateMusclesWarning(const ModelHandle& model, engine::State& state) {
   for (const muscles::UnbalancedMuscle& muscle :
@@ -79,10 +79,12 @@ RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
   if (!initial_states.is_none() && !is_state) {
     states_file = py::str(py::module_::import("os").attr("fspath")(initial_states));
   }
+  int row = 0;
   if (!states_file.empty() || controls) {
     std::vector<std::string> unused;
     Diagnostics notes;
-    setup.model = model->Rebuild(states_file, controls ? controls->string() : "", unused, notes);
+    setup.model =
+        model->Rebuild(states_file, controls ? controls->string() : "", unused, notes, row);
     WarnAboutTable(notes, unused, states_file);
   }
   if (is_state) {
@@ -92,10 +94,10 @@ RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
     setup.state = setup.model->DefaultState();
   }
   if (!states_file.empty()) {
-    // The first row's state variables (muscle activations, fiber lengths), as `sinew simulate
+    // The row's state variables (muscle activations, fiber lengths), as `sinew simulate
     // --initial-states` takes them; then, when asked, equilibrium at those activations.
     const std::vector<std::string> missing = opensim::ApplyInitialStateVariables(
-        io::ReadStorage(states_file), 0, states_file, setup.model->system(), setup.state);
+        io::ReadStorage(states_file), row, states_file, setup.model->system(), setup.state);
     if (!missing.empty()) {
       Warn(states_file + ": " + std::to_string(missing.size()) +
            " state variables are not in the file (" + missing.front() +

@@ -37,6 +37,9 @@ RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
                     const std::optional<std::filesystem::path>& controls,
                     bool equilibrate_muscles = false);
 
+/// A Python UserWarning with `message` (raises when the warnings filter makes it an error).
+void Warn(const std::string& message);
+
 /// Sets every muscle of `model` in `state` to muscle-tendon equilibrium (OpenSim's
 /// equilibrateMuscles); a muscle left unbalanced is a UserWarning naming it.
 void EquilibrateMusclesWarning(const ModelHandle& model, engine::State& state);

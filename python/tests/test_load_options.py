@@ -1,5 +1,6 @@
-"""sinew.load's external_loads and disabled_forces: what `sinew simulate --external-loads` and
-`--disable-force` do, bit for bit, and what the physics says."""
+"""sinew.load's external_loads, disabled_forces and rename_force_classes: what `sinew simulate
+--external-loads`, `--disable-force` and `--rename-force-class` do, bit for bit, and what the
+physics says."""
 import numpy as np
 import pytest
 
@@ -40,3 +41,16 @@ def test_disabled_force_is_left_out_and_an_unknown_name_is_an_error():
     with pytest.raises(sinew.Error, match=r"block_sprng: cannot disable: no force has this name "
                                           r"\(close names: block_spring\)"):
         sinew.load(SPRINGS, disabled_forces=["block_sprng"])
+
+
+def test_renamed_force_class_builds_the_other_muscle_model():
+    arm26 = DATA / "opensim-org/opensim-models/Models/Arm26/arm26.osim"
+    renamed = sinew.load(arm26, rename_force_classes={
+        "Thelen2003Muscle": "Thelen2003Muscle_Deprecated"})
+    types = {force["type"] for force in renamed.report["forces"] if force["actuator"]}
+    assert types == {"Thelen2003Muscle_Deprecated"}
+    assert {f["type"] for f in sinew.load(arm26).report["forces"]} == {"Thelen2003Muscle"}
+    # The deprecated class is another model of the muscle: the run differs.
+    a = renamed.simulate(0.05, equilibrate_muscles=True).states
+    b = sinew.load(arm26).simulate(0.05, equilibrate_muscles=True).states
+    assert np.abs(a - b).max() > 1e-6

@@ -27,6 +27,12 @@ std::string ForceOfStateColumn(std::string_view label) {
 
 }  // namespace
 
+int ForwardStartRow(const io::Storage& storage, double t) {
+  int row = 0;
+  while (row + 1 < storage.NumRows() && !(t < storage.time[row + 1])) ++row;
+  return row;
+}
+
 InitialStates ApplyInitialStates(io::Storage& storage, const std::string& storage_path,
                                  model::ModelSpec& spec, int row) {
   if (storage.NumRows() == 0) {

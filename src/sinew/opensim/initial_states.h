@@ -27,6 +27,11 @@ struct InitialStates {
   std::vector<std::string> missing;
 };
 
+/// The row OpenSim's Forward tool starts a run at time `t` from
+/// (ForwardTool::determineInitialTimeFromStatesStorage with Storage::findIndex): the last row
+/// whose time is at or before `t`, or the first row when `t` precedes them all.
+int ForwardStartRow(const io::Storage& storage, double t);
+
 /// Sets the default value and speed of every coordinate of `spec` that `storage` names (OpenSim
 /// 4 paths or old names) from its row `row` (the first by default), rotational columns converted
 /// to radians when the table is in degrees (the table is converted in place). Coordinates the

@@ -1,0 +1,74 @@
+"""sinew.forward runs OpenSim ForwardTool setup files as `sinew forward` does: the same states
+bit for bit, OpenSim's own stored results within its test's tolerance, and the setup's errors."""
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import sinew
+from conftest import DATA, read_sto
+
+FORWARD = DATA / "opensim-org/opensim-core/Applications/Forward/tests/resources"
+DEPRECATED = {"Thelen2003Muscle": "Thelen2003Muscle_Deprecated"}
+
+
+def run_cli_forward(setup, out, *args):
+    program = os.environ.get("SINEW_CLI")
+    if not program:
+        pytest.skip("SINEW_CLI is not set (ctest sets it to the built sinew program)")
+    subprocess.run([program, "forward", str(setup), "--out", str(out), "--quiet", *args],
+                   check=True, capture_output=True)
+
+
+def test_arm26_reproduces_opensim_and_the_cli(tmp_path):
+    # OpenSim's testForward: arm26's six deprecated Thelen muscles from its initial states under
+    # its static-optimization controls, within 5e-3 of OpenSim 2.x's states (whose cylinders
+    # refined their tangent points on every path: cylinder_refinement="always").
+    setup = FORWARD / "arm26_Setup_Forward.xml"
+    result = sinew.forward(setup, rename_force_classes=DEPRECATED, cylinder_refinement="always")
+    run_cli_forward(setup, tmp_path, "--rename-force-class",
+                    "Thelen2003Muscle=Thelen2003Muscle_Deprecated", "--cylinder-refinement",
+                    "always")
+    labels, time, values = read_sto(tmp_path / "arm26_states.sto")
+    assert labels == result.labels
+    np.testing.assert_array_equal(time, result.time)
+    np.testing.assert_array_equal(values, result.states)
+
+    # At each of our rows, against the reference interpolated linearly between its own rows
+    # (OpenSim wrote a row per integrator step).
+    labels, time, expected = read_sto(FORWARD / "std_arm26_states.sto")
+    rows = (result.time >= time[0]) & (result.time <= time[-1])
+    assert rows.sum() == 101
+    compared = 0
+    for k, label in enumerate(labels):
+        if label.endswith("_u"):
+            ours = result.u[rows, result.coordinates.index(label[:-2])]
+        elif "." in label:
+            ours = result.z[rows, result.state_variables.index(label.replace(".", "/"))]
+        else:
+            ours = result.q[rows, result.coordinates.index(label)]
+        reference = np.interp(result.time[rows], time, expected[:, k])
+        np.testing.assert_allclose(ours, reference, rtol=0, atol=5e-3, err_msg=label)
+        compared += 1
+    assert compared == 16  # 2 coordinates, their speeds, 6 muscles' two states
+
+
+def test_subject01_with_force_set_external_loads_and_controls_equals_the_cli(tmp_path):
+    # gait2354 with the CMC actuators appended from a ForceSet file, ground reactions as external
+    # loads, a ControlSet and the states file's row at the initial time.
+    setup = FORWARD / "subject01_Setup_Forward.xml"
+    result = sinew.forward(setup, rename_force_classes=DEPRECATED)
+    run_cli_forward(setup, tmp_path, "--rename-force-class",
+                    "Thelen2003Muscle=Thelen2003Muscle_Deprecated")
+    labels, time, values = read_sto(tmp_path / "subject01_states.sto")
+    assert labels == result.labels
+    np.testing.assert_array_equal(time, result.time)
+    np.testing.assert_array_equal(values, result.states)
+    assert result.time[0] > 0.0  # the run starts at the setup's initial time
+
+
+def test_a_setup_without_a_model_needs_one():
+    setup = DATA / "opensim-org/opensim-core/Applications/Analyze/tests/resources/SinglePin_Setup_Forward.xml"
+    with pytest.raises(sinew.Error, match=r"<model_file> is empty\): give one with model="):
+        sinew.forward(setup)
