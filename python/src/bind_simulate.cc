@@ -188,6 +188,14 @@ py::object Forward(const std::filesystem::path& setup_file,
   if (!setup.states_file.empty()) {
     const io::Storage table = io::ReadStorage(setup.states_file);
     if (table.NumRows() > 0) t0 = table.time[opensim::ForwardStartRow(table, t0)];
+    if (table.NumRows() > 0 && t0 != setup.initial_time) {  // as `sinew forward` notes it
+      Warn(setup.states_file + ": " +
+           (setup.initial_time < table.time[0]
+                ? "the initial time " + FormatNumber(setup.initial_time) + " precedes the first row"
+                : "no row at the initial time " + FormatNumber(setup.initial_time)) +
+           "; the run starts at " + FormatNumber(t0) +
+           " s, the time of the row used, as OpenSim's Forward tool does");
+    }
   }
   if (!(setup.final_time > t0)) {
     throw Error({setup.file, 0}, "/" + setup.name,

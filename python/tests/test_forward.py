@@ -72,3 +72,29 @@ def test_a_setup_without_a_model_needs_one():
     setup = DATA / "opensim-org/opensim-core/Applications/Analyze/tests/resources/SinglePin_Setup_Forward.xml"
     with pytest.raises(sinew.Error, match=r"<model_file> is empty\): give one with model="):
         sinew.forward(setup)
+
+
+def test_the_states_row_is_the_one_opensim_takes(tmp_path):
+    # The last row at or before initial_time (the run starts at its time, with a warning), or the
+    # first row when initial_time precedes them all; its coordinates start the run.
+    states = tmp_path / "states.sto"
+    states.write_text("states\nversion=1\nnRows=3\nnColumns=3\ninDegrees=no\nendheader\n"
+                      "time\tr1_z\tr1_z_u\n0.2\t0.5\t0\n0.5\t1.0\t0.25\n0.9\t1.5\t0\n")
+    single_pin = DATA / "opensim-org/opensim-core/Applications/Analyze/tests/resources/SinglePin.osim"
+
+    def setup(name, t0):
+        path = tmp_path / f"{name}.xml"
+        path.write_text(f'<OpenSimDocument Version="40000"><ForwardTool name="{name}">'
+                        f"<model_file>{single_pin}</model_file><initial_time>{t0}</initial_time>"
+                        f"<final_time>1</final_time><states_file>{states}</states_file>"
+                        "</ForwardTool></OpenSimDocument>")
+        return path
+
+    with pytest.warns(UserWarning, match="no row at the initial time 0.7; the run starts at 0.5 s"):
+        between = sinew.forward(setup("between", 0.7))
+    assert between.time[0] == 0.5
+    assert between.q[0, 0] == 1.0 and between.u[0, 0] == 0.25
+    with pytest.warns(UserWarning, match="the initial time 0 precedes the first row"):
+        before = sinew.forward(setup("before", 0.0))
+    assert before.time[0] == 0.2
+    assert before.q[0, 0] == 0.5
