@@ -12,6 +12,7 @@
 #include <sinew/engine/integrator.h>
 #include <sinew/io/forward_setup.h>
 #include <sinew/io/osim_reader.h>
+#include <sinew/opensim/forward_run.h>
 
 #include <iostream>
 #include <memory>
@@ -25,6 +26,7 @@
 #include "apps/sinew/option_checks.h"
 #include "apps/sinew/output_files.h"
 #include "apps/sinew/run_simulation.h"
+#include "apps/sinew/tables.h"
 
 namespace sinew::cli {
 namespace {
@@ -44,37 +46,30 @@ struct ForwardOptions {
 };
 
 void RunForward(const ForwardOptions& options) {
-  const io::ForwardSetup setup = io::ReadForwardSetup(options.setup);
-  for (const Diagnostic& note : setup.notes) {
-    std::cerr << "sinew: note: " << note.Format() << "\n";
-  }
-  for (const Diagnostic& warning : setup.warnings) {
-    if (options.strict)
-      throw Error(warning.where, warning.component, warning.message + " (--strict)");
+  opensim::ForwardRun run = opensim::PlanForwardRun(
+      options.setup, {.model_path = options.model, .strict = options.strict});
+  const io::ForwardSetup& setup = run.setup;
+  for (const Diagnostic& note : run.notes) std::cerr << "sinew: note: " << note.Format() << "\n";
+  for (const Diagnostic& warning : run.warnings) {
     std::cerr << "sinew: warning: " << warning.Format() << "\n";
   }
-  const std::string model_path = options.model.empty() ? setup.model_file : options.model;
-  if (model_path.empty()) {
-    throw Error({options.setup, 0}, "/" + setup.name,
-                "the setup names no model (<model_file> is empty): give one with --model");
-  }
+  const std::string& model_path = run.model_path;
   const std::string out = options.out.empty() ? setup.results_directory : options.out;
   PrepareOutputFolder(out, options.out.empty() ? "<results_directory>" : "--out");
 
   model::ModelSpec spec =
       io::ReadOsim(model_path, io::ForceSetFiles{setup.force_set_files, setup.replace_force_set});
   std::optional<InitialStates> initial;
-  if (!setup.states_file.empty()) {
-    initial = ApplyInitialStates(setup.states_file, options.strict, spec, setup.initial_time);
+  if (run.states) {
+    initial = InitialStates{setup.states_file, std::move(*run.states), run.start_row};
+    for (const Diagnostic& note : initial->table.notes) {
+      std::cerr << "sinew: note: " << note.Format() << "\n";
+    }
+    CheckTable(initial->table, initial->path, spec);
+    ApplyInitialStates(*initial, options.strict, spec);
   }
-  const double t0 = initial ? initial->time() : setup.initial_time;
-  if (!(setup.final_time > t0)) {
-    throw Error({options.setup, 0}, "/" + setup.name,
-                "the run would start at " + ShowNumber(t0) +
-                    " s (the states file's row), not before final_time " +
-                    ShowNumber(setup.final_time));
-  }
-  const double duration = setup.final_time - t0;
+  const double t0 = run.start_time;
+  const double duration = run.duration();
   CheckSimulationSize(duration, options.report_interval, 0.0);
 
   ModelOptions model_options;
@@ -96,11 +91,8 @@ void RunForward(const ForwardOptions& options) {
   engine::State state = MakeStartState(system, initial ? &*initial : nullptr,
                                        model_options.equilibrate_muscles, t0, model_path);
 
-  engine::IntegratorSettings settings;
-  settings.accuracy = setup.integrator_error_tolerance;
-  settings.step = setup.maximum_integrator_step_size;
-  settings.min_step = setup.minimum_integrator_step_size;
-  const auto integrator = engine::MakeIntegrator(options.integrator, system, settings);
+  const auto integrator =
+      engine::MakeIntegrator(options.integrator, system, run.integrator_settings());
   integrator->SetController(built.parser.GetController());
 
   const std::string base = out + "/" + setup.name;

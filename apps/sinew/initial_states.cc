@@ -15,30 +15,16 @@
 #include "apps/sinew/tables.h"
 
 namespace sinew::cli {
-namespace {
-
-// Tells when the run does not start at `start_time` (OpenSim moves its initial time too).
-void NoteStartRow(const InitialStates& states, double start_time) {
-  if (states.time() == start_time) return;
-  std::cerr << "sinew: note: " << states.path << ": "
-            << (start_time < states.table.time[0]
-                    ? "the initial time " + ShowNumber(start_time) + " precedes the first row"
-                    : "no row at the initial time " + ShowNumber(start_time))
-            << "; the run starts at " << ShowNumber(states.time())
-            << " s, the time of the row used, as OpenSim's Forward tool does\n";
+InitialStates ApplyInitialStates(const std::string& path, bool strict, model::ModelSpec& spec) {
+  InitialStates states{path, ReadTableFor(path, spec), 0};
+  ApplyInitialStates(states, strict, spec);
+  return states;
 }
 
-}  // namespace
-
-InitialStates ApplyInitialStates(const std::string& path, bool strict, model::ModelSpec& spec,
-                                 std::optional<double> start_time) {
-  InitialStates states{path, ReadTableFor(path, spec), 0};
+void ApplyInitialStates(InitialStates& states, bool strict, model::ModelSpec& spec) {
+  const std::string& path = states.path;
   if (states.table.NumRows() == 0) {
     throw Error({path, 0}, "", "the initial-states file has no rows");
-  }
-  if (start_time) {
-    states.row = opensim::ForwardStartRow(states.table, *start_time);
-    NoteStartRow(states, *start_time);
   }
   const opensim::InitialStates taken =
       opensim::ApplyInitialStates(states.table, path, spec, states.row);
@@ -50,7 +36,6 @@ InitialStates ApplyInitialStates(const std::string& path, bool strict, model::Mo
               << " coordinate values or speeds are not in the file (" << FirstFew(taken.missing)
               << "): they keep the model's defaults\n";
   }
-  return states;
 }
 
 void ApplyInitialStateVariables(const InitialStates& states, const engine::System& system,

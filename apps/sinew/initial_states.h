@@ -8,7 +8,6 @@
 #include <sinew/io/storage.h>
 #include <sinew/model/model_spec.h>
 
-#include <optional>
 #include <string>
 
 namespace sinew::cli {
@@ -21,17 +20,18 @@ struct InitialStates {
   double time() const { return table.time[row]; }
 };
 
-/// Reads the initial-states table `path` and takes one row: the first, or, given `start_time`,
-/// the row OpenSim's Forward tool takes (the last row at or before it, the first row when it
-/// precedes them all; the run then starts at that row's time, with a note on stderr when that
-/// is not `start_time`). The row's coordinate values and speeds (OpenSim 4 paths or old names;
-/// rotational columns converted when the file is in degrees) become the coordinates' default
-/// values and speeds in `spec`, so locked coordinates are held at the file's value. Columns
-/// that name no simulated coordinate nor a state variable of a simulated force are reported in
-/// one warning line, an error with `strict`; simulated coordinates the file does not name keep
-/// their defaults, with one warning line (OpenSim warns and uses the defaults too).
-InitialStates ApplyInitialStates(const std::string& path, bool strict, model::ModelSpec& spec,
-                                 std::optional<double> start_time = std::nullopt);
+/// Reads the initial-states table `path` for `spec` (ReadTableFor) and applies its first row
+/// (ApplyInitialStates below).
+InitialStates ApplyInitialStates(const std::string& path, bool strict, model::ModelSpec& spec);
+
+/// Applies row `states.row` of a table read and checked for `spec`: its coordinate values and
+/// speeds (OpenSim 4 paths or old names; rotational columns converted when the file is in
+/// degrees) become the coordinates' default values and speeds in `spec`, so locked coordinates
+/// are held at the file's value. Columns that name no simulated coordinate nor a state variable
+/// of a simulated force are reported in one warning line, an error with `strict`; simulated
+/// coordinates the file does not name keep their defaults, with one warning line (OpenSim warns
+/// and uses the defaults too).
+void ApplyInitialStates(InitialStates& states, bool strict, model::ModelSpec& spec);
 
 /// Sets the auxiliary state variables of `state` that the row names (`/forceset/<element>/<var>`
 /// or the OpenSim 3 `<element>.<var>`), with one warning line for the state variables it does

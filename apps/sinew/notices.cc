@@ -46,14 +46,6 @@ std::string JoinPhrases(const std::string& a, const std::string& b) {
 
 }  // namespace
 
-std::string FirstFew(const std::vector<std::string>& names, size_t shown) {
-  std::string text;
-  const size_t n = std::min(shown, names.size());
-  for (size_t i = 0; i < n; ++i) text += (i ? ", " : "") + names[i];
-  if (names.size() > n) text += " and " + std::to_string(names.size() - n) + " more";
-  return text;
-}
-
 void WarnNotSimulated(const model::ModelSpec& spec, const std::string& model_path, bool strict,
                       const std::vector<std::string>& disabled_forces) {
   const std::vector<opensim::NotSimulatedElement> elements =

@@ -3,6 +3,7 @@
 // a count, the first few names and where to find the rest.
 #pragma once
 
+#include <sinew/common/text.h>
 #include <sinew/engine/nsc_integrator.h>
 #include <sinew/model/model_spec.h>
 #include <sinew/viz/visual_scene.h>
@@ -11,9 +12,6 @@
 #include <vector>
 
 namespace sinew::cli {
-
-/// "a, b, c and 2 more" from the first `shown` of `names` ("" when empty).
-std::string FirstFew(const std::vector<std::string>& names, size_t shown = 3);
 
 /// A number as a message shows it (stream default: 6 significant digits).
 std::string ShowNumber(double value);

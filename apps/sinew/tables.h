@@ -12,12 +12,12 @@
 
 namespace sinew::cli {
 
-/// Reads `path` for `spec` and checks it: a time column that is not finite or not increasing,
-/// or a column naming a coordinate of `spec` with a NaN or infinite value, is a sinew::Error
-/// naming the file, the column and the row; a repeated column label is a warning (the first
-/// column is used). Prints the reader's notes, and one warning when the file has no
-/// inDegrees line, so that its angles are read as radians (as OpenSim reads such a file), yet
-/// a rotational coordinate's values go beyond 2*pi rad in magnitude, which looks like degrees.
+/// Checks `table`, read from `path`, for `spec` (opensim::CheckTableFor: a sinew::Error for
+/// times and coordinate values that cannot be used), one stderr line per warning.
+void CheckTable(const io::Storage& table, const std::string& path, const model::ModelSpec& spec);
+
+/// Reads `path` for `spec` and checks it (opensim::CheckTableFor: errors for times and
+/// coordinate values that cannot be used), printing the reader's notes and the check's warnings.
 /// Throws sinew::Error for an unreadable file.
 io::Storage ReadTableFor(const std::string& path, const model::ModelSpec& spec);
 

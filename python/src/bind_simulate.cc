@@ -16,9 +16,9 @@
 #include <sinew/engine/nsc_integrator.h>
 #include <sinew/engine/simulation.h>
 #include <sinew/functions/constant.h>
-#include <sinew/io/forward_setup.h>
 #include <sinew/io/storage.h>
 #include <sinew/io/storage_writer.h>
+#include <sinew/opensim/forward_run.h>
 #include <sinew/opensim/initial_states.h>
 #include <sinew/opensim/run_integrator.h>
 #include <sinew/opensim/states_table.h>
@@ -162,17 +162,14 @@ py::object Forward(const std::filesystem::path& setup_file,
                    const std::string& integrator_name, double report_interval,
                    bool equilibrate_muscles, const std::string& cylinder_refinement,
                    const std::map<std::string, std::string>& renamed_force_classes, bool strict) {
-  const io::ForwardSetup setup = io::ReadForwardSetup(setup_file.string());
-  for (const Diagnostic& note : setup.notes) Warn(note.Format());
-  for (const Diagnostic& warning : setup.warnings) {
-    if (strict) throw Error(warning.where, warning.component, warning.message + " (strict)");
-    Warn(warning.Format());
-  }
-  const std::string model_path = model_file ? model_file->string() : setup.model_file;
-  if (model_path.empty()) {
-    throw Error({setup.file, 0}, "/" + setup.name,
-                "the setup names no model (<model_file> is empty): give one with model=");
-  }
+  opensim::ForwardRun run = opensim::PlanForwardRun(
+      setup_file.string(), {.model_path = model_file ? model_file->string() : "",
+                            .model_option = "model=",
+                            .strict = strict,
+                            .strict_option = "strict"});
+  const io::ForwardSetup& setup = run.setup;
+  for (const Diagnostic& note : run.notes) Warn(note.Format());
+  for (const Diagnostic& warning : run.warnings) Warn(warning.Format());
   LoadOptions options;
   options.strict = strict;
   options.cylinder_refinement = cylinder_refinement;
@@ -183,39 +180,16 @@ py::object Forward(const std::filesystem::path& setup_file,
   for (const auto& renamed : renamed_force_classes)
     options.renamed_force_classes.push_back(renamed);
   options.start_time = setup.initial_time;
-  const ModelPtr model = ModelHandle::Load(model_path, options);
-  double t0 = setup.initial_time;
-  if (!setup.states_file.empty()) {
-    const io::Storage table = io::ReadStorage(setup.states_file);
-    if (table.NumRows() > 0) t0 = table.time[opensim::ForwardStartRow(table, t0)];
-    if (table.NumRows() > 0 && t0 != setup.initial_time) {  // as `sinew forward` notes it
-      Warn(setup.states_file + ": " +
-           (setup.initial_time < table.time[0]
-                ? "the initial time " + FormatNumber(setup.initial_time) + " precedes the first row"
-                : "no row at the initial time " + FormatNumber(setup.initial_time)) +
-           "; the run starts at " + FormatNumber(t0) +
-           " s, the time of the row used, as OpenSim's Forward tool does");
-    }
-  }
-  if (!(setup.final_time > t0)) {
-    throw Error({setup.file, 0}, "/" + setup.name,
-                "the run would start at " + FormatNumber(t0) +
-                    " s (the states file's row), not before final_time " +
-                    FormatNumber(setup.final_time));
-  }
+  const ModelPtr model = ModelHandle::Load(run.model_path, options);
   const py::object states =
       setup.states_file.empty() ? py::object(py::none()) : py::object(py::str(setup.states_file));
   const std::optional<std::filesystem::path> controls =
       setup.controls_file.empty() ? std::nullopt
                                   : std::optional<std::filesystem::path>(setup.controls_file);
-  engine::IntegratorSettings settings;
-  settings.accuracy = setup.integrator_error_tolerance;
-  settings.step = setup.maximum_integrator_step_size;
-  settings.min_step = setup.minimum_integrator_step_size;
   return RunSimulation(
       PrepareRun(model, states, std::nullopt, controls,
                  setup.solve_for_equilibrium_for_auxiliary_states || equilibrate_muscles),
-      setup.final_time - t0, integrator_name, settings, report_interval);
+      run.duration(), integrator_name, run.integrator_settings(), report_interval);
 }
 
 // Writes a storage file with io::StorageWriter: header `name`, `labels`, then one row per time.

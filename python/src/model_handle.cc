@@ -5,6 +5,7 @@
 #include <sinew/io/osim_reader.h>
 #include <sinew/io/storage.h>
 #include <sinew/opensim/initial_states.h>
+#include <sinew/opensim/table_checks.h>
 
 #include <cmath>
 #include <sstream>
@@ -122,27 +123,26 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
 
 std::shared_ptr<ModelHandle> ModelHandle::Rebuild(const std::string& states_file,
                                                   const std::string& controls_file,
-                                                  std::vector<std::string>& unused_labels,
-                                                  Diagnostics& table_notes, int& row) const {
+                                                  InitialStatesTable& states) const {
   // The overrides first: an initial-states row then sets the coordinates' defaults over them.
   model::ModelSpec spec = ReadSpec(path_, options_);
   double t0 = options_.start_time.value_or(0.0);
-  unused_labels.clear();
-  table_notes.clear();
-  row = 0;
+  states = InitialStatesTable{};
   if (!states_file.empty()) {
-    io::Storage storage = io::ReadStorage(states_file);
-    table_notes = storage.notes;
-    if (options_.start_time && storage.NumRows() > 0) {
-      row = opensim::ForwardStartRow(storage, *options_.start_time);
+    states.table = io::ReadStorage(states_file);
+    states.warnings = states.table.notes;
+    const Diagnostics checked = opensim::CheckTableFor(states.table, states_file, spec);
+    states.warnings.insert(states.warnings.end(), checked.begin(), checked.end());
+    if (options_.start_time && states.table.NumRows() > 0) {
+      states.row = opensim::ForwardStartRow(states.table, *options_.start_time);
     }
     const opensim::InitialStates initial =
-        opensim::ApplyInitialStates(storage, states_file, spec, row);
-    unused_labels = initial.unused_labels;
+        opensim::ApplyInitialStates(states.table, states_file, spec, states.row);
+    states.unused_labels = initial.unused_labels;
     t0 = initial.t0;
-    if (options_.strict && !unused_labels.empty()) {
-      throw Error({states_file, 0}, unused_labels.front(),
-                  std::to_string(unused_labels.size()) +
+    if (options_.strict && !states.unused_labels.empty()) {
+      throw Error({states_file, 0}, states.unused_labels.front(),
+                  std::to_string(states.unused_labels.size()) +
                       " column(s) name no coordinate value or speed or state variable that is "
                       "simulated (strict)");
     }

@@ -62,6 +62,16 @@ struct LoadOptions {
   std::optional<double> start_time;
 };
 
+/// An initial-states table as ModelHandle::Rebuild took it.
+struct InitialStatesTable {
+  io::Storage table;  ///< as read, rotational columns in radians
+  int row = 0;        ///< the row used (the first, or LoadOptions::start_time's)
+  /// Columns naming no simulated coordinate value or speed nor state variable (an error when
+  /// strict).
+  std::vector<std::string> unused_labels;
+  Diagnostics warnings;  ///< what the reader read leniently, and the table check's warnings
+};
+
 /// A parsed model. Immutable after Build; shared by the objects made from it.
 class ModelHandle {
  public:
@@ -69,16 +79,13 @@ class ModelHandle {
   /// options' parameter overrides, then OpenSimParser::ParseSpec). Throws sinew::Error.
   static std::shared_ptr<ModelHandle> Load(const std::string& path, const LoadOptions& options);
   /// The same file built again as `sinew simulate --initial-states F --controls C` builds it:
-  /// one row of the states table `states_file` ("" for none) as the coordinates'
-  /// defaults (opensim::ApplyInitialStates; t0() is the row's time, `unused_labels` gets the
-  /// columns it could not use, an error when strict, and `table_notes` what the reader read
-  /// leniently), driven by the ControlSet file `controls_file` ("" for the model's own
-  /// controllers).
-  /// `row` gets the row of the table used (the first, or options().start_time's).
+  /// one row of the states table `states_file` ("" for none) as the coordinates' defaults
+  /// (opensim::ApplyInitialStates; t0() is the row's time; `states` gets the table, checked by
+  /// opensim::CheckTableFor, with what it could not use), driven by the ControlSet file
+  /// `controls_file` ("" for the model's own controllers).
   std::shared_ptr<ModelHandle> Rebuild(const std::string& states_file,
                                        const std::string& controls_file,
-                                       std::vector<std::string>& unused_labels,
-                                       Diagnostics& table_notes, int& row) const;
+                                       InitialStatesTable& states) const;
 
   const std::string& path() const { return path_; }
   const LoadOptions& options() const { return options_; }

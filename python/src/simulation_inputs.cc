@@ -1,10 +1,10 @@
 #include "simulation_inputs.h"
 
 #include <sinew/common/error.h>
+#include <sinew/common/text.h>
 #include <sinew/engine/assemble.h>
 #include <sinew/functions/constant.h>
 #include <sinew/functions/excitations.h>
-#include <sinew/io/storage.h>
 #include <sinew/muscles/equilibrate_muscles.h>
 #include <sinew/opensim/initial_states.h>
 
@@ -48,12 +48,9 @@ void WarnAboutTable(const Diagnostics& notes, const std::vector<std::string>& la
                     const std::string& file) {
   for (const Diagnostic& note : notes) Warn(note.Format());
   if (labels.empty()) return;
-  std::string message = file + ": " + std::to_string(labels.size()) +
-                        " column(s) name no coordinate value or speed or state variable that is "
-                        "simulated: ";
-  for (size_t i = 0; i < labels.size() && i < 3; ++i) message += (i ? ", " : "") + labels[i];
-  if (labels.size() > 3) message += ", ...";
-  Warn(message);
+  Warn(file + ": " + std::to_string(labels.size()) +
+       " column(s) name no coordinate value or speed or state variable that is simulated: " +
+       FirstFew(labels));
 }
 
 }  // namespace
@@ -79,13 +76,10 @@ RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
   if (!initial_states.is_none() && !is_state) {
     states_file = py::str(py::module_::import("os").attr("fspath")(initial_states));
   }
-  int row = 0;
+  InitialStatesTable states;
   if (!states_file.empty() || controls) {
-    std::vector<std::string> unused;
-    Diagnostics notes;
-    setup.model =
-        model->Rebuild(states_file, controls ? controls->string() : "", unused, notes, row);
-    WarnAboutTable(notes, unused, states_file);
+    setup.model = model->Rebuild(states_file, controls ? controls->string() : "", states);
+    WarnAboutTable(states.warnings, states.unused_labels, states_file);
   }
   if (is_state) {
     setup.state = initial_states.cast<const StateHandle&>().state;
@@ -97,11 +91,11 @@ RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
     // The row's state variables (muscle activations, fiber lengths), as `sinew simulate
     // --initial-states` takes them; then, when asked, equilibrium at those activations.
     const std::vector<std::string> missing = opensim::ApplyInitialStateVariables(
-        io::ReadStorage(states_file), row, states_file, setup.model->system(), setup.state);
+        states.table, states.row, states_file, setup.model->system(), setup.state);
     if (!missing.empty()) {
       Warn(states_file + ": " + std::to_string(missing.size()) +
-           " state variables are not in the file (" + missing.front() +
-           (missing.size() > 1 ? ", ..." : "") + "): they keep their defaults");
+           " state variables are not in the file (" + FirstFew(missing) +
+           "): they keep their defaults");
     }
   }
   if (equilibrate_muscles) EquilibrateMusclesWarning(*setup.model, setup.state);

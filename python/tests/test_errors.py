@@ -86,3 +86,48 @@ def test_what_the_table_reader_read_leniently_is_a_warning_with_file_and_line():
     with pytest.warns(UserWarning, match=f"{states}:3: nColumns=4"):
         sinew.load(RESOURCES / "DoublePendulum3D.osim").simulate(0.01, initial_states=states)
 
+
+
+def _single_pin_states(tmp_path, edit):
+    # SinglePin's initial states with `edit(header, rows)` applied to its column labels and rows.
+    lines = (RESOURCES / "SinglePin_InitialStates.sto").read_text().splitlines()
+    end = [line.strip() for line in lines].index("endheader")
+    header = lines[end + 1].split("\t")
+    rows = [line.split("\t") for line in lines[end + 2:] if line.strip()]
+    edit(header, rows)
+    states = tmp_path / "states.sto"
+    states.write_text("\n".join(lines[: end + 1] + ["\t".join(header)] +
+                                ["\t".join(row) for row in rows]) + "\n")
+    return states, header
+
+
+def test_unusable_initial_states_tables_are_errors_naming_file_column_and_row(tmp_path):
+    # As the CLI checks every table: a coordinate's NaN (it would reach the integrator as a
+    # "singular" body) and times that do not increase.
+    def nan_value(header, rows):
+        rows[0][1] = "nan"
+
+    states, header = _single_pin_states(tmp_path, nan_value)
+    with pytest.raises(sinew.Error, match=rf"column '{header[1]}', row 1 .*nan is not a finite "
+                                          "number, and the column names a coordinate") as error:
+        sinew.load(RESOURCES / "SinglePin.osim").simulate(0.01, initial_states=states)
+    assert error.value.file == str(states)
+
+    def repeated_time(header, rows):
+        rows.append(list(rows[-1]))
+
+    states, header = _single_pin_states(tmp_path, repeated_time)
+    with pytest.raises(sinew.Error, match=f"column '{header[0]}' must increase"):
+        sinew.load(RESOURCES / "SinglePin.osim").simulate(0.01, initial_states=states)
+
+
+def test_radian_tables_whose_angles_look_like_degrees_warn(tmp_path):
+    # No inDegrees line: radians, as OpenSim reads such a file, but 57.3 rad looks like degrees.
+    def degrees(header, rows):
+        rows[0][1] = "57.3"
+
+    lines = (RESOURCES / "SinglePin_InitialStates.sto").read_text()
+    assert "inDegrees" not in lines
+    states, header = _single_pin_states(tmp_path, degrees)
+    with pytest.warns(UserWarning, match=rf"no inDegrees line.*\({header[1]}\)"):
+        sinew.load(RESOURCES / "SinglePin.osim").simulate(0.0, initial_states=states)

@@ -89,6 +89,14 @@ std::vector<std::string> FindCloseNames(std::string_view name,
   return names;
 }
 
+std::string FirstFew(const std::vector<std::string>& names, size_t shown) {
+  std::string text;
+  const size_t n = std::min(shown, names.size());
+  for (size_t i = 0; i < n; ++i) text += (i ? ", " : "") + names[i];
+  if (names.size() > n) text += " and " + std::to_string(names.size() - n) + " more";
+  return text;
+}
+
 std::string FormatNumber(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.6g", value);

@@ -30,6 +30,9 @@ enum class NumberRange {
 /// The first number of `values` that `range` rejects (NaN, or infinite under kFinite), or null.
 const double* FindOutOfRange(const std::vector<double>& values, NumberRange range);
 
+/// "a, b, c and 2 more" from the first `shown` of `names` ("" when empty), for messages.
+std::string FirstFew(const std::vector<std::string>& names, size_t shown = 3);
+
 /// `value` for a message: up to 6 significant digits, no trailing zeros ("0.067", "1e-10").
 std::string FormatNumber(double value);
 
