@@ -22,14 +22,22 @@ class Result:
     about the body's origin (N m) on each body, in ground, "<force>.<body>.force.X|Y|Z" and
     ".torque.X|Y|Z", then the number of active contacts, in all and per body pair, and for NSC
     "nsc_contact.solver_iterations" and ".solver_residual" (the last step's impulse solve) and
-    ".unconverged_steps" (so far) (docs/contact.md).
+    ".unconverged_steps" (so far) (docs/contact.md). forces: the forces table as `sinew
+    simulate` writes forces.sto ([n, force_labels]: OpenSim's ForceReporter columns, e.g. each
+    muscle's tension, each spring's force; forces that apply none are left out, as OpenSim
+    leaves them out). controls: the actuators' controls (excitations) as `sinew forward` writes
+    <name>_controls.sto ([n, control_labels]).
     """
 
     def __init__(self, *, time: np.ndarray, q: np.ndarray, u: np.ndarray, z: np.ndarray,
                  coordinates: List[str], state_variables: List[str], labels: List[str],
                  states: np.ndarray, final_state: Any, statistics: Dict[str, Union[int, float]],
                  contact_labels: Optional[List[str]] = None,
-                 contacts: Optional[np.ndarray] = None) -> None:
+                 contacts: Optional[np.ndarray] = None,
+                 force_labels: Optional[List[str]] = None,
+                 forces: Optional[np.ndarray] = None,
+                 control_labels: Optional[List[str]] = None,
+                 controls: Optional[np.ndarray] = None) -> None:
         self.time = time
         self.q = q
         self.u = u
@@ -43,6 +51,12 @@ class Result:
         self.contact_labels = list(contact_labels or [])
         self.contacts = (np.asarray(contacts) if contacts is not None
                          else np.zeros((len(time), len(self.contact_labels))))
+        self.force_labels = list(force_labels or [])
+        self.forces = (np.asarray(forces) if forces is not None
+                       else np.zeros((len(time), len(self.force_labels))))
+        self.control_labels = list(control_labels or [])
+        self.controls = (np.asarray(controls) if controls is not None
+                         else np.zeros((len(time), len(self.control_labels))))
 
     def __getstate__(self) -> Dict[str, Any]:
         # A sinew.State holds its model and does not pickle: keep the arrays only.
@@ -69,6 +83,17 @@ class Result:
             raise ValueError("this run has no contacts table (no contact force or collision)")
         from ._sinew import write_table
         write_table(os.fspath(path), "Contacts", self.contact_labels, self.time, self.contacts)
+
+    def forces_to_sto(self, path: "os.PathLike[str] | str") -> None:
+        """Writes the forces table as `sinew simulate` writes forces.sto (byte for byte)."""
+        from ._sinew import write_table
+        write_table(os.fspath(path), "ForceReporter", self.force_labels, self.time, self.forces)
+
+    def controls_to_sto(self, path: "os.PathLike[str] | str") -> None:
+        """Writes the controls table as `sinew forward` writes <name>_controls.sto (byte for
+        byte)."""
+        from ._sinew import write_table
+        write_table(os.fspath(path), "controls", self.control_labels, self.time, self.controls)
 
     def to_pandas(self) -> Any:
         """The states table as a pandas DataFrame indexed by time (needs pandas)."""

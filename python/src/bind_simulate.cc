@@ -12,6 +12,7 @@
 #include <sinew/common/text.h>
 #include <sinew/contact/contact_table.h>
 #include <sinew/contact/nsc_contact_table.h>
+#include <sinew/engine/force_reporter.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/nsc_integrator.h>
 #include <sinew/engine/simulation.h>
@@ -87,8 +88,12 @@ py::object RunSimulation(const RunSetup& setup, double duration, const std::stri
                           nsc_table->labels().end());
   }
 
+  // forces.sto's and controls.sto's columns (OpenSim's ForceReporter and controls).
+  const engine::ForceReporter force_reporter(system);
+  const std::vector<std::string> control_labels = opensim::ControlsLabels(system);
+
   const size_t nc = system.num_coordinates(), nz = system.num_state_variables();
-  std::vector<double> time, q, u, z, table, row, contacts, nsc_row;
+  std::vector<double> time, q, u, z, table, row, contacts, nsc_row, forces, controls;
   auto record = [&](const engine::State& s) {
     time.push_back(s.t);
     q.insert(q.end(), s.q.data(), s.q.data() + nc);
@@ -96,6 +101,10 @@ py::object RunSimulation(const RunSetup& setup, double duration, const std::stri
     z.insert(z.end(), s.z.data(), s.z.data() + nz);
     opensim::StatesRow(system, s, row);
     table.insert(table.end(), row.begin(), row.end());
+    force_reporter.CalcRow(s, row);
+    forces.insert(forces.end(), row.begin(), row.end());
+    opensim::ControlsRow(s, row);
+    controls.insert(controls.end(), row.begin(), row.end());
     if (!contact_labels.empty()) {
       contact::ContactTableRow(system, s, row);
       contacts.insert(contacts.end(), row.begin(), row.end());
@@ -136,7 +145,11 @@ py::object RunSimulation(const RunSetup& setup, double duration, const std::stri
                      py::arg("states") = ToMatrix(table, n, labels.size()),
                      py::arg("final_state") = StateHandle{setup.model, state},
                      py::arg("statistics") = statistics, py::arg("contact_labels") = contact_labels,
-                     py::arg("contacts") = ToMatrix(contacts, n, contact_labels.size()));
+                     py::arg("contacts") = ToMatrix(contacts, n, contact_labels.size()),
+                     py::arg("force_labels") = force_reporter.labels(),
+                     py::arg("forces") = ToMatrix(forces, n, force_reporter.labels().size()),
+                     py::arg("control_labels") = control_labels,
+                     py::arg("controls") = ToMatrix(controls, n, control_labels.size()));
 }
 
 py::object Simulate(const ModelPtr& model, double duration, double accuracy,

@@ -2,6 +2,7 @@
 bit for bit, OpenSim's own stored results within its test's tolerance, and the setup's errors."""
 import os
 import subprocess
+from xml.etree import ElementTree
 
 import numpy as np
 import pytest
@@ -34,6 +35,26 @@ def test_arm26_reproduces_opensim_and_the_cli(tmp_path):
     assert labels == result.labels
     np.testing.assert_array_equal(time, result.time)
     np.testing.assert_array_equal(values, result.states)
+    for table, labels_of, values_of in (("forces", result.force_labels, result.forces),
+                                        ("controls", result.control_labels, result.controls)):
+        labels, time, values = read_sto(tmp_path / f"arm26_{table}.sto")
+        assert labels == labels_of, table
+        np.testing.assert_array_equal(time, result.time)
+        np.testing.assert_array_equal(values, values_of, err_msg=table)
+    assert len(result.force_labels) == 6 and len(result.control_labels) == 6
+
+    # The controls are the setup's ControlSet: its nodes interpolated linearly (use_steps false).
+    control_set = ElementTree.parse(FORWARD / "arm26_StaticOptimization_controls.xml").getroot()
+    for control in control_set.iter("ControlLinear"):
+        nodes = [(float(node.find("t").text), float(node.find("value").text))
+                 for node in control.iter("ControlLinearNode")]
+        t, value = np.array(nodes).T
+        inside = (result.time >= t[0]) & (result.time <= t[-1])
+        assert inside.sum() >= 100
+        column = result.control_labels.index(control.get("name").split(".")[0])
+        np.testing.assert_allclose(result.controls[inside, column],
+                                   np.interp(result.time[inside], t, value), rtol=0, atol=1e-14,
+                                   err_msg=control.get("name"))
 
     # At each of our rows, against the reference interpolated linearly between its own rows
     # (OpenSim wrote a row per integrator step).
@@ -66,6 +87,15 @@ def test_subject01_with_force_set_external_loads_and_controls_equals_the_cli(tmp
     np.testing.assert_array_equal(time, result.time)
     np.testing.assert_array_equal(values, result.states)
     assert result.time[0] > 0.0  # the run starts at the setup's initial time
+    # The CMC actuators' and muscles' forces and the ControlSet's controls, as the CLI writes them.
+    for table, labels_of, values_of in (("forces", result.force_labels, result.forces),
+                                        ("controls", result.control_labels, result.controls)):
+        labels, time, values = read_sto(tmp_path / f"subject01_{table}.sto")
+        assert labels == labels_of, table
+        np.testing.assert_array_equal(values, values_of, err_msg=table)
+        with_forces = tmp_path / f"python_{table}.sto"
+        getattr(result, f"{table}_to_sto")(with_forces)
+        assert with_forces.read_bytes() == (tmp_path / f"subject01_{table}.sto").read_bytes()
 
 
 def test_a_setup_without_a_model_needs_one():
