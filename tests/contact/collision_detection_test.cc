@@ -111,9 +111,11 @@ TEST(CollisionDetectionTest, CylinderSinksIntoTheGroundPlaneByItsLowestPoint) {
   const std::vector<Transform> X_GB = {Transform(), Transform::Translation(Vec3(0, 0.197, 0)),
                                        Transform::Translation(Vec3(3, 0.2 + 0.05 - 0.001, 0))};
   std::vector<CollisionContact> c = Contacts(detector, X_GB);
-  // The upright cylinder touches at its bottom rim, the lying one at both ends' rims.
-  ASSERT_EQ(c.size(), 3u);
+  // The upright cylinder touches at four points of its bottom rim a quarter turn apart, the
+  // lying one at both ends' rims.
+  ASSERT_EQ(c.size(), 6u);
   int lying = 0;
+  Vec3 upright_centre = Vec3::Zero();
   for (const CollisionContact& k : c) {
     EXPECT_EQ(k.body1, 0);
     EXPECT_EQ(k.n_G, Vec3::UnitY());
@@ -122,9 +124,14 @@ TEST(CollisionDetectionTest, CylinderSinksIntoTheGroundPlaneByItsLowestPoint) {
     if (k.body2 == 2) {
       ++lying;
       EXPECT_NEAR(std::abs(k.p_G.x() - 3), 0.5, 1e-12);
+    } else {
+      EXPECT_NEAR(std::hypot(k.p_G.x(), k.p_G.z()), 0.05, 1e-12);
+      upright_centre += k.p_G / 4;
     }
   }
   EXPECT_EQ(lying, 2);
+  EXPECT_NEAR(upright_centre.x(), 0.0, 1e-12);  // the four hold the cap about its centre
+  EXPECT_NEAR(upright_centre.z(), 0.0, 1e-12);
 }
 
 TEST(CollisionDetectionTest, SphereRestsOnAnEnvironmentBoxAndItsFloorByTheirClosedForms) {

@@ -121,10 +121,24 @@ TEST(CollisionShapesTest, DepthsOnAPlaneAreTheClosedForms) {
     EXPECT_NEAR(k.depth, kDepth, 1e-15);
     EXPECT_NEAR(std::abs(k.p_G.z()), 2 * kR, 1e-15);  // one at each end
   }
+  // Standing, the cap touches all round its rim: four points a quarter turn apart, so that
+  // their centre is the cap's (one point alone would tip it over).
   const Mat3 upright = Rotation(std::numbers::pi / 2, Vec3::UnitX());  // z onto -y
   c = ContactsAt(cylinder.model, Transform(upright, Vec3(0, 2 * kR - kDepth, 0)));
-  ASSERT_FALSE(c.empty());
-  for (const CollisionContact& k : c) EXPECT_NEAR(k.depth, kDepth, 1e-15);
+  ASSERT_EQ(c.size(), 4u);
+  Vec3 centre = Vec3::Zero();
+  for (const CollisionContact& k : c) {
+    EXPECT_NEAR(k.depth, kDepth, 1e-15);
+    EXPECT_NEAR(std::hypot(k.p_G.x(), k.p_G.z()), kR, 1e-15);
+    centre += k.p_G / 4;
+  }
+  EXPECT_NEAR(centre.x(), 0.0, 1e-15);
+  EXPECT_NEAR(centre.z(), 0.0, 1e-15);
+  for (size_t i = 1; i < c.size(); ++i) {  // a quarter turn apart: at sqrt(2) r or 2 r
+    const double apart = (c[i].p_G - c[0].p_G).norm();
+    EXPECT_TRUE(std::abs(apart - std::sqrt(2.0) * kR) < 1e-15 || std::abs(apart - 2 * kR) < 1e-15)
+        << apart;
+  }
   // Ellipsoid (0.1, 0.2, 0.3): on each semi-axis, and turned 30 degrees about z, where its
   // lowest point is sqrt(a^2 sin^2 + b^2 cos^2) below its centre.
   const Vec3 radii(0.1, 0.2, 0.3);
@@ -178,12 +192,32 @@ TEST(CollisionShapesTest, ShapesOnABoxFaceTouchAsOnAPlane) {
                          [&](const CollisionContact& k) { c.push_back(k); });
   expect_rims(c, -1e-3, 0.3);
   // Turned about y so that one end lies past the face's edge x = 2 (the other over the face):
-  // that end's rim only.
+  // the rim over the face, and the line it lies on where it leaves the face, at the edge (on
+  // the rim alone it would tip over the edge). Tilted down past the edge by 0.01 rad about z,
+  // the part over the face is deepest at the edge: there, by the closed form, and the rim.
   const Mat3 along_x = Rotation(std::numbers::pi / 2, Vec3::UnitY());  // its axis z onto x
   c = ContactsAt(cylinder.model, Transform(along_x, Vec3(2.0, kR - kDepth, 0)));
-  ASSERT_EQ(c.size(), 1u);
-  EXPECT_NEAR(c[0].depth, kDepth, 1e-15);
-  EXPECT_NEAR(c[0].p_G.x(), 2.0 - 2 * kR, 1e-15);
+  ASSERT_EQ(c.size(), 2u);
+  for (const CollisionContact& k : c) {
+    EXPECT_NEAR(k.depth, kDepth, 1e-15);
+    EXPECT_NEAR(k.p_G.y(), -kDepth / 2, 1e-15);
+    EXPECT_EQ(std::abs(k.n_G.y()), 1.0);
+  }
+  EXPECT_NEAR(std::min(c[0].p_G.x(), c[1].p_G.x()), 2.0 - 2 * kR, 1e-15);
+  EXPECT_NEAR(std::max(c[0].p_G.x(), c[1].p_G.x()), 2.0, 1e-15);
+  const double tilt = 0.01;
+  const Transform tilted(Rotation(-tilt, Vec3::UnitZ()) * along_x, Vec3(2.0, kR - kDepth, 0));
+  c = ContactsAt(cylinder.model, tilted);
+  ASSERT_EQ(c.size(), 2u);
+  // The lowest line of the tilted cylinder: y = (centre y) - r / cos(tilt) - (x - 2) tan(tilt).
+  const auto line_depth = [&](double x) {
+    return -(kR - kDepth - kR / std::cos(tilt) - (x - 2.0) * std::tan(tilt));
+  };
+  for (const CollisionContact& k : c) {
+    EXPECT_NEAR(k.depth, line_depth(k.p_G.x()), 1e-12) << k.p_G.x();  // the normal is vertical
+  }
+  EXPECT_NEAR(std::max(c[0].p_G.x(), c[1].p_G.x()), 2.0, 1e-15);
+  EXPECT_GT(std::max(c[0].depth, c[1].depth), kDepth);  // deeper at the edge than at the rim
   // On a flat ground mesh across the triangles' common diagonal: both rims, as on the plane.
   Scene on_mesh = Parse(OneShapeModel(1, Vec3::Ones(), Vec3::Zero(), Cylinder(kR)));
   PutOnGround(on_mesh, true);
@@ -263,6 +297,33 @@ TEST(CollisionShapesTest, CylinderRestsOnItsRadiusAndRollsDownAnInclineAtTwoThir
               << body.v_GB.x() + body.w_GB.z() * kR << " m/s"
               << " (on the ground " << ground << ")"
               << "\n";
+  }
+}
+
+TEST(CollisionShapesTest, CylinderDroppedTiltedOntoItsCapStandsUp) {
+  // The cylinder above (r = 0.1 m, 4 r long) dropped 1 cm onto its cap, its axis 0.05 rad off
+  // the vertical (its centre of mass well over the cap: tan(0.05) < r / 2 r), inelastic: it
+  // lands on the cap's rim, turns back onto the cap and stands, its centre at 2 r, the axis
+  // vertical. On the cap's one deepest rim point it toppled. On the floor, the box, the mesh.
+  constexpr double kM = 1.0, kR = 0.1, kL = 4 * kR;
+  const Vec3 inertia(kM * (3 * kR * kR + kL * kL) / 12, kM * (3 * kR * kR + kL * kL) / 12,
+                     kM * kR * kR / 2);
+  for (const std::string ground : {"floor", "box", "mesh"}) {
+    SCOPED_TRACE("on the ground " + ground);
+    Scene scene = Parse(OneShapeModel(kM, inertia, Vec3(0, -kG, 0), Cylinder(kR)));
+    if (ground != "floor") PutOnGround(scene, ground == "mesh");
+    engine::SetCoordinateValue(*scene.system, scene.state, "rx", std::numbers::pi / 2 + 0.05);
+    engine::SetCoordinateValue(*scene.system, scene.state, "ty", 2 * kR + 0.01);
+    RunNsc(scene, 0.5, 1.0);
+    const engine::BodyState& body = scene.state.bodies[1];
+    const Vec3 axis = body.quat_GB * Vec3::UnitZ();  // the geometry's axis
+    const double off_vertical = std::acos(std::min(1.0, std::abs(axis.y())));
+    EXPECT_NEAR(off_vertical, 0.0, 1e-6);
+    EXPECT_NEAR(body.p_GB.y(), 2 * kR, 1e-9);
+    EXPECT_NEAR(body.v_GB.norm() + body.w_GB.norm(), 0.0, 1e-9);
+    std::cout << "cylinder on its cap (" << ground << "): axis " << off_vertical
+              << " rad off the vertical, centre at " << body.p_GB.y() << " m (2 r = " << 2 * kR
+              << ")\n";
   }
 }
 

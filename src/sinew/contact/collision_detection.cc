@@ -64,20 +64,41 @@ struct Shape {
 };
 
 // Calls visit(p_S) for each point of the convex `shape` (in its frame S, not inflated) that can
-// lie deepest in a half-space whose inward direction (into its solid) is `d_S`.
+// lie deepest in a half-space whose inward direction (into its solid) is the unit `d_S`; `visit`
+// returns the point's depth in the half-space, and points that would lie no deeper than
+// `shallowest` may be left out.
 template <class Visit>
-void ForEachCandidate(const Shape& shape, const Vec3& d_S, Visit&& visit) {
+void ForEachCandidate(const Shape& shape, const Vec3& d_S, double shallowest, Visit&& visit) {
   switch (shape.kind) {
     case Kind::kSphere:  // its point farthest along d_S
       visit(Vec3(shape.radius * d_S.normalized()));
       break;
-    case Kind::kCylinder:  // the deepest point of each cap's rim: the core's support along d_S
-                           // with its axial part set to either end
-      for (const double end : {1.0, -1.0}) {
-        visit(FromBt(
-            shape.bt->localGetSupportingVertexWithoutMargin(btVector3(d_S.x(), end, d_S.z()))));
+    case Kind::kCylinder: {
+      // The deepest point of each cap's rim first (the core's support along d_S with its axial
+      // part set to either end: both on one generator), then, per cap, the rim's points a
+      // quarter, a half and three quarters of a turn from it. A cap flat on the surface touches
+      // all round its rim, and on its one deepest point alone it would tip; the four, evenly
+      // spread, hold it as a box's four corners hold the box (each takes its own depth, so
+      // tilting it shifts the load continuously onto the deepest). Those lie shallower than the
+      // deepest by r s, 2 r s and r s, s the sine of the angle between the axis and d_S: a
+      // lying cylinder's are left out.
+      std::array<Vec3, 2> deepest;
+      std::array<double, 2> depth;
+      for (int k = 0; k < 2; ++k) {
+        deepest[k] = FromBt(shape.bt->localGetSupportingVertexWithoutMargin(
+            btVector3(d_S.x(), k == 0 ? 1.0 : -1.0, d_S.z())));
+        depth[k] = visit(deepest[k]);
+      }
+      const double rise = shape.radius * std::hypot(d_S.x(), d_S.z());
+      for (int k = 0; k < 2; ++k) {
+        if (!(depth[k] - rise > shallowest)) continue;
+        const Vec3& p = deepest[k];
+        visit(Vec3(-p.z(), p.y(), p.x()));
+        visit(Vec3(-p.x(), p.y(), -p.z()));
+        visit(Vec3(p.z(), p.y(), -p.x()));
       }
       break;
+    }
     case Kind::kBox: {  // its corners
       const Vec3 h =
           FromBt(static_cast<const btBoxShape&>(*shape.bt).getHalfExtentsWithoutMargin());
@@ -519,12 +540,13 @@ void CollisionDetector::Impl::CollideWithHalfSpace(const Pair& p,
   c.n_G = -inward_G;
   c.radius = p.radius;
   c.material = p.material;
-  ForEachCandidate(s, X_GS.R.transpose() * inward_G, [&](const Vec3& p_S) {
+  ForEachCandidate(s, X_GS.R.transpose() * inward_G, -envelope, [&](const Vec3& p_S) {
     const Vec3 p_G = X_GS * p_S;
     c.depth = (p_G - X_GH.p).dot(inward_G);
-    if (!(c.depth > -envelope)) return;
+    if (!(c.depth > -envelope)) return c.depth;
     c.p_G = p_G + 0.5 * c.depth * c.n_G;
     visit(c);
+    return c.depth;
   });
 }
 
@@ -595,11 +617,12 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
 namespace {
 // The points of shape s (pose X_GS) that a half-space on a face of `box` (pose X_GX, half extents
 // h) would take (ForEachCandidate), through the face's plane (or within the envelope of it) and
-// over the face: each at its depth through the plane along the face's normal (exact), with the
-// shape's radius (the face is flat: as on a half-space). The face: `axis` of the box's frame,
+// over the face, and for a cylinder across the face's edge its deepest line at the edge: each at
+// its depth through the plane along the face's normal (exact), with the shape's radius (the
+// face is flat: as on a half-space). The face: `axis` of the box's frame,
 // `side` +1 or -1. `base` gives the bodies and material; `sign` +1 when body1 is the box.
 struct BoxFacePoints {
-  std::array<CollisionContact, 8> found;
+  std::array<CollisionContact, 10> found;  // a box's 8 corners; a cylinder's 8 rim points, 2 ends
   int count = 0;
   double deepest = -std::numeric_limits<double>::infinity();
   bool nearer_a_side = false;  // a point through the plane lies nearer a side face (left out)
@@ -609,20 +632,8 @@ BoxFacePoints PointsThroughBoxFace(const Vec3& h, const Transform& X_GX, int axi
                                    const CollisionContact& base, double sign, double envelope) {
   BoxFacePoints out;
   const Vec3 face_G = side * X_GX.R.col(axis);  // the face's outward normal
-  ForEachCandidate(s, X_GS.R.transpose() * -face_G, [&](const Vec3& p_S) {
-    const Vec3 p_G = X_GS * p_S;
-    const Vec3 p_X = X_GX.R.transpose() * (p_G - X_GX.p);
-    const double depth = h[axis] - side * p_X[axis];
-    if (!(depth > -envelope)) return;
-    for (int j = 0; j < 3; ++j) {
-      if (j == axis) continue;
-      const double to_side = h[j] - std::abs(p_X[j]);  // from the box's side face j, inside
-      if (to_side < 0.0) return;
-      if (depth > 0.0 && to_side < depth) {
-        out.nearer_a_side = true;
-        return;
-      }
-    }
+  const auto depth_of = [&](const Vec3& p_X) { return h[axis] - side * p_X[axis]; };
+  const auto add = [&](const Vec3& p_G, double depth) {
     out.deepest = std::max(out.deepest, depth);
     if (out.count == static_cast<int>(out.found.size())) return;
     CollisionContact& c = out.found[out.count++];
@@ -631,7 +642,52 @@ BoxFacePoints PointsThroughBoxFace(const Vec3& h, const Transform& X_GX, int axi
     c.depth = depth;
     c.p_G = p_G + 0.5 * depth * face_G;
     c.radius = s.radius > 0.0 ? s.radius : kFlatShapeRadius;
+  };
+  std::array<Vec3, 2> generator_X;  // a cylinder's first two candidates: its deepest generator
+  int candidate = 0;
+  ForEachCandidate(s, X_GS.R.transpose() * -face_G, -envelope, [&](const Vec3& p_S) {
+    const Vec3 p_G = X_GS * p_S;
+    const Vec3 p_X = X_GX.R.transpose() * (p_G - X_GX.p);
+    if (candidate < 2) generator_X[candidate] = p_X;
+    ++candidate;
+    const double depth = depth_of(p_X);
+    if (!(depth > -envelope)) return depth;
+    for (int j = 0; j < 3; ++j) {
+      if (j == axis) continue;
+      const double to_side = h[j] - std::abs(p_X[j]);  // from the box's side face j, inside
+      if (to_side < 0.0) return depth;
+      if (depth > 0.0 && to_side < depth) {
+        out.nearer_a_side = true;
+        return depth;
+      }
+    }
+    add(p_G, depth);
+    return depth;
   });
+  if (s.kind != Kind::kCylinder) return out;
+  // A cylinder lying across an edge of the face: its deepest generator (a straight line on its
+  // surface, the deepest point of every cross-section) also touches where it leaves the face,
+  // at its depth there (linear along the line: exact). Clipped to the face's rectangle.
+  const Vec3 d_X = generator_X[1] - generator_X[0];
+  double t0 = 0.0, t1 = 1.0;
+  for (int j = 0; j < 3; ++j) {
+    if (j == axis) continue;
+    if (d_X[j] == 0.0) {
+      if (std::abs(generator_X[0][j]) > h[j]) return out;
+      continue;
+    }
+    const double ta = (-h[j] - generator_X[0][j]) / d_X[j];
+    const double tb = (h[j] - generator_X[0][j]) / d_X[j];
+    t0 = std::max(t0, std::min(ta, tb));
+    t1 = std::min(t1, std::max(ta, tb));
+  }
+  if (!(t0 <= t1)) return out;
+  for (const double t : {t0, t1}) {
+    if (t == 0.0 || t == 1.0 || (t == t1 && t1 == t0)) continue;  // a rim: taken above
+    const Vec3 p_X = generator_X[0] + t * d_X;
+    const double depth = depth_of(p_X);
+    if (depth > -envelope) add(X_GX * p_X, depth);
+  }
   return out;
 }
 
@@ -759,19 +815,21 @@ bool AddPlanePointsOverTriangle(const Shape& s, const Transform& X_GS, const Tri
   if (centre < 0.0 || (centre == 0.0 && n.dot(t.contact.n_G) < 0.0)) n = -n;
   double deepest = -std::numeric_limits<double>::infinity();
   int point = 0;
-  ForEachCandidate(s, X_GS.R.transpose() * -n, [&](const Vec3& p_S) {
+  ForEachCandidate(s, X_GS.R.transpose() * -n, -envelope, [&](const Vec3& p_S) {
     const int index = point++;
     const Vec3 p_G = X_GS * p_S;
     const double depth = (v[0] - p_G).dot(n);
-    if (!(depth > -envelope)) return;
+    if (!(depth > -envelope)) return depth;
     const Vec3 on_plane = p_G + depth * n;
-    if ((ClosestPointOnTriangle(on_plane, v[0], v[1], v[2]) - on_plane).norm() > 1e-12) return;
+    if ((ClosestPointOnTriangle(on_plane, v[0], v[1], v[2]) - on_plane).norm() > 1e-12)
+      return depth;
     deepest = std::max(deepest, depth);
     PlanePointContact c{index, t.contact};
     c.contact.n_G = n;
     c.contact.depth = depth;
     c.contact.p_G = p_G + 0.5 * depth * n;
     out.push_back(c);
+    return depth;
   });
   return deepest >= t.contact.depth - kEpaAccuracy;
 }
