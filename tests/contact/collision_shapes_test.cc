@@ -260,6 +260,20 @@ void RunNsc(Scene& scene, double mu, double t_end) {
   testing::RunCollisionNsc(*scene.system, scene.state, scene.model, mu, t_end);
 }
 
+// The solid cylinder of the tests below (m = 1 kg, r = 0.1 m, length 4 r: I about its axis
+// m r^2 / 2) under `gravity` above the ground `ground`: "floor" (the half-space), "box" or "mesh"
+// (PutOnGround).
+constexpr double kCylinderM = 1.0, kCylinderR = 0.1;
+const std::string kGrounds[] = {"floor", "box", "mesh"};
+Scene SolidCylinderOn(const std::string& ground, const Vec3& gravity) {
+  constexpr double m = kCylinderM, r = kCylinderR, length = 4 * r;
+  const Vec3 inertia(m * (3 * r * r + length * length) / 12, m * (3 * r * r + length * length) / 12,
+                     m * r * r / 2);
+  Scene scene = Parse(OneShapeModel(m, inertia, gravity, Cylinder(r)));
+  if (ground != "floor") PutOnGround(scene, ground == "mesh");
+  return scene;
+}
+
 TEST(CollisionShapesTest, CylinderRestsOnItsRadiusAndRollsDownAnInclineAtTwoThirdsGSin) {
   // A solid cylinder (m = 1 kg, r = 0.1 m, length 4 r: I about its axis m r^2 / 2) lying on
   // the floor, axis along z. On the level it rests with its centre at r (the envelope is exact:
@@ -268,21 +282,16 @@ TEST(CollisionShapesTest, CylinderRestsOnItsRadiusAndRollsDownAnInclineAtTwoThir
   // a = g sin(a) / (1 + I / (m r^2)) = 2/3 g sin(a), from rest: exactly per step (each step's
   // impulses are the continuous law's over the step), to the solver's tolerance.
   // The same on a ground box's top face and on a flat ground mesh (its two rims, as on the plane).
-  constexpr double kM = 1.0, kR = 0.1, kL = 4 * kR;
-  const Vec3 inertia(kM * (3 * kR * kR + kL * kL) / 12, kM * (3 * kR * kR + kL * kL) / 12,
-                     kM * kR * kR / 2);
-  for (const std::string ground : {"floor", "box", "mesh"}) {
+  constexpr double kR = kCylinderR;
+  for (const std::string& ground : kGrounds) {
     SCOPED_TRACE("on the ground " + ground);
-    Scene level = Parse(OneShapeModel(kM, inertia, Vec3(0, -kG, 0), Cylinder(kR)));
-    if (ground != "floor") PutOnGround(level, ground == "mesh");
+    Scene level = SolidCylinderOn(ground, Vec3(0, -kG, 0));
     engine::SetCoordinateValue(*level.system, level.state, "ty", kR + 0.01);
     RunNsc(level, 0.5, 0.5);
     EXPECT_NEAR(level.state.bodies[1].p_GB.y(), kR, 1e-9);
     EXPECT_NEAR(level.state.bodies[1].v_GB.norm(), 0.0, 1e-9);
     const double a = 20.0 * std::numbers::pi / 180.0;
-    Scene incline =
-        Parse(OneShapeModel(kM, inertia, kG * Vec3(std::sin(a), -std::cos(a), 0), Cylinder(kR)));
-    if (ground != "floor") PutOnGround(incline, ground == "mesh");
+    Scene incline = SolidCylinderOn(ground, kG * Vec3(std::sin(a), -std::cos(a), 0));
     engine::SetCoordinateValue(*incline.system, incline.state, "ty", kR);
     constexpr double kT = 0.5;
     RunNsc(incline, 0.5, kT);
@@ -305,13 +314,10 @@ TEST(CollisionShapesTest, CylinderDroppedTiltedOntoItsCapStandsUp) {
   // the vertical (its centre of mass well over the cap: tan(0.05) < r / 2 r), inelastic: it
   // lands on the cap's rim, turns back onto the cap and stands, its centre at 2 r, the axis
   // vertical. On the cap's one deepest rim point it toppled. On the floor, the box, the mesh.
-  constexpr double kM = 1.0, kR = 0.1, kL = 4 * kR;
-  const Vec3 inertia(kM * (3 * kR * kR + kL * kL) / 12, kM * (3 * kR * kR + kL * kL) / 12,
-                     kM * kR * kR / 2);
-  for (const std::string ground : {"floor", "box", "mesh"}) {
+  constexpr double kR = kCylinderR;
+  for (const std::string& ground : kGrounds) {
     SCOPED_TRACE("on the ground " + ground);
-    Scene scene = Parse(OneShapeModel(kM, inertia, Vec3(0, -kG, 0), Cylinder(kR)));
-    if (ground != "floor") PutOnGround(scene, ground == "mesh");
+    Scene scene = SolidCylinderOn(ground, Vec3(0, -kG, 0));
     engine::SetCoordinateValue(*scene.system, scene.state, "rx", std::numbers::pi / 2 + 0.05);
     engine::SetCoordinateValue(*scene.system, scene.state, "ty", 2 * kR + 0.01);
     RunNsc(scene, 0.5, 1.0);
