@@ -20,8 +20,8 @@
 namespace sinew::contact {
 namespace {
 
-const std::string kOpenSimTests = std::string(SINEW_TEST_DATA_DIR) +
-                                  "/opensim-org/opensim-core/OpenSim/Simulation/Test/";
+const std::string kOpenSimTests =
+    std::string(SINEW_TEST_DATA_DIR) + "/opensim-org/opensim-core/OpenSim/Simulation/Test/";
 
 struct BallCase {
   const char* file;
@@ -90,9 +90,9 @@ TEST_P(BouncingBallTest, BouncesNeverGainsEnergyAndSettlesOnItsWeight) {
     if (groups[g].body != 0) {
       EXPECT_LT(loads[g].tail<3>().norm(), 3e-5) << ball.file;
     }
-    std::cout << ball.file << " " << groups[g].label << ": force - weight "
-              << force.y() - weight << " N, sideways " << std::hypot(force.x(), force.z())
-              << " N, torque " << loads[g].tail<3>().norm() << " N m\n";
+    std::cout << ball.file << " " << groups[g].label << ": force - weight " << force.y() - weight
+              << " N, sideways " << std::hypot(force.x(), force.z()) << " N, torque "
+              << loads[g].tail<3>().norm() << " N m\n";
   }
   EXPECT_EQ(contact.RecordLabels(*system)[0], "contact." + groups[0].label + ".force.X");
   std::cout << ball.file << ": largest energy gain in 1 ms " << worst_gain << " J, rebound "
@@ -110,7 +110,8 @@ TEST(HuntCrossleyTest, BallWithoutDissipationOrFrictionKeepsItsEnergy) {
   // 0.5 m: T + m g h + 2/5 f_H d is conserved, so it bounces back to its height every time.
   auto system = testing::ParseContactModel(
       testing::FreeBodyContactModel(1.0, Vec3(0.004, 0.004, 0.004), Vec3(0, -9.80665, 0), 0.1,
-                                    {Vec3::Zero()}, testing::HuntCrossleyText(1, 1e7, 0.0, 0.0, 0.1)),
+                                    {Vec3::Zero()},
+                                    testing::HuntCrossleyText(1, 1e7, 0.0, 0.0, 0.1)),
       "elastic_ball.osim");
   engine::State state = engine::MakeDefaultState(*system);
   engine::SetCoordinateValue(*system, state, "ty", 0.6);
@@ -132,9 +133,9 @@ TEST(HuntCrossleyTest, BallWithoutDissipationOrFrictionKeepsItsEnergy) {
     lowest = std::min(lowest, y);
     if (contacts > 0) highest_after = std::max(highest_after, y);
   }
-  EXPECT_GE(contacts, 2);                  // 2 s hold two bounces of 0.64 s (0.5 m falls)
-  EXPECT_LT(worst, 1e-7 * energy0);        // rk45 at 1e-10
-  EXPECT_NEAR(highest_after, 0.6, 1e-6);   // back to its height
+  EXPECT_GE(contacts, 2);                 // 2 s hold two bounces of 0.64 s (0.5 m falls)
+  EXPECT_LT(worst, 1e-7 * energy0);       // rk45 at 1e-10
+  EXPECT_NEAR(highest_after, 0.6, 1e-6);  // back to its height
   // Deepest dent d: the Hertz energy 2/5 f_H d = 8/15 k sqrt(R k) d^(5/2) (k = (1e7)^(2/3) / 2
   // for two equal materials) takes the fall's m g (0.5 + d); solved by Newton's method. The
   // lowest sample (every 0.1 ms, where the ball turns at ~1300 m/s^2) is within 1e-5 m of it.

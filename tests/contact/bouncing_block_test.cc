@@ -22,8 +22,9 @@ namespace {
 
 TEST(BouncingBlockTest, LandsOnItsHeelWithoutGainingEnergyOrSinkingThrough) {
   opensim::OpenSimParser parser;
-  auto system = parser.Parse(std::string(SINEW_TEST_DATA_DIR) +
-                             "/opensim-org/opensim-models/Models/BouncingBlock/bouncing_block.osim");
+  auto system =
+      parser.Parse(std::string(SINEW_TEST_DATA_DIR) +
+                   "/opensim-org/opensim-models/Models/BouncingBlock/bouncing_block.osim");
   EXPECT_TRUE(parser.GetReport().not_simulated().empty());
   const ContactForce& contact = testing::FindContactForce(*system, "foot_contact_force");
   const int link2 = system->FindBody("link2");

@@ -43,16 +43,29 @@ TEST(CollisionDetectionTest, CylindersOverlapByTheirRadiiMinusTheirDistance) {
   std::vector<Transform> X_GB = {Transform(), Transform(),
                                  Transform::Translation(Vec3(0, 0.08, 0))};
   std::vector<CollisionContact> c = Contacts(detector, X_GB);
-  ASSERT_EQ(c.size(), 1u);
-  // Bullet's EPA converges to about 1e-6 (measured 3e-6 on the normal).
-  EXPECT_NEAR(c[0].depth, 2 * r - 0.08, 1e-6);
-  // The normal points from body1 to body2, the point is midway through the overlap.
-  const double sign = c[0].body2 == 2 ? 1.0 : -1.0;
-  EXPECT_NEAR((sign * c[0].n_G - Vec3::UnitY()).norm(), 0.0, 1e-5);
-  EXPECT_NEAR(c[0].p_G.y(), 0.04, 1e-6);
-  EXPECT_NEAR(c[0].radius, r / 2, 1e-15);
+  // They touch along a line: at its two ends (one point, Bullet's, would let them rock), each
+  // at the closed-form depth (exact: the radial distance from the other's surface).
+  ASSERT_EQ(c.size(), 2u);
+  for (const CollisionContact& k : c) {
+    EXPECT_NEAR(k.depth, 2 * r - 0.08, 1e-15);
+    // The normal points from body1 to body2, the point is midway through the overlap.
+    const double sign = k.body2 == 2 ? 1.0 : -1.0;
+    EXPECT_NEAR((sign * k.n_G - Vec3::UnitY()).norm(), 0.0, 1e-15);
+    EXPECT_NEAR(k.p_G.y(), 0.04, 1e-15);
+    EXPECT_NEAR(std::abs(k.p_G.x()), 0.5, 1e-15);
+    EXPECT_NEAR(k.radius, r / 2, 1e-15);
+  }
+  EXPECT_NEAR(c[0].p_G.x() + c[1].p_G.x(), 0.0, 1e-15);  // one at each end
+  // Body 2 moved 0.3 m along the axes: the line's ends are body 1's end x = 0.5 and body 2's
+  // end x = -0.2.
+  X_GB[2] = Transform::Translation(Vec3(0.3, 0.08, 0));
+  c = Contacts(detector, X_GB);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_NEAR(std::min(c[0].p_G.x(), c[1].p_G.x()), -0.2, 1e-15);
+  EXPECT_NEAR(std::max(c[0].p_G.x(), c[1].p_G.x()), 0.5, 1e-15);
+  for (const CollisionContact& k : c) EXPECT_NEAR(k.depth, 2 * r - 0.08, 1e-15);
   // Crossed at right angles (body 2 turned about y: its axis along z), axes 0.09 m apart along
-  // y: 0.01 m.
+  // y: one point (Bullet's EPA converges to about 1e-6), 0.01 m.
   X_GB[2] =
       Transform(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitY()).toRotationMatrix(), Vec3(0, 0.09, 0));
   c = Contacts(detector, X_GB);
@@ -75,14 +88,15 @@ TEST(CollisionDetectionTest, AVisitorMayQueryADetectorAgain) {
   const CollisionDetector outer(TwoCylinders(r), 0.0);  // with a floor at y = 0
   const CollisionDetector inner(TwoCylinders(r), 0.0);
   // Body 1 lies 0.01 m into the floor (both rims), body 2 0.08 m above it (they overlap by
-  // 0.02 m): the cylinders' pair is tested first, then each with the floor.
+  // 0.02 m along a line: its two ends): the cylinders' pair is tested first, then each with the
+  // floor.
   const std::vector<Transform> X_outer = {Transform(), Transform::Translation(Vec3(0, 0.04, 0)),
                                           Transform::Translation(Vec3(0, 0.12, 0))};
   // Far apart and above the floor: no contact.
   const std::vector<Transform> X_inner = {Transform(), Transform::Translation(Vec3(0, 1, 0)),
                                           Transform::Translation(Vec3(0, 3, 0))};
   const std::vector<CollisionContact> alone = Contacts(outer, X_outer);
-  ASSERT_EQ(alone.size(), 3u);
+  ASSERT_EQ(alone.size(), 4u);
   ASSERT_TRUE(Contacts(inner, X_inner).empty());
   std::vector<CollisionContact> nested;
   bool inner_empty = true;
@@ -199,12 +213,12 @@ TEST(CollisionDetectionTest, EnvelopeReportsTheExactGapOfEveryShape) {
   ASSERT_EQ(c.size(), 1u);
   EXPECT_NEAR(c[0].depth, -1e-3, 1e-15);
   EXPECT_NEAR(c[0].p_G.y(), 0.0005, 1e-15);
-  // Two parallel cylinders (r = 5 cm) 0.101 m apart: a gap of 1 mm, exact to EPA's accuracy.
+  // Two parallel cylinders (r = 5 cm) 0.101 m apart: a gap of 1 mm at both ends of their line.
   const CollisionDetector pair(TwoCylinders(0.05), std::nullopt, {}, kEnvelope);
   X_GB = {Transform(), Transform(), Transform::Translation(Vec3(0, 0.101, 0))};
   c = Contacts(pair, X_GB);
-  ASSERT_EQ(c.size(), 1u);
-  EXPECT_NEAR(c[0].depth, -1e-3, 1e-6);
+  ASSERT_EQ(c.size(), 2u);
+  for (const CollisionContact& k : c) EXPECT_NEAR(k.depth, -1e-3, 1e-15);
   EXPECT_THROW(CollisionDetector(TwoCylinders(0.05), std::nullopt, {}, -1e-3), Error);
 }
 

@@ -333,6 +333,40 @@ TEST(CollisionShapesTest, CylinderDroppedTiltedOntoItsCapStandsUp) {
   }
 }
 
+TEST(CollisionShapesTest, CylinderRestsLevelInTheGrooveOfTwoParallelCylinders) {
+  // The solid cylinder dropped 1 cm into the groove of two fixed parallel cylinders of its size
+  // (axes along z at x = +-0.15 m, y = 0.3 m), 5 cm off their middle along the axes: it rests on
+  // the two lines of contact, level, its axis at y = 0.3 + sqrt((2 r)^2 - 0.15^2). On one point
+  // of each line (Bullet's) it rocked.
+  constexpr double kR = kCylinderR, kSpread = 0.15, kHeight = 0.3;
+  Scene scene = SolidCylinderOn("floor", Vec3(0, -kG, 0));
+  for (const double x : {-kSpread, kSpread}) {
+    CollisionGeometry log;
+    log.name = x < 0 ? "left" : "right";
+    log.kind = CollisionShapeKind::kCylinder;
+    log.body = 0;
+    log.radius = kR;
+    log.half_length = 2 * kR;
+    log.X_BS = Transform::Translation(Vec3(x, kHeight, 0));
+    scene.model.geometry.push_back(log);
+  }
+  const double rest = kHeight + std::sqrt(4 * kR * kR - kSpread * kSpread);
+  engine::SetCoordinateValue(*scene.system, scene.state, "ty", rest + 0.01);
+  engine::SetCoordinateValue(*scene.system, scene.state, "tz", 0.05);
+  const size_t contacts =
+      testing::RunCollisionNsc(*scene.system, scene.state, scene.model, 0.5, 1.0);
+  const engine::BodyState& body = scene.state.bodies[1];
+  const Vec3 axis = body.quat_GB * Vec3::UnitZ();
+  EXPECT_EQ(contacts, 4u);                      // the ends of the two lines
+  EXPECT_NEAR(std::abs(axis.z()), 1.0, 1e-12);  // level and along the groove
+  EXPECT_NEAR(body.p_GB.x(), 0.0, 1e-9);
+  EXPECT_NEAR(body.p_GB.y(), rest, 1e-9);
+  EXPECT_NEAR(body.v_GB.norm() + body.w_GB.norm(), 0.0, 1e-9);
+  std::cout << "cylinder in a groove: axis " << std::acos(std::min(1.0, std::abs(axis.z())))
+            << " rad off the groove, centre " << body.p_GB.y() - rest << " m from the closed form, "
+            << contacts << " contacts\n";
+}
+
 TEST(CollisionShapesTest, EllipsoidRestsOnEachSemiAxisAndCubeMeshOnHalfItsEdge) {
   // Dropped 1 cm with a principal axis vertical (an equilibrium: the lowest point below the
   // centre), inelastic: each comes to rest with its centre at that semi-axis above the floor.

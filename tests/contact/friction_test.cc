@@ -71,9 +71,8 @@ TEST(HuntCrossleyFrictionTest, SlidingSphereRollsAtFiveSeventhsOfItsSpeed) {
   std::cout << "rolling: relative errors " << t1 / t1_closed - 1 << " (time), " << v / v_closed - 1
             << " (speed)\n";
   std::cout << "rolling: slip reaches v_t at " << t1 << " s (closed form " << t1_closed
-            << ", Coulomb " << t_coulomb << "), rolls at " << v << " m/s (closed form "
-            << v_closed << ", 5/7 v0 " << 5.0 / 7.0 * kV0 << "), slip at 0.2 s " << slip(state)
-            << " m/s\n";
+            << ", Coulomb " << t_coulomb << "), rolls at " << v << " m/s (closed form " << v_closed
+            << ", 5/7 v0 " << 5.0 / 7.0 * kV0 << "), slip at 0.2 s " << slip(state) << " m/s\n";
 }
 
 // A 1 kg block on three spheres (r = 1 cm, an equilateral triangle of 0.1 m radius, 6 cm below
@@ -83,9 +82,8 @@ TEST(HuntCrossleyFrictionTest, SlidingSphereRollsAtFiveSeventhsOfItsSpeed) {
 // 1 s, after it has settled.
 std::pair<double, double> DownhillSpeeds(double angle) {
   const double r = 0.01, a = 0.1;
-  const std::vector<Vec3> feet = {
-      Vec3(a, -0.05, 0), Vec3(-a / 2, -0.05, a * std::sqrt(3.0) / 2),
-      Vec3(-a / 2, -0.05, -a * std::sqrt(3.0) / 2)};
+  const std::vector<Vec3> feet = {Vec3(a, -0.05, 0), Vec3(-a / 2, -0.05, a * std::sqrt(3.0) / 2),
+                                  Vec3(-a / 2, -0.05, -a * std::sqrt(3.0) / 2)};
   auto system = testing::ParseContactModel(
       testing::FreeBodyContactModel(1.0, Vec3(0.01, 0.01, 0.01),
                                     kG * Vec3(std::sin(angle), -std::cos(angle), 0), r, feet,
@@ -110,7 +108,7 @@ TEST(HuntCrossleyFrictionTest, BlockCreepsBelowTheFrictionAngleAndSlidesAboveIt)
   const double below = 20.0 * std::numbers::pi / 180.0;
   const auto [creep_half, creep] = DownhillSpeeds(below);
   const double creep_closed = kVt * std::tan(below) / kMu;
-  EXPECT_NEAR(creep, creep_closed, 1e-7 * creep_closed);  // measured 6e-9
+  EXPECT_NEAR(creep, creep_closed, 1e-7 * creep_closed);       // measured 6e-9
   EXPECT_NEAR(creep_half, creep_closed, 1e-3 * creep_closed);  // steady from 0.5 s on
   // Above (35 degrees, tan = 0.700): it slides with a = g (sin a - u cos a).
   const double above = 35.0 * std::numbers::pi / 180.0;

@@ -28,7 +28,8 @@ std::string TwoBallsModel() {
   std::ostringstream m;
   m.precision(17);
   m << R"(<OpenSimDocument Version="40000"><Model name="two_balls">
-<gravity>0 )" << -kG << R"( 0</gravity><Ground name="ground"/><BodySet><objects>)";
+<gravity>0 )"
+    << -kG << R"( 0</gravity><Ground name="ground"/><BodySet><objects>)";
   for (const char* b : {"a", "b"}) {
     m << "<Body name=\"" << b << "\"><mass>1</mass><inertia>" << 0.4 * kR * kR << " "
       << 0.4 * kR * kR << " " << 0.4 * kR * kR << " 0 0 0</inertia></Body>";
@@ -124,10 +125,9 @@ TEST(NscMaterialsTest, EachBallBouncesToItsOwnRestitutionSquared) {
     const double tolerance = e * e * kH0 * 2 * kG * kStep / v + 2 * kStep * v;
     EXPECT_NEAR(apex[i], e * e * kH0, tolerance) << "ball " << kBalls[i].name;
     EXPECT_GT(lowest[i], -1e-12) << "ball " << kBalls[i].name << " enters the floor";
-    std::cout << "nsc materials: ball " << kBalls[i].name << " (e = " << e << ") apex "
-              << apex[i] << " m, closed form " << e * e * kH0 << " (error "
-              << apex[i] - e * e * kH0 << ", allowed " << tolerance << "); lowest " << lowest[i]
-              << " m\n";
+    std::cout << "nsc materials: ball " << kBalls[i].name << " (e = " << e << ") apex " << apex[i]
+              << " m, closed form " << e * e * kH0 << " (error " << apex[i] - e * e * kH0
+              << ", allowed " << tolerance << "); lowest " << lowest[i] << " m\n";
   }
 }
 

@@ -31,20 +31,22 @@ TEST(HuntCrossleySphereTest, BallRicochetsOffAFixedSphereWithTheCombinedHertzLaw
   // ground's sphere (r1 = 0.2 m at the origin, stiffness 1e7).
   std::ostringstream text;
   text << R"(<OpenSimDocument Version="40000"><Model name="spheres"><gravity>0 0 0</gravity>
-<Ground name="ground"/><BodySet><objects><Body name="body"><mass>)" << kM
-       << R"(</mass><inertia>0.01 0.01 0.01 0 0 0</inertia></Body></objects></BodySet>
+<Ground name="ground"/><BodySet><objects><Body name="body"><mass>)"
+       << kM << R"(</mass><inertia>0.01 0.01 0.01 0 0 0</inertia></Body></objects></BodySet>
 <JointSet><objects><FreeJoint name="free"><socket_parent_frame>/ground</socket_parent_frame>
 <socket_child_frame>/bodyset/body</socket_child_frame><coordinates><Coordinate name="rx"/>
 <Coordinate name="ry"/><Coordinate name="rz"/><Coordinate name="tx"/><Coordinate name="ty"/>
 <Coordinate name="tz"/></coordinates></FreeJoint></objects></JointSet>
 <ForceSet><objects><HuntCrossleyForce name="contact"><HuntCrossleyForce::ContactParametersSet>
-<objects>)" << Parameters("fixed", kE1)
-       << Parameters("ball", kE2) << R"(</objects></HuntCrossleyForce::ContactParametersSet>
+<objects>)"
+       << Parameters("fixed", kE1) << Parameters("ball", kE2)
+       << R"(</objects></HuntCrossleyForce::ContactParametersSet>
 </HuntCrossleyForce></objects></ForceSet>
 <ContactGeometrySet><objects>
-<ContactSphere name="fixed"><socket_frame>/ground</socket_frame><radius>)" << kR1
-       << R"(</radius></ContactSphere>
-<ContactSphere name="ball"><socket_frame>/bodyset/body</socket_frame><radius>)" << kR2
+<ContactSphere name="fixed"><socket_frame>/ground</socket_frame><radius>)"
+       << kR1 << R"(</radius></ContactSphere>
+<ContactSphere name="ball"><socket_frame>/bodyset/body</socket_frame><radius>)"
+       << kR2
        << R"(</radius></ContactSphere></objects></ContactGeometrySet></Model></OpenSimDocument>)";
   auto system = testing::ParseContactModel(text.str(), "spheres.osim");
   engine::State state = engine::MakeDefaultState(*system);
@@ -111,8 +113,9 @@ TEST(ElasticFoundationSphereTest, MeshBallSettlesOnAGroundSphereOnItsWeight) {
   EXPECT_NEAR(loads[0][1], 9.8065, 1e-4 * 9.8065);
   EXPECT_LT(std::abs(engine::GetCoordinateSpeed(*system, state, "ty")), 1e-5);
   EXPECT_GT(contact.CountActiveContacts(state), 0);
-  std::cout << "mesh on sphere: force " << loads[0][1] << " N on " << contact.CountActiveContacts(state)
-            << " springs, ball at " << engine::GetCoordinateValue(*system, state, "ty") << " m\n";
+  std::cout << "mesh on sphere: force " << loads[0][1] << " N on "
+            << contact.CountActiveContacts(state) << " springs, ball at "
+            << engine::GetCoordinateValue(*system, state, "ty") << " m\n";
 }
 
 }  // namespace

@@ -572,6 +572,77 @@ bool Penetrate(const btConvexShape* A, const btTransform& X_GA, const btConvexSh
 }
 }  // namespace
 
+namespace {
+// Two cylinders lying along each other touch along a line, and on Bullet's one point of it they
+// rock. Where their lateral surfaces meet, each cylinder's deepest generator towards the other
+// (its deepest rim points, one per cap: a straight line of its surface) ends at its caps; an end
+// within the other cylinder's length and radius (or the envelope) is a contact, at its radial
+// depth there (exact: the distance from the other's lateral surface, along its radius, which is
+// then the normal). For two parallel cylinders these are the ends of their line of contact; for
+// crossing ones the ends lie outside each other and there are none. `bullet`: the pair's contact
+// (normal from b's body towards a's, as CollideConvex sets it).
+struct CylinderLinePoints {
+  std::array<CollisionContact, 4> found;
+  int count = 0;
+  double deepest = -std::numeric_limits<double>::infinity();
+};
+CylinderLinePoints PointsAlongCylinders(const Shape& a, const Transform& X_GA, const Shape& b,
+                                        const Transform& X_GB, const Vec3& axes_gap_G,
+                                        const CollisionContact& bullet, double envelope) {
+  CylinderLinePoints out;
+  // Only where their lateral surfaces meet: the gap between their axes (from a's to b's,
+  // CylinderAxesGap) square to both within 1e-3 rad (not where a cap meets: end to end, or an
+  // end on a side). Its direction is the deepest lines' (exact for parallel axes; within 1e-3
+  // rad of it the ends' depths are off by at most r 1e-6 / 2), not Bullet's normal (to EPA's
+  // 1e-5).
+  const double gap = axes_gap_G.norm();
+  if (!(gap > 0.0)) return out;
+  const Vec3 toward_b_G = axes_gap_G / gap;
+  constexpr double kSquare = 1e-3;  // the cosine allowed
+  if (!(std::abs(toward_b_G.dot(X_GA.R.col(1))) < kSquare) ||
+      !(std::abs(toward_b_G.dot(X_GB.R.col(1))) < kSquare))
+    return out;
+  const auto half_length = [](const Shape& s) {
+    return static_cast<const btCylinderShape&>(*s.bt).getHalfExtentsWithoutMargin().y();
+  };
+  // The ends of `from`'s deepest line towards `into` (along d_G) inside `into`; `toward_a` is
+  // the unit normal's sign, so that it points from b's body towards a's. An end exactly at
+  // the other's end is taken once: from a (`ends_included`), not from b.
+  const auto add_ends = [&](const Shape& from, const Transform& X_GF, const Shape& into,
+                            const Transform& X_GI, const Vec3& d_G, double toward_a,
+                            bool ends_included) {
+    const Vec3 axis_G = X_GI.R.col(1);
+    const double h = half_length(into);
+    int candidate = 0;
+    ForEachCandidate(from, X_GF.R.transpose() * d_G, 0.0, [&](const Vec3& p_S) {
+      constexpr double kOutside = -std::numeric_limits<double>::infinity();
+      if (candidate++ >= 2) return kOutside;  // the line's ends only
+      const Vec3 p_G = X_GF * p_S;
+      const Vec3 r_G = p_G - X_GI.p;
+      const double z = r_G.dot(axis_G);
+      if (ends_included ? !(std::abs(z) <= h) : !(std::abs(z) < h)) return kOutside;
+      const Vec3 radial_G = r_G - z * axis_G;
+      const double rho = radial_G.norm();
+      const double depth = into.radius - rho;
+      if (!(depth > -envelope) || !(rho > 0.0)) return depth;
+      out.deepest = std::max(out.deepest, depth);
+      if (out.count == static_cast<int>(out.found.size())) return depth;
+      CollisionContact& c = out.found[out.count++];
+      c = bullet;
+      const Vec3 outward_G = radial_G / rho;  // out of `into` at the point
+      c.n_G = toward_a * outward_G;
+      c.depth = depth;
+      c.p_G = p_G + 0.5 * depth * outward_G;
+      return depth;
+    });
+  };
+  add_ends(a, X_GA, b, X_GB, toward_b_G, 1.0, true);
+  add_ends(b, X_GB, a, X_GA, -toward_b_G, -1.0, false);
+  return out;
+}
+
+}  // namespace
+
 template <class Visit>
 void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Transform>& X_GS,
                                             Visit&& visit) const {
@@ -611,6 +682,11 @@ void CollisionDetector::Impl::CollideConvex(const Pair& p, const std::vector<Tra
   // (two boxes went to CollideBoxes above)
   if (a.kind == Kind::kBox && CollideOnBoxFace(a, X_GSa, b, X_GSb, c, -1.0, visit)) return;
   if (b.kind == Kind::kBox && CollideOnBoxFace(b, X_GSb, a, X_GSa, c, 1.0, visit)) return;
+  if (a.kind == Kind::kCylinder && b.kind == Kind::kCylinder) {
+    const CylinderLinePoints line = PointsAlongCylinders(a, X_GSa, b, X_GSb, axis, c, envelope);
+    for (int k = 0; k < line.count; ++k) visit(line.found[k]);
+    if (line.count > 0 && line.deepest >= c.depth - kEpaAccuracy) return;  // they hold the deepest
+  }
   visit(c);
 }
 
