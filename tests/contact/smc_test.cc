@@ -4,7 +4,8 @@
 // friction angle at the speed the friction regularization gives and slides with
 // g (sin a - u cos a) above it. With tangential springs (kt) the box sticks instead, a ball on
 // a spring rocks about its rolling speed as the closed form says (keeping its energy), and a
-// sliding ball slips at exactly Coulomb's limit before it rolls.
+// sliding ball slips at exactly Coulomb's limit before it rolls. A cylinder stands on the four
+// points of its cap.
 #include <gtest/gtest.h>
 #include <sinew/contact/smooth_collision_force.h>
 #include <sinew/engine/assemble.h>
@@ -397,4 +398,58 @@ TEST(SmoothContactTest, ContactsKeptByTheSpringUpdateAreTheOnesASearchFinds) {
 }
 
 }  // namespace
+// A cylinder (m = 1 kg, r = 0.1 m, 0.4 m long) standing on its cap on the floor at the Hertz
+// depth of a quarter of its weight: its cap's four rim points a quarter turn apart carry it,
+// so the loads on it (gravity's included) vanish, force and torque, to rounding. Tilted by
+// 0.01 rad about x, the rim's lower side carries more and the torque rights it. (On the cap's
+// one deepest rim point it was pushed over: a torque of about m g r at rest.)
+TEST(SmoothContactTest, CylinderStandsOnTheFourPointsOfItsCap) {
+  constexpr double m = 1.0, r = 0.1, half_length = 0.2;
+  const model::ModelSpec spec = io::ReadOsimString(
+      testing::FreeBodyContactModel(m, Vec3::Ones(), Vec3(0, -kG, 0), 0.01, {}, ""),
+      "standing_cylinder.osim");
+  engine::System system(spec.gravity);
+  opensim::OpenSimParser parser;
+  parser.ParseSpec(system, spec);
+  CollisionMaterial material;
+  material.young_modulus = 1e8;
+  CollisionModel model;
+  model.materials = {material};
+  model.jointed = {{0, 1}};
+  Mat3 R_GF;  // the floor: its x into the solid y < 0
+  R_GF << -Vec3::UnitY(), Vec3::UnitX(), Vec3::UnitZ();
+  model.geometry.push_back(
+      {"floor", CollisionShapeKind::kHalfSpace, 0, Transform(R_GF, Vec3::Zero())});
+  CollisionGeometry cylinder;  // its axis (z) turned onto y: standing
+  cylinder.name = "cylinder";
+  cylinder.kind = CollisionShapeKind::kCylinder;
+  cylinder.body = 1;
+  cylinder.radius = r;
+  cylinder.half_length = half_length;
+  cylinder.X_BS = Transform(
+      Eigen::AngleAxisd(-std::numbers::pi / 2, Vec3::UnitX()).toRotationMatrix(), Vec3::Zero());
+  model.geometry.push_back(cylinder);
+  auto detector = std::make_shared<CollisionDetector>(model, std::nullopt);
+  system.AddForceElement(std::make_shared<SmoothCollisionForce>(
+      "smc", detector, std::vector<double>{0.0, m}, 1e-3,
+      std::vector<ContactForce::RecordGroup>{{"cylinder", 1}},
+      std::vector<ContactForce::PairGroup>{}, false));
+  system.Finalize();
+  const double d = HertzDepth(m * kG / 4.0, SameMaterialModulus(material), r);
+  engine::State state = engine::MakeDefaultState(system);
+  engine::SetCoordinateValue(system, state, "ty", half_length - d);
+  engine::Loads loads(system.num_bodies(), system.num_coordinates());
+  engine::CalcLoads(system, state, nullptr, loads);
+  const double weight = m * kG;
+  // Each depth is a difference of positions near 0.2 m (about 3e-17 m of rounding) against a
+  // depth of a few micrometres: 1e-10 relative allows for it.
+  EXPECT_NEAR(loads.body[1].tail<3>().norm(), 0.0, 1e-10 * weight);
+  EXPECT_NEAR(loads.body[1].head<3>().norm(), 0.0, 1e-10 * weight * r);
+  std::cout << "SMC standing cylinder at the Hertz depth " << d << " m of m g / 4: load "
+            << loads.body[1].transpose() << "\n";
+  engine::SetCoordinateValue(system, state, "rx", 0.01);  // its foot at +z sinks deeper
+  engine::CalcLoads(system, state, nullptr, loads);
+  EXPECT_LT(loads.body[1].head<3>().x(), -0.01 * weight * r);  // turning it back
+}
+
 }  // namespace sinew::contact
