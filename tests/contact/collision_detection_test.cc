@@ -321,6 +321,43 @@ TEST(CollisionDetectionTest, BoxOnABoxTouchesAtTheCornersOfItsFaceByTheirClosedF
                        1e-12);
   ExpectCornerContacts(
       on_box, {Transform(R_tilt, Vec3(0, lowest - 2e-3, 0)), {bottom[2], bottom[3]}, 2e-3}, 1e-12);
+  // Half over the ground box's edge x = 1 (its corners at x = 0.9 over the face, 1.1 past it):
+  // the two corners over the face and, where its bottom face leaves the box's top, two points
+  // on the edge, at z = -+0.1, all 3 mm deep (on the two corners alone it tipped over the
+  // edge). Tilted by 0.01 rad about z, its corners past the edge lowest: the edge's points at
+  // the depth of the bottom face there (linear over the face: exact).
+  std::vector<CollisionContact> c =
+      Contacts(on_box, {Transform(), Transform::Translation(Vec3(1.0, 0.05 - 3e-3, 0))});
+  ASSERT_EQ(c.size(), 4u);
+  int on_edge = 0;
+  for (const CollisionContact& k : c) {
+    EXPECT_NEAR(k.depth, 3e-3, 1e-15);
+    EXPECT_NEAR(std::abs(k.p_G.z()), 0.1, 1e-15);
+    if (std::abs(k.p_G.x() - 1.0) < 1e-15)
+      ++on_edge;
+    else
+      EXPECT_NEAR(k.p_G.x(), 0.9, 1e-15);
+  }
+  EXPECT_EQ(on_edge, 2);
+  const double tilt = -0.01;  // the corners x = +0.1 go down
+  const Mat3 R_down = Eigen::AngleAxisd(tilt, Vec3::UnitZ()).toRotationMatrix();
+  const Transform tilted(R_down, Vec3(1.0, 0.05 - 2e-3, 0));
+  // The bottom face's depth at x (in G), from the plane through its corners.
+  const Vec3 n_bottom = R_down * Vec3::UnitY();
+  const Vec3 on_bottom = tilted * Vec3(0, -0.05, 0);
+  const auto bottom_depth = [&](double x) {
+    // y of the bottom plane at (x, z = 0): n . (p - on_bottom) = 0.
+    return -(on_bottom.y() - n_bottom.x() * (x - on_bottom.x()) / n_bottom.y());
+  };
+  c = Contacts(on_box, {Transform(), tilted});
+  ASSERT_EQ(c.size(), 4u);
+  on_edge = 0;
+  for (const CollisionContact& k : c) {
+    const double x = k.p_G.x() - 0.5 * k.depth * k.n_G.x();  // the face's normal is vertical
+    EXPECT_NEAR(k.depth, bottom_depth(x), 1e-15) << x;
+    if (std::abs(x - 1.0) < 1e-15) ++on_edge;
+  }
+  EXPECT_EQ(on_edge, 2);
 }
 
 // A ground mesh of two triangles: `vertices` (4, in G), triangles (0, 1, 2) and (0, 2, 3).

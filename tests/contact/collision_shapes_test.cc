@@ -367,6 +367,30 @@ TEST(CollisionShapesTest, CylinderRestsLevelInTheGrooveOfTwoParallelCylinders) {
             << contacts << " contacts\n";
 }
 
+TEST(CollisionShapesTest, CubeMeshOverhangingABoxsEdgeRestsOnIt) {
+  // The cube mesh (edge 0.2 m, as its hull) dropped 1 cm onto the ground box 6 cm past its edge
+  // x = 2 (its centre of mass 4 cm inside): it rests level on its two corners over the face and
+  // the edge's two points, its centre at half its edge, where it landed. On the corners alone
+  // it tipped over; and resting (at distance zero, where GJK's direction can be any) it once
+  // got Bullet's one point with a slanted normal and slid 1e-5 m.
+  Scene cube =
+      Parse(OneShapeModel(1, Vec3::Constant(1.0 / 6 * 0.04), Vec3(0, -kG, 0), Mesh("cube.obj")));
+  PutOnGround(cube);
+  engine::SetCoordinateValue(*cube.system, cube.state, "tx", 2.0 - 0.04);
+  engine::SetCoordinateValue(*cube.system, cube.state, "ty", kHalfEdge + 0.01);
+  const size_t contacts = testing::RunCollisionNsc(*cube.system, cube.state, cube.model, 0.5, 1.0);
+  const engine::BodyState& body = cube.state.bodies[1];
+  const Vec3 up = body.quat_GB * Vec3::UnitY();
+  EXPECT_EQ(contacts, 4u);
+  EXPECT_NEAR(up.y(), 1.0, 1e-12);
+  EXPECT_NEAR(body.p_GB.y(), kHalfEdge, 1e-9);
+  EXPECT_NEAR(body.p_GB.x(), 2.0 - 0.04, 1e-9);
+  EXPECT_NEAR(body.v_GB.norm() + body.w_GB.norm(), 0.0, 1e-9);
+  std::cout << "cube mesh over an edge: " << contacts << " contacts, tilted "
+            << std::acos(std::min(1.0, up.y())) << " rad, centre " << body.p_GB.y() - kHalfEdge
+            << " m from half its edge\n";
+}
+
 TEST(CollisionShapesTest, EllipsoidRestsOnEachSemiAxisAndCubeMeshOnHalfItsEdge) {
   // Dropped 1 cm with a principal axis vertical (an equilibrium: the lowest point below the
   // centre), inelastic: each comes to rest with its centre at that semi-axis above the floor.

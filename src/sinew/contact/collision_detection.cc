@@ -703,6 +703,81 @@ struct BoxFacePoints {
   double deepest = -std::numeric_limits<double>::infinity();
   bool nearer_a_side = false;  // a point through the plane lies nearer a side face (left out)
 };
+// A hull lying across an edge of a box's face (pose X_GX, half extents h; the face: `axis`,
+// `side`): its vertices through the face's plane (`through_X`, in the box's frame, within the
+// envelope) span a polygon on the plane (their convex hull there), which the face's rectangle
+// clips; the points the clipping makes, on the face's edges and at its corners, are contacts
+// too (`add`: the point in G and its depth), at depths interpolated along the polygon's edges.
+// Exact when those vertices lie on one face of the hull (a sole, a cube's face: the depth is
+// linear over it); otherwise the chords' depths, at most the hull's there.
+template <class Add>
+void AddWhereTheFaceClips(const std::vector<Vec3>& through_X, const Vec3& h, int axis, double side,
+                          double envelope, const Transform& X_GX, Add&& add) {
+  const int j1 = (axis + 1) % 3, j2 = (axis + 2) % 3;
+  struct Corner {
+    double u, v, depth;
+    bool made;  // by the clipping (the others were taken as vertices over the face)
+  };
+  thread_local std::vector<Corner> points, polygon, clipped;
+  points.clear();
+  for (const Vec3& p : through_X) points.push_back({p[j1], p[j2], h[axis] - side * p[axis], false});
+  // The convex hull on the plane (Andrew's monotone chain), counter-clockwise in (u, v).
+  std::sort(points.begin(), points.end(), [](const Corner& a, const Corner& b) {
+    return a.u < b.u || (a.u == b.u && a.v < b.v);
+  });
+  const auto cross = [](const Corner& o, const Corner& a, const Corner& b) {
+    return (a.u - o.u) * (b.v - o.v) - (a.v - o.v) * (b.u - o.u);
+  };
+  polygon.clear();
+  for (int pass = 0; pass < 2; ++pass) {
+    const size_t start = polygon.size();
+    for (size_t k = 0; k < points.size(); ++k) {
+      const Corner& p = pass == 0 ? points[k] : points[points.size() - 1 - k];
+      while (polygon.size() >= start + 2 &&
+             cross(polygon[polygon.size() - 2], polygon.back(), p) <= 0.0)
+        polygon.pop_back();
+      polygon.push_back(p);
+    }
+    polygon.pop_back();  // each chain's last point starts the other
+  }
+  if (polygon.size() < 2) return;
+  // Clipped by the four sides of the rectangle in turn (Sutherland-Hodgman); a segment (two
+  // points) is a polygon of two edges, so it stays a segment.
+  const auto clip = [&](int coordinate, double sign, double limit) {
+    const auto value = [&](const Corner& c) { return sign * (coordinate == 0 ? c.u : c.v); };
+    clipped.clear();
+    for (size_t k = 0; k < polygon.size(); ++k) {
+      const Corner& a = polygon[k];
+      const Corner& b = polygon[(k + 1) % polygon.size()];
+      const bool a_in = value(a) <= limit, b_in = value(b) <= limit;
+      if (a_in) clipped.push_back(a);
+      if (a_in != b_in) {
+        const double t = (limit - value(a)) / (value(b) - value(a));
+        clipped.push_back({a.u + t * (b.u - a.u), a.v + t * (b.v - a.v),
+                           a.depth + t * (b.depth - a.depth), true});
+      }
+    }
+    std::swap(polygon, clipped);
+  };
+  clip(0, 1.0, h[j1]);
+  clip(0, -1.0, h[j1]);
+  clip(1, 1.0, h[j2]);
+  clip(1, -1.0, h[j2]);
+  for (size_t k = 0; k < polygon.size(); ++k) {
+    const Corner& c = polygon[k];
+    if (!c.made || !(c.depth > -envelope)) continue;
+    bool repeated = false;  // a segment's clipped ends come twice (from both its edges)
+    for (size_t i = 0; i < k && !repeated; ++i)
+      repeated = polygon[i].made && polygon[i].u == c.u && polygon[i].v == c.v;
+    if (repeated) continue;
+    Vec3 p_X;
+    p_X[j1] = c.u;
+    p_X[j2] = c.v;
+    p_X[axis] = side * (h[axis] - c.depth);
+    add(X_GX * p_X, c.depth);
+  }
+}
+
 BoxFacePoints PointsThroughBoxFace(const Vec3& h, const Transform& X_GX, int axis, double side,
                                    const Shape& s, const Transform& X_GS,
                                    const CollisionContact& base, double sign, double envelope) {
@@ -721,6 +796,10 @@ BoxFacePoints PointsThroughBoxFace(const Vec3& h, const Transform& X_GX, int axi
   };
   std::array<Vec3, 2> generator_X;  // a cylinder's first two candidates: its deepest generator
   int candidate = 0;
+  const bool hull = s.kind == Kind::kHull || s.kind == Kind::kTriangleMesh;
+  thread_local std::vector<Vec3> through_X;  // a hull's vertices through the plane
+  through_X.clear();
+  bool hull_past_a_side = false;
   ForEachCandidate(s, X_GS.R.transpose() * -face_G, -envelope, [&](const Vec3& p_S) {
     const Vec3 p_G = X_GS * p_S;
     const Vec3 p_X = X_GX.R.transpose() * (p_G - X_GX.p);
@@ -728,10 +807,14 @@ BoxFacePoints PointsThroughBoxFace(const Vec3& h, const Transform& X_GX, int axi
     ++candidate;
     const double depth = depth_of(p_X);
     if (!(depth > -envelope)) return depth;
+    if (hull) through_X.push_back(p_X);
     for (int j = 0; j < 3; ++j) {
       if (j == axis) continue;
       const double to_side = h[j] - std::abs(p_X[j]);  // from the box's side face j, inside
-      if (to_side < 0.0) return depth;
+      if (to_side < 0.0) {
+        hull_past_a_side = hull;
+        return depth;
+      }
       if (depth > 0.0 && to_side < depth) {
         out.nearer_a_side = true;
         return depth;
@@ -740,6 +823,9 @@ BoxFacePoints PointsThroughBoxFace(const Vec3& h, const Transform& X_GX, int axi
     add(p_G, depth);
     return depth;
   });
+  if (hull_past_a_side && !out.nearer_a_side) {
+    AddWhereTheFaceClips(through_X, h, axis, side, envelope, X_GX, add);
+  }
   if (s.kind != Kind::kCylinder) return out;
   // A cylinder lying across an edge of the face: its deepest generator (a straight line on its
   // surface, the deepest point of every cross-section) also touches where it leaves the face,
@@ -804,25 +890,39 @@ bool CollisionDetector::Impl::CollideOverBoxFace(const Pair& p, const Shape& box
 }
 
 // A convex shape s (pose X_GS) on a face of `box` (pose X_GX), given Bullet's contact of the
-// pair (one point): the face is the one Bullet's normal leaves the box through, and the shape's
-// points through it (PointsThroughBoxFace; those nearer a side face left out) are the contacts
-// when the deepest of them is as deep as Bullet's contact to EPA's accuracy (the contact is on
-// the face, not at an edge or a corner of the box). `sign`: +1 when Bullet's normal points out
-// of the box, -1 into it. False (nothing visited) otherwise.
+// pair (one point): the shape's points through the face (PointsThroughBoxFace; those nearer a
+// side face left out) are the contacts when the deepest of them is as deep as Bullet's contact
+// to EPA's accuracy. Lifting the shape off the face by that depth separates it from the box, so
+// the face's normal is then a direction of least penetration: the contact is on the face, not
+// at an edge or a corner of the box. The face tried first is the one Bullet's normal leaves the
+// box through; then the one facing the shape's centre, since a shape touching a face at
+// distance zero (resting on it under NSC) gets from GJK a direction that can be any. `sign`: +1
+// when Bullet's normal points out of the box, -1 into it. False (nothing visited) otherwise.
 template <class Visit>
 bool CollisionDetector::Impl::CollideOnBoxFace(const Shape& box, const Transform& X_GX,
                                                const Shape& s, const Transform& X_GS,
                                                const CollisionContact& bullet, double sign,
                                                Visit&& visit) const {
+  const Vec3 h = BoxHalfExtents(box);
+  const auto on_face = [&](int axis, double side) {
+    const BoxFacePoints points =
+        PointsThroughBoxFace(h, X_GX, axis, side, s, X_GS, bullet, sign, envelope);
+    if (points.count == 0 || !(std::abs(points.deepest - bullet.depth) <= kEpaAccuracy))
+      return false;
+    for (int k = 0; k < points.count; ++k) visit(points.found[k]);
+    return true;
+  };
   const Vec3 n_X = X_GX.R.transpose() * (sign * bullet.n_G);  // out of the box, in its frame
   int axis = 0;
   n_X.cwiseAbs().maxCoeff(&axis);
   const double side = n_X[axis] > 0.0 ? 1.0 : -1.0;
-  const BoxFacePoints points =
-      PointsThroughBoxFace(BoxHalfExtents(box), X_GX, axis, side, s, X_GS, bullet, sign, envelope);
-  if (points.count == 0 || !(std::abs(points.deepest - bullet.depth) <= kEpaAccuracy)) return false;
-  for (int k = 0; k < points.count; ++k) visit(points.found[k]);
-  return true;
+  if (on_face(axis, side)) return true;
+  const Vec3 c_X = X_GX.R.transpose() * (X_GS.p - X_GX.p);  // the shape's centre
+  int centre_axis = 0;
+  (c_X.cwiseAbs() - h).maxCoeff(&centre_axis);
+  const double centre_side = c_X[centre_axis] > 0.0 ? 1.0 : -1.0;
+  if (centre_axis == axis && centre_side == side) return false;
+  return on_face(centre_axis, centre_side);
 }
 
 // Bullet's box-box detector (ODE's, btBoxBoxDetector) on the boxes themselves: the points of
