@@ -125,6 +125,31 @@ TEST(SmoothContactTest, SlidingSphereRollsAtFiveSeventhsOfItsSpeed) {
             << ", " << v / v_closed - 1 << "; 5/7 v0, " << v / (5.0 / 7.0 * kV0) - 1 << ")\n";
 }
 
+// A free body of mass m (inertia `inertia`, gravity -y) whose contact is the SMC force element
+// "smc" over `geometry` (ground shapes and the body's, named `shape`) of one `material`, that
+// shape's loads reported; with `tangential_springs`, friction is the spring kept per contact.
+std::unique_ptr<engine::System> SmcFreeBody(double m, const Vec3& inertia,
+                                            const CollisionMaterial& material,
+                                            std::vector<CollisionGeometry> geometry,
+                                            const std::string& shape, bool tangential_springs) {
+  const model::ModelSpec spec = io::ReadOsimString(
+      testing::FreeBodyContactModel(m, inertia, Vec3(0, -kG, 0), 0.01, {}, ""), shape + ".osim");
+  auto system = std::make_unique<engine::System>(spec.gravity);
+  opensim::OpenSimParser parser;
+  parser.ParseSpec(*system, spec);
+  CollisionModel model;
+  model.materials = {material};
+  model.jointed = {{0, 1}};
+  model.geometry = std::move(geometry);
+  auto detector = std::make_shared<CollisionDetector>(model, std::nullopt);
+  system->AddForceElement(std::make_shared<SmoothCollisionForce>(
+      "smc", detector, std::vector<double>{0.0, m}, 1e-3,
+      std::vector<ContactForce::RecordGroup>{{shape, 1}}, std::vector<ContactForce::PairGroup>{},
+      tangential_springs));
+  system->Finalize();
+  return system;
+}
+
 // A 1 kg box (half extents 0.1, 0.05, 0.1 m) on a plane tilted by `angle` about z (downhill
 // +x cos a - y sin a), material E = 1e8 Pa, nu = 0.3, u = 0.5, e = 0.5, slip speed 1e-3 m/s,
 // through the force element itself (the box on the free body, the incline a ground
@@ -135,46 +160,33 @@ std::pair<double, double> BoxDownhillSpeeds(double angle, double mu, bool on_box
                                             double kt = 0.0) {
   const Vec3 h(0.1, 0.05, 0.1);
   const double m = 1.0;
-  const model::ModelSpec spec =
-      io::ReadOsimString(testing::FreeBodyContactModel(
-                             m,
-                             m / 3.0 *
-                                 Vec3(h.y() * h.y() + h.z() * h.z(), h.x() * h.x() + h.z() * h.z(),
-                                      h.x() * h.x() + h.y() * h.y()),
-                             Vec3(0, -kG, 0), 0.01, {}, ""),
-                         "incline_box.osim");
-  engine::System system(spec.gravity);
-  opensim::OpenSimParser parser;
-  parser.ParseSpec(system, spec);
   CollisionMaterial material;
   material.young_modulus = 1e8;
   material.friction = mu;
   material.restitution = 0.5;
   material.kt = kt;
   material.gt = kt > 0.0 ? 20.0 : 0.0;
-  CollisionModel model;
-  model.materials = {material};
-  model.jointed = {{0, 1}};
   const Vec3 downhill(std::cos(angle), -std::sin(angle), 0);
   const Vec3 normal(std::sin(angle), std::cos(angle), 0);
+  std::vector<CollisionGeometry> geometry;
   Mat3 R_GS;
   R_GS << -normal, downhill, Vec3::UnitZ();  // S's x into the solid
   if (on_box) {  // 6 m downhill, 2 m across, 1 m thick: S's y along the normal
     Mat3 R_GF;
     R_GF << downhill, normal, Vec3::UnitZ();
-    model.geometry.push_back({"incline", CollisionShapeKind::kBox, 0,
-                              Transform(R_GF, -0.5 * normal), 0.0, Vec3(3.0, 0.5, 1.0)});
+    geometry.push_back({"incline", CollisionShapeKind::kBox, 0, Transform(R_GF, -0.5 * normal), 0.0,
+                        Vec3(3.0, 0.5, 1.0)});
   } else {
-    model.geometry.push_back(
+    geometry.push_back(
         {"incline", CollisionShapeKind::kHalfSpace, 0, Transform(R_GS, Vec3::Zero())});
   }
-  model.geometry.push_back({"box", CollisionShapeKind::kBox, 1, Transform(), 0.0, h});
-  auto detector = std::make_shared<CollisionDetector>(model, std::nullopt);
-  system.AddForceElement(std::make_shared<SmoothCollisionForce>(
-      "smc", detector, std::vector<double>{0.0, m}, 1e-3,
-      std::vector<ContactForce::RecordGroup>{{"box", 1}}, std::vector<ContactForce::PairGroup>{},
-      /*tangential_springs=*/kt > 0.0));
-  system.Finalize();
+  geometry.push_back({"box", CollisionShapeKind::kBox, 1, Transform(), 0.0, h});
+  const Vec3 inertia = m / 3.0 *
+                       Vec3(h.y() * h.y() + h.z() * h.z(), h.x() * h.x() + h.z() * h.z(),
+                            h.x() * h.x() + h.y() * h.y());
+  const std::unique_ptr<engine::System> owned =
+      SmcFreeBody(m, inertia, material, std::move(geometry), "box", kt > 0.0);
+  const engine::System& system = *owned;
   // On a box's face as on a plane: a box corner's radius.
   const double d =
       HertzDepth(m * kG * std::cos(angle) / 4.0, SameMaterialModulus(material), kFlatShapeRadius);
@@ -397,7 +409,6 @@ TEST(SmoothContactTest, ContactsKeptByTheSpringUpdateAreTheOnesASearchFinds) {
   EXPECT_LT((a - b).norm(), 1e-12 * weight);
 }
 
-}  // namespace
 // A cylinder (m = 1 kg, r = 0.1 m, 0.4 m long) standing on its cap on the floor at the Hertz
 // depth of a quarter of its weight: its cap's four rim points a quarter turn apart carry it,
 // so the loads on it (gravity's included) vanish, force and torque, to rounding. Tilted by
@@ -405,21 +416,10 @@ TEST(SmoothContactTest, ContactsKeptByTheSpringUpdateAreTheOnesASearchFinds) {
 // one deepest rim point it was pushed over: a torque of about m g r at rest.)
 TEST(SmoothContactTest, CylinderStandsOnTheFourPointsOfItsCap) {
   constexpr double m = 1.0, r = 0.1, half_length = 0.2;
-  const model::ModelSpec spec = io::ReadOsimString(
-      testing::FreeBodyContactModel(m, Vec3::Ones(), Vec3(0, -kG, 0), 0.01, {}, ""),
-      "standing_cylinder.osim");
-  engine::System system(spec.gravity);
-  opensim::OpenSimParser parser;
-  parser.ParseSpec(system, spec);
   CollisionMaterial material;
   material.young_modulus = 1e8;
-  CollisionModel model;
-  model.materials = {material};
-  model.jointed = {{0, 1}};
   Mat3 R_GF;  // the floor: its x into the solid y < 0
   R_GF << -Vec3::UnitY(), Vec3::UnitX(), Vec3::UnitZ();
-  model.geometry.push_back(
-      {"floor", CollisionShapeKind::kHalfSpace, 0, Transform(R_GF, Vec3::Zero())});
   CollisionGeometry cylinder;  // its axis (z) turned onto y: standing
   cylinder.name = "cylinder";
   cylinder.kind = CollisionShapeKind::kCylinder;
@@ -428,13 +428,11 @@ TEST(SmoothContactTest, CylinderStandsOnTheFourPointsOfItsCap) {
   cylinder.half_length = half_length;
   cylinder.X_BS = Transform(
       Eigen::AngleAxisd(-std::numbers::pi / 2, Vec3::UnitX()).toRotationMatrix(), Vec3::Zero());
-  model.geometry.push_back(cylinder);
-  auto detector = std::make_shared<CollisionDetector>(model, std::nullopt);
-  system.AddForceElement(std::make_shared<SmoothCollisionForce>(
-      "smc", detector, std::vector<double>{0.0, m}, 1e-3,
-      std::vector<ContactForce::RecordGroup>{{"cylinder", 1}},
-      std::vector<ContactForce::PairGroup>{}, false));
-  system.Finalize();
+  const std::unique_ptr<engine::System> owned = SmcFreeBody(
+      m, Vec3::Ones(), material,
+      {{"floor", CollisionShapeKind::kHalfSpace, 0, Transform(R_GF, Vec3::Zero())}, cylinder},
+      "cylinder", false);
+  const engine::System& system = *owned;
   const double d = HertzDepth(m * kG / 4.0, SameMaterialModulus(material), r);
   engine::State state = engine::MakeDefaultState(system);
   engine::SetCoordinateValue(system, state, "ty", half_length - d);
@@ -452,4 +450,5 @@ TEST(SmoothContactTest, CylinderStandsOnTheFourPointsOfItsCap) {
   EXPECT_LT(loads.body[1].head<3>().x(), -0.01 * weight * r);  // turning it back
 }
 
+}  // namespace
 }  // namespace sinew::contact
