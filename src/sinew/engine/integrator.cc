@@ -95,6 +95,12 @@ class RungeKutta45 final : public Integrator {
     y0_ = vector_.Pack(state);
     State scratch = state;
     Eval(y0_, state.t, scratch, k_[0]);
+    step_from_ = state.t;
+    if (CrossJustAhead(state, t_final)) {
+      y0_ = vector_.Pack(state);
+      scratch = state;
+      Eval(y0_, state.t, scratch, k_[0]);
+    }
     for (;;) {
       const double remaining = t_final - state.t;
       double h = std::min(h_, remaining);
@@ -186,6 +192,13 @@ class RungeKutta45 final : public Integrator {
     }
     norm /= settings_.accuracy;
     if (!std::isfinite(norm)) norm = 1e10;
+    // A step across a jump of the accelerations (CurvatureJumps) is retried to end just short of
+    // it; the next step starts by crossing it (CrossJustAhead), so that no step straddles it.
+    const double to_jump = FractionToJump(state, y, t_new);
+    if (to_jump < 1.0) {
+      h_ = h * to_jump * (1.0 - 1e-8);
+      return false;
+    }
     const double factor = norm == 0.0 ? 5.0 : std::clamp(0.9 * std::pow(norm, -0.2), 0.2, 5.0);
     if (norm > 1.0) {
       h_ = h * std::min(factor, 0.9);
@@ -230,6 +243,48 @@ class RungeKutta45 final : public Integrator {
     return true;
   }
 
+  // The fraction of the trial step from `state` to y (at t_new) at which a free coordinate
+  // reaches a curvature jump it crosses (linear in the coordinate), or 1 when it crosses none.
+  // A crossing too near the step's start to end short of (a step of 1e-9 s) is left to the
+  // error control.
+  double FractionToJump(const State& state, const VecX& y, double t_new) {
+    const auto& jumps = system_.curvature_jumps();
+    if (jumps.empty()) return 1.0;
+    trial_ = state;
+    vector_.Unpack(y, t_new, trial_);
+    double fraction = 1.0;
+    for (const auto& [coordinate, value] : jumps) {
+      const double q0 = state.q[coordinate], q1 = trial_.q[coordinate];
+      if ((q0 - value) * (q1 - value) < 0.0) {
+        fraction = std::min(fraction, (value - q0) / (q1 - q0));
+      }
+    }
+    return fraction * (t_new - state.t) > 1e-9 ? fraction : 1.0;
+  }
+
+  // A step ended just short of a curvature jump: the coordinate, moving towards it, reaches it
+  // within 1e-7 of the next step (or 1e-10 s), before t_final. Then `state` crosses it by one
+  // explicit Euler step of that length (its error, of the order of the step squared, is far
+  // below the accuracy), so that the next step's stages all lie past it. True when it did.
+  bool CrossJustAhead(State& state, double t_final) {
+    const auto& jumps = system_.curvature_jumps();
+    double step = 0.0;
+    for (const auto& [coordinate, value] : jumps) {
+      const double gap = value - state.q[coordinate], u = state.u[coordinate];
+      if (u == 0.0 || gap * u <= 0.0) continue;
+      const double dt = gap / u;
+      if (dt <= std::max(1e-7 * h_, 1e-10)) step = std::max(step, dt * (1.0 + 1e-6) + 1e-15);
+    }
+    if (step == 0.0 || !(state.t + 2.0 * step < t_final)) return false;
+    const VecX q0 = state.q;
+    y0_ += step * k_[0];
+    vector_.Unpack(y0_, state.t + step, state);
+    for (const auto& [coordinate, value] : jumps) {
+      if ((q0[coordinate] - value) * (state.q[coordinate] - value) < 0.0) ++stats_.curvature_jumps;
+    }
+    return true;
+  }
+
   // The last accepted step, for Interpolate.
   struct DenseOutput {
     double t0 = 0.0, h = 0.0;
@@ -244,12 +299,17 @@ class RungeKutta45 final : public Integrator {
   VecX k_[7];  // the stages' derivatives
   double h_ = 0.0;
   bool just_rejected_ = false;
+  State trial_;               // FractionToJump's unpacked trial state
+  double step_from_ = 0.0;    // the last step's start before CrossJustAhead moved it
   std::string last_failure_;  ///< why the last trial stage failed (for the step-size error)
 };
 
 void RungeKutta45::Interpolate(double t, State& out) {
   const double h = dense_.h;
-  if (!(h > 0.0) || !(t >= dense_.t0 - 1e-12 * h && t <= dense_.t0 + h * (1 + 1e-12))) {
+  // From where the step started before crossing a curvature jump just ahead (at most 1e-7 of it
+  // earlier: those times get the crossed state).
+  const double from = std::min(dense_.t0, step_from_);
+  if (!(h > 0.0) || !(t >= from - 1e-12 * h && t <= dense_.t0 + h * (1 + 1e-12))) {
     throw Error("integrator 'rk45': Interpolate at t = " + FormatNumber(t) +
                 " s, outside the last step");
   }

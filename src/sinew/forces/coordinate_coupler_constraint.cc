@@ -97,4 +97,11 @@ void CoordinateCouplerConstraint::CalcAccelerationRhs(const engine::System&,
   b[0] = scale_ * sum;
 }
 
+std::vector<std::pair<int, double>> CoordinateCouplerConstraint::CurvatureJumps() const {
+  std::vector<std::pair<int, double>> jumps;
+  if (independent_.size() != 1) return jumps;
+  for (const double x : f_->CurvatureJumps()) jumps.emplace_back(independent_[0], x);
+  return jumps;
+}
+
 }  // namespace sinew::forces

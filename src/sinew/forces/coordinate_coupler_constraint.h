@@ -39,6 +39,8 @@ class CoordinateCouplerConstraint final : public engine::Constraint {
                     Eigen::Ref<MatX> J) const override;
   void CalcAccelerationRhs(const engine::System& system, const engine::State& state,
                            Eigen::Ref<VecX> b) const override;
+  /// The function's (of one independent coordinate) on that coordinate.
+  std::vector<std::pair<int, double>> CurvatureJumps() const override;
 
  private:
   std::string name_;

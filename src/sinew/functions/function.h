@@ -5,6 +5,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace sinew::functions {
 
@@ -32,6 +33,11 @@ class Function {
   virtual double CalcPartialN(std::span<const double> x, std::span<const int> wrt) const {
     return CalcDerivative(x[0], static_cast<int>(wrt.size()));
   }
+
+  /// The arguments (of a one-argument function) where f'' jumps while f and f' stay continuous,
+  /// such as a cubic spline's ends, past which it extrapolates linearly. A coordinate crossing
+  /// one makes the accelerations jump; rk45 steps to it (engine::System::curvature_jumps).
+  virtual std::vector<double> CurvatureJumps() const { return {}; }
 };
 
 using FunctionPtr = std::shared_ptr<const Function>;

@@ -265,4 +265,13 @@ double GCVSpline::CalcDerivative(double x, int order) const {
   return CalcPiece(FindKnotInterval(x_, x), x, order);
 }
 
+std::vector<double> GCVSpline::CurvatureJumps() const {
+  std::vector<double> jumps;
+  if (half_order_ != 2) return jumps;
+  for (const double end : {x_.front(), x_.back()}) {
+    if (CalcDerivative(end, 2) != 0.0) jumps.push_back(end);
+  }
+  return jumps;
+}
+
 }  // namespace sinew::functions

@@ -47,6 +47,9 @@ class GCVSpline final : public Function {
   std::string TypeName() const override { return "GCVSpline"; }
   double Calc(double x) const override { return CalcDerivative(x, 0); }
   double CalcDerivative(double x, int order) const override;
+  /// A cubic one's ends where its curvature is not zero: past them it continues linearly (a
+  /// quintic continues with its curvature, a linear one has corners at every knot instead).
+  std::vector<double> CurvatureJumps() const override;
 
   int half_order() const { return half_order_; }
   /// Degree of the pieces, 2 * half_order - 1.

@@ -100,4 +100,12 @@ double SimmSpline::CalcDerivative(double x, int order) const {
   return 2.0 * c_[k] + 6.0 * dx * d_[k];
 }
 
+std::vector<double> SimmSpline::CurvatureJumps() const {
+  std::vector<double> jumps;
+  for (const double end : {x_.front(), x_.back()}) {
+    if (CalcDerivative(end, 2) != 0.0) jumps.push_back(end);  // the end's own cubic
+  }
+  return jumps;
+}
+
 }  // namespace sinew::functions

@@ -64,7 +64,8 @@ CustomJointModel::CustomJointModel(std::array<TransformAxisTerm, 6> axes, int nq
   if (!has_curved_axes_) {
     const double none[6] = {};  // any q: J is the same everywhere
     EvaluateJ(std::span<const double>(none, static_cast<size_t>(nq_)), constant_J_);
-    if (constant_H_) constant_H_FM_ = EvaluateH_FM(std::span<const double>(none, static_cast<size_t>(nq_)));
+    if (constant_H_)
+      constant_H_FM_ = EvaluateH_FM(std::span<const double>(none, static_cast<size_t>(nq_)));
   }
 }
 
@@ -303,6 +304,15 @@ SpatialVec CustomJointModel::CalcHDotU(std::span<const double> q, std::span<cons
   SpatialVec A;
   A << a_w, a_v;
   return A;
+}
+
+std::vector<std::pair<int, double>> CustomJointModel::CurvatureJumps() const {
+  std::vector<std::pair<int, double>> jumps;
+  for (const TransformAxisTerm& term : axes_) {
+    if (term.kind != TransformAxisTerm::Kind::kFunction1) continue;
+    for (const double x : term.function->CurvatureJumps()) jumps.emplace_back(term.args[0], x);
+  }
+  return jumps;
 }
 
 }  // namespace sinew::kinematics

@@ -9,6 +9,8 @@
 
 #include <memory>
 #include <span>
+#include <utility>
+#include <vector>
 
 namespace sinew::kinematics {
 
@@ -46,6 +48,11 @@ class JointModel {
     if (nq() == 0) return SpatialVec::Zero();
     return CalcH_FM(q) * Eigen::Map<const VecX>(u.data(), nq());
   }
+
+  /// The values of the joint's coordinates (index in q, value) where the curvature of X_FM(q)
+  /// jumps (functions::Function::CurvatureJumps of an axis function of one coordinate): there
+  /// the velocity-product terms, and so the accelerations, jump.
+  virtual std::vector<std::pair<int, double>> CurvatureJumps() const { return {}; }
 };
 
 /// True when MakeJointModel can model joints of this type: every JointType except
