@@ -194,10 +194,16 @@ class RungeKutta45 final : public Integrator {
     if (!std::isfinite(norm)) norm = 1e10;
     // A step across a jump of the accelerations (CurvatureJumps) is retried to end just short of
     // it; the next step starts by crossing it (CrossJustAhead), so that no step straddles it.
-    const double to_jump = FractionToJump(state, y, t_new);
-    if (to_jump < 1.0) {
-      h_ = h * to_jump * (1.0 - 1e-8);
-      return false;
+    // The trial's end state, unpacked once: for the jumps' test and, when accepted, the step.
+    const bool unpacked = !system_.curvature_jumps().empty();
+    if (unpacked) {
+      trial_ = state;
+      vector_.Unpack(y, t_new, trial_);
+      const double to_jump = FractionToJump(state, trial_);
+      if (to_jump < 1.0) {
+        h_ = h * to_jump * (1.0 - 1e-8);
+        return false;
+      }
     }
     const double factor = norm == 0.0 ? 5.0 : std::clamp(0.9 * std::pow(norm, -0.2), 0.2, 5.0);
     if (norm > 1.0) {
@@ -223,8 +229,8 @@ class RungeKutta45 final : public Integrator {
       if (d[s] != 0.0) dense_.d4 += (h * d[s]) * k[s];
     }
     dense_.start = state;
-    State next = state;
-    vector_.Unpack(y, t_new, next);
+    State next = unpacked ? std::move(trial_) : state;
+    if (!unpacked) vector_.Unpack(y, t_new, next);
     if (!ProjectPositions(system_, next, ConstraintTolerance(), kkt_, 10,
                           &stats_.projection_factorizations)) {
       ++stats_.projection_failures;
@@ -243,23 +249,18 @@ class RungeKutta45 final : public Integrator {
     return true;
   }
 
-  // The fraction of the trial step from `state` to y (at t_new) at which a free coordinate
-  // reaches a curvature jump it crosses (linear in the coordinate), or 1 when it crosses none.
-  // A crossing too near the step's start to end short of (a step of 1e-9 s) is left to the
-  // error control.
-  double FractionToJump(const State& state, const VecX& y, double t_new) {
-    const auto& jumps = system_.curvature_jumps();
-    if (jumps.empty()) return 1.0;
-    trial_ = state;
-    vector_.Unpack(y, t_new, trial_);
+  // The fraction of the trial step from `state` to `trial` at which a free coordinate reaches a
+  // curvature jump it crosses (linear in the coordinate), or 1 when it crosses none. A crossing
+  // too near the step's start to end short of (a step of 1e-9 s) is left to the error control.
+  double FractionToJump(const State& state, const State& trial) const {
     double fraction = 1.0;
-    for (const auto& [coordinate, value] : jumps) {
-      const double q0 = state.q[coordinate], q1 = trial_.q[coordinate];
+    for (const auto& [coordinate, value] : system_.curvature_jumps()) {
+      const double q0 = state.q[coordinate], q1 = trial.q[coordinate];
       if ((q0 - value) * (q1 - value) < 0.0) {
         fraction = std::min(fraction, (value - q0) / (q1 - q0));
       }
     }
-    return fraction * (t_new - state.t) > 1e-9 ? fraction : 1.0;
+    return fraction * (trial.t - state.t) > 1e-9 ? fraction : 1.0;
   }
 
   // A step ended just short of a curvature jump: the coordinate, moving towards it, reaches it
@@ -299,7 +300,7 @@ class RungeKutta45 final : public Integrator {
   VecX k_[7];  // the stages' derivatives
   double h_ = 0.0;
   bool just_rejected_ = false;
-  State trial_;               // FractionToJump's unpacked trial state
+  State trial_;               // a trial step's end state, unpacked (models with curvature jumps)
   double step_from_ = 0.0;    // the last step's start before CrossJustAhead moved it
   std::string last_failure_;  ///< why the last trial stage failed (for the step-size error)
 };
