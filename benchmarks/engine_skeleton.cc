@@ -89,46 +89,62 @@ void BM_Rajagopal2016WithCouplersOneSecond(benchmark::State& bench) {
 BENCHMARK(BM_Rajagopal2016WithCouplersOneSecond)->Unit(benchmark::kMillisecond);
 
 // Issue #15's accuracy benchmark (tests/engine/hung_skeleton.h): one simulated second of a hung
-// skeleton with RK45 at accuracy 10^-k (k = the benchmark's argument). The error is measured, not
-// assumed: `err_rad` is the largest |q - q_ref| over the coordinates at 1 s, q_ref from a run at
-// accuracy 1e-12 made once before timing. The issue compares the time at the accuracy whose error
-// is 3e-6 rad with Simbody's; simbody_hung.cc times Simbody on the same motion.
+// skeleton with RK45 at accuracy 10^-k (`rk45`, k = the benchmark's argument) or 10^(-k/4)
+// (`sweep`: quarter decades, from which benchmarks/fit_hung_sweep.py reads the time at a given
+// error). The error is measured, not assumed: `err_rad` is the largest |q - q_ref| over the
+// coordinates at 1 s, q_ref from a run at accuracy 1e-12 made once per model before timing. The
+// issue compares the time at the accuracy whose error is 3e-6 rad with Simbody's;
+// simbody_hung.cc times Simbody on the same motion.
 using sinew::engine::testing::HungSkeleton;
 using sinew::engine::testing::MakeHungSkeleton;
 using sinew::engine::testing::RunHung;
 
-void TimeHung(benchmark::State& bench, const HungSkeleton& hung, const char* scheme) {
-  const double accuracy = std::pow(10.0, -static_cast<double>(bench.range(0)));
-  const sinew::engine::State reference = RunHung(hung, "rk45", 1e-12, nullptr);
+// A hung skeleton with its reference end state, made once per model.
+struct HungCase {
+  explicit HungCase(HungSkeleton skeleton)
+      : hung(std::move(skeleton)), reference(RunHung(hung, "rk45", 1e-12, nullptr)) {}
+  HungSkeleton hung;
+  sinew::engine::State reference;
+};
+
+// Arguments per decade of accuracy: 1 for `rk45`, 4 for `sweep`.
+void TimeHung(benchmark::State& bench, const HungCase& model, double args_per_decade) {
+  const double accuracy = std::pow(10.0, -static_cast<double>(bench.range(0)) / args_per_decade);
   sinew::engine::IntegratorStats stats;
   sinew::engine::State state;
   for (auto _ : bench) {
-    state = RunHung(hung, scheme, accuracy, &stats);
+    state = RunHung(model.hung, "rk45", accuracy, &stats);
     benchmark::DoNotOptimize(state.q.data());
   }
-  bench.counters["err_rad"] = (state.q - reference.q).lpNorm<Eigen::Infinity>();
+  bench.counters["err_rad"] = (state.q - model.reference.q).lpNorm<Eigen::Infinity>();
   bench.counters["steps"] = static_cast<double>(stats.steps);
   bench.counters["rejected"] = static_cast<double>(stats.rejected);
   bench.counters["evaluations"] = static_cast<double>(stats.evaluations);
 }
 
-void BM_Gait2354HungOneSecond(benchmark::State& bench, const char* scheme) {
-  static const HungSkeleton hung =
-      MakeHungSkeleton(sinew::engine::testing::kGait2354HungFile, false, -1.0);
-  TimeHung(bench, hung, scheme);
+void BM_Gait2354HungOneSecond(benchmark::State& bench, double args_per_decade) {
+  static const HungCase model(
+      MakeHungSkeleton(sinew::engine::testing::kGait2354HungFile, false, -1.0));
+  TimeHung(bench, model, args_per_decade);
 }
-BENCHMARK_CAPTURE(BM_Gait2354HungOneSecond, rk45, "rk45")
+BENCHMARK_CAPTURE(BM_Gait2354HungOneSecond, rk45, 1.0)
     ->DenseRange(6, 9)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Gait2354HungOneSecond, sweep, 4.0)
+    ->DenseRange(20, 40)
     ->Unit(benchmark::kMillisecond);
 
 // Rajagopal2016 hung the same way, with its patella couplers (its 80 muscles left out).
-void BM_Rajagopal2016HungOneSecond(benchmark::State& bench, const char* scheme) {
-  static const HungSkeleton hung =
-      MakeHungSkeleton(sinew::engine::testing::kRajagopal2016HungFile, true, 1.0);
-  TimeHung(bench, hung, scheme);
+void BM_Rajagopal2016HungOneSecond(benchmark::State& bench, double args_per_decade) {
+  static const HungCase model(
+      MakeHungSkeleton(sinew::engine::testing::kRajagopal2016HungFile, true, 1.0));
+  TimeHung(bench, model, args_per_decade);
 }
-BENCHMARK_CAPTURE(BM_Rajagopal2016HungOneSecond, rk45, "rk45")
+BENCHMARK_CAPTURE(BM_Rajagopal2016HungOneSecond, rk45, 1.0)
     ->DenseRange(6, 9)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Rajagopal2016HungOneSecond, sweep, 4.0)
+    ->DenseRange(20, 40)
     ->Unit(benchmark::kMillisecond);
 
 // One acceleration evaluation (loads, KKT factorization, solve) of the tumbling gait2354

@@ -7,8 +7,9 @@
 //
 // Reported: CPU time for one simulated second with Simbody's RungeKuttaMersonIntegrator
 // (OpenSim's default; `merson`) or RungeKuttaFeldbergIntegrator (`feldberg`) at accuracy 10^-k
-// (k = the argument); `err_rad`, the largest coordinate error at 1 s against a Simbody run at
-// accuracy 1e-12; `vs_sinew_rad`, how far that Simbody reference lies from Sinew's own at
+// (k = the argument), or RK Merson at 10^(-k/4) (`merson_sweep`: quarter decades, read by
+// benchmarks/fit_hung_sweep.py); `err_rad`, the largest coordinate error at 1 s against a Simbody
+// run at accuracy 1e-12; `vs_sinew_rad`, how far that Simbody reference lies from Sinew's own at
 // 1e-12; `energy_change_J`, how much mechanical energy that reference gained (nothing but
 // gravity acts: it should be zero to the integration's error); `steps`, `rejected` and
 // `evaluations` (realizations), what the integrator did. CPU time at the accuracy whose error is
@@ -50,8 +51,8 @@ struct SimbodyCase {
 };
 
 void TimeSimbody(benchmark::State& bench, const SimbodyCase& model,
-                 simbody_reference::Simulation::Scheme scheme) {
-  const double accuracy = std::pow(10.0, -static_cast<double>(bench.range(0)));
+                 simbody_reference::Simulation::Scheme scheme, double args_per_decade) {
+  const double accuracy = std::pow(10.0, -static_cast<double>(bench.range(0)) / args_per_decade);
   simbody_reference::Simulation::RunStats stats;
   std::vector<double> q;
   for (auto _ : bench) {
@@ -70,28 +71,37 @@ void TimeSimbody(benchmark::State& bench, const SimbodyCase& model,
 
 using Scheme = simbody_reference::Simulation::Scheme;
 
-void BM_SimbodyGait2354HungOneSecond(benchmark::State& bench, Scheme scheme) {
+void BM_SimbodyGait2354HungOneSecond(benchmark::State& bench, Scheme scheme,
+                                     double args_per_decade) {
   static const SimbodyCase model(sinew::engine::testing::MakeHungSkeleton(
       sinew::engine::testing::kGait2354HungFile, false, -1.0));
-  TimeSimbody(bench, model, scheme);
+  TimeSimbody(bench, model, scheme, args_per_decade);
 }
-BENCHMARK_CAPTURE(BM_SimbodyGait2354HungOneSecond, merson, Scheme::kRungeKuttaMerson)
+BENCHMARK_CAPTURE(BM_SimbodyGait2354HungOneSecond, merson, Scheme::kRungeKuttaMerson, 1.0)
     ->DenseRange(5, 9)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SimbodyGait2354HungOneSecond, feldberg, Scheme::kRungeKuttaFeldberg)
+BENCHMARK_CAPTURE(BM_SimbodyGait2354HungOneSecond, feldberg, Scheme::kRungeKuttaFeldberg, 1.0)
     ->DenseRange(5, 11)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SimbodyGait2354HungOneSecond, merson_sweep, Scheme::kRungeKuttaMerson, 4.0)
+    ->DenseRange(28, 40)
+    ->Unit(benchmark::kMillisecond);
 
-void BM_SimbodyRajagopal2016HungOneSecond(benchmark::State& bench, Scheme scheme) {
+void BM_SimbodyRajagopal2016HungOneSecond(benchmark::State& bench, Scheme scheme,
+                                          double args_per_decade) {
   static const SimbodyCase model(sinew::engine::testing::MakeHungSkeleton(
       sinew::engine::testing::kRajagopal2016HungFile, true, 1.0));
-  TimeSimbody(bench, model, scheme);
+  TimeSimbody(bench, model, scheme, args_per_decade);
 }
-BENCHMARK_CAPTURE(BM_SimbodyRajagopal2016HungOneSecond, merson, Scheme::kRungeKuttaMerson)
+BENCHMARK_CAPTURE(BM_SimbodyRajagopal2016HungOneSecond, merson, Scheme::kRungeKuttaMerson, 1.0)
     ->DenseRange(5, 9)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SimbodyRajagopal2016HungOneSecond, feldberg, Scheme::kRungeKuttaFeldberg)
+BENCHMARK_CAPTURE(BM_SimbodyRajagopal2016HungOneSecond, feldberg, Scheme::kRungeKuttaFeldberg, 1.0)
     ->DenseRange(5, 10)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SimbodyRajagopal2016HungOneSecond, merson_sweep, Scheme::kRungeKuttaMerson,
+                  4.0)
+    ->DenseRange(20, 36)
     ->Unit(benchmark::kMillisecond);
 
 // One acceleration evaluation of the tumbling gait2354 skeleton in Simbody: the counterpart of
