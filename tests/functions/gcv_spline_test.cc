@@ -364,6 +364,16 @@ TEST(GCVSplineTest, ChosenSmoothingMinimizesTheDenseCriterion) {
   EXPECT_LT(interpolating, 4);  // the data are noisy: smoothing wins at least once
 }
 
+// Breakpoints (rk45 ends a failing step at them): a cubic's knots, where its pieces' third
+// derivatives differ (its ends too: the natural spline's f'' is 0 there, but not its f''', and
+// the line outside has none); none for a quintic.
+TEST(GCVSplineTest, BreakpointsAreACubicsKnots) {
+  const functions::GCVSpline cubic(2, kX, kY, 0.0);
+  EXPECT_TRUE(testing::ThirdDerivativeChangesAtEveryKnot(cubic, kX));
+  EXPECT_EQ(cubic.Breakpoints(), kX);
+  EXPECT_TRUE(functions::GCVSpline(3, kX, kY, 0.0).Breakpoints().empty());
+}
+
 TEST(GCVSplineTest, RejectsInvalidInput) {
   EXPECT_THROW(functions::GCVSpline(0, kX, kY), Error);
   EXPECT_THROW(functions::GCVSpline(5, kX, kY), Error);

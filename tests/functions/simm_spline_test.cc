@@ -198,6 +198,28 @@ TEST(SimmSplineTest, DerivativesMatchFiniteDifferences) {
   }
 }
 
+// Breakpoints (rk45 ends a failing step at them): where the pieces on either side differ in their
+// second or third derivative, the lines past the ends having neither.
+TEST(SimmSplineTest, BreakpointsAreTheKnotsWhereThePiecesDiffer) {
+  // A line: one piece, continued by the same line.
+  EXPECT_TRUE(functions::SimmSpline({0.0, 1.0}, {1.0, 3.0}).Breakpoints().empty());
+  // Three knots give one parabola (f'' = 2 throughout): only its ends, where f'' drops to 0.
+  EXPECT_EQ(functions::SimmSpline({-1.0, 0.5, 2.0}, {1.0, 0.25, 4.0}).Breakpoints(),
+            (std::vector<double>{-1.0, 2.0}));
+  // FMM reproduces a cubic's data exactly: one cubic, so only its ends (f'' = 6 x there).
+  std::vector<double> x, y;
+  for (double t = 0.5; t < 3.1; t += 0.5) {
+    x.push_back(t);
+    y.push_back(t * t * t - 2.0 * t);
+  }
+  EXPECT_EQ(functions::SimmSpline(x, y).Breakpoints(), (std::vector<double>{0.5, 3.0}));
+  // The knee's data: the third derivatives of neighbouring pieces (f'' differenced across each
+  // piece's middle) all differ, so every knot is one.
+  const functions::SimmSpline knee(kKneeX, kKneeY);
+  EXPECT_TRUE(testing::ThirdDerivativeChangesAtEveryKnot(knee, kKneeX));
+  EXPECT_EQ(knee.Breakpoints(), kKneeX);
+}
+
 TEST(SimmSplineTest, RejectsBadKnots) {
   EXPECT_THROW(functions::SimmSpline({0.0}, {1.0}), Error);
   EXPECT_THROW(functions::SimmSpline({0.0, 1.0}, {1.0}), Error);

@@ -46,9 +46,9 @@ class Constraint {
   /// b = -Jdot v + dc/dt, the acceleration right-hand side.
   virtual void CalcAccelerationRhs(const System& system, const State& state,
                                    Eigen::Ref<VecX> b) const = 0;
-  /// The values of coordinates (indices into System::coordinates(), value) where b jumps (a
-  /// function's functions::Function::CurvatureJumps).
-  virtual std::vector<std::pair<int, double>> CurvatureJumps() const { return {}; }
+  /// The values of coordinates (indices into System::coordinates(), value) where b or its rate of
+  /// change jumps (a function's functions::Function::Breakpoints).
+  virtual std::vector<std::pair<int, double>> Breakpoints() const { return {}; }
 };
 
 }  // namespace sinew::engine

@@ -97,6 +97,10 @@ class RungeKutta45 final : public Integrator {
     Eval(y0_, state.t, scratch, k_[0]);
     step_from_ = state.t;
     if (CrossJustAhead(state, t_final)) {
+      // The step that failed across it says how long a step may be; the short one that ended
+      // just before it says nothing.
+      h_ = std::max(h_, step_across_);
+      step_across_ = 0.0;
       y0_ = vector_.Pack(state);
       scratch = state;
       Eval(y0_, state.t, scratch, k_[0]);
@@ -192,16 +196,19 @@ class RungeKutta45 final : public Integrator {
     }
     norm /= settings_.accuracy;
     if (!std::isfinite(norm)) norm = 1e10;
-    // A step across a jump of the accelerations (CurvatureJumps) is retried to end just short of
-    // it; the next step starts by crossing it (CrossJustAhead), so that no step straddles it.
-    // The trial's end state, unpacked once: for the jumps' test and, when accepted, the step.
-    const bool unpacked = !system_.curvature_jumps().empty();
+    // A failing step across a breakpoint (System::breakpoints: the accelerations or their rate
+    // jump there, so the error is that of the jump) is retried to end just short of the first
+    // one it crosses, instead of shorter by the error's rule; the next step starts by crossing it
+    // (CrossJustAhead). The trial's end state, unpacked once: for this test and, when accepted,
+    // the step.
+    const bool unpacked = !system_.breakpoints().empty();
     if (unpacked) {
       trial_ = state;
       vector_.Unpack(y, t_new, trial_);
-      const double to_jump = FractionToJump(state, trial_);
-      if (to_jump < 1.0) {
-        h_ = h * to_jump * (1.0 - 1e-8);
+      const double to_breakpoint = norm > 1.0 ? FractionToBreakpoint(state, trial_) : 1.0;
+      if (to_breakpoint < 1.0) {
+        h_ = h * to_breakpoint * (1.0 - 1e-8);
+        step_across_ = std::max(step_across_, h);
         return false;
       }
     }
@@ -249,28 +256,53 @@ class RungeKutta45 final : public Integrator {
     return true;
   }
 
-  // The fraction of the trial step from `state` to `trial` at which a free coordinate reaches a
-  // curvature jump it crosses (linear in the coordinate), or 1 when it crosses none. A crossing
-  // too near the step's start to end short of (a step of 1e-9 s) is left to the error control.
-  double FractionToJump(const State& state, const State& trial) const {
+  // The fraction of the trial step from `state` to `trial` at which a free coordinate first
+  // reaches a breakpoint it crosses, or 1 when it crosses none. The coordinate's course is taken
+  // as the cubic with its values and rates at the two ends (its error, of the order of the
+  // step's fourth power, leaves the step ending near the breakpoint; the next trials close in).
+  // A crossing too near the step's start to end short of (a step of 1e-9 s) is left to the
+  // error control.
+  double FractionToBreakpoint(const State& state, const State& trial) const {
     double fraction = 1.0;
-    for (const auto& [coordinate, value] : system_.curvature_jumps()) {
-      const double q0 = state.q[coordinate], q1 = trial.q[coordinate];
-      if ((q0 - value) * (q1 - value) < 0.0) {
-        fraction = std::min(fraction, (value - q0) / (q1 - q0));
+    const double h = trial.t - state.t;
+    for (const auto& [coordinate, value] : system_.breakpoints()) {
+      const double g0 = state.q[coordinate] - value, g1 = trial.q[coordinate] - value;
+      if (g0 * g1 < 0.0) {
+        fraction =
+            std::min(fraction, CubicRoot(g0, h * state.u[coordinate], g1, h * trial.u[coordinate]));
       }
     }
-    return fraction * (trial.t - state.t) > 1e-9 ? fraction : 1.0;
+    return fraction * h > 1e-9 ? fraction : 1.0;
   }
 
-  // A step ended just short of a curvature jump: the coordinate, moving towards it, reaches it
+  // Where in (0, 1) the cubic with g(0) = g0, g(1) = g1 (of opposite signs), g'(0) = d0 and
+  // g'(1) = d1 (Hermite's) is zero: Newton's method from the chord's zero, falling back to
+  // bisection when a step leaves the bracket.
+  static double CubicRoot(double g0, double d0, double g1, double d1) {
+    double lo = 0.0, hi = 1.0, s = g0 / (g0 - g1);
+    for (int i = 0; i < 20; ++i) {
+      const double s2 = s * s, s3 = s2 * s;
+      const double g = (2 * s3 - 3 * s2 + 1) * g0 + (s3 - 2 * s2 + s) * d0 +
+                       (3 * s2 - 2 * s3) * g1 + (s3 - s2) * d1;
+      const double dg =
+          6 * (s2 - s) * (g0 - g1) + (3 * s2 - 4 * s + 1) * d0 + (3 * s2 - 2 * s) * d1;
+      ((g < 0.0) == (g0 < 0.0) ? lo : hi) = s;
+      double next = s - g / dg;
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      if (std::abs(next - s) <= 1e-14) return next;
+      s = next;
+    }
+    return s;
+  }
+
+  // A step ended just short of a breakpoint: the coordinate, moving towards it, reaches it
   // within 1e-7 of the next step (or 1e-10 s), before t_final. Then `state` crosses it by one
   // explicit Euler step of that length (its error, of the order of the step squared, is far
   // below the accuracy), so that the next step's stages all lie past it. True when it did.
   bool CrossJustAhead(State& state, double t_final) {
-    const auto& jumps = system_.curvature_jumps();
+    const auto& breakpoints = system_.breakpoints();
     double step = 0.0;
-    for (const auto& [coordinate, value] : jumps) {
+    for (const auto& [coordinate, value] : breakpoints) {
       const double gap = value - state.q[coordinate], u = state.u[coordinate];
       if (u == 0.0 || gap * u <= 0.0) continue;
       const double dt = gap / u;
@@ -280,8 +312,10 @@ class RungeKutta45 final : public Integrator {
     const VecX q0 = state.q;
     y0_ += step * k_[0];
     vector_.Unpack(y0_, state.t + step, state);
-    for (const auto& [coordinate, value] : jumps) {
-      if ((q0[coordinate] - value) * (state.q[coordinate] - value) < 0.0) ++stats_.curvature_jumps;
+    for (const auto& [coordinate, value] : breakpoints) {
+      if ((q0[coordinate] - value) * (state.q[coordinate] - value) < 0.0) {
+        ++stats_.breakpoints_crossed;
+      }
     }
     return true;
   }
@@ -300,14 +334,15 @@ class RungeKutta45 final : public Integrator {
   VecX k_[7];  // the stages' derivatives
   double h_ = 0.0;
   bool just_rejected_ = false;
-  State trial_;               // a trial step's end state, unpacked (models with curvature jumps)
+  State trial_;               // a trial step's end state, unpacked (models with breakpoints)
   double step_from_ = 0.0;    // the last step's start before CrossJustAhead moved it
+  double step_across_ = 0.0;  // the longest failing step retried to end short of a breakpoint
   std::string last_failure_;  ///< why the last trial stage failed (for the step-size error)
 };
 
 void RungeKutta45::Interpolate(double t, State& out) {
   const double h = dense_.h;
-  // From where the step started before crossing a curvature jump just ahead (at most 1e-7 of it
+  // From where the step started before crossing a breakpoint just ahead (at most 1e-7 of it
   // earlier: those times get the crossed state).
   const double from = std::min(dense_.t0, step_from_);
   if (!(h > 0.0) || !(t >= from - 1e-12 * h && t <= dense_.t0 + h * (1 + 1e-12))) {

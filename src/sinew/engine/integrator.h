@@ -55,10 +55,10 @@ struct IntegratorStats {
   long projection_failures = 0;        ///< steps rejected because the projection did not converge
   long linear_iterations = 0;          ///< Krylov iterations of the Newton systems (cvode-gmres)
   long preconditioner_setups = 0;      ///< preconditioner evaluations (cvode-gmres-bd)
-  /// Jumps of the accelerations crossed at a step's start (System::curvature_jumps, each
-  /// coordinate's counted: rk45 ends a step just short of them and crosses them with a tiny Euler
-  /// step, so that no step straddles them).
-  long curvature_jumps = 0;
+  /// Breakpoints crossed at a step's start (System::breakpoints, each coordinate's counted): a
+  /// trial step across one that fails its error test is retried to end just short of it, and the
+  /// next step crosses it with a tiny Euler step.
+  long breakpoints_crossed = 0;
 };
 
 /// Advances a State of one System in time. Keeps a reference to the System: the System must

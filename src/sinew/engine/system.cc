@@ -173,29 +173,28 @@ void System::Finalize() {
     constraints_.push_back(c);
     held_by_tree_placement_.push_back(false);
   }
-  CollectCurvatureJumps();
+  CollectBreakpoints();
 }
 
-void System::CollectCurvatureJumps() {
-  curvature_jumps_.clear();
+void System::CollectBreakpoints() {
+  breakpoints_.clear();
   for (const Joint& joint : joints_) {
     if (joint.form != JointForm::kParameterized || !joint.model) continue;
-    for (const auto& [local, value] : joint.model->CurvatureJumps()) {
-      curvature_jumps_.emplace_back(joint.coordinates[local], value);
+    for (const auto& [local, value] : joint.model->Breakpoints()) {
+      breakpoints_.emplace_back(joint.coordinates[local], value);
     }
   }
   for (const auto& c : extra_constraints_) {
-    const std::vector<std::pair<int, double>> jumps = c->CurvatureJumps();
-    curvature_jumps_.insert(curvature_jumps_.end(), jumps.begin(), jumps.end());
+    const std::vector<std::pair<int, double>> points = c->Breakpoints();
+    breakpoints_.insert(breakpoints_.end(), points.begin(), points.end());
   }
   // Only where the coordinate moves freely (a locked or prescribed one crosses nothing the
   // integrator could step to), each once.
-  std::erase_if(curvature_jumps_, [this](const std::pair<int, double>& jump) {
-    return coordinates_[jump.first].motion != CoordinateMotion::kFree;
+  std::erase_if(breakpoints_, [this](const std::pair<int, double>& point) {
+    return coordinates_[point.first].motion != CoordinateMotion::kFree;
   });
-  std::sort(curvature_jumps_.begin(), curvature_jumps_.end());
-  curvature_jumps_.erase(std::unique(curvature_jumps_.begin(), curvature_jumps_.end()),
-                         curvature_jumps_.end());
+  std::sort(breakpoints_.begin(), breakpoints_.end());
+  breakpoints_.erase(std::unique(breakpoints_.begin(), breakpoints_.end()), breakpoints_.end());
 }
 
 int System::FindBody(std::string_view name) const {

@@ -140,10 +140,11 @@ class System {
   bool IsLoop(int j) const { return loop_[j]; }
   /// Whether any joint closes a loop.
   bool HasLoops() const { return std::find(loop_.begin(), loop_.end(), true) != loop_.end(); }
-  /// The values of free coordinates (index into coordinates(), value) where the accelerations
-  /// jump: the curvature jumps of parameterized joints' axis functions and of couplers'
-  /// functions (a cubic spline's ends). rk45 ends a step there. Valid after Finalize().
-  const std::vector<std::pair<int, double>>& curvature_jumps() const { return curvature_jumps_; }
+  /// The values of free coordinates (index into coordinates(), value), sorted, where the
+  /// accelerations or their rate of change jump: the breakpoints of parameterized joints' axis
+  /// functions and of couplers' functions (a cubic spline's knots and ends). rk45 ends a failing
+  /// step there. Valid after Finalize().
+  const std::vector<std::pair<int, double>>& breakpoints() const { return breakpoints_; }
   /// Whether constraints were added with AddConstraint (couplers, welds, ...).
   bool HasExtraConstraints() const { return !extra_constraints_.empty(); }
   /// Whether constraint k holds by construction after the fixed-step schemes' position update
@@ -175,8 +176,8 @@ class System {
 
  private:
   void RequireNotFinalized() const;
-  // curvature_jumps_ from the joints and the extra constraints (Finalize).
-  void CollectCurvatureJumps();
+  // breakpoints_ from the joints and the extra constraints (Finalize).
+  void CollectBreakpoints();
 
   Vec3 gravity_;
   std::vector<Body> bodies_;
@@ -197,7 +198,7 @@ class System {
   std::vector<std::string> input_names_;
   std::vector<int> u_column_;
   std::vector<int> tree_order_;
-  std::vector<std::pair<int, double>> curvature_jumps_;
+  std::vector<std::pair<int, double>> breakpoints_;
   std::vector<int> joint_of_body_;
   std::vector<bool> reversed_;
   std::vector<bool> loop_;

@@ -97,11 +97,11 @@ void CoordinateCouplerConstraint::CalcAccelerationRhs(const engine::System&,
   b[0] = scale_ * sum;
 }
 
-std::vector<std::pair<int, double>> CoordinateCouplerConstraint::CurvatureJumps() const {
-  std::vector<std::pair<int, double>> jumps;
-  if (independent_.size() != 1) return jumps;
-  for (const double x : f_->CurvatureJumps()) jumps.emplace_back(independent_[0], x);
-  return jumps;
+std::vector<std::pair<int, double>> CoordinateCouplerConstraint::Breakpoints() const {
+  std::vector<std::pair<int, double>> points;
+  if (independent_.size() != 1) return points;
+  for (const double x : f_->Breakpoints()) points.emplace_back(independent_[0], x);
+  return points;
 }
 
 }  // namespace sinew::forces

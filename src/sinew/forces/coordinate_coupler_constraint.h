@@ -40,7 +40,7 @@ class CoordinateCouplerConstraint final : public engine::Constraint {
   void CalcAccelerationRhs(const engine::System& system, const engine::State& state,
                            Eigen::Ref<VecX> b) const override;
   /// The function's (of one independent coordinate) on that coordinate.
-  std::vector<std::pair<int, double>> CurvatureJumps() const override;
+  std::vector<std::pair<int, double>> Breakpoints() const override;
 
  private:
   std::string name_;

@@ -34,10 +34,12 @@ class Function {
     return CalcDerivative(x[0], static_cast<int>(wrt.size()));
   }
 
-  /// The arguments (of a one-argument function) where f'' jumps while f and f' stay continuous,
-  /// such as a cubic spline's ends, past which it extrapolates linearly. A coordinate crossing
-  /// one makes the accelerations jump; rk45 steps to it (engine::System::curvature_jumps).
-  virtual std::vector<double> CurvatureJumps() const { return {}; }
+  /// The arguments (of a one-argument function), ascending, where its polynomial pieces meet
+  /// with f and f' continuous but f'' or f''' jumping: a cubic spline's inner knots (f''') and
+  /// its ends, past which it extrapolates linearly (f'', or f''' where the end is not curved). A
+  /// coordinate crossing one makes the accelerations, or their rate of change, jump there; rk45
+  /// ends a failing step at it (engine::System::breakpoints).
+  virtual std::vector<double> Breakpoints() const { return {}; }
 };
 
 using FunctionPtr = std::shared_ptr<const Function>;

@@ -265,13 +265,34 @@ double GCVSpline::CalcDerivative(double x, int order) const {
   return CalcPiece(FindKnotInterval(x_, x), x, order);
 }
 
-std::vector<double> GCVSpline::CurvatureJumps() const {
-  std::vector<double> jumps;
-  if (half_order_ != 2) return jumps;
-  for (const double end : {x_.front(), x_.back()}) {
-    if (CalcDerivative(end, 2) != 0.0) jumps.push_back(end);
+// A cubic's knots where the pieces on either side differ in their second or third derivative
+// (outside, the lines have neither), by more than 1e-9 of its largest f'' (or f''' over the
+// knots' span): smaller differences are rounding.
+std::vector<double> GCVSpline::Breakpoints() const {
+  std::vector<double> points;
+  if (half_order_ != 2) return points;
+  const int last = static_cast<int>(x_.size()) - 1;
+  const double span = x_[last] - x_[0];
+  // f'' and f''' * span on either side of knot i (0 on the lines outside).
+  const auto side = [&](int i, int piece, int order) {
+    if (piece < 0 || piece == last) return 0.0;
+    return CalcPiece(piece, x_[i], order) * (order == 3 ? span : 1.0);
+  };
+  double largest = 0.0;
+  for (int i = 0; i <= last; ++i) {
+    for (const int order : {2, 3}) {
+      largest = std::max({largest, std::abs(side(i, i - 1, order)), std::abs(side(i, i, order))});
+    }
   }
-  return jumps;
+  for (int i = 0; i <= last; ++i) {
+    for (const int order : {2, 3}) {
+      if (std::abs(side(i, i - 1, order) - side(i, i, order)) > 1e-9 * largest) {
+        points.push_back(x_[i]);
+        break;
+      }
+    }
+  }
+  return points;
 }
 
 }  // namespace sinew::functions

@@ -47,9 +47,10 @@ class GCVSpline final : public Function {
   std::string TypeName() const override { return "GCVSpline"; }
   double Calc(double x) const override { return CalcDerivative(x, 0); }
   double CalcDerivative(double x, int order) const override;
-  /// A cubic one's ends where its curvature is not zero: past them it continues linearly (a
-  /// quintic continues with its curvature, a linear one has corners at every knot instead).
-  std::vector<double> CurvatureJumps() const override;
+  /// A cubic one's knots, ends included (past them it continues linearly); none for a quintic
+  /// (its fourth derivative jumps, below what rk45's error control feels) or a linear one (its
+  /// corners make the velocities jump, which no step can cross exactly).
+  std::vector<double> Breakpoints() const override;
 
   int half_order() const { return half_order_; }
   /// Degree of the pieces, 2 * half_order - 1.

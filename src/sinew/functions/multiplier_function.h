@@ -23,7 +23,7 @@ class MultiplierFunction final : public Function {
   double CalcPartialN(std::span<const double> x, std::span<const int> wrt) const override {
     return scale_ * function_->CalcPartialN(x, wrt);
   }
-  std::vector<double> CurvatureJumps() const override { return function_->CurvatureJumps(); }
+  std::vector<double> Breakpoints() const override { return function_->Breakpoints(); }
 
   const FunctionPtr& function() const { return function_; }
   double scale() const { return scale_; }

@@ -3,6 +3,7 @@
 #include <sinew/functions/simm_spline.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace sinew::functions {
 namespace {
@@ -100,12 +101,29 @@ double SimmSpline::CalcDerivative(double x, int order) const {
   return 2.0 * c_[k] + 6.0 * dx * d_[k];
 }
 
-std::vector<double> SimmSpline::CurvatureJumps() const {
-  std::vector<double> jumps;
-  for (const double end : {x_.front(), x_.back()}) {
-    if (CalcDerivative(end, 2) != 0.0) jumps.push_back(end);  // the end's own cubic
+// The knots where the pieces on either side differ in their third derivative (6 d; 0 on the
+// lines outside), and the ends whose cubic is curved there (f'' is continuous inside).
+// Differences within 1e-9 of the spline's largest f'' (or f''' over the knots' span) are
+// rounding: a cubic's or a parabola's data give one cubic or parabola.
+std::vector<double> SimmSpline::Breakpoints() const {
+  const std::size_t last = x_.size() - 1;
+  double largest_second = 0.0, largest_third = 0.0;
+  for (std::size_t i = 0; i <= last; ++i) {
+    largest_second = std::max(largest_second, std::abs(CalcDerivative(x_[i], 2)));
+    if (i < last) largest_third = std::max(largest_third, 6.0 * std::abs(d_[i]));
   }
-  return jumps;
+  const double span = std::max(kMinSpacing, x_[last] - x_[0]);
+  const double second_tolerance = 1e-9 * std::max(largest_second, largest_third * span);
+  std::vector<double> points;
+  for (std::size_t i = 0; i <= last; ++i) {
+    const double before = i == 0 ? 0.0 : 6.0 * d_[i - 1], after = i == last ? 0.0 : 6.0 * d_[i];
+    const bool end = i == 0 || i == last;
+    if (std::abs(before - after) * span > second_tolerance ||
+        (end && std::abs(CalcDerivative(x_[i], 2)) > second_tolerance)) {
+      points.push_back(x_[i]);
+    }
+  }
+  return points;
 }
 
 }  // namespace sinew::functions

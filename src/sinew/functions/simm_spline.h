@@ -27,8 +27,8 @@ class SimmSpline final : public Function {
   std::string TypeName() const override { return "SimmSpline"; }
   double Calc(double x) const override;
   double CalcDerivative(double x, int order) const override;
-  /// Its ends where its curvature is not zero: past them it extrapolates linearly.
-  std::vector<double> CurvatureJumps() const override;
+  /// Its inner knots and its ends (past which it extrapolates linearly); none for a line.
+  std::vector<double> Breakpoints() const override;
 
   /// The knots and the data values, as given.
   const std::vector<double>& x() const { return x_; }

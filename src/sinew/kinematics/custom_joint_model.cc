@@ -306,13 +306,13 @@ SpatialVec CustomJointModel::CalcHDotU(std::span<const double> q, std::span<cons
   return A;
 }
 
-std::vector<std::pair<int, double>> CustomJointModel::CurvatureJumps() const {
-  std::vector<std::pair<int, double>> jumps;
+std::vector<std::pair<int, double>> CustomJointModel::Breakpoints() const {
+  std::vector<std::pair<int, double>> points;
   for (const TransformAxisTerm& term : axes_) {
     if (term.kind != TransformAxisTerm::Kind::kFunction1) continue;
-    for (const double x : term.function->CurvatureJumps()) jumps.emplace_back(term.args[0], x);
+    for (const double x : term.function->Breakpoints()) points.emplace_back(term.args[0], x);
   }
-  return jumps;
+  return points;
 }
 
 }  // namespace sinew::kinematics

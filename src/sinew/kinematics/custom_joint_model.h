@@ -41,7 +41,7 @@ class CustomJointModel final : public JointModel {
              std::span<double> u) const override;
   SpatialVec CalcHDotU(std::span<const double> q, std::span<const double> u) const override;
   SpatialVec CalcV_FM(std::span<const double> q, std::span<const double> u) const override;
-  std::vector<std::pair<int, double>> CurvatureJumps() const override;
+  std::vector<std::pair<int, double>> Breakpoints() const override;
 
   /// The six axes (for reports and tests).
   const std::array<TransformAxisTerm, 6>& axes() const { return axes_; }

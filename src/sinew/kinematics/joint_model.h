@@ -49,10 +49,11 @@ class JointModel {
     return CalcH_FM(q) * Eigen::Map<const VecX>(u.data(), nq());
   }
 
-  /// The values of the joint's coordinates (index in q, value) where the curvature of X_FM(q)
-  /// jumps (functions::Function::CurvatureJumps of an axis function of one coordinate): there
-  /// the velocity-product terms, and so the accelerations, jump.
-  virtual std::vector<std::pair<int, double>> CurvatureJumps() const { return {}; }
+  /// The values of the joint's coordinates (index in q, value) where the second or third
+  /// derivative of X_FM(q) jumps (functions::Function::Breakpoints of an axis function of one
+  /// coordinate): there the velocity-product terms, and so the accelerations or their rate of
+  /// change, jump.
+  virtual std::vector<std::pair<int, double>> Breakpoints() const { return {}; }
 };
 
 /// True when MakeJointModel can model joints of this type: every JointType except
