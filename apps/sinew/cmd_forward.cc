@@ -107,8 +107,7 @@ void RunForward(const ForwardOptions& options) {
   if (!options.quiet) {
     const auto& stats = integrator->stats();
     std::cout << "simulated " << ShowNumber(t0) << " to " << ShowNumber(setup.final_time)
-              << " s of " << spec.name << ": " << stats.steps << " steps (" << stats.rejected
-              << " rejected), " << stats.evaluations << " evaluations; wrote " << base
+              << " s of " << spec.name << ": " << DescribeSteps(stats) << "; wrote " << base
               << "_states.sto, _states_degrees.mot, _controls.sto and _forces.sto\n";
   }
 }

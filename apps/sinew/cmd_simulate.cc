@@ -199,9 +199,9 @@ void RunSimulate(const SimulateOptions& options) {
   }
   if (!options.quiet) {
     const auto& stats = integrator->stats();
-    std::cout << "simulated " << options.duration << " s of " << spec.name << ": " << stats.steps
-              << " steps (" << stats.rejected << " rejected), " << stats.evaluations
-              << " evaluations; wrote " << options.out << "/states.sto, bodies.sto, forces.sto"
+    std::cout << "simulated " << options.duration << " s of " << spec.name << ": "
+              << DescribeSteps(stats) << "; wrote " << options.out
+              << "/states.sto, bodies.sto, forces.sto"
               << (tables.writes_contacts() ? ", contacts.sto" : "")
               << (options.report_constraint_forces ? " and constraints.sto\n" : "\n");
   }

@@ -251,4 +251,14 @@ void RunWithProgress(engine::Integrator& integrator, engine::State& state, doubl
   throw ExitRequest{128 + interrupt.Signal()};
 }
 
+std::string DescribeSteps(const engine::IntegratorStats& stats) {
+  std::string text = std::to_string(stats.steps) + " steps (" + std::to_string(stats.rejected) +
+                     " rejected), " + std::to_string(stats.evaluations) + " evaluations";
+  if (stats.breakpoints_crossed > 0) {
+    text += ", " + std::to_string(stats.breakpoints_crossed) + " spline breakpoint" +
+            (stats.breakpoints_crossed == 1 ? "" : "s") + " crossed at a step's end";
+  }
+  return text;
+}
+
 }  // namespace sinew::cli

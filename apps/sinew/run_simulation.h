@@ -78,6 +78,10 @@ struct TableFiles {
   std::string contacts;  ///< contact forces per body; written only when the model has some, or NSC
 };
 
+/// What the integrator did, for a run's summary: "N steps (R rejected), E evaluations", and how
+/// many spline breakpoints rk45 crossed at a step's end when it did.
+std::string DescribeSteps(const engine::IntegratorStats& stats);
+
 /// The tables of a run, streamed to disk row by row (bounded memory) and committed by Finish.
 class RunTables {
  public:

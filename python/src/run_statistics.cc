@@ -11,7 +11,8 @@ namespace sinew::python {
 py::dict RunStatistics(const engine::Integrator& integrator) {
   const engine::IntegratorStats stats = integrator.stats();
   py::dict statistics(py::arg("steps") = stats.steps, py::arg("rejected") = stats.rejected,
-                      py::arg("evaluations") = stats.evaluations);
+                      py::arg("evaluations") = stats.evaluations,
+                      py::arg("breakpoints_crossed") = stats.breakpoints_crossed);
   if (const auto* nsc = dynamic_cast<const engine::NscIntegrator*>(&integrator)) {
     const engine::NscSolveSummary& solves = nsc->solve_summary();
     statistics["nsc_solves"] = solves.solves;

@@ -1,6 +1,10 @@
 """Model.simulate runs what `sinew simulate` runs: the same arrays bit for bit, and the same
 states.sto byte for byte (Result.to_sto), with initial states, excitations, and the rk45, cvode
 and euler integrators."""
+import os
+import re
+import subprocess
+
 import numpy as np
 import pytest
 
@@ -94,3 +98,32 @@ def test_initial_muscle_states_are_taken_as_the_cli_takes_them(cli, tmp_path, eq
     activations = [k for k, name in enumerate(result.state_variables)
                    if name.endswith("/activation")]
     assert np.all(result.z[0, activations] == 0.5)
+
+
+def test_statistics_are_the_clis_summary_with_the_spline_breakpoints_crossed(tmp_path):
+    # gait2354's right knee swung at -10 rad/s from -0.1 rad crosses knots of its splines (there
+    # are knots at 0 to 2.1 rad); at accuracy 1e-8 rk45 ends a failing step at two of them.
+    # Result.statistics counts what `sinew simulate` prints: steps, rejected trials,
+    # evaluations, and those breakpoints.
+    program = os.environ.get("SINEW_CLI")
+    if not program:
+        pytest.skip("SINEW_CLI is not set (ctest sets it to the built sinew program)")
+    gait2354 = DATA / "opensim-org/opensim-core/OpenSim/Simulation/Test/gait2354_simbody.osim"
+    start = tmp_path / "start.sto"
+    start.write_text("start\nversion=1\nnRows=1\nnColumns=3\ninDegrees=no\nendheader\n"
+                     "time\t/jointset/knee_r/knee_angle_r/value\t"
+                     "/jointset/knee_r/knee_angle_r/speed\n0\t-0.1\t-10\n")
+    run = subprocess.run([program, "simulate", str(gait2354), "--duration", "0.05", "--accuracy",
+                          "1e-8", "--initial-states", str(start), "--out", str(tmp_path / "cli")],
+                         check=True, capture_output=True, text=True)
+    summary = re.search(r"(\d+) steps \((\d+) rejected\), (\d+) evaluations, (\d+) spline "
+                        r"breakpoints? crossed", run.stdout)
+    assert summary, run.stdout
+    steps, rejected, evaluations, crossed = map(int, summary.groups())
+    assert crossed > 0
+    statistics = sinew.load(gait2354).simulate(0.05, accuracy=1e-8,
+                                               initial_states=start).statistics
+    assert statistics["steps"] == steps
+    assert statistics["rejected"] == rejected
+    assert statistics["evaluations"] == evaluations
+    assert statistics["breakpoints_crossed"] == crossed
