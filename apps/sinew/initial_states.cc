@@ -1,14 +1,10 @@
 #include "apps/sinew/initial_states.h"
 
 #include <sinew/common/error.h>
+#include <sinew/common/text.h>
 #include <sinew/opensim/initial_states.h>
-#include <sinew/opensim/states_table.h>
-#include <sinew/opensim/support.h>
 
-#include <algorithm>
-#include <cmath>
 #include <iostream>
-#include <string_view>
 #include <vector>
 
 #include "apps/sinew/notices.h"

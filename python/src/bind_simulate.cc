@@ -201,7 +201,8 @@ py::object Forward(const std::filesystem::path& setup_file,
                                   : std::optional<std::filesystem::path>(setup.controls_file);
   return RunSimulation(
       PrepareRun(model, states, std::nullopt, controls,
-                 setup.solve_for_equilibrium_for_auxiliary_states || equilibrate_muscles),
+                 setup.solve_for_equilibrium_for_auxiliary_states || equilibrate_muscles,
+                 run.states ? &*run.states : nullptr),
       run.duration(), integrator_name, run.integrator_settings(), report_interval);
 }
 

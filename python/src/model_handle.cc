@@ -123,13 +123,14 @@ std::shared_ptr<ModelHandle> ModelHandle::Build(const std::string& path, model::
 
 std::shared_ptr<ModelHandle> ModelHandle::Rebuild(const std::string& states_file,
                                                   const std::string& controls_file,
-                                                  InitialStatesTable& states) const {
+                                                  InitialStatesTable& states,
+                                                  const io::Storage* read) const {
   // The overrides first: an initial-states row then sets the coordinates' defaults over them.
   model::ModelSpec spec = ReadSpec(path_, options_);
   double t0 = options_.start_time.value_or(0.0);
   states = InitialStatesTable{};
   if (!states_file.empty()) {
-    states.table = io::ReadStorage(states_file);
+    states.table = read ? *read : io::ReadStorage(states_file);
     states.warnings = states.table.notes;
     const Diagnostics checked = opensim::CheckTableFor(states.table, states_file, spec);
     states.warnings.insert(states.warnings.end(), checked.begin(), checked.end());

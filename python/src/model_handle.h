@@ -82,10 +82,11 @@ class ModelHandle {
   /// one row of the states table `states_file` ("" for none) as the coordinates' defaults
   /// (opensim::ApplyInitialStates; t0() is the row's time; `states` gets the table, checked by
   /// opensim::CheckTableFor, with what it could not use), driven by the ControlSet file
-  /// `controls_file` ("" for the model's own controllers).
+  /// `controls_file` ("" for the model's own controllers). `read`: the table already read from
+  /// `states_file` (a Forward run's plan has it), or null to read it.
   std::shared_ptr<ModelHandle> Rebuild(const std::string& states_file,
-                                       const std::string& controls_file,
-                                       InitialStatesTable& states) const;
+                                       const std::string& controls_file, InitialStatesTable& states,
+                                       const io::Storage* read = nullptr) const;
 
   const std::string& path() const { return path_; }
   const LoadOptions& options() const { return options_; }

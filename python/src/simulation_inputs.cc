@@ -68,8 +68,8 @@ void EquilibrateMusclesWarning(const ModelHandle& model, engine::State& state) {
 
 RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
                     const std::optional<std::map<std::string, py::object>>& excitations,
-                    const std::optional<std::filesystem::path>& controls,
-                    bool equilibrate_muscles) {
+                    const std::optional<std::filesystem::path>& controls, bool equilibrate_muscles,
+                    const io::Storage* read_states) {
   RunSetup setup{model, {}, nullptr};
   const bool is_state = py::isinstance<StateHandle>(initial_states);
   std::string states_file;
@@ -78,7 +78,8 @@ RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
   }
   InitialStatesTable states;
   if (!states_file.empty() || controls) {
-    setup.model = model->Rebuild(states_file, controls ? controls->string() : "", states);
+    setup.model =
+        model->Rebuild(states_file, controls ? controls->string() : "", states, read_states);
     WarnAboutTable(states.warnings, states.unused_labels, states_file);
   }
   if (is_state) {

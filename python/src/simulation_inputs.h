@@ -30,12 +30,13 @@ struct RunSetup {
 /// `excitations`: actuator name -> a number (constant), a sinew.Function, or a Python
 /// callable f(t) -> float (called with the GIL at every evaluation: slower). `controls`: an
 /// OpenSim ControlSet file. `equilibrate_muscles`: the muscles' fibers are then set to
-/// equilibrium at the initial state (EquilibrateMusclesWarning). Throws sinew::Error for bad
+/// equilibrium at the initial state (EquilibrateMusclesWarning). `read_states`: the table
+/// already read from the `initial_states` path, or null to read it. Throws sinew::Error for bad
 /// input.
 RunSetup PrepareRun(const ModelPtr& model, const py::object& initial_states,
                     const std::optional<std::map<std::string, py::object>>& excitations,
                     const std::optional<std::filesystem::path>& controls,
-                    bool equilibrate_muscles = false);
+                    bool equilibrate_muscles = false, const io::Storage* read_states = nullptr);
 
 /// A Python UserWarning with `message` (raises when the warnings filter makes it an error).
 void Warn(const std::string& message);
