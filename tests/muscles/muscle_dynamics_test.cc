@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <sinew/common/error.h>
 #include <sinew/engine/assemble.h>
+#include <sinew/engine/dynamics.h>
 #include <sinew/engine/energy.h>
 #include <sinew/engine/integrator.h>
 #include <sinew/engine/pose.h>
@@ -173,6 +174,32 @@ TEST(Millard2012MuscleTest, Rajagopal2016BuildsAndSimulates) {
   EXPECT_TRUE(state.z.allFinite());
   for (const engine::BodyState& body : state.bodies)
     EXPECT_TRUE(engine::PoseOf(body).p.allFinite());
+}
+
+// An evaluation visits each muscle once for its loads and its state variables' derivatives
+// (engine::CalcLoads with zdot: the path's course and the fiber dynamics computed once): the
+// same loads and derivatives, bit for bit, as the two computed apart, on Rajagopal2016 moving
+// with its muscles excited.
+TEST(Millard2012MuscleTest, LoadsAndStateDerivativesTogetherEqualThemApart) {
+  const std::string osim = std::string(SINEW_TEST_DATA_DIR) +
+                           "/opensim-org/opensim-models/Models/Rajagopal/Rajagopal2016.osim";
+  auto parsed = ParseFile(osim, /*equilibrate=*/true);
+  const engine::System& system = *parsed->system;
+  engine::State state = engine::MakeDefaultState(system);
+  for (int c = 0; c < system.num_coordinates(); ++c) state.u[c] = std::sin(c + 1.0);
+  engine::PlaceBodies(system, state);
+  for (int i = 0; i < state.inputs.size(); ++i) state.inputs[i] = 0.3 + 0.005 * i;
+  engine::Loads together(system.num_bodies(), system.num_coordinates()), apart = together;
+  VecX zdot_together = VecX::Zero(state.z.size()), zdot_apart = zdot_together;
+  Eigen::Ref<VecX> zdot = zdot_together;
+  engine::CalcLoads(system, state, nullptr, together, &zdot);
+  engine::CalcLoads(system, state, nullptr, apart);
+  engine::CalcStateVariableDerivatives(system, state, zdot_apart);
+  ASSERT_GT(state.z.size(), 80);
+  EXPECT_TRUE(zdot_together == zdot_apart);
+  EXPECT_GT(zdot_apart.cwiseAbs().maxCoeff(), 0.0);
+  for (int b = 0; b < system.num_bodies(); ++b) EXPECT_TRUE(together.body[b] == apart.body[b]) << b;
+  EXPECT_TRUE(together.mobility == apart.mobility);
 }
 
 TEST(ThelenMuscleTest, IgnoredFlagsAreReported) {

@@ -26,7 +26,21 @@ void MapDirectJointForces(const System& system, const State& state, Loads& loads
   }
 }
 
-void CalcLoads(const System& system, const State& state, const Loads* external, Loads& loads) {
+namespace {
+// Throws NonFiniteForceError naming force element k unless its state-variable derivatives are
+// finite.
+void CheckStateVariableDerivatives(const System& system, const State& state, int k,
+                                   Eigen::Ref<const VecX> zdot) {
+  if (!zdot.allFinite()) {
+    throw NonFiniteForceError(
+        {}, system.force_elements()[k]->name(),
+        "its state-variable derivatives are not finite at t = " + FormatNumber(state.t) + " s");
+  }
+}
+}  // namespace
+
+void CalcLoads(const System& system, const State& state, const Loads* external, Loads& loads,
+               Eigen::Ref<VecX>* zdot) {
   if (static_cast<int>(loads.body.size()) == system.num_bodies() &&
       loads.mobility.size() == system.num_coordinates()) {
     loads.SetZero();  // reused: no heap use
@@ -43,7 +57,16 @@ void CalcLoads(const System& system, const State& state, const Loads* external, 
   }
   const auto& forces = system.force_elements();
   for (size_t k = 0; k < forces.size(); ++k) {
-    forces[k]->AddLoads(system.MakeForceContext(static_cast<int>(k), state), loads);
+    const int element = static_cast<int>(k);
+    const ForceContext context = system.MakeForceContext(element, state);
+    const int n = zdot ? system.NumStateVariables(element) : 0;
+    if (n == 0) {
+      forces[k]->AddLoads(context, loads);
+      continue;
+    }
+    auto element_zdot = zdot->segment(system.StateVariableBegin(element), n);
+    forces[k]->AddLoadsAndStateVariableDerivatives(context, loads, element_zdot);
+    CheckStateVariableDerivatives(system, state, element, element_zdot);
   }
   if (external) {
     for (int b = 0; b < system.num_bodies(); ++b) loads.body[b] += external->body[b];
@@ -55,16 +78,12 @@ void CalcLoads(const System& system, const State& state, const Loads* external, 
 void CalcStateVariableDerivatives(const System& system, const State& state, Eigen::Ref<VecX> zdot) {
   const auto& forces = system.force_elements();
   for (size_t k = 0; k < forces.size(); ++k) {
-    const int n = system.NumStateVariables(static_cast<int>(k));
+    const int element = static_cast<int>(k);
+    const int n = system.NumStateVariables(element);
     if (n == 0) continue;
-    const int begin = system.StateVariableBegin(static_cast<int>(k));
-    forces[k]->CalcStateVariableDerivatives(system.MakeForceContext(static_cast<int>(k), state),
-                                            zdot.segment(begin, n));
-    if (!zdot.segment(begin, n).allFinite()) {
-      throw NonFiniteForceError(
-          {}, forces[k]->name(),
-          "its state-variable derivatives are not finite at t = " + FormatNumber(state.t) + " s");
-    }
+    auto element_zdot = zdot.segment(system.StateVariableBegin(element), n);
+    forces[k]->CalcStateVariableDerivatives(system.MakeForceContext(element, state), element_zdot);
+    CheckStateVariableDerivatives(system, state, element, element_zdot);
   }
 }
 
@@ -125,8 +144,9 @@ void CalcForceRhs(const System& system, const State& state, const Loads* externa
 }
 
 void CalcForceRhsReusingFactorization(const System& system, const State& state,
-                                      const Loads* external, Data& data, Eigen::Ref<VecX> rhs) {
-  CalcLoads(system, state, external, data.loads);
+                                      const Loads* external, Data& data, Eigen::Ref<VecX> rhs,
+                                      Eigen::Ref<VecX>* zdot) {
+  CalcLoads(system, state, external, data.loads, zdot);
   if (!data.kkt.IsFactorizedAt(state)) data.kkt.Factorize(state);
   CalcForceRhs(system, state, external, data, rhs);
 }
@@ -161,8 +181,9 @@ const Accelerations& CalcAccelerations(const System& system, const State& state,
 }
 
 const Accelerations& CalcAccelerationsReusingFactorization(const System& system, const State& state,
-                                                           const Loads* external, Data& data) {
-  CalcLoads(system, state, external, data.loads);
+                                                           const Loads* external, Data& data,
+                                                           Eigen::Ref<VecX>* zdot) {
+  CalcLoads(system, state, external, data.loads, zdot);
   if (!data.kkt.IsFactorizedAt(state)) data.kkt.Factorize(state);
   return SolveAccelerations(system, state, external, data);
 }

@@ -32,7 +32,11 @@ void MapDirectJointForces(const System& system, const State& state, Loads& loads
 
 /// Adds gravity, every force element of `system` and `external` (may be null) for `state`.
 /// Generalized forces on coordinates of direct Cartesian joints are turned into body torques.
-void CalcLoads(const System& system, const State& state, const Loads* external, Loads& loads);
+/// With `zdot` (System::num_state_variables() entries), also CalcStateVariableDerivatives,
+/// visiting each element once (ForceElement::AddLoadsAndStateVariableDerivatives: a muscle's
+/// path and fiber dynamics are computed once for both).
+void CalcLoads(const System& system, const State& state, const Loads* external, Loads& loads,
+               Eigen::Ref<VecX>* zdot = nullptr);
 
 /// dz/dt of every auxiliary state variable at `state` (System::num_state_variables() entries).
 /// Throws NonFiniteForceError naming the first force whose derivatives are not finite.
@@ -64,7 +68,8 @@ void CalcForceRhs(const System& system, const State& state, const Loads* externa
 /// CalcForceRhs: what a velocity-level step needs of an evaluation, M v+ + J^T mu = M v + h f,
 /// without the acceleration solve.
 void CalcForceRhsReusingFactorization(const System& system, const State& state,
-                                      const Loads* external, Data& data, Eigen::Ref<VecX> rhs);
+                                      const Loads* external, Data& data, Eigen::Ref<VecX> rhs,
+                                      Eigen::Ref<VecX>* zdot = nullptr);
 
 /// The accelerations of `state` under the loads of CalcLoads, into data.accelerations (also
 /// returned). `data` must belong to `system`. Throws NonFiniteForceError naming the force when
@@ -74,8 +79,10 @@ const Accelerations& CalcAccelerations(const System& system, const State& state,
 
 /// CalcAccelerations that keeps data.kkt's factorization when it was made at `state`'s
 /// positions (KktSolver::IsFactorizedAt): the same result, bit for bit, without refactorizing
-/// (a fixed-step integrator's velocity projection factorizes at the next step's start).
+/// (a fixed-step integrator's velocity projection factorizes at the next step's start). With
+/// `zdot`, also the state variables' derivatives (CalcLoads).
 const Accelerations& CalcAccelerationsReusingFactorization(const System& system, const State& state,
-                                                           const Loads* external, Data& data);
+                                                           const Loads* external, Data& data,
+                                                           Eigen::Ref<VecX>* zdot = nullptr);
 
 }  // namespace sinew::engine

@@ -73,6 +73,15 @@ class ForceElement {
   /// Adds this element's loads for the context's state to `loads`.
   virtual void AddLoads(const ForceContext& context, Loads& loads) const = 0;
 
+  /// AddLoads and CalcStateVariableDerivatives at one state, which an evaluation needs both of:
+  /// an element whose two share their work (a muscle's path and fiber dynamics) does it once.
+  /// Default: the two calls.
+  virtual void AddLoadsAndStateVariableDerivatives(const ForceContext& context, Loads& loads,
+                                                   Eigen::Ref<VecX> zdot) const {
+    CalcStateVariableDerivatives(context, zdot);
+    AddLoads(context, loads);
+  }
+
   /// The bodies and coordinates the loads act on and depend on, or nullopt when unknown (then
   /// the implicit integrator differentiates the element over every unknown).
   virtual std::optional<ForceSupport> Support() const { return std::nullopt; }

@@ -56,20 +56,21 @@ void Integrator::ApplyController(State& state) const {
   if (controller_) controller_->CalcInputs(system_, state, state.inputs);
 }
 
-void Integrator::EvaluateInputsAndStateDerivatives(State& state, Eigen::Ref<VecX> zdot) {
+void Integrator::ApplyInputs(State& state) {
   ApplyController(state);
   ++stats_.evaluations;
-  if (zdot.size() > 0) CalcStateVariableDerivatives(system_, state, zdot);
 }
 
 const Accelerations& Integrator::Evaluate(State& state, Eigen::Ref<VecX> zdot) {
-  EvaluateInputsAndStateDerivatives(state, zdot);
-  return CalcAccelerationsReusingFactorization(system_, state, external_, data_);
+  ApplyInputs(state);
+  return CalcAccelerationsReusingFactorization(system_, state, external_, data_,
+                                               zdot.size() > 0 ? &zdot : nullptr);
 }
 
 void Integrator::EvaluateForces(State& state, Eigen::Ref<VecX> zdot, Eigen::Ref<VecX> force_rhs) {
-  EvaluateInputsAndStateDerivatives(state, zdot);
-  CalcForceRhsReusingFactorization(system_, state, external_, data_, force_rhs);
+  ApplyInputs(state);
+  CalcForceRhsReusingFactorization(system_, state, external_, data_, force_rhs,
+                                   zdot.size() > 0 ? &zdot : nullptr);
 }
 
 double Integrator::ConstraintTolerance() const {

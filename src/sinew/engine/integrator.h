@@ -113,8 +113,8 @@ class Integrator {
   void EvaluateForces(State& state, Eigen::Ref<VecX> zdot, Eigen::Ref<VecX> force_rhs);
 
  private:
-  // What both evaluations begin with: inputs from the controller, the count, and zdot.
-  void EvaluateInputsAndStateDerivatives(State& state, Eigen::Ref<VecX> zdot);
+  // What both evaluations begin with: inputs from the controller, and the count.
+  void ApplyInputs(State& state);
 
  protected:
   const System& system_;

@@ -64,6 +64,18 @@ void PathActuator::AddLoads(const engine::ForceContext& context, engine::Loads& 
   path_.AddTensionLoads(context.state, quantities.tendon_force, scratch, loads);
 }
 
+void PathActuator::AddLoadsAndStateVariableDerivatives(const engine::ForceContext& context,
+                                                       engine::Loads& loads,
+                                                       Eigen::Ref<VecX> zdot) const {
+  PathScratch& scratch = EnginePath::Scratch();
+  const PathKinematics kinematics = path_.Calc(context.state, scratch);
+  const auto z = StateVariables(context);
+  const double excitation = context.input(0);
+  const MuscleQuantities quantities = model_->Calc(z, excitation, kinematics);
+  if (num_z_ > 0) model_->CalcStateVariableDerivatives(z, excitation, kinematics, quantities, zdot);
+  path_.AddTensionLoads(context.state, quantities.tendon_force, scratch, loads);
+}
+
 void PathActuator::CalcRecordValues(const engine::ForceContext& context,
                                     std::vector<double>& values) const {
   values.push_back(CalcQuantities(context).tendon_force);

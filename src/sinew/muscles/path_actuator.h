@@ -45,6 +45,10 @@ class PathActuator final : public forces::Actuator {
   void CalcStateVariableDerivatives(const engine::ForceContext& context,
                                     Eigen::Ref<VecX> zdot) const override;
   void AddLoads(const engine::ForceContext& context, engine::Loads& loads) const override;
+  /// The two above with the path's course and the muscle's quantities computed once.
+  void AddLoadsAndStateVariableDerivatives(const engine::ForceContext& context,
+                                           engine::Loads& loads,
+                                           Eigen::Ref<VecX> zdot) const override;
   std::optional<engine::ForceSupport> Support() const override { return path_.Support(); }
 
   /// The model's quantities at the context's state (path kinematics included).
