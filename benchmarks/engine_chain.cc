@@ -89,6 +89,19 @@ BENCHMARK(BM_CoupledChainAccelerations)
     ->Unit(benchmark::kMicrosecond)
     ->Complexity(benchmark::oN);
 
+// The chain of direct pins with 4 rods between links half a chain apart (ConstantDistance
+// constraints, one row each), solved by the Schur complement beside the tree elimination: the
+// plain chain's joints with a few extra constraints, still linear in N.
+void BM_ChainWithRodsAccelerations(benchmark::State& bench) {
+  TimeAccelerations(bench, MakeChain(static_cast<int>(bench.range(0)), JointForm::kPin, 0, 4));
+}
+BENCHMARK(BM_ChainWithRodsAccelerations)
+    ->Arg(10)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Unit(benchmark::kMicrosecond)
+    ->Complexity(benchmark::oN);
+
 // One RK45 step (7 evaluations, position and velocity projection), step fixed at 1 ms.
 void BM_ChainRk45Step(benchmark::State& bench) {
   const System system = MakeChain(static_cast<int>(bench.range(0)), JointForm::kPin);

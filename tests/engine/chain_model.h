@@ -3,7 +3,9 @@
 // coordinate starting at 0.1 rad and 0.2 rad/s, gravity -9.81 m/s^2 along y.
 #pragma once
 
+#include <sinew/engine/assemble.h>
 #include <sinew/engine/system.h>
+#include <sinew/forces/constant_distance_constraint.h>
 
 #include <cmath>
 #include <memory>
@@ -16,7 +18,10 @@ namespace sinew::engine::testing {
 /// Builds and finalizes the chain of `n` links with joints of form `form`. With `couplers` > 0
 /// (parameterized joints only), that many levers q[i] = 0.5 q[i + n/2] couple joints half a
 /// chain apart (i = 0, n/(2 couplers), ...): extra constraints solved by the Schur complement.
-inline System MakeChain(int n, JointForm form = JointForm::kPin, int couplers = 0) {
+/// With `rods` > 0, that many rods (OpenSim's ConstantDistanceConstraint) hold the tips of links
+/// half a chain apart (the same i) at their distance in the default pose: extra constraints
+/// that direct joints can carry too.
+inline System MakeChain(int n, JointForm form = JointForm::kPin, int couplers = 0, int rods = 0) {
   System system(Vec3(0, -9.81, 0));
   const Mat3 y_to_z = Eigen::AngleAxisd(M_PI / 2, Vec3::UnitY()).toRotationMatrix();
   int parent = 0;
@@ -43,6 +48,19 @@ inline System MakeChain(int n, JointForm form = JointForm::kPin, int couplers = 
   for (int k = 0; k < couplers; ++k) {
     const int a = k * n / (2 * couplers);
     system.AddConstraint(std::make_shared<LeverConstraint>(a, a + n / 2, 0.5));
+  }
+  if (rods > 0) {
+    const System free_chain = MakeChain(n, form);
+    const State pose = MakeDefaultState(free_chain);
+    const Vec3 p_BTip(0, -0.1, 0);
+    const auto tip = [&](int body) {
+      return Vec3(pose.bodies[body].p_GB + pose.bodies[body].quat_GB * p_BTip);
+    };
+    for (int k = 0; k < rods; ++k) {
+      const int b1 = 1 + k * n / (2 * rods), b2 = b1 + n / 2;  // link i is body i + 1
+      system.AddConstraint(std::make_shared<forces::ConstantDistanceConstraint>(
+          "rod" + std::to_string(k), b1, p_BTip, b2, p_BTip, (tip(b2) - tip(b1)).norm()));
+    }
   }
   system.Finalize();
   return system;

@@ -162,6 +162,24 @@ TEST(TreeSolverTest, UnitLoadResponsesOnEveryJointTreeEqualFullSolves) {
 namespace sinew::engine::testing {
 namespace {
 
+// Rods (ConstantDistanceConstraint) between the tips of links half a direct-pin chain apart:
+// rows outside the tree, solved by the Schur complement beside the tree elimination, give the
+// dense solve's accelerations and multipliers (bench_engine_chain's BM_ChainWithRodsAccelerations).
+TEST(TreeSolverTest, RodsOnADirectChainEqualTheDenseSolve) {
+  const System system = MakeChain(20, JointForm::kPin, 0, 3);
+  State state = MakeDefaultState(system);
+  for (int c = 0; c < system.num_coordinates(); ++c) state.u[c] += 0.5 * std::cos(c + 1.0);
+  PlaceBodies(system, state);
+  Data tree(system), dense(system, KktSolver::Method::kDense);
+  const Accelerations a = CalcAccelerations(system, state, nullptr, tree);
+  const Accelerations d = CalcAccelerations(system, state, nullptr, dense);
+  EXPECT_EQ(tree.kkt.num_extra_equations(), 3);
+  EXPECT_EQ(tree.kkt.num_direct_nodes(), 20);
+  EXPECT_LT((a.vdot - d.vdot).lpNorm<Eigen::Infinity>(), 1e-10 * d.vdot.lpNorm<Eigen::Infinity>());
+  EXPECT_LT((a.lambda - d.lambda).lpNorm<Eigen::Infinity>(),
+            1e-10 * d.lambda.lpNorm<Eigen::Infinity>());
+}
+
 // The twist responses to unit loads that NSC contact needs (only the tree paths between the
 // bodies and ground visited, plus the Schur complement's correction for constraints outside
 // the tree) equal the corresponding entries of full solves, to rounding (1e-12 relative: both
