@@ -48,32 +48,28 @@ void PathActuator::InitializeStateVariables(const engine::ForceContext& context,
 
 void PathActuator::CalcStateVariableDerivatives(const engine::ForceContext& context,
                                                 Eigen::Ref<VecX> zdot) const {
-  if (num_z_ == 0) return;
-  const PathKinematics kinematics = CalcPathKinematics(context);
-  const auto z = StateVariables(context);
-  const double excitation = context.input(0);
-  const MuscleQuantities quantities = model_->Calc(z, excitation, kinematics);
-  model_->CalcStateVariableDerivatives(z, excitation, kinematics, quantities, zdot);
+  if (num_z_ > 0) Evaluate(context, nullptr, &zdot);
 }
 
 void PathActuator::AddLoads(const engine::ForceContext& context, engine::Loads& loads) const {
-  PathScratch& scratch = EnginePath::Scratch();
-  const PathKinematics kinematics = path_.Calc(context.state, scratch);
-  const MuscleQuantities quantities =
-      model_->Calc(StateVariables(context), context.input(0), kinematics);
-  path_.AddTensionLoads(context.state, quantities.tendon_force, scratch, loads);
+  Evaluate(context, &loads, nullptr);
 }
 
 void PathActuator::AddLoadsAndStateVariableDerivatives(const engine::ForceContext& context,
                                                        engine::Loads& loads,
                                                        Eigen::Ref<VecX> zdot) const {
+  Evaluate(context, &loads, num_z_ > 0 ? &zdot : nullptr);
+}
+
+void PathActuator::Evaluate(const engine::ForceContext& context, engine::Loads* loads,
+                            Eigen::Ref<VecX>* zdot) const {
   PathScratch& scratch = EnginePath::Scratch();
   const PathKinematics kinematics = path_.Calc(context.state, scratch);
   const auto z = StateVariables(context);
   const double excitation = context.input(0);
   const MuscleQuantities quantities = model_->Calc(z, excitation, kinematics);
-  if (num_z_ > 0) model_->CalcStateVariableDerivatives(z, excitation, kinematics, quantities, zdot);
-  path_.AddTensionLoads(context.state, quantities.tendon_force, scratch, loads);
+  if (zdot) model_->CalcStateVariableDerivatives(z, excitation, kinematics, quantities, *zdot);
+  if (loads) path_.AddTensionLoads(context.state, quantities.tendon_force, scratch, *loads);
 }
 
 void PathActuator::CalcRecordValues(const engine::ForceContext& context,

@@ -62,6 +62,11 @@ class PathActuator final : public forces::Actuator {
 
  private:
   Eigen::Map<const VecX> StateVariables(const engine::ForceContext& context) const;
+  /// The path's course and the muscle's quantities at the context's state, then the state
+  /// variables' derivatives into `zdot` and the tendon force's loads into `loads`, each when
+  /// not null: the one computation behind the three calls above.
+  void Evaluate(const engine::ForceContext& context, engine::Loads* loads,
+                Eigen::Ref<VecX>* zdot) const;
 
   EnginePath path_;
   std::shared_ptr<const TensionModel> model_;
