@@ -120,6 +120,7 @@ void TimeHung(benchmark::State& bench, const HungCase& model, double args_per_de
   bench.counters["steps"] = static_cast<double>(stats.steps);
   bench.counters["rejected"] = static_cast<double>(stats.rejected);
   bench.counters["evaluations"] = static_cast<double>(stats.evaluations);
+  bench.counters["factorizations"] = static_cast<double>(stats.factorizations);
 }
 
 void BM_Gait2354HungOneSecond(benchmark::State& bench, double args_per_decade) {

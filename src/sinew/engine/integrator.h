@@ -59,6 +59,8 @@ struct IntegratorStats {
   /// trial step across one that fails its error test is retried to end just short of it, and the
   /// next step crosses it with a tiny Euler step.
   long breakpoints_crossed = 0;
+  /// Steps whose first stage was the last stage of the step before (rk45: no evaluation).
+  long first_stages_reused = 0;
 };
 
 /// Advances a State of one System in time. Keeps a reference to the System: the System must
@@ -80,13 +82,18 @@ class Integrator {
   /// and end), moved onto the constraints, written into `out` (any state of the system).
   /// Throws sinew::Error when the integrator has no dense output or t is outside the step.
   virtual void Interpolate(double t, State& out);
-  /// Loads held constant and added to every evaluation (may be null; not owned).
-  void SetExternalLoads(const Loads* loads) { external_ = loads; }
+  /// Loads held constant and added to every evaluation (may be null; not owned). Call it again
+  /// after changing them between steps.
+  void SetExternalLoads(const Loads* loads) {
+    external_ = loads;
+    ++setup_changes_;
+  }
   /// A controller that sets the inputs from time and state at every evaluation (null: the
   /// inputs keep the values the state holds). After each StepTo the state's inputs are the
   /// controller's at the final time.
   void SetController(std::shared_ptr<const Controller> controller) {
     controller_ = std::move(controller);
+    ++setup_changes_;
   }
   const std::shared_ptr<const Controller>& controller() const { return controller_; }
   /// Sets `state`'s inputs from the controller (if any), as every evaluation does.
@@ -124,6 +131,7 @@ class Integrator {
   const Loads* external_ = nullptr;
   std::shared_ptr<const Controller> controller_;
   IntegratorStats stats_;
+  long setup_changes_ = 0;  // calls of SetExternalLoads and SetController
 };
 
 /// Makes the integrator named `name` ("rk45", "cvode", "cvode-gmres", "cvode-gmres-bd", "euler" or
