@@ -101,11 +101,13 @@ class RungeKutta45 final : public Integrator {
       // The step that failed across it says how long a step may be; the short one that ended
       // just before it says nothing.
       h_ = std::max(h_, step_across_);
-      step_across_ = 0.0;
       y0_ = vector_.Pack(state);
       scratch = state;
       Eval(y0_, state.t, scratch, k_[0]);
     }
+    // That length holds for the crossing just ahead only (a coordinate that turned back short of
+    // it would hand it to an unrelated later crossing).
+    step_across_ = 0.0;
     for (;;) {
       const double remaining = t_final - state.t;
       double h = std::min(h_, remaining);
@@ -380,7 +382,7 @@ class RungeKutta45 final : public Integrator {
     long setup_changes = 0;
   } last_;                    // the last accepted step's end, whose derivative k_[6] holds
   double step_from_ = 0.0;    // the last step's start before CrossJustAhead moved it
-  double step_across_ = 0.0;  // the longest failing step retried to end short of a breakpoint
+  double step_across_ = 0.0;  // the step's longest trial retried to end short of a breakpoint
   std::string last_failure_;  ///< why the last trial stage failed (for the step-size error)
 };
 
