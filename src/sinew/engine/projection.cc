@@ -96,7 +96,12 @@ bool ProjectPositions(const System& system, State& state, double tolerance, KktS
     // correction, e.g. after a long fixed step, can settle at a rate just under 0.1 and stall).
     const double rate = error / previous;
     const int left = max_iterations - iteration;
-    if (iteration == 0 || rate > 0.1 || error * std::pow(rate, left) > tolerance) {
+    // The first matrix may be one already made at these positions (rk45's last stage was
+    // evaluated at the step's end): the same factorization, bit for bit.
+    const bool refactorize = iteration == 0
+                                 ? !kkt.IsFactorizedAt(state)
+                                 : rate > 0.1 || error * std::pow(rate, left) > tolerance;
+    if (refactorize) {
       kkt.Factorize(state);
       if (factorizations) ++*factorizations;
     }

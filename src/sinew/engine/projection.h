@@ -23,7 +23,8 @@ VecX CalcVelocityErrors(const System& system, const State& state, KktSolver& kkt
 
 /// Moves the positions (body poses, integrated coordinates) by the smallest mass-weighted
 /// correction that makes every |phi| <= tolerance. Returns false when Newton does not converge
-/// in `max_iterations`. Refactorizes `kkt`. Adds the factorizations it made to `*factorizations`
+/// in `max_iterations`. Refactorizes `kkt` (the first iteration keeps a factorization made at
+/// exactly these positions). Adds the factorizations it made to `*factorizations`
 /// when not null.
 bool ProjectPositions(const System& system, State& state, double tolerance, KktSolver& kkt,
                       int max_iterations = 10, long* factorizations = nullptr);
