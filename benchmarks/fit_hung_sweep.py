@@ -11,6 +11,11 @@ in two ways:
 
 Usage: fit_hung_sweep.py RESULTS.json [RESULTS.json ...] [--error 3e-6]
 where each file is a program's --benchmark_out (--benchmark_out_format=json).
+
+With --compare BEFORE.json AFTER.json it compares two sweeps of the same benchmarks over the
+whole range instead: at errors from 1e-5 to 1e-9 rad, the evaluations each takes by the
+least-squares line through its five points nearest in log error (a change that helps at one
+error and hurts at another shows as such).
 """
 import argparse
 import json
@@ -49,11 +54,35 @@ def at_error(rows, error):
     return fit, threshold
 
 
+def local_evaluations(rows, error):
+    """Evaluations at `error` by the line through the five rows nearest it in log error."""
+    log_err = np.log([r[2] for r in rows])
+    nearest = np.argsort(np.abs(log_err - math.log(error)))[:5]
+    slope, intercept = np.polyfit(log_err[nearest], np.log([rows[i][3] for i in nearest]), 1)
+    return math.exp(intercept + slope * math.log(error))
+
+
+def compare(before_path, after_path):
+    before, after = read_sweeps([before_path]), read_sweeps([after_path])
+    for family in sorted(set(before) & set(after)):
+        print(f"{family}: evaluations at equal error, before -> after")
+        for error in (1e-5, 3e-6, 1e-6, 3e-7, 1e-7, 3e-8, 1e-8, 1e-9):
+            b = local_evaluations(before[family], error)
+            a = local_evaluations(after[family], error)
+            print(f"  {error:.0e} rad: {b:6.0f} -> {a:6.0f} ({100 * (a / b - 1):+.1f}%)")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("results", nargs="+")
     parser.add_argument("--error", type=float, default=3e-6)
+    parser.add_argument("--compare", action="store_true",
+                        help="compare two sweeps (BEFORE.json AFTER.json) over the whole range")
     args = parser.parse_args()
+    if args.compare:
+        if len(args.results) != 2:
+            raise SystemExit("fit_hung_sweep: --compare takes BEFORE.json AFTER.json")
+        return compare(*args.results)
     sweeps = read_sweeps(args.results)
     if not sweeps:
         raise SystemExit("fit_hung_sweep: no .../sweep/k benchmarks in " + ", ".join(args.results))
