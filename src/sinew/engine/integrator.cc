@@ -94,16 +94,14 @@ class RungeKutta45 final : public Integrator {
     if (h_ <= 0.0) h_ = settings_.step > 0.0 ? std::min(settings_.step, 1e-3) : 1e-3;
     // The first stage, the derivative at the step's own state, serves every trial of the step.
     y0_ = vector_.Pack(state);
-    State scratch = state;
-    if (!FirstStageFromLastStep(state)) Eval(y0_, state.t, scratch, k_[0]);
+    if (!FirstStageFromLastStep(state)) EvalFirstStage(state);
     step_from_ = state.t;
     if (CrossJustAhead(state, t_final)) {
       // The step that failed across it says how long a step may be; the short one that ended
       // just before it says nothing.
       h_ = std::max(h_, step_across_);
       y0_ = vector_.Pack(state);
-      scratch = state;
-      Eval(y0_, state.t, scratch, k_[0]);
+      EvalFirstStage(state);
     }
     // That length holds for the crossing just ahead only (a coordinate that turned back short of
     // it would hand it to an unrelated later crossing).
@@ -134,6 +132,12 @@ class RungeKutta45 final : public Integrator {
   }
 
  private:
+  // k_[0], the derivative at `state` (packed in y0_).
+  void EvalFirstStage(const State& state) {
+    State scratch = state;
+    Eval(y0_, state.t, scratch, k_[0]);
+  }
+
   // ydot at (y, t) into `ydot`.
   void Eval(const VecX& y, double t, State& scratch, VecX& ydot) {
     vector_.Unpack(y, t, scratch);
